@@ -1,0 +1,45 @@
+#include "CommandLine.hpp"
+
+#include "common/Error.hpp"
+
+namespace contessa::app {
+
+std::string usage() {
+  return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet]\n"
+         "       contessa --deck-reference     print the deck reference (Markdown)\n"
+         "       contessa --help\n"
+         "\n"
+         "Runs the finite element model described by the XML deck DECK.xml and writes\n"
+         "DIR/<deck name>.exo (Exodus II) and DIR/<deck name>.history.csv (DIR defaults to '.').\n"
+         "--set overrides a deck value: PATH names it with '/' between sublists, e.g.\n"
+         "  --set \"Piro/LOCA/Step Size/Initial Step Size=0.05\"\n"
+         "Exit status: 0 the run reached its final load (and its regression checks passed);\n"
+         "1 the run stopped early; 2 bad input; 3 a regression check of the deck failed.\n";
+}
+
+CommandLine parseCommandLine(int argc, char** argv) {
+  CommandLine cl;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const std::string& option) {
+      requireInput(i + 1 < argc, option + ": expected a value");
+      return std::string(argv[++i]);
+    };
+    if (arg == "--help" || arg == "-h") cl.help = true;
+    else if (arg == "--deck-reference") cl.deckReference = true;
+    else if (arg == "--quiet") cl.quiet = true;
+    else if (arg == "--output-dir") cl.outputDirectory = value(arg);
+    else if (arg.rfind("--output-dir=", 0) == 0) cl.outputDirectory = arg.substr(13);
+    else if (arg == "--set") cl.overrides.push_back(value(arg));
+    else if (arg.rfind("--set=", 0) == 0) cl.overrides.push_back(arg.substr(6));
+    else if (!arg.empty() && arg[0] == '-') throw InputError(arg + ": unknown option (see contessa --help)");
+    else {
+      requireInput(cl.deck.empty(), arg + ": only one deck per run (already given: " + cl.deck + ")");
+      cl.deck = arg;
+    }
+  }
+  requireInput(cl.help || cl.deckReference || !cl.deck.empty(), "no deck given (usage: contessa DECK.xml; see --help)");
+  return cl;
+}
+
+}  // namespace contessa::app

@@ -1,0 +1,121 @@
+#include "Run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "common/Error.hpp"
+#include "deck/DeckReader.hpp"
+#include "deck/ParameterValidation.hpp"
+#include "deck/ProblemDefinition.hpp"
+#include "mesh/Partition.hpp"
+#include "model/ContactMechanicsModel.hpp"
+#include "output/ResultsOutput.hpp"
+#include "solvers/ContinuationDriver.hpp"
+#include "solvers/LinearSolverFactory.hpp"
+#include "solvers/SolverParameters.hpp"
+
+namespace contessa::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Regression quantities must name history columns: checked before the run, on every rank.
+void requireHistoryColumns(const deck::ProblemDefinition& problem, const std::vector<std::string>& columns) {
+  for (const auto& check : problem.regression) {
+    if (std::find(columns.begin(), columns.end(), check.quantity) != columns.end()) continue;
+    std::string known;
+    for (const auto& c : columns) known += (known.empty() ? "" : ", ") + c;
+    throw InputError("Problem/Regression/" + check.name + "/Quantity: '" + check.quantity +
+                     "' is not a history column (known: " + known + ")");
+  }
+}
+
+// The deck's own expected answers ("Problem/Regression"); returns the number of failed checks.
+int checkRegression(const deck::ProblemDefinition& problem, const output::ResultsOutput& results) {
+  int failed = 0;
+  const auto& columns = results.historyColumns();
+  const auto& rows = results.historyRows();
+  for (const auto& check : problem.regression) {
+    const auto col = std::find(columns.begin(), columns.end(), check.quantity);
+    const int step = check.step < 0 ? static_cast<int>(rows.size()) - 1 : check.step;
+    if (step < 0 || step >= static_cast<int>(rows.size())) {
+      std::printf("regression %-24s FAILED: step %d was not reached\n", check.name.c_str(), check.step);
+      ++failed;
+      continue;
+    }
+    const double value = rows[step][col - columns.begin()];
+    const double error = std::abs(value - check.expected);
+    const bool ok = error <= check.absoluteTolerance || error <= check.relativeTolerance * std::abs(check.expected);
+    std::printf("regression %-24s %s: %s = %.10g, expected %.10g (rel. error %.3e)\n", check.name.c_str(),
+                ok ? "passed" : "FAILED", check.quantity.c_str(), value, check.expected,
+                check.expected != 0 ? error / std::abs(check.expected) : error);
+    if (!ok) ++failed;
+  }
+  return failed;
+}
+
+}  // namespace
+
+int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
+  const bool root = comm->getRank() == 0;
+  // 1. The whole deck is validated before anything runs.
+  auto deckList = deck::readDeck(cl.deck);
+  deck::applyOverrides(*deckList, cl.overrides);
+  Teuchos::ParameterList validTop("Contessa deck");
+  validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
+  validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
+  deck::validateAndSetDefaults(*deckList, validTop, "", {"Problem", "Piro"});
+  requireInput(deckList->isSublist("Problem") && deckList->sublist("Problem").isSublist("Mesh"),
+               "Problem/Mesh: required (the deck has no mesh)");
+
+  const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
+  deck::ProblemDefinition problem = deck::buildProblem(deckList->sublist("Problem"), deckDirectory);
+  auto& piro = deckList->sublist("Piro");
+  solvers::validatePiro(piro, comm->getSize());
+  auto linearSolver = solvers::createLinearSolverFactory(piro.sublist("Stratimikos"));
+
+  std::error_code ec;
+  fs::create_directories(cl.outputDirectory, ec);
+  requireInput(fs::is_directory(cl.outputDirectory), "--output-dir " + cl.outputDirectory + ": cannot create the directory");
+  const std::string name = fs::path(cl.deck).stem().string();
+
+  // 2. Partition, model, output.
+  const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
+  auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, partition, linearSolver));
+  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet);
+  requireHistoryColumns(problem, results.historyColumns());
+  if (root && !cl.quiet)
+    std::printf("contessa: %s on %d rank(s): %lld nodes, %lld elements, %lld unknowns\n", cl.deck.c_str(),
+                comm->getSize(), static_cast<long long>(problem.mesh.numNodes()),
+                static_cast<long long>(problem.mesh.numElements()),
+                static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
+
+  // 3. Continuation in the load factor.
+  solvers::ContinuationDriver driver(model, piro, results);
+  const solvers::RunSummary summary = driver.run();
+  if (root) {
+    std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
+                "load factor %.6g\n",
+                summary.finished ? "finished" : "STOPPED", summary.increments, summary.failedAttempts,
+                summary.newtonIterations, summary.linearSolves, summary.finalLambda);
+    std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
+    std::fflush(stdout);
+  }
+  if (!summary.finished) {
+    if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
+    return 1;
+  }
+  int failedChecks = root ? checkRegression(problem, results) : 0;
+  Teuchos::broadcast(*comm, 0, &failedChecks);
+  if (failedChecks > 0) {
+    if (root) std::fprintf(stderr, "contessa: error: %d regression check(s) of the deck failed\n", failedChecks);
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace contessa::app

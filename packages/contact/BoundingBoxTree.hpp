@@ -1,0 +1,117 @@
+#pragma once
+// Global contact search: an axis-aligned bounding-box tree over the master facets. Each master facet's
+// box is enlarged by a search distance; a slave node's candidates are the facets whose enlarged box
+// contains it. Building is O(m log m) (median splits), a query O(log m + k), so n slave nodes against
+// m facets cost O((n + m) log m) instead of the brute-force O(n·m). The local choice among the
+// candidates is SegmentSelector2D's job.
+#include "contact/SmallMatrix.hpp"
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace contessa::contact {
+
+/// Closed axis-aligned box in Dim = 2 or 3 dimensions. Default-constructed boxes are empty.
+template <int Dim>
+struct BoundingBox {
+  Vector<Dim> lower = filled(std::numeric_limits<double>::infinity());
+  Vector<Dim> upper = filled(-std::numeric_limits<double>::infinity());
+
+  void include(const Vector<Dim>& point) {
+    for (int d = 0; d < Dim; ++d) {
+      lower[d] = point[d] < lower[d] ? point[d] : lower[d];
+      upper[d] = point[d] > upper[d] ? point[d] : upper[d];
+    }
+  }
+  void merge(const BoundingBox& box) {
+    include(box.lower);
+    include(box.upper);
+  }
+  /// Grows the box by `distance` on every side (the search distance).
+  void enlarge(double distance) {
+    for (int d = 0; d < Dim; ++d) {
+      lower[d] -= distance;
+      upper[d] += distance;
+    }
+  }
+  bool contains(const Vector<Dim>& point) const {
+    for (int d = 0; d < Dim; ++d)
+      if (point[d] < lower[d] || point[d] > upper[d]) return false;
+    return true;
+  }
+  Vector<Dim> center() const { return scaled(0.5, add(lower, upper)); }
+
+ private:
+  static Vector<Dim> filled(double value) {
+    Vector<Dim> v{};
+    v.fill(value);
+    return v;
+  }
+};
+
+/// Candidates of many query points in compressed rows: those of point i are
+/// items[offsets[i]] … items[offsets[i + 1] − 1], in ascending order.
+struct CandidateLists {
+  std::vector<std::size_t> offsets{0};
+  std::vector<int> items;
+
+  std::size_t numPoints() const { return offsets.size() - 1; }
+  std::size_t count(std::size_t point) const { return offsets[point + 1] - offsets[point]; }
+  const int* begin(std::size_t point) const { return items.data() + offsets[point]; }
+  const int* end(std::size_t point) const { return items.data() + offsets[point + 1]; }
+};
+
+template <int Dim>
+class BoundingBoxTree {
+ public:
+  /// Builds the tree over `boxes` (facet i has box i, already enlarged by the search distance).
+  explicit BoundingBoxTree(std::vector<BoundingBox<Dim>> boxes, int leafSize = 4);
+
+  /// Appends the indices of the boxes containing `point` to `hits`, sorted ascending.
+  /// `visitedNodes`, when given, is incremented by the number of tree nodes tested.
+  void query(const Vector<Dim>& point, std::vector<int>& hits, std::size_t* visitedNodes = nullptr) const;
+
+  /// Candidates of every point.
+  CandidateLists query(const std::vector<Vector<Dim>>& points, std::size_t* visitedNodes = nullptr) const;
+
+  std::size_t numBoxes() const { return boxes_.size(); }
+  std::size_t numTreeNodes() const { return nodes_.size(); }
+  int depth() const { return depth_; }
+
+ private:
+  struct Node {
+    BoundingBox<Dim> box;
+    int left = -1;  ///< child indices, −1 for a leaf
+    int right = -1;
+    int begin = 0;  ///< leaf: boxes order_[begin, end)
+    int end = 0;
+  };
+
+  int build(int begin, int end, int level);
+
+  std::vector<BoundingBox<Dim>> boxes_;
+  std::vector<Vector<Dim>> centers_;
+  std::vector<int> order_;
+  std::vector<Node> nodes_;
+  int leafSize_;
+  int depth_ = 0;
+};
+
+extern template class BoundingBoxTree<2>;
+extern template class BoundingBoxTree<3>;
+
+/// Bounding boxes of master facets (2-node segments, 4-node faces), each enlarged by `searchDistance`.
+template <int Dim, int NodesPerFacet>
+std::vector<BoundingBox<Dim>> facetBoundingBoxes(const std::vector<Vector<Dim>>& nodeCoordinates,
+                                                 const std::vector<std::array<int, NodesPerFacet>>& facets,
+                                                 double searchDistance) {
+  std::vector<BoundingBox<Dim>> boxes(facets.size());
+  for (std::size_t f = 0; f < facets.size(); ++f) {
+    for (int node : facets[f]) boxes[f].include(nodeCoordinates[static_cast<std::size_t>(node)]);
+    boxes[f].enlarge(searchDistance);
+  }
+  return boxes;
+}
+
+}  // namespace contessa::contact

@@ -1,0 +1,77 @@
+#pragma once
+// Closest-point projection of a slave node onto a master facet, eq. (1)–(5) of the reference paper,
+// written for any facet type of MasterFacet.hpp (2D: Line2Facet, one ξ; 3D: Quad4Facet, two ξ^α).
+#include "contact/MasterFacet.hpp"
+
+namespace contessa::contact {
+
+/// Geometry of the master facet at a surface point ξ̄, seen from one slave node x^k.
+template <class Facet>
+struct ProjectionResult {
+  static constexpr int kSurfaceDim = Facet::kSurfaceDim;
+  using Point = typename Facet::Point;
+  using SurfaceCoords = typename Facet::SurfaceCoords;
+
+  SurfaceCoords xi{};                                  ///< ξ̄^α, not clamped to the parent domain
+  Point position{};                                    ///< x̄(ξ̄) = Σ H_i x_i
+  Vector<Facet::kNodes> shape{};                       ///< H_i(ξ̄)
+  std::array<Point, kSurfaceDim> covariantBasis{};     ///< ā_α, eq. (2)–(3)
+  Matrix<kSurfaceDim, kSurfaceDim> metric{};           ///< ā_αβ = ā_α · ā_β (metric of eq. 9)
+  Matrix<kSurfaceDim, kSurfaceDim> inverseMetric{};    ///< ā^αβ
+  std::array<Point, kSurfaceDim> contravariantBasis{}; ///< ā^α = ā^αβ ā_β (eq. 8, 14)
+  Point normal{};                                      ///< n̄, eq. (5)
+  double gap = 0.0;                                    ///< g_N = (x^k − x̄)·n̄, eq. (4); < 0 penetration (6)
+
+  bool converged = false;  ///< Newton met the tolerance on |Δξ|
+  int iterations = 0;      ///< Newton corrections computed (the last one is below the tolerance)
+
+  /// ξ̄ lies in the parent domain enlarged by `tolerance` (in units of ξ).
+  bool isInside(double tolerance) const { return Facet::contains(xi, tolerance); }
+  /// eq. (6): g_N < 0 is penetration.
+  bool isPenetrating() const { return gap < 0.0; }
+};
+
+struct ProjectionOptions {
+  double tolerance = 1e-12;  ///< on max_α |Δξ^α| (ξ is dimensionless)
+  int maxIterations = 25;
+};
+
+/// Closest-point projection x̄(ξ̄) of a slave node x^k onto a master facet.
+///
+/// eq. (1) asks for (x^k − x̄)/‖x^k − x̄‖ · ā_α = 0. Newton solves the equivalent, non-normalised
+///   r_α(ξ) = (x^k − x̄(ξ)) · ā_α(ξ) = 0,
+/// which stays defined when the slave node lies exactly on the facet, with the Jacobian
+///   ∂r_α/∂ξ^β = −ā_αβ + (x^k − x̄) · x̄,αβ ,
+/// (x̄,αβ = Σ H_i,αβ x_i; zero for the straight 2-node segment, so there Newton is exact in one step).
+/// Far from a curved facet the Jacobian can lose definiteness; then the step falls back to the
+/// Gauss–Newton matrix −ā_αβ, which is always a descent direction for ½‖x^k − x̄‖².
+/// The result is NOT clamped to the parent domain: choosing among segments is the SegmentSelector's job.
+template <class Facet>
+class Projection {
+ public:
+  using Point = typename Facet::Point;
+  using SurfaceCoords = typename Facet::SurfaceCoords;
+  using NodeCoords = std::array<Point, Facet::kNodes>;
+
+  explicit Projection(ProjectionOptions options = {}) : options_(options) {}
+
+  /// Newton iteration on r_α(ξ) = 0 from `start`.
+  ProjectionResult<Facet> project(const Point& slave, const NodeCoords& master,
+                                  const SurfaceCoords& start = Facet::center()) const;
+
+  /// Facet geometry (x̄, ā_α, ā_αβ, ā^αβ, ā^α, n̄, g_N) at a given ξ, without iterating.
+  static ProjectionResult<Facet> evaluateAt(const Point& slave, const NodeCoords& master, const SurfaceCoords& xi);
+
+  const ProjectionOptions& options() const { return options_; }
+
+ private:
+  ProjectionOptions options_;
+};
+
+extern template class Projection<Line2Facet>;
+extern template class Projection<Quad4Facet>;
+
+using SegmentProjection2D = Projection<Line2Facet>;
+using FaceProjection3D = Projection<Quad4Facet>;
+
+}  // namespace contessa::contact

@@ -1,0 +1,177 @@
+#include "deck/ParameterValidation.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "common/Error.hpp"
+#include "deck/DeckReader.hpp"
+
+namespace contessa::deck {
+namespace {
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+std::vector<std::string> entryNames(const Teuchos::ParameterList& list) {
+  std::vector<std::string> names;
+  for (auto it = list.begin(); it != list.end(); ++it) names.push_back(list.name(it));
+  return names;
+}
+
+std::string typeName(const Teuchos::ParameterEntry& entry) {
+  if (entry.isList()) return "sublist";
+  return entry.getAny(false).typeName();
+}
+
+std::string valueText(const Teuchos::ParameterEntry& entry) {
+  std::ostringstream os;
+  entry.getAny(false).print(os);
+  return os.str();
+}
+
+std::string formatNumber(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// Range validators publish their bounds; turn a violation into one line naming the path.
+void checkRange(const std::string& path, const Teuchos::ParameterEntry& entry) {
+  auto validator = entry.validator();
+  if (validator.is_null()) return;
+  if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<double>>(validator); !d.is_null()) {
+    const double v = Teuchos::getValue<double>(entry);
+    const bool ok = std::isfinite(v) && (!d->hasMin() || v >= d->getMin()) && (!d->hasMax() || v <= d->getMax());
+    if (!ok) {
+      std::string range = "[" + (d->hasMin() ? formatNumber(d->getMin()) : std::string("-inf")) + ", " +
+                          (d->hasMax() ? formatNumber(d->getMax()) : std::string("inf")) + "]";
+      throw InputError(path + ": expected a value in " + range + ", got " + formatNumber(v));
+    }
+    return;
+  }
+  if (auto i = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<int>>(validator); !i.is_null()) {
+    const int v = Teuchos::getValue<int>(entry);
+    if ((i->hasMin() && v < i->getMin()) || (i->hasMax() && v > i->getMax())) {
+      std::string range = "[" + (i->hasMin() ? std::to_string(i->getMin()) : std::string("-inf")) + ", " +
+                          (i->hasMax() ? std::to_string(i->getMax()) : std::string("inf")) + "]";
+      throw InputError(path + ": expected an integer in " + range + ", got " + std::to_string(v));
+    }
+    return;
+  }
+  if (auto s = Teuchos::rcp_dynamic_cast<const Teuchos::StringValidator>(validator); !s.is_null()) {
+    const auto allowed = s->validStringValues();
+    requireOneOf(path, Teuchos::getValue<std::string>(entry),
+                 std::vector<std::string>(allowed->begin(), allowed->end()));
+    return;
+  }
+  // Any other validator: use its own check, keeping the first line of its message.
+  try {
+    validator->validate(entry, path, "");
+  } catch (const std::exception& e) {
+    std::string msg = e.what();
+    msg = msg.substr(0, msg.find('\n'));
+    throw InputError(path + ": " + msg);
+  }
+}
+
+}  // namespace
+
+std::string joinPath(const std::string& parent, const std::string& name) {
+  return parent.empty() ? name : parent + "/" + name;
+}
+
+void requireOneOf(const std::string& path, const std::string& value, const std::vector<std::string>& allowed) {
+  for (const auto& a : allowed)
+    if (a == value) return;
+  throw InputError(path + ": expected one of " + joinNames(allowed) + "; got '" + value + "'");
+}
+
+void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
+                            const std::string& path, const std::set<std::string>& openSublists) {
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string& name = deck.name(it);
+    const std::string where = joinPath(path, name);
+    const Teuchos::ParameterEntry& given = deck.entry(it);
+    const Teuchos::ParameterEntry* expected = valid.getEntryPtr(name);
+    if (expected == nullptr) {
+      const auto known = entryNames(valid);
+      throw InputError(where + ": unknown parameter" +
+                       (known.empty() ? std::string(" (this list takes none)") : " (expected one of: " + joinNames(known) + ")"));
+    }
+    if (expected->isList() != given.isList()) {
+      throw InputError(where + ": expected " + (expected->isList() ? std::string("a sublist") : "a parameter of type " + typeName(*expected)) +
+                       ", got " + (given.isList() ? std::string("a sublist") : "a parameter"));
+    }
+    if (given.isList()) {
+      if (openSublists.count(name) == 0)
+        validateAndSetDefaults(deck.sublist(name), valid.sublist(name), where);
+      continue;
+    }
+    const auto& expectedType = expected->getAny(false).type();
+    if (given.getAny(false).type() != expectedType) {
+      // Decks often write type="int" for a real number: accept it as a double.
+      // --set stores new values as text, typed here.
+      if (expectedType == typeid(double) && given.isType<int>()) {
+        deck.set(name, static_cast<double>(Teuchos::getValue<int>(given)));
+      } else if (!(given.isType<std::string>() &&
+                   setTypedFromText(deck, name, *expected, Teuchos::getValue<std::string>(given)))) {
+        throw InputError(where + ": expected type " + typeName(*expected) + ", got " + typeName(given) + " '" +
+                         valueText(given) + "'");
+      }
+    }
+    Teuchos::ParameterEntry& checked = deck.getEntry(name);
+    checked.setValidator(expected->validator());
+    checkRange(where, checked);
+  }
+  // Defaults for what the deck leaves out (sublists too, so consumers can read them).
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const std::string& name = valid.name(it);
+    if (deck.isParameter(name)) continue;
+    const Teuchos::ParameterEntry& entry = valid.entry(it);
+    if (entry.isList()) {
+      if (openSublists.count(name) == 0)
+        validateAndSetDefaults(deck.sublist(name), valid.sublist(name), joinPath(path, name));
+      else
+        deck.sublist(name);
+    } else {
+      deck.setEntry(name, entry);
+    }
+  }
+}
+
+void setPositive(Teuchos::ParameterList& list, const std::string& name, double value, const std::string& doc) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
+  v->setMin(std::nextafter(0.0, 1.0));
+  list.set(name, value, doc + " (> 0)", v);
+}
+
+void setNonNegative(Teuchos::ParameterList& list, const std::string& name, double value, const std::string& doc) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
+  v->setMin(0.0);
+  list.set(name, value, doc + " (>= 0)", v);
+}
+
+void setPositiveInt(Teuchos::ParameterList& list, const std::string& name, int value, const std::string& doc) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
+  v->setMin(1);
+  list.set(name, value, doc + " (>= 1)", v);
+}
+
+void setBounded(Teuchos::ParameterList& list, const std::string& name, double value, double min, double max,
+                const std::string& doc) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(min, max));
+  list.set(name, value, doc + " ([" + formatNumber(min) + ", " + formatNumber(max) + "])", v);
+}
+
+void setChoice(Teuchos::ParameterList& list, const std::string& name, const std::string& value,
+               const std::vector<std::string>& choices, const std::string& doc) {
+  auto v = Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(choices.begin(), choices.end())));
+  list.set(name, value, doc + " (one of: " + joinNames(choices) + ")", v);
+}
+
+}  // namespace contessa::deck

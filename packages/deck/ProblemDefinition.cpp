@@ -1,0 +1,286 @@
+#include "deck/ProblemDefinition.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include <Teuchos_Array.hpp>
+
+#include "common/Error.hpp"
+#include "deck/ParameterValidation.hpp"
+#include "mesh/ExodusMeshReader.hpp"
+#include "mesh/Generators.hpp"
+
+namespace contessa::deck {
+namespace {
+
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Regression"};
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// Generators report what was expected; the deck path is added here.
+template <class F>
+mesh::Mesh generate(const std::string& where, F&& make) {
+  try {
+    return make();
+  } catch (const InputError& e) {
+    throw InputError(where + "/" + e.what());
+  }
+}
+
+mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
+  const std::string where = "Problem/Mesh";
+  requireInput(list.isParameter("Type") && list.isType<std::string>("Type"),
+               where + "/Type: required; expected one of " + joinNames(meshTypes()));
+  const std::string type = list.get<std::string>("Type");
+  requireOneOf(where + "/Type", type, meshTypes());
+  validateAndSetDefaults(list, *meshValidParameters(type), where);
+
+  mesh::Mesh mesh;
+  if (type == "Rectangle") {
+    mesh::RectangleSpec s;
+    s.x0 = list.get<double>("X Origin");
+    s.y0 = list.get<double>("Y Origin");
+    s.lx = list.get<double>("Length X");
+    s.ly = list.get<double>("Length Y");
+    s.nx = list.get<int>("Elements X");
+    s.ny = list.get<int>("Elements Y");
+    s.blockName = list.get<std::string>("Block Name");
+    mesh = generate(where, [&] { return mesh::generateRectangle(s); });
+  } else if (type == "Annulus Sector") {
+    mesh::AnnulusSectorSpec s;
+    s.innerRadius = list.get<double>("Inner Radius");
+    s.thickness = list.get<double>("Thickness");
+    s.startAngleDeg = list.get<double>("Start Angle");
+    s.endAngleDeg = list.get<double>("End Angle");
+    s.elementsThroughThickness = list.get<int>("Elements Through Thickness");
+    s.elementsAroundArc = list.get<int>("Elements Around Arc");
+    s.blockName = list.get<std::string>("Block Name");
+    mesh = generate(where, [&] { return mesh::generateAnnulusSector(s); });
+  } else {
+    std::string file = list.get<std::string>("File Name");
+    requireInput(!file.empty(), where + "/File Name: required (an Exodus II mesh file)");
+    if (file.front() != '/' && !deckDirectory.empty()) file = deckDirectory + "/" + file;
+    requireInput(std::ifstream(file).good(), where + "/File Name: mesh file '" + file + "' does not exist");
+    mesh = mesh::readExodusMesh(file);
+  }
+  mesh.validate(where);
+  return mesh;
+}
+
+// Each named child of an open list is validated against `valid`; returns the child names in order.
+std::vector<std::string> validateChildren(ParameterList& list, const ParameterList& valid, const std::string& where) {
+  std::vector<std::string> names;
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string& name = list.name(it);
+    requireInput(list.isSublist(name), where + "/" + name + ": expected a sublist (one per " +
+                                           where.substr(where.rfind('/') + 1) + " entry)");
+    names.push_back(name);
+  }
+  for (const auto& name : names) validateAndSetDefaults(list.sublist(name), valid, where + "/" + name);
+  return names;
+}
+
+void requireNodeSet(const mesh::Mesh& mesh, const std::string& name, const std::string& where) {
+  if (mesh.hasNodeSet(name)) return;
+  std::vector<std::string> known;
+  for (const auto& ns : mesh.nodeSets) known.push_back(ns.name);
+  throw InputError(where + ": node set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
+}
+
+}  // namespace
+
+std::vector<std::string> meshTypes() { return {"Rectangle", "Annulus Sector", "Exodus File"}; }
+
+RCP<const ParameterList> meshValidParameters(const std::string& type) {
+  auto p = rcp(new ParameterList("Mesh"));
+  setChoice(*p, "Type", type, meshTypes(), "Inline generator or Exodus II file");
+  if (type == "Rectangle") {
+    p->set("X Origin", 0.0, "x of the lower-left corner");
+    p->set("Y Origin", 0.0, "y of the lower-left corner");
+    setPositive(*p, "Length X", 1.0, "Width");
+    setPositive(*p, "Length Y", 1.0, "Height");
+    setPositiveInt(*p, "Elements X", 1, "Elements along x");
+    setPositiveInt(*p, "Elements Y", 1, "Elements along y");
+    p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: left, right, bottom, top (node set 'all' too)");
+  } else if (type == "Annulus Sector") {
+    setPositive(*p, "Inner Radius", 100.0, "Inner radius, centre at the origin");
+    setPositive(*p, "Thickness", 20.0, "Wall thickness (outer radius = inner radius + thickness)");
+    p->set("Start Angle", 0.0, "Start angle in degrees, counter-clockwise from +x");
+    p->set("End Angle", 90.0, "End angle in degrees (> Start Angle)");
+    setPositiveInt(*p, "Elements Through Thickness", 13, "Elements across the wall");
+    setPositiveInt(*p, "Elements Around Arc", 101, "Elements along the arc");
+    p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: inner, outer, start, end (node set 'all' too)");
+  } else {
+    p->set("File Name", std::string(""), "Exodus II mesh file (relative to the deck's directory); required");
+  }
+  return p;
+}
+
+RCP<const ParameterList> blockValidParameters() {
+  auto p = rcp(new ParameterList("Block"));
+  setChoice(*p, "Element", "Q4", mechanics::ElementFactory::names(), "Element formulation");
+  p->set("Material", std::string(""), "Name of a sublist of Problem/Materials; required");
+  return p;
+}
+
+RCP<const ParameterList> dirichletValidParameters() {
+  auto p = rcp(new ParameterList("Dirichlet Condition"));
+  p->set("Node Set", std::string(""), "Node set the displacement is prescribed on; required");
+  setChoice(*p, "Component", "x", {"x", "y", "z"}, "Displacement component");
+  p->set("Value", 0.0, "Displacement at load factor 1 (applied as load factor × value)");
+  return p;
+}
+
+RCP<const ParameterList> nodalForceValidParameters() {
+  auto p = rcp(new ParameterList("Nodal Force"));
+  p->set("Node Set", std::string(""), "Node set the force is applied on; required");
+  setChoice(*p, "Component", "x", {"x", "y", "z"}, "Force direction");
+  p->set("Total Force", 0.0, "Total force at load factor 1, shared equally by the node set's nodes (per unit thickness in 2D)");
+  return p;
+}
+
+RCP<const ParameterList> regressionValidParameters() {
+  auto p = rcp(new ParameterList("Regression Check"));
+  p->set("Quantity", std::string(""), "History column to check, e.g. reaction_top_y or newton_iterations; required");
+  p->set("Step", -1, "History step to check; -1 = the last converged increment");
+  p->set("Expected", 0.0, "Expected value");
+  setNonNegative(*p, "Relative Tolerance", 1e-6, "Relative tolerance on |value - expected| / |expected|");
+  setNonNegative(*p, "Absolute Tolerance", 0.0, "Absolute tolerance; the check passes if either tolerance holds");
+  return p;
+}
+
+RCP<const ParameterList> problemValidParameters() {
+  auto p = rcp(new ParameterList("Problem"));
+  p->set("Title", std::string(""), "Free text written into the Exodus file");
+  p->sublist("Mesh", false, "Mesh source: 'Type' selects the generator or file; see the Mesh types below");
+  p->sublist("Blocks", false, "One sublist per element block (named as in the mesh): Element, Material");
+  p->sublist("Materials", false, "One sublist per material (any name): Model and its parameters");
+  p->sublist("Dirichlet Conditions", false, "One sublist per condition (any name): Node Set, Component, Value");
+  p->sublist("Nodal Forces", false, "One sublist per force (any name): Node Set, Component, Total Force");
+  auto& out = p->sublist("Output", false, "Results files");
+  out.set("Reaction Node Sets", Teuchos::Array<std::string>(),
+          "Node sets whose reaction forces are summed into the history (reaction_<set>_<x|y|z>)");
+  p->sublist("Regression", false, "Expected answers (one sublist per check): Quantity, Step, Expected, tolerances");
+  return p;
+}
+
+int componentIndex(const std::string& name, int dimension, const std::string& where) {
+  const int c = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1;
+  requireInput(c >= 0 && c < dimension,
+               where + ": component '" + name + "' is not valid in " + std::to_string(dimension) + "D");
+  return c;
+}
+
+ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDirectory) {
+  ProblemDefinition def;
+  validateAndSetDefaults(problem, *problemValidParameters(), "Problem",
+                         std::set<std::string>(std::begin(kOpenLists), std::end(kOpenLists)));
+  def.title = problem.get<std::string>("Title");
+  def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory);
+  const mesh::Mesh& mesh = def.mesh;
+
+  // Materials: the valid list depends on the model name.
+  std::map<std::string, std::shared_ptr<const mechanics::Material>> materials;
+  auto& materialList = problem.sublist("Materials");
+  for (auto it = materialList.begin(); it != materialList.end(); ++it) {
+    const std::string& name = materialList.name(it);
+    const std::string where = "Problem/Materials/" + name;
+    requireInput(materialList.isSublist(name), where + ": expected a sublist (Model and its parameters)");
+    auto& m = materialList.sublist(name);
+    requireInput(m.isType<std::string>("Model"),
+                 where + "/Model: required; expected one of " + joinNames(mechanics::MaterialFactory::names()));
+    requireOneOf(where + "/Model", m.get<std::string>("Model"), mechanics::MaterialFactory::names());
+    validateAndSetDefaults(m, *mechanics::MaterialFactory::validParameters(m.get<std::string>("Model")), where);
+    materials[name] = mechanics::MaterialFactory::create(m, where);
+  }
+
+  // Blocks: every mesh block needs physics, and every named block must exist.
+  auto& blockList = problem.sublist("Blocks");
+  const auto named = validateChildren(blockList, *blockValidParameters(), "Problem/Blocks");
+  for (const auto& name : named) {
+    std::vector<std::string> known;
+    for (const auto& b : mesh.blocks) known.push_back(b.name);
+    requireInput(mesh.hasBlock(name), "Problem/Blocks/" + name + ": element block '" + name +
+                                          "' does not exist in the mesh (known: " + joinNames(known) + ")");
+  }
+  for (const auto& b : mesh.blocks) {
+    const std::string where = "Problem/Blocks/" + b.name;
+    requireInput(blockList.isSublist(b.name), where + ": missing; every element block needs an Element and a Material");
+    const auto& bl = blockList.sublist(b.name);
+    BlockPhysics phys;
+    phys.block = b.name;
+    phys.elementName = bl.get<std::string>("Element");
+    phys.materialName = bl.get<std::string>("Material");
+    std::vector<std::string> knownMaterials;
+    for (const auto& [n, _] : materials) knownMaterials.push_back(n);
+    requireInput(materials.count(phys.materialName) == 1,
+                 where + "/Material: '" + phys.materialName + "' is not a sublist of Problem/Materials (known: " +
+                     joinNames(knownMaterials) + ")");
+    phys.material = materials[phys.materialName];
+    phys.element = mechanics::ElementFactory::create(phys.elementName, where + "/Element");
+    requireInput(phys.element->dimension() == mesh.dimension,
+                 where + "/Element: '" + phys.elementName + "' is a " + std::to_string(phys.element->dimension()) +
+                     "D element but the mesh is " + std::to_string(mesh.dimension) + "D");
+    requireInput(phys.element->numNodes() == mesh::nodesPerCell(b.cellType),
+                 where + "/Element: '" + phys.elementName + "' does not match the block's cell type " +
+                     mesh::exodusCellName(b.cellType));
+    def.blocks.push_back(phys);
+  }
+
+  auto& dirichletList = problem.sublist("Dirichlet Conditions");
+  for (const auto& name : validateChildren(dirichletList, *dirichletValidParameters(), "Problem/Dirichlet Conditions")) {
+    const std::string where = "Problem/Dirichlet Conditions/" + name;
+    const auto& d = dirichletList.sublist(name);
+    DirichletCondition bc;
+    bc.name = name;
+    bc.nodeSet = d.get<std::string>("Node Set");
+    requireNodeSet(mesh, bc.nodeSet, where + "/Node Set");
+    bc.component = componentIndex(d.get<std::string>("Component"), mesh.dimension, where + "/Component");
+    bc.value = d.get<double>("Value");
+    def.dirichlet.push_back(bc);
+  }
+
+  auto& forceList = problem.sublist("Nodal Forces");
+  for (const auto& name : validateChildren(forceList, *nodalForceValidParameters(), "Problem/Nodal Forces")) {
+    const std::string where = "Problem/Nodal Forces/" + name;
+    const auto& f = forceList.sublist(name);
+    NodalForce force;
+    force.name = name;
+    force.nodeSet = f.get<std::string>("Node Set");
+    requireNodeSet(mesh, force.nodeSet, where + "/Node Set");
+    force.component = componentIndex(f.get<std::string>("Component"), mesh.dimension, where + "/Component");
+    force.totalForce = f.get<double>("Total Force");
+    def.nodalForces.push_back(force);
+  }
+
+  const auto& sets = problem.sublist("Output").get<Teuchos::Array<std::string>>("Reaction Node Sets");
+  for (const auto& s : sets) {
+    requireNodeSet(mesh, s, "Problem/Output/Reaction Node Sets");
+    def.reactionNodeSets.push_back(s);
+  }
+
+  auto& regressionList = problem.sublist("Regression");
+  for (const auto& name : validateChildren(regressionList, *regressionValidParameters(), "Problem/Regression")) {
+    const auto& r = regressionList.sublist(name);
+    RegressionCheck check;
+    check.name = name;
+    check.quantity = r.get<std::string>("Quantity");
+    requireInput(!check.quantity.empty(), "Problem/Regression/" + name + "/Quantity: required (a history column)");
+    check.step = r.get<int>("Step");
+    check.expected = r.get<double>("Expected");
+    check.relativeTolerance = r.get<double>("Relative Tolerance");
+    check.absoluteTolerance = r.get<double>("Absolute Tolerance");
+    def.regression.push_back(check);
+  }
+  return def;
+}
+
+}  // namespace contessa::deck

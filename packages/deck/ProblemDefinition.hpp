@@ -1,0 +1,73 @@
+#pragma once
+// The deck's "Problem" part turned into plain data: the mesh, which element and material each block
+// uses, boundary conditions, output and regression expectations. Everything is validated here, before
+// anything runs: names, types and ranges against the published valid parameters, then the references
+// between them (blocks, node sets and materials that must exist).
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "mechanics/Element.hpp"
+#include "mechanics/Material.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace contessa::deck {
+
+struct BlockPhysics {
+  std::string block;
+  std::shared_ptr<const mechanics::ElementKernel> element;
+  std::shared_ptr<const mechanics::Material> material;
+  std::string elementName, materialName;
+};
+
+/// Prescribed displacement on a node set: u_c = λ · value (value is the displacement at λ = 1).
+struct DirichletCondition {
+  std::string name, nodeSet;
+  int component = 0;
+  double value = 0;
+};
+
+/// Nodal force on a node set: total force λ · totalForce in direction `component`, shared equally.
+struct NodalForce {
+  std::string name, nodeSet;
+  int component = 0;
+  double totalForce = 0;
+};
+
+/// One expected answer carried by the deck ("Regression" sublist), checked against the history.
+struct RegressionCheck {
+  std::string name, quantity;
+  int step = -1;  ///< history step to compare; -1 = the last converged increment
+  double expected = 0, relativeTolerance = 0, absoluteTolerance = 0;
+};
+
+struct ProblemDefinition {
+  std::string title;
+  mesh::Mesh mesh;
+  std::vector<BlockPhysics> blocks;  ///< in mesh block order
+  std::vector<DirichletCondition> dirichlet;
+  std::vector<NodalForce> nodalForces;
+  std::vector<std::string> reactionNodeSets;
+  std::vector<RegressionCheck> regression;
+};
+
+/// Valid parameters of each part, with docs and defaults (published for the deck reference).
+Teuchos::RCP<const Teuchos::ParameterList> problemValidParameters();
+std::vector<std::string> meshTypes();
+Teuchos::RCP<const Teuchos::ParameterList> meshValidParameters(const std::string& type);
+Teuchos::RCP<const Teuchos::ParameterList> blockValidParameters();
+Teuchos::RCP<const Teuchos::ParameterList> dirichletValidParameters();
+Teuchos::RCP<const Teuchos::ParameterList> nodalForceValidParameters();
+Teuchos::RCP<const Teuchos::ParameterList> regressionValidParameters();
+
+/// Validates the "Problem" list in place (defaults filled in) and builds the problem; mesh file
+/// names are relative to `deckDirectory`. Throws InputError with the deck path on any problem.
+ProblemDefinition buildProblem(Teuchos::ParameterList& problem, const std::string& deckDirectory);
+
+/// Component index of "x", "y", "z" (InputError naming `where` otherwise, or when ≥ dimension).
+int componentIndex(const std::string& name, int dimension, const std::string& where);
+
+}  // namespace contessa::deck

@@ -1,0 +1,183 @@
+#include "mesh/ExodusMeshReader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <vector>
+
+#include "common/Error.hpp"
+#include "mesh/ExodusFile.hpp"
+
+namespace contessa::mesh {
+
+namespace {
+
+using detail::ExodusFile;
+
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : file_(path, open(path)) {}
+
+  Mesh read() {
+    ex_init_params init{};
+    check(ex_get_init_ext(id(), &init), "the header");
+    requireInput(init.num_dim == 2 || init.num_dim == 3,
+                 path() + ": unsupported mesh dimension " + std::to_string(init.num_dim) + " (supported: 2, 3)");
+    // Names longer than the library's default of 32 characters would be truncated otherwise.
+    const int64_t nameLength = std::max<int64_t>(32, ex_inquire_int(id(), EX_INQ_DB_MAX_USED_NAME_LENGTH));
+    check(ex_set_max_name_length(id(), static_cast<int>(nameLength)), "the name length");
+    nameLength_ = static_cast<size_t>(nameLength);
+
+    Mesh mesh;
+    mesh.dimension = static_cast<int>(init.num_dim);
+    readCoordinates(mesh, init.num_nodes);
+    readBlocks(mesh, init.num_elem_blk);
+    readNodeSets(mesh, init.num_node_sets);
+    readSideSets(mesh, init.num_side_sets);
+    check(file_.close(), "the file (close)");
+    mesh.validate(path());
+    return mesh;
+  }
+
+ private:
+  static int open(const std::string& path) {
+    int cpuWordSize = 8, ioWordSize = 0;
+    float version = 0;
+    // 64-bit integers through the API accept any file, whatever integer size it stores.
+    const int id = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize, &version);
+    requireInput(id >= 0, path + ": cannot open Exodus file");
+    return id;
+  }
+
+  int id() const { return file_.id(); }
+  const std::string& path() const { return file_.path(); }
+
+  void check(int status, const std::string& what) const {
+    // Negative is an error; positive is a warning (e.g. an optional entity is absent).
+    if (status < 0) {
+      const std::string detail = ExodusFile::lastError();
+      throw InputError(path() + ": cannot read " + what + (detail.empty() ? "" : " (" + detail + ")"));
+    }
+  }
+
+  std::vector<int64_t> ids(ex_entity_type type, int64_t count, const char* what) {
+    std::vector<int64_t> result(static_cast<size_t>(count));
+    if (count > 0) check(ex_get_ids(id(), type, result.data()), what);
+    return result;
+  }
+
+  std::vector<std::string> names(ex_entity_type type, const std::vector<int64_t>& entityIds, const char* prefix,
+                                 const char* what) {
+    const size_t count = entityIds.size();
+    std::vector<std::vector<char>> buffers(count, std::vector<char>(nameLength_ + 1, '\0'));
+    std::vector<char*> pointers(count);
+    for (size_t k = 0; k < count; ++k) pointers[k] = buffers[k].data();
+    if (count > 0) check(ex_get_names(id(), type, pointers.data()), what);
+    std::vector<std::string> result(count);
+    for (size_t k = 0; k < count; ++k) {
+      result[k] = buffers[k].data();
+      // Unnamed entities need a name for the deck to refer to them.
+      if (result[k].empty()) result[k] = prefix + std::to_string(entityIds[k]);
+    }
+    return result;
+  }
+
+  void readCoordinates(Mesh& mesh, int64_t numNodes) {
+    const size_t n = static_cast<size_t>(numNodes);
+    std::vector<double> x(n), y(n), z(mesh.dimension == 3 ? n : 0);
+    if (n > 0) check(ex_get_coord(id(), x.data(), y.data(), mesh.dimension == 3 ? z.data() : nullptr), "coordinates");
+    mesh.coordinates.resize(n * mesh.dimension);
+    for (size_t k = 0; k < n; ++k) {
+      mesh.coordinates[k * mesh.dimension] = x[k];
+      mesh.coordinates[k * mesh.dimension + 1] = y[k];
+      if (mesh.dimension == 3) mesh.coordinates[k * 3 + 2] = z[k];
+    }
+  }
+
+  static bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+  CellType cellType(const std::string& blockName, const std::string& topology, int64_t nodesPerElement) const {
+    std::string upper = topology;
+    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    // "QUAD", "QUAD4" and "HEX", "HEX8" mean the same linear cells; QUAD8, HEX20... do not.
+    if (startsWith(upper, "QUAD") && nodesPerElement == 4) return CellType::Quad4;
+    if (startsWith(upper, "HEX") && nodesPerElement == 8) return CellType::Hex8;
+    throw InputError(path() + ": element block '" + blockName + "' has unsupported type '" + topology +
+                     "' (supported: QUAD4, HEX8)");
+  }
+
+  void readBlocks(Mesh& mesh, int64_t numBlocks) {
+    const auto blockIds = ids(EX_ELEM_BLOCK, numBlocks, "element block ids");
+    const auto blockNames = names(EX_ELEM_BLOCK, blockIds, "block_", "element block names");
+    GlobalIndex nextElement = 0;  // global ids run over the blocks in file order, as in Exodus
+    for (size_t b = 0; b < blockIds.size(); ++b) {
+      ex_block param{};
+      param.id = blockIds[b];
+      param.type = EX_ELEM_BLOCK;
+      check(ex_get_block_param(id(), &param), "element block '" + blockNames[b] + "'");
+      ElementBlock block;
+      block.name = blockNames[b];
+      block.cellType = cellType(block.name, param.topology, param.num_nodes_per_entry);
+      requireInput(cellDimension(block.cellType) == mesh.dimension,
+                   path() + ": element block '" + block.name + "' has " + exodusCellName(block.cellType) +
+                       " cells in a " + std::to_string(mesh.dimension) + "D mesh");
+      const size_t count = static_cast<size_t>(param.num_entry);
+      std::vector<int64_t> connectivity(count * static_cast<size_t>(param.num_nodes_per_entry));
+      if (count > 0)
+        check(ex_get_conn(id(), EX_ELEM_BLOCK, param.id, connectivity.data(), nullptr, nullptr),
+              "connectivity of element block '" + block.name + "'");
+      block.elements.resize(count);
+      for (size_t k = 0; k < count; ++k) block.elements[k] = nextElement++;
+      block.connectivity.assign(connectivity.begin(), connectivity.end());
+      for (GlobalIndex& node : block.connectivity) --node;
+      mesh.blocks.push_back(std::move(block));
+    }
+  }
+
+  void readNodeSets(Mesh& mesh, int64_t numSets) {
+    const auto setIds = ids(EX_NODE_SET, numSets, "node set ids");
+    const auto setNames = names(EX_NODE_SET, setIds, "nodeset_", "node set names");
+    for (size_t s = 0; s < setIds.size(); ++s) {
+      const std::string what = "node set '" + setNames[s] + "'";
+      int64_t count = 0, numFactors = 0;
+      check(ex_get_set_param(id(), EX_NODE_SET, setIds[s], &count, &numFactors), what);
+      std::vector<int64_t> nodes(static_cast<size_t>(count));
+      if (count > 0) check(ex_get_set(id(), EX_NODE_SET, setIds[s], nodes.data(), nullptr), what);
+      NodeSet set;
+      set.name = setNames[s];
+      set.nodes.assign(nodes.begin(), nodes.end());
+      for (GlobalIndex& node : set.nodes) --node;
+      // Files may list nodes in any order and repeat them; the mesh promises sorted and unique.
+      std::sort(set.nodes.begin(), set.nodes.end());
+      set.nodes.erase(std::unique(set.nodes.begin(), set.nodes.end()), set.nodes.end());
+      mesh.nodeSets.push_back(std::move(set));
+    }
+  }
+
+  void readSideSets(Mesh& mesh, int64_t numSets) {
+    const auto setIds = ids(EX_SIDE_SET, numSets, "side set ids");
+    const auto setNames = names(EX_SIDE_SET, setIds, "sideset_", "side set names");
+    for (size_t s = 0; s < setIds.size(); ++s) {
+      const std::string what = "side set '" + setNames[s] + "'";
+      int64_t count = 0, numFactors = 0;
+      check(ex_get_set_param(id(), EX_SIDE_SET, setIds[s], &count, &numFactors), what);
+      std::vector<int64_t> elements(static_cast<size_t>(count)), sides(static_cast<size_t>(count));
+      if (count > 0) check(ex_get_set(id(), EX_SIDE_SET, setIds[s], elements.data(), sides.data()), what);
+      SideSet set;
+      set.name = setNames[s];
+      // Exodus numbers elements 1.. over the blocks in file order: our global id plus one.
+      for (int64_t e : elements) set.elements.push_back(e - 1);
+      for (int64_t side : sides) set.sides.push_back(static_cast<int>(side - 1));
+      mesh.sideSets.push_back(std::move(set));
+    }
+  }
+
+  ExodusFile file_;
+  size_t nameLength_ = 32;
+};
+
+}  // namespace
+
+Mesh readExodusMesh(const std::string& path) { return Reader(path).read(); }
+
+}  // namespace contessa::mesh

@@ -1,0 +1,176 @@
+#include "mesh/Generators.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/Error.hpp"
+
+namespace contessa::mesh {
+
+namespace {
+
+std::string format(double value) {
+  std::ostringstream out;
+  out.precision(12);
+  out << value;
+  return out.str();
+}
+
+void requirePositive(double value, const char* parameter) {
+  requireInput(std::isfinite(value) && value > 0,
+               std::string(parameter) + ": expected a positive number, got " + format(value));
+}
+
+void requireFinite(double value, const char* parameter) {
+  requireInput(std::isfinite(value), std::string(parameter) + ": expected a finite number, got " + format(value));
+}
+
+void requirePositiveCount(int value, const char* parameter) {
+  requireInput(value > 0, std::string(parameter) + ": expected a positive integer, got " + std::to_string(value));
+}
+
+// Both generators build the same logically structured n0 × n1 grid: node (i, j) is j*(n0+1) + i,
+// element (i, j) is j*n0 + i, and its corners (i,j), (i+1,j), (i+1,j+1), (i,j+1) are
+// counter-clockwise whenever the map from (i, j) to (x, y) preserves orientation.
+class StructuredGrid {
+ public:
+  StructuredGrid(int n0, int n1) : n0_(n0), n1_(n1) {}
+
+  GlobalIndex node(int i, int j) const { return static_cast<GlobalIndex>(j) * (n0_ + 1) + i; }
+  GlobalIndex element(int i, int j) const { return static_cast<GlobalIndex>(j) * n0_ + i; }
+
+  ElementBlock block(const std::string& name) const {
+    ElementBlock b;
+    b.name = name;
+    b.cellType = CellType::Quad4;
+    b.elements.reserve(static_cast<size_t>(n0_) * n1_);
+    b.connectivity.reserve(4 * static_cast<size_t>(n0_) * n1_);
+    for (int j = 0; j < n1_; ++j)
+      for (int i = 0; i < n0_; ++i) {
+        b.elements.push_back(element(i, j));
+        for (GlobalIndex n : {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)})
+          b.connectivity.push_back(n);
+      }
+    return b;
+  }
+
+  // Grid edges: i = 0 (side 3), i = n0 (side 1), j = 0 (side 0), j = n1 (side 2).
+  enum Edge { kMin0, kMax0, kMin1, kMax1 };
+
+  NodeSet nodeSet(const std::string& name, Edge edge) const {
+    NodeSet s;
+    s.name = name;
+    if (edge == kMin0 || edge == kMax0) {
+      const int i = edge == kMin0 ? 0 : n0_;
+      for (int j = 0; j <= n1_; ++j) s.nodes.push_back(node(i, j));
+    } else {
+      const int j = edge == kMin1 ? 0 : n1_;
+      for (int i = 0; i <= n0_; ++i) s.nodes.push_back(node(i, j));
+    }
+    return s;  // ascending by construction
+  }
+
+  SideSet sideSet(const std::string& name, Edge edge) const {
+    SideSet s;
+    s.name = name;
+    auto add = [&s](GlobalIndex e, int side) {
+      s.elements.push_back(e);
+      s.sides.push_back(side);
+    };
+    switch (edge) {
+      case kMin0: for (int j = 0; j < n1_; ++j) add(element(0, j), 3); break;
+      case kMax0: for (int j = 0; j < n1_; ++j) add(element(n0_ - 1, j), 1); break;
+      case kMin1: for (int i = 0; i < n0_; ++i) add(element(i, 0), 0); break;
+      case kMax1: for (int i = 0; i < n0_; ++i) add(element(i, n1_ - 1), 2); break;
+    }
+    return s;
+  }
+
+  NodeSet allNodes() const {
+    NodeSet s;
+    s.name = "all";
+    s.nodes.resize(static_cast<size_t>(n0_ + 1) * (n1_ + 1));
+    for (size_t k = 0; k < s.nodes.size(); ++k) s.nodes[k] = static_cast<GlobalIndex>(k);
+    return s;
+  }
+
+  // Sets named after the grid edges, in the order min0, max0, min1, max1, then "all".
+  void addSets(Mesh& mesh, const std::string names[4]) const {
+    const Edge edges[4] = {kMin0, kMax0, kMin1, kMax1};
+    for (int k = 0; k < 4; ++k) mesh.nodeSets.push_back(nodeSet(names[k], edges[k]));
+    mesh.nodeSets.push_back(allNodes());
+    for (int k = 0; k < 4; ++k) mesh.sideSets.push_back(sideSet(names[k], edges[k]));
+  }
+
+ private:
+  int n0_, n1_;
+};
+
+}  // namespace
+
+Mesh generateRectangle(const RectangleSpec& spec) {
+  requireFinite(spec.x0, "X0");
+  requireFinite(spec.y0, "Y0");
+  requirePositive(spec.lx, "Length X");
+  requirePositive(spec.ly, "Length Y");
+  requirePositiveCount(spec.nx, "Elements X");
+  requirePositiveCount(spec.ny, "Elements Y");
+
+  const StructuredGrid grid(spec.nx, spec.ny);
+  Mesh mesh;
+  mesh.dimension = 2;
+  mesh.coordinates.resize(2 * static_cast<size_t>(spec.nx + 1) * (spec.ny + 1));
+  for (int j = 0; j <= spec.ny; ++j)
+    for (int i = 0; i <= spec.nx; ++i) {
+      const size_t n = static_cast<size_t>(grid.node(i, j));
+      // Multiplying by i/n (not summing steps) puts the last node exactly on x0 + lx.
+      mesh.coordinates[2 * n] = spec.x0 + spec.lx * i / spec.nx;
+      mesh.coordinates[2 * n + 1] = spec.y0 + spec.ly * j / spec.ny;
+    }
+  mesh.blocks.push_back(grid.block(spec.blockName));
+  const std::string names[4] = {"left", "right", "bottom", "top"};
+  grid.addSets(mesh, names);
+  mesh.validate("rectangle mesh");
+  return mesh;
+}
+
+Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
+  requirePositive(spec.innerRadius, "Inner Radius");
+  requirePositive(spec.thickness, "Thickness");
+  requireFinite(spec.startAngleDeg, "Start Angle");
+  requireFinite(spec.endAngleDeg, "End Angle");
+  requireInput(spec.endAngleDeg > spec.startAngleDeg, "End Angle: expected an angle greater than Start Angle (" +
+                                                          format(spec.startAngleDeg) + "), got " +
+                                                          format(spec.endAngleDeg));
+  requireInput(spec.endAngleDeg - spec.startAngleDeg <= 360,
+               "End Angle: expected at most 360 degrees beyond Start Angle (" + format(spec.startAngleDeg) +
+                   "), got " + format(spec.endAngleDeg));
+  requirePositiveCount(spec.elementsThroughThickness, "Elements Through Thickness");
+  requirePositiveCount(spec.elementsAroundArc, "Elements Around Arc");
+
+  const int nr = spec.elementsThroughThickness;
+  const int nt = spec.elementsAroundArc;
+  const StructuredGrid grid(nr, nt);
+  const double degToRad = std::acos(-1.0) / 180.0;
+  Mesh mesh;
+  mesh.dimension = 2;
+  mesh.coordinates.resize(2 * static_cast<size_t>(nr + 1) * (nt + 1));
+  for (int j = 0; j <= nt; ++j) {
+    const double theta = (spec.startAngleDeg + (spec.endAngleDeg - spec.startAngleDeg) * j / nt) * degToRad;
+    const double c = std::cos(theta), s = std::sin(theta);
+    for (int i = 0; i <= nr; ++i) {
+      const double r = spec.innerRadius + spec.thickness * i / nr;
+      const size_t n = static_cast<size_t>(grid.node(i, j));
+      mesh.coordinates[2 * n] = r * c;
+      mesh.coordinates[2 * n + 1] = r * s;
+    }
+  }
+  // (r, θ) → (x, y) has Jacobian r > 0, so the grid's counter-clockwise order carries over.
+  mesh.blocks.push_back(grid.block(spec.blockName));
+  const std::string names[4] = {"inner", "outer", "start", "end"};
+  grid.addSets(mesh, names);
+  mesh.validate("annulus sector mesh");
+  return mesh;
+}
+
+}  // namespace contessa::mesh

@@ -1,0 +1,300 @@
+#include "model/ContactMechanicsModel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <Thyra_DefaultSpmdVectorSpace.hpp>
+#include <Thyra_DetachedVectorView.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+
+#include "common/Error.hpp"
+
+namespace contessa::model {
+
+using Teuchos::RCP;
+using Teuchos::rcp;
+using MEB = Thyra::ModelEvaluatorBase;
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+
+ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
+                                             const mesh::Partition& partition,
+                                             const RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory)
+    : comm_(comm), problem_(problem), dim_(problem.mesh.dimension), solverFactory_(solverFactory) {
+  buildMaps(partition);
+  solids_ = std::make_unique<SolidAssembler>(problem_, partition.ownedElements(comm_->getRank()),
+                                             [this](GlobalIndex dof) { return overlapMap_->getLocalElement(dof); });
+  buildGraph();
+  buildBoundaryConditions();
+
+  xSpace_ = Thyra::createVectorSpace<double>(ownedMap_);
+  // λ is replicated: a locally replicated map of one entry.
+  paramMap_ = rcp(new Map(1, 0, comm_, Tpetra::LocallyReplicated));
+  pSpace_ = Thyra::createVectorSpace<double>(paramMap_);
+
+  MEB::InArgsSetup<double> inArgs;
+  inArgs.setModelEvalDescription("Contessa contact mechanics model");
+  inArgs.setSupports(MEB::IN_ARG_x, true);
+  inArgs.set_Np(1);
+  nominal_ = inArgs;
+  auto x0 = Thyra::createMember(xSpace_);
+  Thyra::assign(x0.ptr(), 0.0);
+  auto p0 = Thyra::createMember(pSpace_);
+  Thyra::assign(p0.ptr(), 0.0);
+  nominal_.set_x(x0);
+  nominal_.set_p(0, p0);
+}
+
+void ContactMechanicsModel::buildMaps(const mesh::Partition& partition) {
+  const int rank = comm_->getRank();
+  const auto owned = partition.ownedNodes(rank);
+  const auto overlap = partition.overlapNodes(problem_.mesh, rank);
+  std::vector<GO> ownedDofs, overlapDofs;
+  for (GO n : owned)
+    for (int c = 0; c < dim_; ++c) ownedDofs.push_back(n * dim_ + c);
+  for (GO n : overlap)
+    for (int c = 0; c < dim_; ++c) overlapDofs.push_back(n * dim_ + c);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  ownedMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(ownedDofs), 0, comm_));
+  overlapMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(overlapDofs), 0, comm_));
+  const auto elements = partition.ownedElements(rank);
+  std::vector<GO> elementIds(elements.begin(), elements.end());
+  elementMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(elementIds), 0, comm_));
+  exporter_ = rcp(new Export(overlapMap_, ownedMap_));
+  importer_ = rcp(new Import(ownedMap_, overlapMap_));
+  overlapX_ = rcp(new Vector(overlapMap_));
+  overlapForce_ = rcp(new Vector(overlapMap_));
+}
+
+void ContactMechanicsModel::buildGraph() {
+  // Element couplings, gathered per overlapped row, inserted once; the owned graph receives them
+  // through the exporter and is never rebuilt while the pairing stays the same.
+  const LO numOverlap = static_cast<LO>(overlapMap_->getNodeNumElements());
+  std::vector<std::vector<LO>> rows(numOverlap);
+  solids_->assemble(std::vector<double>(numOverlap, 0.0).data(), false,
+                    [&](const int* dofs, int n, const double*, const double*) {
+                      for (int i = 0; i < n; ++i)
+                        for (int j = 0; j < n; ++j) rows[dofs[i]].push_back(dofs[j]);
+                    });
+  std::size_t maxPerRow = 1;
+  for (auto& r : rows) {
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end()), r.end());
+    maxPerRow = std::max(maxPerRow, r.size());
+  }
+  auto overlapGraph = rcp(new CrsGraph(overlapMap_, overlapMap_, maxPerRow));
+  for (LO i = 0; i < numOverlap; ++i)
+    if (!rows[i].empty()) overlapGraph->insertLocalIndices(i, Teuchos::ArrayView<const LO>(rows[i]));
+  overlapGraph->fillComplete(ownedMap_, ownedMap_);
+  auto ownedGraph = rcp(new CrsGraph(ownedMap_, maxPerRow * 2));
+  ownedGraph->doExport(*overlapGraph, *exporter_, Tpetra::INSERT);
+  ownedGraph->fillComplete(ownedMap_, ownedMap_);
+  overlapGraph_ = overlapGraph;
+  ownedGraph_ = ownedGraph;
+  overlapMatrix_ = rcp(new CrsMatrix(overlapGraph_));
+}
+
+void ContactMechanicsModel::buildBoundaryConditions() {
+  const mesh::Mesh& mesh = problem_.mesh;
+  // Dirichlet: one value per DOF; the same DOF prescribed twice with different values is an input error.
+  std::map<GO, std::pair<double, std::string>> prescribed;
+  for (const auto& bc : problem_.dirichlet) {
+    for (GO node : mesh.nodeSet(bc.nodeSet).nodes) {
+      const GO dof = node * dim_ + bc.component;
+      auto [it, inserted] = prescribed.emplace(dof, std::make_pair(bc.value, bc.name));
+      requireInput(inserted || it->second.first == bc.value,
+                   "Problem/Dirichlet Conditions/" + bc.name + ": prescribes node " + std::to_string(node) +
+                       " differently from '" + it->second.second + "'");
+    }
+  }
+  isPrescribedOverlap_.assign(overlapMap_->getNodeNumElements(), 0);
+  for (const auto& [dof, value] : prescribed) {
+    const LO lo = ownedMap_->getLocalElement(dof);
+    if (lo != Teuchos::OrdinalTraits<LO>::invalid()) {
+      prescribedRows_.push_back(lo);
+      prescribedValues_.push_back(value.first);
+    }
+    const LO lov = overlapMap_->getLocalElement(dof);
+    if (lov != Teuchos::OrdinalTraits<LO>::invalid()) isPrescribedOverlap_[lov] = 1;
+  }
+  // Nodal forces: shared equally by the set's nodes; only the owner adds a node's share.
+  externalForce_ = rcp(new Vector(ownedMap_));
+  auto f = externalForce_->getDataNonConst(0);
+  for (const auto& force : problem_.nodalForces) {
+    const auto& nodes = mesh.nodeSet(force.nodeSet).nodes;
+    for (GO node : nodes) {
+      const LO lo = ownedMap_->getLocalElement(node * dim_ + force.component);
+      if (lo != Teuchos::OrdinalTraits<LO>::invalid()) f[lo] += force.totalForce / static_cast<double>(nodes.size());
+    }
+  }
+}
+
+RCP<const Thyra::VectorSpaceBase<double>> ContactMechanicsModel::get_x_space() const { return xSpace_; }
+RCP<const Thyra::VectorSpaceBase<double>> ContactMechanicsModel::get_f_space() const { return xSpace_; }
+RCP<const Thyra::VectorSpaceBase<double>> ContactMechanicsModel::get_p_space(int) const { return pSpace_; }
+
+RCP<const Teuchos::Array<std::string>> ContactMechanicsModel::get_p_names(int) const {
+  return rcp(new Teuchos::Array<std::string>(1, "Load Factor"));
+}
+
+MEB::InArgs<double> ContactMechanicsModel::getNominalValues() const { return nominal_; }
+MEB::InArgs<double> ContactMechanicsModel::createInArgs() const {
+  MEB::InArgsSetup<double> inArgs;
+  inArgs.setModelEvalDescription("Contessa contact mechanics model");
+  inArgs.setSupports(MEB::IN_ARG_x, true);
+  inArgs.set_Np(1);
+  return inArgs;
+}
+
+MEB::OutArgs<double> ContactMechanicsModel::createOutArgsImpl() const {
+  MEB::OutArgsSetup<double> outArgs;
+  outArgs.setModelEvalDescription("Contessa contact mechanics model");
+  outArgs.set_Np_Ng(1, 0);
+  outArgs.setSupports(MEB::OUT_ARG_f, true);
+  outArgs.setSupports(MEB::OUT_ARG_W_op, true);
+  outArgs.setSupports(MEB::OUT_ARG_DfDp, 0, MEB::DerivativeSupport(MEB::DERIV_MV_JACOBIAN_FORM));
+  outArgs.set_W_properties(MEB::DerivativeProperties(MEB::DERIV_LINEARITY_NONCONST, MEB::DERIV_RANK_FULL, true));
+  return outArgs;
+}
+
+RCP<Thyra::LinearOpBase<double>> ContactMechanicsModel::create_W_op() const {
+  RCP<Operator> op = rcp(new CrsMatrix(ownedGraph_));
+  return Thyra::createLinearOp<double, LO, GO, Node>(op, xSpace_, xSpace_);
+}
+
+RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> ContactMechanicsModel::get_W_factory() const {
+  return solverFactory_;
+}
+
+bool ContactMechanicsModel::assembleInternal(const Vector& x, Vector* force, CrsMatrix* stiffness) const {
+  overlapX_->doImport(x, *importer_, Tpetra::INSERT);
+  auto u = overlapX_->getData(0);
+  overlapForce_->putScalar(0.0);
+  auto fo = overlapForce_->getDataNonConst(0);
+  if (stiffness != nullptr) {
+    overlapMatrix_->resumeFill();
+    overlapMatrix_->setAllToScalar(0.0);
+  }
+  std::vector<LO> cols;
+  const auto status = solids_->assemble(
+      u.getRawPtr(), stiffness != nullptr, [&](const int* dofs, int n, const double* fe, const double* ke) {
+        for (int i = 0; i < n; ++i) fo[dofs[i]] += fe[i];
+        if (ke == nullptr) return;
+        cols.assign(dofs, dofs + n);
+        for (int i = 0; i < n; ++i)
+          overlapMatrix_->sumIntoLocalValues(dofs[i], Teuchos::ArrayView<const LO>(cols),
+                                             Teuchos::ArrayView<const double>(ke + i * n, n));
+      });
+  fo = Teuchos::null;
+  if (force != nullptr) {
+    force->putScalar(0.0);
+    force->doExport(*overlapForce_, *exporter_, Tpetra::ADD);
+  }
+  if (stiffness != nullptr) {
+    overlapMatrix_->fillComplete(ownedMap_, ownedMap_);
+    stiffness->resumeFill();
+    stiffness->setAllToScalar(0.0);
+    stiffness->doExport(*overlapMatrix_, *exporter_, Tpetra::ADD);
+  }
+  return status == mechanics::ElementStatus::Ok;
+}
+
+void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, const MEB::OutArgs<double>& outArgs) const {
+  const RCP<const Vector> x = Extract::getConstTpetraVector(inArgs.get_x());
+  double lambda = 0.0;
+  if (auto p = inArgs.get_p(0); !p.is_null()) lambda = Thyra::get_ele(*p, 0);
+  lastLoadFactor_ = lambda;
+
+  const RCP<Thyra::VectorBase<double>> fOut = outArgs.get_f();
+  const RCP<Thyra::LinearOpBase<double>> wOut = outArgs.get_W_op();
+  const RCP<Thyra::MultiVectorBase<double>> dfdp = outArgs.get_DfDp(0).getMultiVector();
+
+  RCP<Vector> f = fOut.is_null() ? Teuchos::null : Extract::getTpetraVector(fOut);
+  RCP<CrsMatrix> W;
+  if (!wOut.is_null()) {
+    W = Teuchos::rcp_dynamic_cast<CrsMatrix>(Extract::getTpetraOperator(wOut), true);
+    ++jacobianEvaluations_;
+  }
+
+  bool ok = true;
+  if (!f.is_null() || !W.is_null()) ok = assembleInternal(*x, f.get(), W.get());
+
+  if (!f.is_null()) {
+    // Free rows: f_int − λ f_ext (eq. of equilibrium); prescribed rows: u − λ ū.
+    f->update(-lambda, *externalForce_, 1.0);
+    auto fv = f->getDataNonConst(0);
+    auto xv = x->getData(0);
+    for (std::size_t k = 0; k < prescribedRows_.size(); ++k) {
+      const LO r = prescribedRows_[k];
+      fv[r] = xv[r] - lambda * prescribedValues_[k];
+    }
+    // An inadmissible element (inverted, failed internal solve) poisons the residual: NOX's
+    // finite-value test then fails the solve and the continuation cuts the step back.
+    if (!ok)
+      for (auto& v : fv) v = std::numeric_limits<double>::quiet_NaN();
+  }
+  if (!W.is_null()) {
+    // Prescribed rows become identity rows.
+    for (const LO r : prescribedRows_) {
+      std::size_t n = W->getNumEntriesInLocalRow(r);
+      typename CrsMatrix::nonconst_local_inds_host_view_type cols("cols", n);
+      typename CrsMatrix::nonconst_values_host_view_type vals("vals", n);
+      W->getLocalRowCopy(r, cols, vals, n);
+      for (std::size_t j = 0; j < n; ++j) vals(j) = (cols(j) == W->getColMap()->getLocalElement(ownedMap_->getGlobalElement(r))) ? 1.0 : 0.0;
+      W->replaceLocalValues(r, cols, vals);
+    }
+    W->fillComplete(ownedMap_, ownedMap_);
+  }
+  if (!dfdp.is_null()) {
+    // ∂f/∂λ = −f_ext on free rows, −ū on prescribed rows.
+    auto d = Extract::getTpetraMultiVector(dfdp);
+    d->update(-1.0, *externalForce_, 0.0);
+    auto dv = d->getDataNonConst(0);
+    for (std::size_t k = 0; k < prescribedRows_.size(); ++k) dv[prescribedRows_[k]] = -prescribedValues_[k];
+  }
+}
+
+std::vector<std::string> ContactMechanicsModel::elementStressNames(int dimension) {
+  if (dimension == 2) return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "von_mises"};
+  return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"};
+}
+
+RCP<MultiVector> ContactMechanicsModel::elementStresses(const Vector& x) const {
+  overlapX_->doImport(x, *importer_, Tpetra::INSERT);
+  auto u = overlapX_->getData(0);
+  const auto sigmas = solids_->elementStresses(u.getRawPtr());
+  const auto names = elementStressNames(dim_);
+  auto out = rcp(new MultiVector(elementMap_, names.size()));
+  const std::vector<std::pair<int, int>> comps = dim_ == 2
+      ? std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}, {0, 1}}
+      : std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+  for (std::size_t c = 0; c < comps.size(); ++c) {
+    auto col = out->getDataNonConst(c);
+    for (std::size_t e = 0; e < sigmas.size(); ++e) col[e] = sigmas[e][mechanics::idx2(comps[c].first, comps[c].second)];
+  }
+  auto vm = out->getDataNonConst(comps.size());
+  for (std::size_t e = 0; e < sigmas.size(); ++e) vm[e] = mechanics::vonMises(sigmas[e]);
+  return out;
+}
+
+std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, double loadFactor) const {
+  Vector fint(ownedMap_);
+  assembleInternal(x, &fint, nullptr);
+  fint.update(-loadFactor, *externalForce_, 1.0);
+  auto fv = fint.getData(0);
+  std::vector<NodeSetReaction> out;
+  for (const auto& name : problem_.reactionNodeSets) {
+    std::vector<double> local(dim_, 0.0), global(dim_, 0.0);
+    for (GO node : problem_.mesh.nodeSet(name).nodes)
+      for (int c = 0; c < dim_; ++c) {
+        const LO lo = ownedMap_->getLocalElement(node * dim_ + c);
+        if (lo != Teuchos::OrdinalTraits<LO>::invalid()) local[c] += fv[lo];
+      }
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, dim_, local.data(), global.data());
+    out.push_back({name, global});
+  }
+  return out;
+}
+
+}  // namespace contessa::model

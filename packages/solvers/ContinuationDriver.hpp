@@ -1,0 +1,55 @@
+#pragma once
+// Runs LOCA natural continuation in the load factor λ over the model evaluator, with NOX Newton
+// solves. Built by hand (LOCA::Stepper + LOCA::Thyra::Group) rather than through Piro, because
+// Piro::LOCASolver in Trilinos 13.2 cannot take a user LOCA factory, and Contessa's step-size
+// strategies are registered through one (StepSizeFactory).
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "model/ContactMechanicsModel.hpp"
+
+namespace contessa::solvers {
+
+/// What is known of one increment when it ends.
+struct IncrementReport {
+  int step = 0;              ///< converged increments so far (0 = the initial state)
+  double lambda = 0;         ///< load factor reached
+  double dlambda = 0;        ///< increment of the load factor
+  double beta = 1;           ///< step correction factor of the step-size strategy (1 = none)
+  int attempts = 1;          ///< solves tried for this increment (1 + failed attempts)
+  int newtonIterations = 0;  ///< Newton iterations of the converged solve
+  double residualNorm = 0;   ///< ||f|| at convergence
+  double wallSeconds = 0;    ///< since the start of the run
+};
+
+class IncrementObserver {
+ public:
+  virtual ~IncrementObserver() = default;
+  /// Called after each converged increment, once the model state is committed.
+  virtual void incrementConverged(const model::Vector& x, const IncrementReport& report) = 0;
+  /// Called after a failed attempt (the model state has been rolled back).
+  virtual void attemptFailed(const IncrementReport& /*report*/) {}
+};
+
+struct RunSummary {
+  bool finished = false;  ///< reached the final load factor
+  std::string message;    ///< why not, when not
+  int increments = 0, failedAttempts = 0, newtonIterations = 0, linearSolves = 0;
+  double finalLambda = 0;
+};
+
+class ContinuationDriver {
+ public:
+  /// `piro` is the validated deck list (Piro/NOX, Piro/LOCA); the model and observer must outlive run().
+  ContinuationDriver(const Teuchos::RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
+                     IncrementObserver& observer);
+  RunSummary run();
+
+ private:
+  Teuchos::RCP<model::ContactMechanicsModel> model_;
+  Teuchos::ParameterList piro_;
+  IncrementObserver& observer_;
+};
+
+}  // namespace contessa::solvers

@@ -1,0 +1,287 @@
+#include "solvers/MumpsSolver.hpp"
+
+#include <dmumps_c.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Thyra_LinearOpWithSolveBase.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_MultiVectorStdOps.hpp>
+
+#include "model/TpetraTypes.hpp"
+
+namespace contessa::solvers {
+
+using Teuchos::RCP;
+using Teuchos::rcp;
+using namespace contessa::model;
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+
+MumpsCounters& mumpsCounters() {
+  static MumpsCounters counters;
+  return counters;
+}
+
+namespace {
+
+// MUMPS' control arrays are documented 1-based: ICNTL(k) is icntl[k-1].
+constexpr int icntl(int k) { return k - 1; }
+
+// One MUMPS instance bound to a matrix pattern: analysis once per pattern, factorization per matrix.
+class MumpsContext {
+ public:
+  MumpsContext(MPI_Comm comm, int memoryRelaxation, int ordering, bool verbose) : comm_(comm) {
+    id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+    id_.par = 1;  // the host takes part in the factorization
+    id_.sym = 0;  // general unsymmetric (the slip tangent of eq. (26) is non-symmetric)
+    id_.job = -1;
+    dmumps_c(&id_);
+    if (!verbose) {
+      id_.icntl[icntl(1)] = -1;
+      id_.icntl[icntl(2)] = -1;
+      id_.icntl[icntl(3)] = -1;
+      id_.icntl[icntl(4)] = 0;
+    }
+    id_.icntl[icntl(5)] = 0;    // assembled matrix
+    id_.icntl[icntl(18)] = 3;   // distributed entries: each rank gives its own rows
+    id_.icntl[icntl(20)] = 0;   // dense right-hand side on the host
+    id_.icntl[icntl(21)] = 0;   // centralised solution on the host
+    id_.icntl[icntl(7)] = ordering;
+    id_.icntl[icntl(14)] = memoryRelaxation;
+  }
+  ~MumpsContext() {
+    id_.job = -2;
+    dmumps_c(&id_);
+  }
+  MumpsContext(const MumpsContext&) = delete;
+  MumpsContext& operator=(const MumpsContext&) = delete;
+
+  // Factorizes A (owned rows on each rank). Returns false when MUMPS reports an error (e.g. singular).
+  bool factorize(const CrsMatrix& A) {
+    const auto rowMap = A.getRowMap();
+    const auto colMap = A.getColMap();
+    const GO n = static_cast<GO>(A.getGlobalNumRows());
+    rows_.clear();
+    cols_.clear();
+    values_.clear();
+    const std::size_t numRows = A.getNodeNumRows();
+    for (std::size_t r = 0; r < numRows; ++r) {
+      typename CrsMatrix::local_inds_host_view_type inds;
+      typename CrsMatrix::values_host_view_type vals;
+      A.getLocalRowView(static_cast<LO>(r), inds, vals);
+      const GO gr = rowMap->getGlobalElement(static_cast<LO>(r));
+      for (std::size_t k = 0; k < inds.extent(0); ++k) {
+        rows_.push_back(static_cast<MUMPS_INT>(gr + 1));
+        cols_.push_back(static_cast<MUMPS_INT>(colMap->getGlobalElement(inds(k)) + 1));
+        values_.push_back(vals(k));
+      }
+    }
+    const bool samePattern = analysed_ && n == n_ && rows_ == analysedRows_ && cols_ == analysedCols_;
+    int patternChangedLocal = samePattern ? 0 : 1, patternChanged = 0;
+    MPI_Allreduce(&patternChangedLocal, &patternChanged, 1, MPI_INT, MPI_MAX, comm_);
+    id_.n = static_cast<MUMPS_INT>(n);
+    id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
+    id_.irn_loc = rows_.data();
+    id_.jcn_loc = cols_.data();
+    id_.a_loc = values_.data();
+    n_ = n;
+    if (patternChanged) {
+      id_.job = 1;
+      dmumps_c(&id_);
+      if (id_.infog[0] < 0) return false;
+      analysed_ = true;
+      analysedRows_ = rows_;
+      analysedCols_ = cols_;
+    }
+    // Penalty contact makes pivoting unpredictable: on a workspace shortfall (INFOG(1) = -8/-9),
+    // relax the memory estimate and try again.
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      id_.job = 2;
+      dmumps_c(&id_);
+      if (id_.infog[0] != -8 && id_.infog[0] != -9) break;
+      id_.icntl[icntl(14)] *= 2;
+    }
+    ++mumpsCounters().factorizations;
+    return id_.infog[0] >= 0;
+  }
+
+  // Solves in place: `rhs` holds the right-hand side on the host on entry, the solution on exit.
+  bool solve(std::vector<double>& rhs) {
+    id_.job = 3;
+    id_.nrhs = 1;
+    id_.lrhs = static_cast<MUMPS_INT>(n_);
+    id_.rhs = rhs.empty() ? nullptr : rhs.data();
+    dmumps_c(&id_);
+    ++mumpsCounters().solves;
+    return id_.infog[0] >= 0;
+  }
+
+ private:
+  MPI_Comm comm_;
+  DMUMPS_STRUC_C id_{};
+  bool analysed_ = false;
+  GO n_ = 0;
+  std::vector<MUMPS_INT> rows_, cols_, analysedRows_, analysedCols_;
+  std::vector<double> values_;
+};
+
+class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
+ public:
+  void initialize(const RCP<const Thyra::LinearOpSourceBase<double>>& src, int memoryRelaxation, int ordering,
+                  bool verbose) {
+    src_ = src;
+    op_ = src->getOp();
+    auto A = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(op_), true);
+    if (context_ == nullptr) {
+      auto mpiComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(A->getComm(), true);
+      context_ = std::make_shared<MumpsContext>((*mpiComm->getRawMpiComm())(), memoryRelaxation, ordering, verbose);
+      const GO n = static_cast<GO>(A->getGlobalNumRows());
+      TEUCHOS_TEST_FOR_EXCEPTION(A->getRowMap()->getMaxAllGlobalIndex() != n - 1 || A->getRowMap()->getMinAllGlobalIndex() != 0,
+                                 std::logic_error, "MUMPS solver: row ids must be 0 .. n-1");
+      // The host holds the whole right-hand side: an import to a map with every row on rank 0.
+      const int rank = A->getComm()->getRank();
+      std::vector<GO> all;
+      if (rank == 0) {
+        all.resize(n);
+        for (GO i = 0; i < n; ++i) all[i] = i;
+      }
+      hostMap_ = rcp(new Map(n, Teuchos::ArrayView<const GO>(all), 0, A->getComm()));
+      toHost_ = rcp(new Import(A->getRowMap(), hostMap_));
+      fromHost_ = rcp(new Import(hostMap_, A->getRowMap()));
+    }
+    factorized_ = context_->factorize(*A);
+  }
+  void uninitialize() {
+    src_ = Teuchos::null;
+    op_ = Teuchos::null;
+  }
+  RCP<const Thyra::LinearOpSourceBase<double>> source() const { return src_; }
+
+  RCP<const Thyra::VectorSpaceBase<double>> range() const override { return op_->range(); }
+  RCP<const Thyra::VectorSpaceBase<double>> domain() const override { return op_->domain(); }
+
+ protected:
+  bool opSupportedImpl(Thyra::EOpTransp t) const override { return Thyra::opSupported(*op_, t); }
+  void applyImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<double>& X,
+                 const Teuchos::Ptr<Thyra::MultiVectorBase<double>>& Y, const double alpha,
+                 const double beta) const override {
+    Thyra::apply(*op_, t, X, Y, alpha, beta);
+  }
+  bool solveSupportsImpl(Thyra::EOpTransp t) const override { return t == Thyra::NOTRANS; }
+  bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp t, const Thyra::SolveMeasureType&) const override {
+    return t == Thyra::NOTRANS;
+  }
+  Thyra::SolveStatus<double> solveImpl(const Thyra::EOpTransp, const Thyra::MultiVectorBase<double>& B,
+                                       const Teuchos::Ptr<Thyra::MultiVectorBase<double>>& X,
+                                       const Teuchos::Ptr<const Thyra::SolveCriteria<double>>) const override {
+    Thyra::SolveStatus<double> status;
+    status.solveStatus = Thyra::SOLVE_STATUS_UNCONVERGED;
+    if (!factorized_) {
+      status.message = "MUMPS factorization failed (singular or invalid matrix)";
+      return status;
+    }
+    auto b = Extract::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
+    auto x = Extract::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
+    MultiVector host(hostMap_, 1);
+    bool ok = true;
+    for (std::size_t j = 0; j < b->getNumVectors(); ++j) {
+      host.doImport(*b->getVector(j), *toHost_, Tpetra::INSERT);
+      std::vector<double> rhs;
+      {
+        auto hv = host.getData(0);
+        rhs.assign(hv.begin(), hv.end());
+      }
+      ok = context_->solve(rhs) && ok;
+      {
+        auto hv = host.getDataNonConst(0);
+        std::copy(rhs.begin(), rhs.end(), hv.begin());
+      }
+      x->getVectorNonConst(j)->doImport(host, *fromHost_, Tpetra::INSERT);
+    }
+    if (ok) {
+      status.solveStatus = Thyra::SOLVE_STATUS_CONVERGED;
+      status.achievedTol = 0.0;
+    } else {
+      status.message = "MUMPS solve failed";
+    }
+    return status;
+  }
+
+ private:
+  RCP<const Thyra::LinearOpSourceBase<double>> src_;
+  RCP<const Thyra::LinearOpBase<double>> op_;
+  std::shared_ptr<MumpsContext> context_;
+  RCP<const Map> hostMap_;
+  RCP<const Import> toHost_, fromHost_;
+  bool factorized_ = false;
+};
+
+}  // namespace
+
+MumpsLinearOpWithSolveFactory::MumpsLinearOpWithSolveFactory() = default;
+
+bool MumpsLinearOpWithSolveFactory::isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const {
+  auto op = fwdOpSrc.getOp();
+  return !Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(op), false).is_null();
+}
+
+RCP<Thyra::LinearOpWithSolveBase<double>> MumpsLinearOpWithSolveFactory::createOp() const {
+  return rcp(new MumpsLinearOpWithSolve());
+}
+
+void MumpsLinearOpWithSolveFactory::initializeOp(const RCP<const Thyra::LinearOpSourceBase<double>>& fwdOpSrc,
+                                                 Thyra::LinearOpWithSolveBase<double>* op,
+                                                 const Thyra::ESupportSolveUse) const {
+  auto params = params_.is_null() ? Teuchos::rcp(new Teuchos::ParameterList(*getValidParameters())) : params_;
+  params->validateParametersAndSetDefaults(*getValidParameters());
+  const std::string ordering = params->get<std::string>("Ordering");
+  const int orderingCode = ordering == "METIS" ? 5 : ordering == "AMD" ? 0 : ordering == "SCOTCH" ? 3 : 7;
+  dynamic_cast<MumpsLinearOpWithSolve&>(*op).initialize(fwdOpSrc, params->get<int>("Memory Relaxation Percent"),
+                                                        orderingCode, params->get<bool>("Verbose"));
+}
+
+void MumpsLinearOpWithSolveFactory::uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
+                                                   RCP<const Thyra::LinearOpSourceBase<double>>* fwdOpSrc,
+                                                   RCP<const Thyra::PreconditionerBase<double>>* prec,
+                                                   RCP<const Thyra::LinearOpSourceBase<double>>* approxFwdOpSrc,
+                                                   Thyra::ESupportSolveUse* supportSolveUse) const {
+  auto& lows = dynamic_cast<MumpsLinearOpWithSolve&>(*op);
+  if (fwdOpSrc) *fwdOpSrc = lows.source();
+  if (prec) *prec = Teuchos::null;
+  if (approxFwdOpSrc) *approxFwdOpSrc = Teuchos::null;
+  if (supportSolveUse) *supportSolveUse = Thyra::SUPPORT_SOLVE_UNSPECIFIED;
+  lows.uninitialize();
+}
+
+void MumpsLinearOpWithSolveFactory::setParameterList(const RCP<Teuchos::ParameterList>& params) {
+  params->validateParametersAndSetDefaults(*getValidParameters());
+  params_ = Teuchos::rcp(new Teuchos::ParameterList(*params));
+}
+
+RCP<Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getNonconstParameterList() { return params_; }
+
+RCP<Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::unsetParameterList() {
+  auto old = params_;
+  params_ = Teuchos::null;
+  return old;
+}
+
+RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParameters() const {
+  static RCP<Teuchos::ParameterList> valid;
+  if (valid.is_null()) {
+    valid = rcp(new Teuchos::ParameterList("MUMPS"));
+    Teuchos::setStringToIntegralParameter<int>("Ordering", "Automatic", "Fill-reducing ordering (ICNTL(7))",
+                                               Teuchos::tuple<std::string>("Automatic", "METIS", "AMD", "SCOTCH"),
+                                               valid.get());
+    valid->set("Memory Relaxation Percent", 50, "Extra workspace over MUMPS' estimate, percent (ICNTL(14)); doubled on a shortfall");
+    valid->set("Verbose", false, "Print MUMPS' own diagnostics");
+  }
+  return valid;
+}
+
+}  // namespace contessa::solvers

@@ -1,0 +1,82 @@
+#include "solvers/SolverParameters.hpp"
+
+#include "common/Error.hpp"
+#include "deck/DeckReader.hpp"
+#include "deck/ParameterValidation.hpp"
+
+namespace contessa::solvers {
+
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+std::vector<std::string> stepSizeMethods() { return {"Constant", "Adaptive"}; }
+
+RCP<const ParameterList> piroValidParameters() {
+  auto piro = rcp(new ParameterList("Piro"));
+  auto& nox = piro->sublist("NOX", false, "Newton solver (NOX parameter names)");
+  deck::setChoice(nox, "Nonlinear Solver", "Line Search Based", {"Line Search Based"}, "NOX solver");
+  auto& direction = nox.sublist("Direction", false, "Search direction");
+  deck::setChoice(direction, "Method", "Newton", {"Newton"}, "Full Newton with the consistent tangent");
+  auto& lineSearch = nox.sublist("Line Search", false, "Globalisation");
+  deck::setChoice(lineSearch, "Method", "Full Step", {"Full Step", "Backtrack", "Polynomial"}, "NOX line search");
+  auto& tests = nox.sublist("Status Tests", false, "Newton convergence: converged when either residual test holds");
+  deck::setPositiveInt(tests, "Maximum Iterations", 25, "Newton iterations before the increment counts as failed");
+  deck::setNonNegative(tests, "Relative Residual Tolerance", 1e-10,
+                       "Converged when ||f|| <= tol * ||f|| at the increment's first iterate");
+  deck::setNonNegative(tests, "Absolute Residual Tolerance", 1e-8, "Converged when ||f|| <= tol (2-norm)");
+  auto& printing = nox.sublist("Printing", false, "Solver output");
+  printing.set("Newton Details", false, "Print NOX's own per-iteration output besides the increment table");
+
+  auto& loca = piro->sublist("LOCA", false, "Continuation in the load factor (LOCA parameter names)");
+  auto& stepper = loca.sublist("Stepper", false, "Natural continuation in the load factor λ");
+  stepper.set("Initial Value", 0.0, "λ at the start");
+  stepper.set("Max Value", 1.0, "λ at the end: the run succeeds when it gets there");
+  stepper.set("Min Value", 0.0, "Lower bound of λ");
+  deck::setPositiveInt(stepper, "Max Steps", 1000, "Maximum continuation steps (converged and failed)");
+  deck::setPositiveInt(stepper, "Max Nonlinear Iterations", 25, "Newton iterations the step-size strategies aim at");
+  auto& predictor = loca.sublist("Predictor", false, "Initial guess of each increment");
+  deck::setChoice(predictor, "Method", "Tangent", {"Constant", "Secant", "Tangent"},
+                  "Constant: previous solution; Tangent: dx/dλ from the Jacobian");
+  auto& step = loca.sublist("Step Size", false, "Increment control");
+  deck::setChoice(step, "Method", "Constant", stepSizeMethods(),
+                  "Constant: fixed Δλ, cut back on failure; Adaptive: LOCA's iteration-count control");
+  deck::setPositive(step, "Initial Step Size", 0.1, "Δλ of the first increment");
+  deck::setPositive(step, "Min Step Size", 1e-6, "Smallest Δλ before the run gives up");
+  deck::setPositive(step, "Max Step Size", 1.0, "Largest Δλ");
+  deck::setBounded(step, "Failed Step Reduction Factor", 0.5, 1e-3, 0.999, "Δλ multiplier after a failed increment");
+  deck::setBounded(step, "Successful Step Increase Factor", 1.26, 1.0, 100.0,
+                   "Δλ multiplier after a successful increment (Constant recovers towards the initial step)");
+  deck::setBounded(step, "Aggressiveness", 0.5, 0.0, 1.0, "Adaptive only: how fast Δλ grows after easy increments");
+
+  piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' added by Contessa)");
+  return piro;
+}
+
+void validatePiro(ParameterList& piro, int numRanks) {
+  deck::validateAndSetDefaults(piro, *piroValidParameters(), "Piro", {"Stratimikos"});
+  const auto& step = piro.sublist("LOCA").sublist("Step Size");
+  requireInput(step.get<double>("Min Step Size") <= step.get<double>("Initial Step Size") &&
+                   step.get<double>("Initial Step Size") <= step.get<double>("Max Step Size"),
+               "Piro/LOCA/Step Size: expected Min Step Size <= Initial Step Size <= Max Step Size");
+  const auto& stepper = piro.sublist("LOCA").sublist("Stepper");
+  requireInput(stepper.get<double>("Max Value") > stepper.get<double>("Initial Value"),
+               "Piro/LOCA/Stepper/Max Value: expected a value greater than Initial Value");
+
+  // Stratimikos checks its own names; two solvers of this Trilinos build are refused here.
+  auto& strat = piro.sublist("Stratimikos");
+  if (!strat.isParameter("Linear Solver Type")) strat.set("Linear Solver Type", std::string("MUMPS"));
+  const std::string type = strat.get<std::string>("Linear Solver Type");
+  if (type == "Amesos2") {
+    std::string solver = "KLU2";
+    if (strat.isSublist("Linear Solver Types") && strat.sublist("Linear Solver Types").isSublist("Amesos2"))
+      solver = strat.sublist("Linear Solver Types").sublist("Amesos2").get<std::string>("Solver Type", "KLU2");
+    requireInput(solver != "Tacho" && solver != "tacho",
+                 "Piro/Stratimikos/Linear Solver Types/Amesos2/Solver Type: Tacho crashes in this Trilinos build; use MUMPS");
+    requireInput(numRanks == 1,
+                 "Piro/Stratimikos/Linear Solver Type: Amesos2 (" + solver + ") gives wrong solutions on more than one MPI "
+                 "rank in this Trilinos build; use MUMPS or Belos");
+  }
+}
+
+}  // namespace contessa::solvers

@@ -1,0 +1,23 @@
+#pragma once
+// The deck's "Piro" part: which parameters Contessa accepts for NOX, LOCA and Stratimikos, with
+// docs and defaults (names follow NOX/LOCA/Albany decks, so these lists pass through unchanged).
+// Light on headers: only Teuchos, so the deck reference and validation do not pull in the solvers.
+#include <set>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace contessa::solvers {
+
+/// Step-size strategies known to LOCA or registered by Contessa's LOCA factory.
+std::vector<std::string> stepSizeMethods();
+
+/// The valid "Piro" list without the Stratimikos part (Stratimikos validates its own sublist).
+Teuchos::RCP<const Teuchos::ParameterList> piroValidParameters();
+
+/// Validates the deck's "Piro" list in place (defaults filled in); `numRanks` rejects solvers that
+/// are wrong in parallel in this Trilinos build. Throws InputError naming the deck path.
+void validatePiro(Teuchos::ParameterList& piro, int numRanks);
+
+}  // namespace contessa::solvers

@@ -1,0 +1,242 @@
+// Coulomb return mapping (eq. 17–23), the penalty normal law (eq. 16) and the committed/trial history.
+#include "contact/ContactHistory.hpp"
+#include "contact/ContactLawParameters.hpp"
+#include "contact/CoulombReturnMapping.hpp"
+#include "contact/HistoryTransfer2D.hpp"
+#include "contact/PenaltyNormalLaw.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cc = contessa::contact;
+using cc::ContactStatus;
+using cc::Vector;
+
+namespace {
+
+cc::ReturnMappingInput<1> input1(double committed, double slip, double a11, double tN) {
+  cc::ReturnMappingInput<1> in;
+  in.committedTraction = {committed};
+  in.slipIncrement = {slip};
+  in.metric(0, 0) = a11;
+  in.normalTraction = tN;
+  return in;
+}
+
+/// ‖t‖ = √(t_α ā^αβ t_β), eq. (19)
+template <int NXi>
+double tractionNorm(const Vector<NXi>& t, const cc::Matrix<NXi, NXi>& metric) {
+  return std::sqrt(cc::dot(t, cc::multiply(cc::inverse(metric), t)));
+}
+
+}  // namespace
+
+TEST(PenaltyNormalLaw, ActiveOnlyWhenPenetrating) {
+  const cc::PenaltyNormalLaw law(1e3);
+  EXPECT_DOUBLE_EQ(law.traction(-0.01), -10.0);  // eq. (16), compressive
+  EXPECT_DOUBLE_EQ(law.tractionDerivative(-0.01), 1e3);
+  EXPECT_DOUBLE_EQ(law.traction(0.01), 0.0);
+  EXPECT_DOUBLE_EQ(law.tractionDerivative(0.01), 0.0);
+  EXPECT_FALSE(law.isActive(0.0));
+  EXPECT_THROW(cc::PenaltyNormalLaw(0.0), contessa::InputError);
+}
+
+TEST(ContactLawParameters, ValidationNamesTheParameter) {
+  EXPECT_NO_THROW((cc::ContactLawParameters{1e3, 0.0, 0.0}.validate()));
+  EXPECT_THROW((cc::ContactLawParameters{-1.0, 1.0, 0.1}.validate()), contessa::InputError);
+  EXPECT_THROW((cc::ContactLawParameters{1e3, 1.0, -0.1}.validate()), contessa::InputError);
+  try {
+    cc::ContactLawParameters{1e3, 0.0, 0.3}.validate();
+    FAIL() << "mu > 0 with epsilon_T = 0 must be rejected";
+  } catch (const contessa::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("epsilon_T"), std::string::npos);
+  }
+}
+
+TEST(CoulombReturnMapping, SticksBelowTheCoulombLimit) {
+  const cc::CoulombReturnMapping<1> map(100.0, 0.3);
+  // ā_11 = 4 (segment of length 4): t^trial = 0 + 100·4·0.01 = 4, ‖t^trial‖ = 4/2 = 2 < 0.3·100.
+  const auto r = map.map(input1(0.0, 0.01, 4.0, -100.0));
+  EXPECT_EQ(r.status, ContactStatus::Stick);
+  EXPECT_DOUBLE_EQ(r.trialTraction[0], 4.0);  // eq. (20)
+  EXPECT_DOUBLE_EQ(r.trialNorm, 2.0);          // eq. (19)
+  EXPECT_DOUBLE_EQ(r.trialIndicator, -28.0);   // eq. (21)
+  EXPECT_DOUBLE_EQ(r.traction[0], 4.0);        // eq. (22a)
+  EXPECT_DOUBLE_EQ(r.dTraction_dSlipIncrement(0, 0), 400.0);
+}
+
+TEST(CoulombReturnMapping, SlipsAboveTheLimitWithTheCoulombTractionInTheTrialDirection) {
+  const cc::CoulombReturnMapping<1> map(100.0, 0.3);
+  for (double slip : {0.5, -0.5}) {
+    const auto r = map.map(input1(0.0, slip, 4.0, -100.0));
+    EXPECT_EQ(r.status, ContactStatus::Slip);
+    EXPECT_GT(r.trialIndicator, 0.0);
+    EXPECT_NEAR(std::abs(r.traction[0]) / 2.0, 30.0, 1e-12);           // ‖t_T‖ = μ|t_N|, eq. (22b)
+    EXPECT_EQ(std::signbit(r.traction[0]), std::signbit(r.trialTraction[0]));  // n^trial, eq. (23)
+    EXPECT_DOUBLE_EQ(r.dTraction_dTrial(0, 0), 0.0);  // eq. (27): δ − n_1 n^1 = 0 with one ξ
+  }
+}
+
+TEST(CoulombReturnMapping, SlipWithTwoSurfaceCoordinatesKeepsTheNormAndDirection) {
+  const cc::CoulombReturnMapping<2> map(50.0, 0.4);
+  cc::ReturnMappingInput<2> in;
+  in.committedTraction = {0.7, -0.2};
+  in.slipIncrement = {0.3, 0.1};
+  in.metric(0, 0) = 2.0;
+  in.metric(0, 1) = in.metric(1, 0) = 0.6;
+  in.metric(1, 1) = 1.5;
+  in.normalTraction = -20.0;
+  const auto r = map.map(in);
+  ASSERT_EQ(r.status, ContactStatus::Slip);
+  EXPECT_NEAR(tractionNorm<2>(r.traction, in.metric), 0.4 * 20.0, 1e-12);
+  // parallel to the trial traction, same sense
+  EXPECT_NEAR(r.traction[0] * r.trialTraction[1] - r.traction[1] * r.trialTraction[0], 0.0, 1e-12);
+  EXPECT_GT(cc::dot(r.traction, r.trialTraction), 0.0);
+  EXPECT_NEAR(tractionNorm<2>(r.trialDirection, in.metric), 1.0, 1e-12);
+}
+
+TEST(CoulombReturnMapping, ReversalSticksFirstThenSlipsTheOtherWay) {
+  // ā_11 = 1, ε_T = 1000, μ|t_N| = 30. History committed per increment.
+  const cc::CoulombReturnMapping<1> map(1000.0, 0.3);
+  cc::ContactHistoryStore<1> store(1);
+  auto increment = [&](double slip) {
+    const auto r = map.map(input1(store.committed(0).tangentialTraction[0], slip, 1.0, -100.0));
+    cc::ContactHistory<1> h = store.committed(0);
+    h.tangentialTraction = r.traction;
+    h.status = r.status;
+    store.setTrial(0, h);
+    store.commit();
+    return r;
+  };
+  const auto forward = increment(0.1);  // trial 100 > 30
+  EXPECT_EQ(forward.status, ContactStatus::Slip);
+  EXPECT_DOUBLE_EQ(forward.traction[0], 30.0);
+  const auto back = increment(-0.02);  // trial 30 − 20 = 10: elastic unloading, stick
+  EXPECT_EQ(back.status, ContactStatus::Stick);
+  EXPECT_DOUBLE_EQ(back.traction[0], 10.0);
+  const auto reverse = increment(-0.1);  // trial 10 − 100 = −90: slip the other way
+  EXPECT_EQ(reverse.status, ContactStatus::Slip);
+  EXPECT_DOUBLE_EQ(reverse.traction[0], -30.0);
+  EXPECT_EQ(store.committed(0).status, ContactStatus::Slip);
+}
+
+TEST(CoulombReturnMapping, FrictionlessHasNoTangentialTraction) {
+  const cc::CoulombReturnMapping<1> map(0.0, 0.0);
+  const auto r = map.map(input1(5.0, 0.7, 3.0, -100.0));
+  EXPECT_EQ(r.status, ContactStatus::Slip);
+  EXPECT_EQ(r.traction[0], 0.0);
+  EXPECT_EQ(r.dTraction_dSlipIncrement(0, 0), 0.0);
+  EXPECT_EQ(r.dTraction_dNormalTraction[0], 0.0);
+  EXPECT_EQ(r.dTraction_dMetric[0](0, 0), 0.0);
+}
+
+// The partial derivatives the element tangent is built from, against central differences.
+template <int NXi>
+void checkDerivatives(const cc::CoulombReturnMapping<NXi>& map, const cc::ReturnMappingInput<NXi>& in,
+                      ContactStatus expected) {
+  const auto r = map.map(in);
+  ASSERT_EQ(r.status, expected);
+  const double h = 1e-6;
+  for (int beta = 0; beta < NXi; ++beta) {
+    auto plus = in;
+    auto minus = in;
+    plus.slipIncrement[beta] += h;
+    minus.slipIncrement[beta] -= h;
+    const auto tp = map.map(plus).traction;
+    const auto tm = map.map(minus).traction;
+    for (int alpha = 0; alpha < NXi; ++alpha)
+      EXPECT_NEAR(r.dTraction_dSlipIncrement(alpha, beta), (tp[alpha] - tm[alpha]) / (2 * h), 1e-6 * (1 + std::abs(r.dTraction_dSlipIncrement(alpha, beta))));
+    for (int gamma = 0; gamma < NXi; ++gamma) {
+      auto mp = in;
+      auto mm = in;
+      mp.metric(beta, gamma) += h;
+      mm.metric(beta, gamma) -= h;
+      const auto sp = map.map(mp).traction;
+      const auto sm = map.map(mm).traction;
+      for (int alpha = 0; alpha < NXi; ++alpha)
+        EXPECT_NEAR(r.dTraction_dMetric[alpha](beta, gamma), (sp[alpha] - sm[alpha]) / (2 * h), 1e-6 * (1 + std::abs(r.dTraction_dMetric[alpha](beta, gamma))));
+    }
+  }
+  auto np = in;
+  auto nm = in;
+  np.normalTraction += h;
+  nm.normalTraction -= h;
+  const auto up = map.map(np).traction;
+  const auto um = map.map(nm).traction;
+  for (int alpha = 0; alpha < NXi; ++alpha)
+    EXPECT_NEAR(r.dTraction_dNormalTraction[alpha], (up[alpha] - um[alpha]) / (2 * h), 1e-6);
+}
+
+TEST(CoulombReturnMapping, LinearisationMatchesFiniteDifferences) {
+  const cc::CoulombReturnMapping<1> map1(80.0, 0.3);
+  checkDerivatives<1>(map1, input1(1.0, 0.01, 2.5, -50.0), ContactStatus::Stick);
+  checkDerivatives<1>(map1, input1(1.0, 0.4, 2.5, -50.0), ContactStatus::Slip);
+  checkDerivatives<1>(map1, input1(-3.0, -0.4, 0.7, -50.0), ContactStatus::Slip);
+
+  const cc::CoulombReturnMapping<2> map2(80.0, 0.3);
+  cc::ReturnMappingInput<2> in;
+  in.committedTraction = {1.0, -0.5};
+  in.metric(0, 0) = 2.0;
+  in.metric(0, 1) = in.metric(1, 0) = 0.4;
+  in.metric(1, 1) = 1.2;
+  in.normalTraction = -50.0;
+  in.slipIncrement = {0.01, -0.02};
+  checkDerivatives<2>(map2, in, ContactStatus::Stick);
+  in.slipIncrement = {0.3, -0.2};
+  checkDerivatives<2>(map2, in, ContactStatus::Slip);
+}
+
+TEST(ContactHistoryStore, RollbackRestoresTheCommittedStateExactly) {
+  cc::ContactHistoryStore<1> store(3);
+  cc::ContactHistory<1> h;
+  h.segment = 4;
+  h.xi = {0.123456789};
+  h.tangentialTraction = {-7.25};
+  h.status = ContactStatus::Slip;
+  h.accumulatedSlip = 0.31;
+  store.setTrial(1, h);
+  store.commit();
+  const cc::ContactHistory<1> committed = store.committed(1);
+  EXPECT_EQ(committed, h);
+
+  cc::ContactHistory<1> iterate = h;  // a Newton iterate of the next increment
+  iterate.segment = 5;
+  iterate.xi = {-0.9};
+  iterate.tangentialTraction = {3.0};
+  iterate.status = ContactStatus::Stick;
+  iterate.accumulatedSlip = 0.5;
+  store.setTrial(1, iterate);
+  store.setTrial(2, iterate);
+  EXPECT_NE(store.trial(1), store.committed(1));
+  EXPECT_EQ(store.committed(1), committed);  // trial updates never touch the committed copy
+
+  store.rollback();
+  for (std::size_t node = 0; node < store.size(); ++node) EXPECT_EQ(store.trial(node), store.committed(node));
+  EXPECT_EQ(store.trial(1), h);
+  EXPECT_EQ(store.trial(2), cc::ContactHistory<1>{});
+  EXPECT_EQ(store.trial(1).xi[0], 0.123456789);  // bit for bit
+}
+
+TEST(HistoryTransfer2D, UnrollsTheContactPointAcrossTheSharedVertex) {
+  // Counter-clockwise top of a block: segment 0 from (4,0) to (2,0) (‖ā_1‖ = 1), then segment 1 from
+  // (2,0) to (−2,0) (‖ā_1‖ = 2).
+  const cc::MasterSegment2D first{0, {0, 1}, {{{4.0, 0.0}, {2.0, 0.0}}}};
+  const cc::MasterSegment2D second{1, {1, 2}, {{{2.0, 0.0}, {-2.0, 0.0}}}};
+  cc::ContactHistory<1> h;
+  h.segment = 0;
+  h.xi = {0.5};                   // x = 2.5, 0.5 before the vertex
+  h.tangentialTraction = {3.0};   // physical 3.0/1
+  h.status = ContactStatus::Stick;
+  h.accumulatedSlip = 0.2;
+  const auto moved = cc::transferHistory2D(h, first, second);
+  EXPECT_EQ(moved.segment, 1);
+  EXPECT_NEAR(moved.xi[0], -1.25, 1e-14);  // x = 2.5 on the line of segment 1: ξ = −1 − 0.5/2
+  EXPECT_NEAR(moved.tangentialTraction[0], 6.0, 1e-14);  // same physical traction, ‖ā_1‖ = 2
+  EXPECT_EQ(moved.status, ContactStatus::Stick);
+  EXPECT_EQ(moved.accumulatedSlip, 0.2);
+  // And back.
+  const auto back = cc::transferHistory2D(moved, second, first);
+  EXPECT_NEAR(back.xi[0], 0.5, 1e-14);
+  EXPECT_NEAR(back.tangentialTraction[0], 3.0, 1e-14);
+}

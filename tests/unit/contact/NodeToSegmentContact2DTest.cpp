@@ -1,0 +1,338 @@
+// The 2D node-to-segment contact element: residual (forces) and consistent tangent against central
+// finite differences of the residual on all 6 dofs, for normal-only, stick and slip states.
+#include "contact/HistoryTransfer2D.hpp"
+#include "contact/NodeToSegmentContact2D.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace cc = contessa::contact;
+using cc::ContactStatus;
+using cc::Vector;
+using Mat6 = cc::Matrix<6, 6>;
+using Vec6 = Vector<6>;
+
+namespace {
+
+cc::NodeToSegmentGeometry2D fromDofs(const Vec6& x) {
+  return {{x[0], x[1]}, {{{x[2], x[3]}, {x[4], x[5]}}}};
+}
+
+Vec6 toDofs(const cc::NodeToSegmentGeometry2D& g) {
+  return {g.slave[0], g.slave[1], g.master[0][0], g.master[0][1], g.master[1][0], g.master[1][1]};
+}
+
+/// Central differences of the residual: K_FD(:, j) = (r(x + h e_j) − r(x − h e_j)) / 2h.
+Mat6 finiteDifferenceTangent(const cc::NodeToSegmentContact2D& element, const cc::NodeToSegmentGeometry2D& g,
+                             const cc::ContactHistory<1>& committed, double h) {
+  Mat6 k;
+  const Vec6 x = toDofs(g);
+  for (int j = 0; j < 6; ++j) {
+    Vec6 plus = x;
+    Vec6 minus = x;
+    plus[j] += h;
+    minus[j] -= h;
+    const Vec6 rp = element.evaluate(fromDofs(plus), committed.segment, committed).residual;
+    const Vec6 rm = element.evaluate(fromDofs(minus), committed.segment, committed).residual;
+    for (int i = 0; i < 6; ++i) k(i, j) = (rp[i] - rm[i]) / (2.0 * h);
+  }
+  return k;
+}
+
+double relativeDifference(const Mat6& a, const Mat6& b) {
+  Mat6 d = a;
+  cc::addScaled(d, -1.0, b);
+  return cc::frobeniusNorm(d) / cc::frobeniusNorm(b);
+}
+
+double asymmetry(const Mat6& a) {
+  Mat6 d = a;
+  cc::addScaled(d, -1.0, cc::transpose(a));
+  return cc::frobeniusNorm(d) / cc::frobeniusNorm(a);
+}
+
+cc::ContactHistory<1> inContact(int segment, double xiN, double tractionN, ContactStatus status) {
+  cc::ContactHistory<1> h;
+  h.segment = segment;
+  h.xi = {xiN};
+  h.tangentialTraction = {tractionN};
+  h.status = status;
+  return h;
+}
+
+/// Geometry with the slave node at parameter ξ on the segment x1 → x2, at signed distance g along n̄.
+cc::NodeToSegmentGeometry2D slaveAt(Vector<2> x1, Vector<2> x2, double xi, double gap) {
+  const auto p = cc::SegmentProjection2D::evaluateAt({0.0, 0.0}, {{x1, x2}}, {xi});
+  return {cc::add(p.position, cc::scaled(gap, p.normal)), {{x1, x2}}};
+}
+
+struct Configuration {
+  std::string name;
+  Vector<2> x1;
+  Vector<2> x2;
+  double xi;    // current ξ of the slave node
+  double xiN;   // committed ξ_n
+  double gap;   // current g_N (< 0: penetrating)
+};
+
+// l ≈ 2 – 3; the penetration is a few percent of the segment length, so the geometric terms
+// (∝ g_N / l and t_T / t_N) are visible at the 1e-2 level.
+const Configuration kConfigurations[] = {
+    {"middle", {1.0, 0.0}, {-1.0, 0.0}, 0.05, -0.02, -0.04},
+    {"near_end", {1.0, 0.0}, {-1.0, 0.0}, 0.95, 0.90, -0.03},
+    {"inclined_stretched", {2.3, 0.9}, {-0.5, -0.6}, -0.3, -0.38, -0.06},
+    {"large_sliding", {1.2, 0.2}, {-1.1, -0.1}, 0.7, -0.8, -0.05},
+};
+
+constexpr double kFdStep = 1e-6;
+constexpr double kFdTolerance = 1e-6;
+
+struct Case {
+  const char* law;
+  cc::ContactLawParameters parameters;
+  double committedTraction;
+  ContactStatus expected;
+};
+
+// ε_N = 1e3, ε_T = 5e2. Stick: μ large enough for every configuration; slip: μ = 0.2.
+const Case kCases[] = {
+    {"normal_only", {1e3, 0.0, 0.0}, 0.0, ContactStatus::Slip},
+    {"stick", {1e3, 5e2, 50.0}, 1.5, ContactStatus::Stick},
+    {"slip", {1e3, 5e2, 0.2}, 1.5, ContactStatus::Slip},
+};
+
+}  // namespace
+
+TEST(NodeToSegmentContact2D, ConsistentTangentMatchesCentralDifferences) {
+  double worst = 0.0;
+  for (const Case& c : kCases) {
+    const cc::NodeToSegmentContact2D element(c.parameters);
+    for (const Configuration& conf : kConfigurations) {
+      SCOPED_TRACE(std::string(c.law) + " / " + conf.name);
+      const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+      const auto committed = inContact(7, conf.xiN, c.committedTraction, ContactStatus::Stick);
+      const auto r = element.evaluate(g, 7, committed);
+      ASSERT_EQ(r.status, c.expected);
+      EXPECT_NEAR(r.projection.xi[0], conf.xi, 1e-12);
+      EXPECT_NEAR(r.projection.gap, conf.gap, 1e-12);
+      const Mat6 fd = finiteDifferenceTangent(element, g, committed, kFdStep);
+      const double error = relativeDifference(r.tangent, fd);
+      std::printf("[ FD       ] %-12s %-20s ‖K − K_FD‖/‖K_FD‖ = %.2e\n", c.law, conf.name.c_str(), error);
+      EXPECT_LT(error, kFdTolerance);
+      worst = std::max(worst, error);
+    }
+  }
+  std::printf("[ FD       ] worst relative error %.2e\n", worst);
+}
+
+TEST(NodeToSegmentContact2D, SlipTangentIsNonSymmetricLikeItsFiniteDifference) {
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2});
+  for (const Configuration& conf : kConfigurations) {
+    SCOPED_TRACE(conf.name);
+    const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+    const auto committed = inContact(7, conf.xiN, 1.5, ContactStatus::Slip);
+    const auto r = element.evaluate(g, 7, committed);
+    ASSERT_EQ(r.status, ContactStatus::Slip);
+    const Mat6 fd = finiteDifferenceTangent(element, g, committed, kFdStep);
+    EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
+    EXPECT_GT(asymmetry(r.tangent), 1e-2);  // eq. (26): −μ ε_N n_T D^1 Nᵀ is not symmetric
+    EXPECT_GT(asymmetry(fd), 1e-2);
+  }
+}
+
+TEST(NodeToSegmentContact2D, PaperMainTermsAloneMissTheGeometricTerms) {
+  // eq. (24)–(26) are the exact tangent only in the limit g_N → 0, t_T → 0; at a finite penetration the
+  // geometric terms are needed to match the derivative of the residual.
+  for (const Case& c : kCases) {
+    const cc::NodeToSegmentContact2D main(c.parameters, cc::TangentTerms::PaperMainTerms);
+    const cc::NodeToSegmentContact2D full(c.parameters);
+    const Configuration& conf = kConfigurations[2];
+    const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+    const auto committed = inContact(7, conf.xiN, c.committedTraction, ContactStatus::Stick);
+    const Mat6 fd = finiteDifferenceTangent(full, g, committed, kFdStep);
+    const auto rMain = main.evaluate(g, 7, committed);
+    EXPECT_GT(relativeDifference(rMain.tangent, fd), 1e-3) << c.law;
+    // Same residual either way: only the tangent differs.
+    const auto rFull = full.evaluate(g, 7, committed);
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(rMain.residual[i], rFull.residual[i]);
+    // The paper's stick matrix eq. (25) is symmetric, and eq. (24) alone is ε_N N Nᵀ.
+    if (c.expected == ContactStatus::Stick || c.parameters.isFrictionless()) {
+      EXPECT_LT(asymmetry(rMain.tangent), 1e-14);
+    }
+  }
+}
+
+TEST(NodeToSegmentContact2D, ContactForcePushesTheSlaveOutAndBalances) {
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.3});
+  const Configuration& conf = kConfigurations[2];
+  const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+  const auto r = element.evaluate(g, 7, inContact(7, conf.xiN, 0.0, ContactStatus::Stick));
+  const auto& n = r.projection.normal;
+  EXPECT_LT(r.normalTraction, 0.0);
+  EXPECT_NEAR(r.normalTraction, 1e3 * conf.gap, 1e-9);  // eq. (16)
+  // Normal component of the force on the slave: ε_N |g_N| along +n̄ (out of the master body).
+  EXPECT_NEAR(cc::dot(r.slaveForce(), n), 1e3 * std::abs(conf.gap), 1e-9);
+  // Friction opposes the slave's motion relative to the master (ξ − ξ_n > 0 along ā_1).
+  EXPECT_LT(cc::dot(r.slaveForce(), r.projection.covariantBasis[0]), 0.0);
+  // Balance of forces and of moments (the residual is frame indifferent): rigid translations and the
+  // rigid rotation δx = e_3 × x do no virtual work.
+  const Vec6 x = toDofs(g);
+  double fx = 0.0, fy = 0.0, moment = 0.0;
+  for (int node = 0; node < 3; ++node) {
+    fx += r.residual[2 * node];
+    fy += r.residual[2 * node + 1];
+    moment += -x[2 * node + 1] * r.residual[2 * node] + x[2 * node] * r.residual[2 * node + 1];
+  }
+  EXPECT_NEAR(fx, 0.0, 1e-10);
+  EXPECT_NEAR(fy, 0.0, 1e-10);
+  EXPECT_NEAR(moment, 0.0, 1e-10);
+}
+
+TEST(NodeToSegmentContact2D, OpenNodeHasNoForceAndFrictionlessNoTangentialForce) {
+  const cc::NodeToSegmentContact2D frictional({1e3, 5e2, 0.3});
+  const auto open = frictional.evaluate(slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.2, 0.01), 7,
+                                        inContact(7, 0.0, 2.0, ContactStatus::Stick));
+  EXPECT_EQ(open.status, ContactStatus::Open);
+  EXPECT_EQ(open.trial.status, ContactStatus::Open);
+  EXPECT_EQ(open.trial.tangentialTraction[0], 0.0);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(open.residual[i], 0.0);
+  EXPECT_EQ(cc::frobeniusNorm(open.tangent), 0.0);
+
+  const cc::NodeToSegmentContact2D frictionless({1e3, 0.0, 0.0});
+  const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.2, -0.01);
+  const auto r = frictionless.evaluate(g, 7, inContact(7, -0.5, 0.0, ContactStatus::Slip));
+  EXPECT_EQ(r.status, ContactStatus::Slip);
+  EXPECT_EQ(r.tangentialTraction, 0.0);
+  EXPECT_NEAR(r.slaveForce()[0], 0.0, 1e-12);  // horizontal segment: purely normal force
+  EXPECT_NEAR(r.slaveForce()[1], 10.0, 1e-12);
+}
+
+TEST(NodeToSegmentContact2D, FirstContactStartsStickingWithoutTraction) {
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.3});
+  const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.4, -0.01);
+  const auto r = element.evaluate(g, 3, cc::ContactHistory<1>{});  // committed: open
+  EXPECT_EQ(r.status, ContactStatus::Stick);
+  EXPECT_EQ(r.tangentialTraction, 0.0);
+  EXPECT_EQ(r.trial.segment, 3);
+  EXPECT_NEAR(r.trial.xi[0], 0.4, 1e-12);  // the stick reference point of the next increment
+  const Mat6 fd = finiteDifferenceTangent(element, g, cc::ContactHistory<1>{}, kFdStep);
+  EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
+}
+
+TEST(NodeToSegmentContact2D, TrialHistoryAccumulatesSlipAndCommitsThroughTheStore) {
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2});
+  cc::ContactHistoryStore<1> store(1);
+  store.setTrial(0, inContact(7, -0.5, 0.0, ContactStatus::Stick));
+  store.commit();
+  // ‖ā_1‖ = 1: sliding from ξ = −0.5 to 0.3 is 0.8 of arc length, eq. (7).
+  const auto r = element.evaluate(slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.3, -0.01), 7, store.committed(0));
+  EXPECT_EQ(r.status, ContactStatus::Slip);
+  EXPECT_NEAR(std::abs(r.tangentialTraction), 0.2 * 10.0, 1e-12);
+  EXPECT_NEAR(r.trial.accumulatedSlip, 0.8, 1e-12);
+  store.setTrial(0, r.trial);
+  EXPECT_EQ(store.committed(0).accumulatedSlip, 0.0);  // updated at commit only
+  store.rollback();
+  EXPECT_EQ(store.trial(0).accumulatedSlip, 0.0);
+  store.setTrial(0, r.trial);
+  store.commit();
+  EXPECT_NEAR(store.committed(0).accumulatedSlip, 0.8, 1e-12);
+  EXPECT_NEAR(store.committed(0).xi[0], 0.3, 1e-12);
+}
+
+TEST(NodeToSegmentContact2D, RejectsAHistoryLeftOnAnotherSegment) {
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2});
+  const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.3, -0.01);
+  EXPECT_THROW(element.evaluate(g, 8, inContact(7, 0.0, 0.0, ContactStatus::Stick)), std::logic_error);
+}
+
+TEST(NodeToSegmentContact2D, StickingNodeCrossingAVertexKeepsItsTraction) {
+  // Two collinear segments of different lengths vs one long segment: after transferHistory2D the
+  // physical tangential traction t_T1/‖ā_1‖ is the same as on the single segment.
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 50.0});
+  const cc::MasterSegment2D right{0, {0, 1}, {{{3.0, 0.0}, {1.0, 0.0}}}};
+  const cc::MasterSegment2D left{1, {1, 2}, {{{1.0, 0.0}, {-3.0, 0.0}}}};
+  const cc::MasterSegment2D whole{2, {0, 2}, {{{3.0, 0.0}, {-3.0, 0.0}}}};
+  // Committed: stuck at x = 1.4 with a physical traction of 0.6.
+  const auto onRight = inContact(0, 0.6, 0.6 * 1.0, ContactStatus::Stick);
+  const auto onWhole = inContact(2, -1.4 / 3.0, 0.6 * 3.0, ContactStatus::Stick);
+  const auto transferred = cc::transferHistory2D(onRight, right, left);
+  const cc::NodeToSegmentGeometry2D now{{0.9, -0.01}, left.x};  // slid across the vertex at x = 1
+  const auto a = element.evaluate(now, 1, transferred);
+  const auto b = element.evaluate({{0.9, -0.01}, whole.x}, 2, onWhole);
+  ASSERT_EQ(a.status, ContactStatus::Stick);
+  ASSERT_EQ(b.status, ContactStatus::Stick);
+  EXPECT_NEAR(a.tangentialTraction / 2.0, b.tangentialTraction / 3.0, 1e-10);
+  EXPECT_NEAR(a.slaveForce()[0], b.slaveForce()[0], 1e-10);
+  EXPECT_NEAR(a.slaveForce()[1], b.slaveForce()[1], 1e-10);
+}
+
+// ---- Newton on a tiny model: springs hold the three nodes, a force presses the slave into the segment.
+namespace {
+
+Vec6 solve(Mat6 a, Vec6 b) {  // Gaussian elimination with partial pivoting
+  for (int c = 0; c < 6; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < 6; ++r)
+      if (std::abs(a(r, c)) > std::abs(a(pivot, c))) pivot = r;
+    for (int k = 0; k < 6; ++k) std::swap(a(c, k), a(pivot, k));
+    std::swap(b[c], b[pivot]);
+    for (int r = c + 1; r < 6; ++r) {
+      const double f = a(r, c) / a(c, c);
+      for (int k = c; k < 6; ++k) a(r, k) -= f * a(c, k);
+      b[r] -= f * b[c];
+    }
+  }
+  Vec6 x{};
+  for (int r = 5; r >= 0; --r) {
+    double s = b[r];
+    for (int k = r + 1; k < 6; ++k) s -= a(r, k) * x[k];
+    x[r] = s / a(r, r);
+  }
+  return x;
+}
+
+/// Residual norms of Newton on R(x) = k (x − X) + r_c(x) − F.
+std::vector<double> newtonHistory(cc::TangentTerms terms) {
+  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2}, terms);
+  const Vec6 reference{0.3, -0.005, 1.0, 0.0, -1.0, 0.0};
+  const Vec6 force{3.0, -8.0, 0.0, 0.0, 0.0, 0.0};  // presses and drags the slave: slips
+  const double spring = 40.0;
+  const auto committed = inContact(7, 0.3, 0.0, ContactStatus::Stick);
+  Vec6 x = reference;
+  std::vector<double> norms;
+  for (int it = 0; it < 30; ++it) {
+    const auto r = element.evaluate(fromDofs(x), 7, committed);
+    Vec6 residual{};
+    Mat6 k = r.tangent;
+    for (int i = 0; i < 6; ++i) {
+      residual[i] = spring * (x[i] - reference[i]) + r.residual[i] - force[i];
+      k(i, i) += spring;
+    }
+    norms.push_back(cc::norm(residual));
+    if (norms.back() < 1e-11) break;
+    const Vec6 dx = solve(k, residual);
+    for (int i = 0; i < 6; ++i) x[i] -= dx[i];
+  }
+  return norms;
+}
+
+}  // namespace
+
+TEST(NodeToSegmentContact2D, ConsistentTangentGivesQuadraticNewtonConvergence) {
+  const auto consistent = newtonHistory(cc::TangentTerms::Consistent);
+  const auto paper = newtonHistory(cc::TangentTerms::PaperMainTerms);
+  for (double v : consistent) std::printf("[ Newton   ] consistent %.3e\n", v);
+  for (std::size_t i = 0; i < std::min<std::size_t>(paper.size(), 12); ++i)
+    std::printf("[ Newton   ] paper main terms %.3e\n", paper[i]);
+  ASSERT_LT(consistent.back(), 1e-11);
+  EXPECT_LE(consistent.size(), 8u);
+  // Quadratic: once in the asymptotic range r_{k+1} ≤ C r_k² (C ~ 1 here).
+  const std::size_t n = consistent.size();
+  ASSERT_GE(n, 3u);
+  EXPECT_LT(consistent[n - 2], 10.0 * consistent[n - 3] * consistent[n - 3] + 1e-11);
+  // The main terms alone converge only linearly: more iterations for the same tolerance.
+  EXPECT_GT(paper.size(), n + 2);
+}

@@ -1,0 +1,223 @@
+// Closest-point projection (eq. 1–5) and the local choice of the master segment of a slave node.
+#include "contact/Projection.hpp"
+#include "contact/SegmentSelector2D.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace cc = contessa::contact;
+using cc::Vector;
+
+namespace {
+
+constexpr double kTol = 1e-12;
+
+// The top side of a block that occupies y < 0, ordered counter-clockwise around the block: right to left.
+cc::SegmentProjection2D::NodeCoords topOfBlock(double xRight, double xLeft) { return {{{xRight, 0.0}, {xLeft, 0.0}}}; }
+
+}  // namespace
+
+TEST(Projection2D, SlaveAboveTheMiddleHasXiZeroAndPositiveGap) {
+  const auto p = cc::SegmentProjection2D().project({1.0, 0.3}, topOfBlock(2.0, 0.0));
+  ASSERT_TRUE(p.converged);
+  EXPECT_NEAR(p.xi[0], 0.0, kTol);
+  EXPECT_NEAR(p.gap, 0.3, kTol);
+  EXPECT_NEAR(p.position[0], 1.0, kTol);
+  EXPECT_NEAR(p.position[1], 0.0, kTol);
+  // eq. (5) in 2D: outward normal of the counter-clockwise boundary of the block (pointing to +y).
+  EXPECT_NEAR(p.normal[0], 0.0, kTol);
+  EXPECT_NEAR(p.normal[1], 1.0, kTol);
+  EXPECT_NEAR(p.metric(0, 0), 1.0, kTol);         // ā_1 = (x_2 − x_1)/2 = (−1, 0)
+  EXPECT_NEAR(p.inverseMetric(0, 0), 1.0, kTol);
+  EXPECT_NEAR(p.contravariantBasis[0][0], -1.0, kTol);
+  EXPECT_FALSE(p.isPenetrating());
+}
+
+TEST(Projection2D, SlaveBelowTheSurfaceHasNegativeGap) {
+  const auto p = cc::SegmentProjection2D().project({1.0, -0.2}, topOfBlock(2.0, 0.0));
+  EXPECT_NEAR(p.xi[0], 0.0, kTol);
+  EXPECT_NEAR(p.gap, -0.2, kTol);
+  EXPECT_TRUE(p.isPenetrating());  // eq. (6)
+}
+
+TEST(Projection2D, SlaveNearTheSegmentEnd) {
+  // x̄ = H_1 (2,0) + H_2 (0,0) = (1 − ξ, 0), so x = 0.05 is ξ = 0.95.
+  const auto p = cc::SegmentProjection2D().project({0.05, 0.1}, topOfBlock(2.0, 0.0));
+  EXPECT_NEAR(p.xi[0], 0.95, kTol);
+  EXPECT_NEAR(p.shape[0], 0.025, kTol);
+  EXPECT_NEAR(p.shape[1], 0.975, kTol);
+  EXPECT_NEAR(p.gap, 0.1, kTol);
+  EXPECT_TRUE(p.isInside(0.0));
+  const auto beyond = cc::SegmentProjection2D().project({-0.1, 0.1}, topOfBlock(2.0, 0.0));
+  EXPECT_NEAR(beyond.xi[0], 1.1, kTol);  // not clamped
+  EXPECT_FALSE(beyond.isInside(1e-8));
+}
+
+TEST(Projection2D, InclinedSegmentMatchesTheAnalyticalProjection) {
+  const Vector<2> x1{3.0, 1.5};
+  const Vector<2> x2{-1.0, -0.5};
+  const Vector<2> slave{0.4, 1.7};
+  const auto p = cc::SegmentProjection2D().project(slave, {{x1, x2}});
+  ASSERT_TRUE(p.converged);
+  // Straight segment: r(ξ) is linear in ξ, one Newton step is exact, the second only confirms it.
+  EXPECT_LE(p.iterations, 2);
+  const Vector<2> e = cc::subtract(x2, x1);
+  const double l2 = cc::dot(e, e);
+  const double xiExact = 2.0 * cc::dot(cc::subtract(slave, x1), e) / l2 - 1.0;
+  EXPECT_NEAR(p.xi[0], xiExact, kTol);
+  // eq. (1): the distance vector is orthogonal to ā_1, and its length is |g_N| (eq. 4).
+  const Vector<2> d = cc::subtract(slave, p.position);
+  EXPECT_NEAR(cc::dot(d, p.covariantBasis[0]), 0.0, kTol);
+  EXPECT_NEAR(std::abs(p.gap), cc::norm(d), kTol);
+  // n̄ = ā_1 × e_3/‖ā_1‖ = (a_y, −a_x)/‖ā_1‖: here ā_1 = (−2, −1), n̄ = (−1, 2)/√5.
+  EXPECT_NEAR(p.normal[0], -1.0 / std::sqrt(5.0), kTol);
+  EXPECT_NEAR(p.normal[1], 2.0 / std::sqrt(5.0), kTol);
+  EXPECT_GT(p.gap, 0.0);
+  EXPECT_NEAR(p.metric(0, 0), l2 / 4.0, kTol);
+}
+
+TEST(Projection2D, NormalPointsOutOfACounterClockwiseBody) {
+  // Unit square ordered counter-clockwise: a point outside each side has g_N > 0, inside g_N < 0.
+  const std::array<Vector<2>, 4> corner{{{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}};
+  const std::array<Vector<2>, 4> outside{{{0.5, -0.2}, {1.2, 0.5}, {0.5, 1.2}, {-0.2, 0.5}}};
+  for (int side = 0; side < 4; ++side) {
+    const cc::SegmentProjection2D::NodeCoords segment{{corner[side], corner[(side + 1) % 4]}};
+    EXPECT_NEAR(cc::SegmentProjection2D().project(outside[side], segment).gap, 0.2, kTol) << "side " << side;
+    EXPECT_NEAR(cc::SegmentProjection2D().project({0.5, 0.5}, segment).gap, -0.5, kTol) << "side " << side;
+  }
+}
+
+TEST(Projection3D, WarpedQuadFaceConvergesInAFewNewtonIterations) {
+  // Counter-clockwise seen from +z: n̄ = ā_1 × ā_2 (eq. 5) points to +z.
+  const cc::FaceProjection3D::NodeCoords face{{{0.0, 0.0, 0.0}, {2.0, 0.1, 0.4}, {2.2, 2.0, -0.1}, {-0.1, 1.9, 0.3}}};
+  const Vector<3> slave{0.7, 1.3, 0.9};
+  const auto p = cc::FaceProjection3D().project(slave, face);
+  ASSERT_TRUE(p.converged);
+  EXPECT_LE(p.iterations, 6);
+  EXPECT_TRUE(p.isInside(0.0));
+  const Vector<3> d = cc::subtract(slave, p.position);
+  for (int alpha = 0; alpha < 2; ++alpha) EXPECT_NEAR(cc::dot(d, p.covariantBasis[alpha]), 0.0, 1e-12);  // eq. (1)
+  EXPECT_NEAR(std::abs(p.gap), cc::norm(d), 1e-12);  // d ∥ n̄
+  EXPECT_GT(p.gap, 0.0);
+  EXPECT_GT(p.normal[2], 0.0);
+  // ā^α · ā_β = δ^α_β
+  for (int alpha = 0; alpha < 2; ++alpha)
+    for (int beta = 0; beta < 2; ++beta)
+      EXPECT_NEAR(cc::dot(p.contravariantBasis[alpha], p.covariantBasis[beta]), alpha == beta ? 1.0 : 0.0, 1e-12);
+  // It is the closest point: no point of a fine grid on the face is closer.
+  double closest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 200; ++i)
+    for (int j = 0; j <= 200; ++j) {
+      const auto q = cc::FaceProjection3D::evaluateAt(slave, face, {-1.0 + 0.01 * i, -1.0 + 0.01 * j});
+      closest = std::min(closest, cc::norm(cc::subtract(slave, q.position)));
+    }
+  EXPECT_LE(cc::norm(d), closest + 1e-14);
+  EXPECT_GT(cc::norm(d), closest - 1e-3);
+}
+
+// ---- Segment selection --------------------------------------------------------------------------------
+
+namespace {
+
+cc::MasterSegment2D segment(int id, int node1, int node2, Vector<2> x1, Vector<2> x2) {
+  return {id, {node1, node2}, {x1, x2}};
+}
+
+}  // namespace
+
+TEST(SegmentSelector2D, NodeSlidesFromOneSegmentToTheNext) {
+  // Top of a block, counter-clockwise: nodes 0 (2, 0.1) → 1 (0, 0) → 2 (−2, 0), a slight convex kink.
+  const std::vector<cc::MasterSegment2D> candidates{segment(10, 0, 1, {2.0, 0.1}, {0.0, 0.0}),
+                                                    segment(11, 1, 2, {0.0, 0.0}, {-2.0, 0.0})};
+  const cc::SegmentSelector2D selector;
+  double previousGap = std::numeric_limits<double>::quiet_NaN();
+  int switches = 0;
+  int previousSegment = 10;
+  for (int step = 0; step <= 100; ++step) {
+    const double x = 0.5 - 0.01 * step;  // the node slides right to left across the vertex at x = 0
+    const auto s = selector.select({x, -0.01}, candidates);
+    ASSERT_NE(s.kind, cc::SelectionKind::None) << "x = " << x;
+    EXPECT_TRUE(s.isPenetrating()) << "x = " << x;
+    if (s.segment != previousSegment) {
+      ++switches;
+      EXPECT_LE(x, 1e-3) << "switched too early";  // the projection leaves segment 10 only past the vertex region
+    }
+    previousSegment = s.segment;
+    if (!std::isnan(previousGap)) {
+      EXPECT_NEAR(s.gap, previousGap, 2e-3) << "gap jumps at x = " << x;
+    }
+    previousGap = s.gap;
+  }
+  EXPECT_EQ(switches, 1);
+  EXPECT_EQ(previousSegment, 11);
+  // Exactly on the left segment far from the vertex: ξ inside, g_N = −0.01.
+  const auto left = selector.select({-1.0, -0.01}, candidates);
+  EXPECT_EQ(left.kind, cc::SelectionKind::OnSegment);
+  EXPECT_EQ(left.segment, 11);
+  EXPECT_NEAR(left.gap, -0.01, kTol);
+}
+
+TEST(SegmentSelector2D, ConvexCornerUsesTheClosestVertex) {
+  // Block [−2, 0]², counter-clockwise: right side node 1 (0,−2) → node 2 (0,0), top node 2 → node 3 (−2, 0).
+  const std::vector<cc::MasterSegment2D> candidates{segment(0, 1, 2, {0.0, -2.0}, {0.0, 0.0}),
+                                                    segment(1, 2, 3, {0.0, 0.0}, {-2.0, 0.0})};
+  const cc::SegmentSelector2D selector;
+  // Outside the corner: both projections fall outside their segments.
+  const auto outside = selector.select({0.3, 0.4}, candidates);
+  ASSERT_EQ(outside.kind, cc::SelectionKind::AtVertex);
+  EXPECT_EQ(outside.vertexNode, 2);
+  EXPECT_NEAR(outside.gap, 0.5, kTol);
+  EXPECT_NEAR(outside.normal[0], 0.6, kTol);
+  EXPECT_NEAR(outside.normal[1], 0.8, kTol);
+  EXPECT_FALSE(outside.isPenetrating());
+  // Penetrating near the corner: inside both, the smaller |g_N| (right side) pushes out the shortest way.
+  const auto inside = selector.select({-0.1, -0.3}, candidates);
+  ASSERT_EQ(inside.kind, cc::SelectionKind::OnSegment);
+  EXPECT_EQ(inside.segment, 0);
+  EXPECT_NEAR(inside.gap, -0.1, kTol);
+  EXPECT_NEAR(inside.normal[0], 1.0, kTol);
+}
+
+TEST(SegmentSelector2D, ConcaveCornerTakesTheSmallerGap) {
+  // Valley: body below the polyline (2,2) → (0,0) → (−2,2), ordered counter-clockwise (right to left).
+  const std::vector<cc::MasterSegment2D> candidates{segment(0, 0, 1, {2.0, 2.0}, {0.0, 0.0}),
+                                                    segment(1, 1, 2, {0.0, 0.0}, {-2.0, 2.0})};
+  const cc::SegmentSelector2D selector;
+  // Above the valley the node projects inside both arms: the nearer arm wins.
+  const auto above = selector.select({0.1, 0.5}, candidates);
+  ASSERT_EQ(above.kind, cc::SelectionKind::OnSegment);
+  EXPECT_EQ(above.segment, 0);
+  EXPECT_NEAR(above.gap, 0.4 / std::sqrt(2.0), kTol);
+  const auto mirrored = selector.select({-0.1, 0.5}, candidates);
+  EXPECT_EQ(mirrored.segment, 1);
+  EXPECT_NEAR(mirrored.gap, 0.4 / std::sqrt(2.0), kTol);
+  // Penetrating under the valley vertex: projections outside both arms, contact with the vertex,
+  // a negative gap and a normal that points up, out of the master body.
+  const auto under = selector.select({0.05, -0.2}, candidates);
+  ASSERT_EQ(under.kind, cc::SelectionKind::AtVertex);
+  EXPECT_EQ(under.vertexNode, 1);
+  EXPECT_NEAR(under.gap, -std::hypot(0.05, 0.2), kTol);
+  EXPECT_GT(under.normal[1], 0.9);
+  EXPECT_TRUE(under.isPenetrating());
+  EXPECT_EQ(under.segment, 0);  // the arm whose projection overshoots least (ξ = 1.075 vs −1.125)
+}
+
+TEST(SegmentSelector2D, NodeLeavingTheMasterSurfaceIsNotInContact) {
+  // Free end at node 2 (−2, 0): beyond it there is no master surface.
+  const std::vector<cc::MasterSegment2D> candidates{segment(0, 0, 1, {2.0, 0.0}, {0.0, 0.0}),
+                                                    segment(1, 1, 2, {0.0, 0.0}, {-2.0, 0.0})};
+  const cc::SegmentSelector2D selector;
+  const auto gone = selector.select({-2.3, -0.01}, candidates);
+  EXPECT_EQ(gone.kind, cc::SelectionKind::None);
+  EXPECT_FALSE(gone.isPenetrating());
+  EXPECT_EQ(gone.segment, -1);
+  // Within the tolerance at the free end it is still on the segment.
+  const auto atEnd = selector.select({-2.0 - 1e-10, -0.01}, candidates);
+  EXPECT_EQ(atEnd.kind, cc::SelectionKind::OnSegment);
+  EXPECT_EQ(atEnd.segment, 1);
+  EXPECT_TRUE(atEnd.isPenetrating());
+  // No candidates at all.
+  EXPECT_EQ(selector.select({0.0, 0.0}, {}).kind, cc::SelectionKind::None);
+}

@@ -1,0 +1,239 @@
+// Deck validation: every kind of bad input gives a one-line InputError naming the deck parameter.
+#include <gtest/gtest.h>
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
+
+#include "common/Error.hpp"
+#include "deck/DeckReader.hpp"
+#include "deck/ParameterValidation.hpp"
+#include "deck/ProblemDefinition.hpp"
+#include "solvers/SolverParameters.hpp"
+
+namespace {
+
+using contessa::InputError;
+using Teuchos::ParameterList;
+
+// A small valid Problem list; tests break one thing at a time.
+Teuchos::RCP<ParameterList> goodProblem() {
+  return Teuchos::getParametersFromXmlString(R"XML(
+<ParameterList name="Problem">
+  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="Rectangle"/>
+    <Parameter name="Length X" type="double" value="2.0"/>
+    <Parameter name="Elements X" type="int" value="2"/>
+  </ParameterList>
+  <ParameterList name="Blocks">
+    <ParameterList name="block_1">
+      <Parameter name="Element" type="string" value="Q4 Enhanced"/>
+      <Parameter name="Material" type="string" value="steel"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Materials">
+    <ParameterList name="steel">
+      <Parameter name="Model" type="string" value="Neo-Hookean"/>
+      <Parameter name="Young's Modulus" type="double" value="200.0"/>
+      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Dirichlet Conditions">
+    <ParameterList name="fix">
+      <Parameter name="Node Set" type="string" value="left"/>
+      <Parameter name="Component" type="string" value="x"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Output">
+    <Parameter name="Reaction Node Sets" type="Array(string)" value="{left}"/>
+  </ParameterList>
+</ParameterList>)XML");
+}
+
+// Expects buildProblem to throw an InputError whose one-line message contains `expected`.
+void expectProblemError(ParameterList& problem, const std::string& expected) {
+  try {
+    contessa::deck::buildProblem(problem, "");
+    FAIL() << "no error; expected: " << expected;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(expected), std::string::npos) << "message: " << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
+  }
+}
+
+TEST(DeckValidation, GoodDeckBuildsAndFillsDefaults) {
+  auto p = goodProblem();
+  const auto def = contessa::deck::buildProblem(*p, "");
+  EXPECT_EQ(def.mesh.numElements(), 2);
+  ASSERT_EQ(def.blocks.size(), 1u);
+  EXPECT_EQ(def.blocks[0].elementName, "Q4 Enhanced");
+  EXPECT_EQ(def.dirichlet.size(), 1u);
+  EXPECT_DOUBLE_EQ(def.dirichlet[0].value, 0.0);  // the published default
+  EXPECT_DOUBLE_EQ(p->sublist("Mesh").get<double>("Length Y"), 1.0);
+  EXPECT_EQ(def.reactionNodeSets, std::vector<std::string>{"left"});
+}
+
+TEST(DeckValidation, UnknownNameListsTheValidOnes) {
+  auto p = goodProblem();
+  p->sublist("Mesh").set("Lenght X", 3.0);
+  expectProblemError(*p, "Problem/Mesh/Lenght X: unknown parameter (expected one of: Type, X Origin");
+}
+
+TEST(DeckValidation, WrongTypeIsNamed) {
+  auto p = goodProblem();
+  p->sublist("Mesh").set("Elements X", std::string("two"));
+  expectProblemError(*p, "Problem/Mesh/Elements X: expected type int, got string 'two'");
+}
+
+TEST(DeckValidation, ValueOutOfRangeIsNamed) {
+  auto p = goodProblem();
+  p->sublist("Mesh").set("Length X", -1.0);
+  expectProblemError(*p, "Problem/Mesh/Length X: expected a value in [");
+}
+
+TEST(DeckValidation, ChoiceOutsideTheListIsNamed) {
+  auto p = goodProblem();
+  p->sublist("Blocks").sublist("block_1").set("Element", std::string("Q8"));
+  expectProblemError(*p, "Problem/Blocks/block_1/Element: expected one of Q4");
+}
+
+TEST(DeckValidation, MissingMeshFileIsNamed) {
+  auto p = goodProblem();
+  auto& mesh = p->sublist("Mesh");
+  mesh.set("Type", std::string("Exodus File"));
+  mesh.remove("Length X");
+  mesh.remove("Elements X");
+  mesh.set("File Name", std::string("no_such_mesh.exo"));
+  expectProblemError(*p, "Problem/Mesh/File Name: mesh file 'no_such_mesh.exo' does not exist");
+}
+
+TEST(DeckValidation, UnknownNodeSetListsTheKnownOnes) {
+  auto p = goodProblem();
+  p->sublist("Dirichlet Conditions").sublist("fix").set("Node Set", std::string("lefft"));
+  expectProblemError(*p, "Problem/Dirichlet Conditions/fix/Node Set: node set 'lefft' does not exist in the mesh (known:");
+}
+
+TEST(DeckValidation, UnknownReactionNodeSet) {
+  auto p = goodProblem();
+  p->sublist("Output").set("Reaction Node Sets", Teuchos::Array<std::string>(1, "topp"));
+  expectProblemError(*p, "Problem/Output/Reaction Node Sets: node set 'topp' does not exist");
+}
+
+TEST(DeckValidation, BlockThatIsNotInTheMesh) {
+  auto p = goodProblem();
+  p->sublist("Blocks").sublist("block_2") = p->sublist("Blocks").sublist("block_1");
+  expectProblemError(*p, "Problem/Blocks/block_2: element block 'block_2' does not exist in the mesh");
+}
+
+TEST(DeckValidation, MeshBlockWithoutPhysics) {
+  auto p = goodProblem();
+  p->sublist("Mesh").set("Block Name", std::string("plate"));
+  expectProblemError(*p, "Problem/Blocks/block_1: element block 'block_1' does not exist");
+}
+
+TEST(DeckValidation, UnknownMaterialModelListsTheKnownOnes) {
+  auto p = goodProblem();
+  p->sublist("Materials").sublist("steel").set("Model", std::string("Mooney"));
+  expectProblemError(*p, "Problem/Materials/steel/Model: expected one of Saint Venant-Kirchhoff, Neo-Hookean, Linear Elastic; got 'Mooney'");
+}
+
+TEST(DeckValidation, MaterialReferenceMustExist) {
+  auto p = goodProblem();
+  p->sublist("Blocks").sublist("block_1").set("Material", std::string("stel"));
+  expectProblemError(*p, "Problem/Blocks/block_1/Material: 'stel' is not a sublist of Problem/Materials (known: steel)");
+}
+
+TEST(DeckValidation, PoissonRatioOutOfRange) {
+  auto p = goodProblem();
+  p->sublist("Materials").sublist("steel").set("Poisson's Ratio", 0.5);
+  expectProblemError(*p, "Problem/Materials/steel/Poisson's Ratio");
+}
+
+TEST(DeckValidation, ComponentZInTwoDimensions) {
+  auto p = goodProblem();
+  p->sublist("Dirichlet Conditions").sublist("fix").set("Component", std::string("z"));
+  expectProblemError(*p, "Problem/Dirichlet Conditions/fix/Component: component 'z' is not valid in 2D");
+}
+
+TEST(DeckValidation, IntegerGivenForARealIsAccepted) {
+  auto p = goodProblem();
+  p->sublist("Mesh").set("Length X", 3);
+  const auto def = contessa::deck::buildProblem(*p, "");
+  EXPECT_DOUBLE_EQ(p->sublist("Mesh").get<double>("Length X"), 3.0);
+}
+
+TEST(DeckOverrides, ExistingParameterKeepsItsType) {
+  auto p = goodProblem();
+  ParameterList deck("deck");
+  deck.sublist("Problem") = *p;
+  const auto paths = contessa::deck::applyOverrides(deck, {"Problem/Mesh/Elements X=5"});
+  EXPECT_EQ(paths.count("Problem/Mesh/Elements X"), 1u);
+  EXPECT_EQ(deck.sublist("Problem").sublist("Mesh").get<int>("Elements X"), 5);
+  EXPECT_THROW(contessa::deck::applyOverrides(deck, {"Problem/Mesh/Elements X=five"}), InputError);
+}
+
+TEST(DeckOverrides, NewParameterIsTypedByValidation) {
+  auto p = goodProblem();
+  contessa::deck::applyOverrides(*p, {"Mesh/Elements Y=3", "Mesh/Length Y=0.5"});
+  const auto def = contessa::deck::buildProblem(*p, "");
+  EXPECT_EQ(def.mesh.numElements(), 6);
+  EXPECT_DOUBLE_EQ(p->sublist("Mesh").get<double>("Length Y"), 0.5);
+}
+
+TEST(DeckOverrides, MalformedOverrides) {
+  ParameterList deck("deck");
+  EXPECT_THROW(contessa::deck::applyOverrides(deck, {"Problem/Mesh"}), InputError);  // no '='
+  EXPECT_THROW(contessa::deck::applyOverrides(deck, {"=3"}), InputError);
+  deck.sublist("A").set("b", 1.0);
+  EXPECT_THROW(contessa::deck::applyOverrides(deck, {"A/b/c=1"}), InputError);  // through a parameter
+  EXPECT_THROW(contessa::deck::applyOverrides(deck, {"A=1"}), InputError);      // a sublist
+}
+
+TEST(DeckOverrides, TextThatDoesNotParseIsATypeError) {
+  auto p = goodProblem();
+  contessa::deck::applyOverrides(*p, {"Mesh/Elements Y=many"});
+  expectProblemError(*p, "Problem/Mesh/Elements Y: expected type int, got string 'many'");
+}
+
+void expectPiroError(ParameterList& piro, int ranks, const std::string& expected) {
+  try {
+    contessa::solvers::validatePiro(piro, ranks);
+    FAIL() << "no error; expected: " << expected;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << "message: " << e.what();
+  }
+}
+
+TEST(PiroValidation, DefaultsAndMumpsByDefault) {
+  ParameterList piro("Piro");
+  contessa::solvers::validatePiro(piro, 2);
+  EXPECT_EQ(piro.sublist("Stratimikos").get<std::string>("Linear Solver Type"), "MUMPS");
+  EXPECT_EQ(piro.sublist("LOCA").sublist("Step Size").get<std::string>("Method"), "Constant");
+  EXPECT_EQ(piro.sublist("NOX").sublist("Status Tests").get<int>("Maximum Iterations"), 25);
+}
+
+TEST(PiroValidation, UnknownStepSizeMethod) {
+  ParameterList piro("Piro");
+  piro.sublist("LOCA").sublist("Step Size").set("Method", std::string("Bisection"));
+  expectPiroError(piro, 1, "Piro/LOCA/Step Size/Method: expected one of Constant, Adaptive; got 'Bisection'");
+}
+
+TEST(PiroValidation, StepSizesMustBeOrdered) {
+  ParameterList piro("Piro");
+  piro.sublist("LOCA").sublist("Step Size").set("Initial Step Size", 2.0);
+  expectPiroError(piro, 1, "Piro/LOCA/Step Size: expected Min Step Size <= Initial Step Size <= Max Step Size");
+}
+
+TEST(PiroValidation, Klu2IsRefusedOnSeveralRanks) {
+  ParameterList piro("Piro");
+  piro.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
+  EXPECT_NO_THROW(contessa::solvers::validatePiro(piro, 1));
+  expectPiroError(piro, 2, "gives wrong solutions on more than one MPI rank");
+}
+
+TEST(PiroValidation, MistypedNoxParameter) {
+  ParameterList piro("Piro");
+  piro.sublist("NOX").sublist("Status Tests").set("Max Iterations", 10);
+  expectPiroError(piro, 1, "Piro/NOX/Status Tests/Max Iterations: unknown parameter (expected one of: Maximum Iterations");
+}
+
+}  // namespace

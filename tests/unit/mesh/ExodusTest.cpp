@@ -1,0 +1,265 @@
+#include <gtest/gtest.h>
+
+#include <exodusII.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include "common/Error.hpp"
+#include "io/ExodusResults.hpp"
+#include "io/ExodusWriter.hpp"
+#include "mesh/ExodusMeshReader.hpp"
+#include "mesh/Generators.hpp"
+
+using namespace contessa;
+using namespace contessa::mesh;
+using contessa::io::ExodusFields;
+using contessa::io::ExodusResults;
+using contessa::io::ExodusWriter;
+
+namespace {
+
+// One file per test and process: ctest may run the tests of this executable in parallel.
+std::string tempPath(const std::string& stem) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "contessa_" + info->name() + "_" + stem + "_" + std::to_string(getpid()) + ".exo";
+}
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<no InputError>";
+}
+
+void expectSameMesh(const Mesh& a, const Mesh& b) {
+  EXPECT_EQ(a.dimension, b.dimension);
+  ASSERT_EQ(a.coordinates.size(), b.coordinates.size());
+  for (size_t k = 0; k < a.coordinates.size(); ++k) EXPECT_DOUBLE_EQ(a.coordinates[k], b.coordinates[k]) << k;
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (size_t k = 0; k < a.blocks.size(); ++k) {
+    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
+    EXPECT_EQ(a.blocks[k].cellType, b.blocks[k].cellType);
+    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements);
+    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity);
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (size_t k = 0; k < a.nodeSets.size(); ++k) {
+    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
+    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes);
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (size_t k = 0; k < a.sideSets.size(); ++k) {
+    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
+    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements);
+    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides);
+  }
+}
+
+// Distinct, step-dependent values so that a mix-up of steps, variables or entities shows.
+double value(int step, int variable, GlobalIndex entity) { return 1000.0 * step + 100.0 * variable + 0.001 * entity + 0.1; }
+
+}  // namespace
+
+TEST(ExodusRoundTrip, AnnulusSectorMeshAndResults) {
+  AnnulusSectorSpec spec;
+  spec.innerRadius = 50;
+  spec.thickness = 5;
+  spec.startAngleDeg = 10;
+  spec.endAngleDeg = 100;
+  spec.elementsThroughThickness = 3;
+  spec.elementsAroundArc = 8;
+  spec.blockName = "ring";
+  const Mesh mesh = generateAnnulusSector(spec);
+  const std::string path = tempPath("annulus");
+
+  ExodusFields fields;
+  fields.nodal = {"displ_x", "displ_y", "contact_pressure"};
+  fields.element = {"stress_xx", "von_mises"};
+  fields.global = {"load_factor", "step_size"};
+  const double times[3] = {0.25, 0.5, 1.0};
+  {
+    ExodusWriter writer(path, mesh, fields);
+    EXPECT_EQ(writer.path(), path);
+    for (int step = 0; step < 3; ++step) {
+      std::vector<std::vector<double>> nodal(3, std::vector<double>(mesh.numNodes()));
+      std::vector<std::vector<double>> element(2, std::vector<double>(mesh.numElements()));
+      for (int v = 0; v < 3; ++v)
+        for (GlobalIndex n = 0; n < mesh.numNodes(); ++n) nodal[v][n] = value(step, v, n);
+      for (int v = 0; v < 2; ++v)
+        for (GlobalIndex e = 0; e < mesh.numElements(); ++e) element[v][e] = -value(step, v, e);
+      writer.writeStep(times[step], nodal, element, {times[step], 0.25 * (step + 1)});
+      EXPECT_EQ(writer.stepsWritten(), step + 1);
+    }
+  }
+
+  // netCDF-4 files are HDF5 files: they start with the HDF5 signature.
+  std::ifstream raw(path, std::ios::binary);
+  char signature[4] = {};
+  raw.read(signature, 4);
+  EXPECT_EQ(std::string(signature, 4), "\x89HDF");
+
+  expectSameMesh(readExodusMesh(path), mesh);
+
+  const ExodusResults results(path);
+  EXPECT_EQ(results.numSteps(), 3);
+  EXPECT_EQ(results.times(), (std::vector<double>{0.25, 0.5, 1.0}));
+  EXPECT_EQ(results.nodalNames(), fields.nodal);
+  EXPECT_EQ(results.elementNames(), fields.element);
+  EXPECT_EQ(results.globalNames(), fields.global);
+  for (int step = 0; step < 3; ++step) {
+    for (int v = 0; v < 3; ++v) {
+      const auto values = results.nodal(fields.nodal[v], step);
+      ASSERT_EQ(values.size(), static_cast<size_t>(mesh.numNodes()));
+      for (GlobalIndex n = 0; n < mesh.numNodes(); ++n) EXPECT_EQ(values[n], value(step, v, n));
+    }
+    for (int v = 0; v < 2; ++v) {
+      const auto values = results.element(fields.element[v], step);
+      ASSERT_EQ(values.size(), static_cast<size_t>(mesh.numElements()));
+      for (GlobalIndex e = 0; e < mesh.numElements(); ++e) EXPECT_EQ(values[e], -value(step, v, e));
+    }
+    EXPECT_EQ(results.global("load_factor", step), times[step]);
+    EXPECT_EQ(results.global("step_size", step), 0.25 * (step + 1));
+  }
+  EXPECT_NE(messageOf([&] { results.nodal("displ_z", 0); })
+                .find("nodal variable 'displ_z' does not exist (known: displ_x, displ_y, contact_pressure)"),
+            std::string::npos);
+  EXPECT_THROW(results.element("stress_yy", 0), InputError);
+  EXPECT_THROW(results.global("time", 0), InputError);
+  EXPECT_THROW(results.nodal("displ_x", 3), InputError);
+  std::remove(path.c_str());
+}
+
+TEST(ExodusRoundTrip, TwoBlocksScatteredIdsLongNamesAndHexes) {
+  // Two unit hexes side by side; the element ids run against the block order, so the writer
+  // must map side sets and element values through Exodus' block-order numbering.
+  Mesh mesh;
+  mesh.dimension = 3;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) mesh.coordinates.insert(mesh.coordinates.end(), {double(i), double(j), double(k)});
+  auto node = [](int i, int j, int k) -> GlobalIndex { return k * 6 + j * 3 + i; };
+  auto hex = [&](int i) {
+    return std::vector<GlobalIndex>{node(i, 0, 0), node(i + 1, 0, 0), node(i + 1, 1, 0), node(i, 1, 0),
+                                    node(i, 0, 1), node(i + 1, 0, 1), node(i + 1, 1, 1), node(i, 1, 1)};
+  };
+  const std::string longName = "a_block_name_that_is_longer_than_thirty_two_characters";
+  mesh.blocks.push_back({longName, CellType::Hex8, {1}, hex(0)});
+  mesh.blocks.push_back({"right", CellType::Hex8, {0}, hex(1)});
+  mesh.nodeSets.push_back({"x_max", {node(2, 0, 0), node(2, 0, 1), node(2, 1, 0), node(2, 1, 1)}});
+  std::sort(mesh.nodeSets[0].nodes.begin(), mesh.nodeSets[0].nodes.end());
+  mesh.sideSets.push_back({"ends", {0, 1}, {1, 3}});
+  ASSERT_NO_THROW(mesh.validate("test"));
+
+  const std::string path = tempPath("hex");
+  ExodusFields fields;
+  fields.element = {"an_element_variable_with_a_very_long_name_indeed"};
+  {
+    ExodusWriter writer(path, mesh, fields, "two hexes");
+    writer.writeStep(1.0, {}, {{10.0, 20.0}}, {});  // element 0 = 10 (block "right"), element 1 = 20
+    EXPECT_THROW(writer.writeStep(2.0, {}, {{1.0}}, {}), std::runtime_error);
+    EXPECT_THROW(writer.writeStep(2.0, {{1.0}}, {{1.0, 2.0}}, {}), std::runtime_error);
+  }
+
+  const Mesh back = readExodusMesh(path);
+  EXPECT_EQ(back.dimension, 3);
+  EXPECT_EQ(back.coordinates, mesh.coordinates);
+  ASSERT_EQ(back.blocks.size(), 2u);
+  EXPECT_EQ(back.blocks[0].name, longName);
+  EXPECT_EQ(back.blocks[0].cellType, CellType::Hex8);
+  // The reader numbers elements in file (block) order.
+  EXPECT_EQ(back.blocks[0].elements, (std::vector<GlobalIndex>{0}));
+  EXPECT_EQ(back.blocks[1].elements, (std::vector<GlobalIndex>{1}));
+  EXPECT_EQ(back.blocks[0].connectivity, hex(0));
+  EXPECT_EQ(back.blocks[1].connectivity, hex(1));
+  EXPECT_EQ(back.nodeSet("x_max").nodes, mesh.nodeSets[0].nodes);
+  // Element 0 (block "right", file element 1) side 1 and element 1 (first block, file element 0) side 3.
+  EXPECT_EQ(back.sideSet("ends").elements, (std::vector<GlobalIndex>{1, 0}));
+  EXPECT_EQ(back.sideSet("ends").sides, (std::vector<int>{1, 3}));
+
+  const ExodusResults results(path);
+  EXPECT_EQ(results.numSteps(), 1);
+  EXPECT_EQ(results.element(fields.element[0], 0), (std::vector<double>{20.0, 10.0}));
+  std::remove(path.c_str());
+}
+
+TEST(ExodusMeshReader, MissingFileNamesThePath) {
+  const std::string path = "/nonexistent/dir/mesh.exo";
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }), path + ": cannot open Exodus file");
+  EXPECT_EQ(messageOf([&] { ExodusResults results(path); }), path + ": cannot open Exodus file");
+}
+
+TEST(ExodusMeshReader, NotAnExodusFile) {
+  const std::string path = tempPath("text");
+  std::ofstream(path) << "not a mesh\n";
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }), path + ": cannot open Exodus file");
+  std::remove(path.c_str());
+}
+
+namespace {
+
+// Writes a classic-format file directly, as other tools would: unnamed entities, arbitrary ids,
+// unordered node sets, any element type.
+void writeRawFile(const std::string& path, const char* elementType, int nodesPerElement) {
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  ASSERT_GE(id, 0);
+  ASSERT_EQ(ex_put_init(id, "raw", 2, 4, 1, 1, 1, 1), 0);
+  const double x[4] = {0, 1, 1, 0}, y[4] = {0, 0, 1, 1};
+  ASSERT_EQ(ex_put_coord(id, x, y, nullptr), 0);
+  ASSERT_EQ(ex_put_block(id, EX_ELEM_BLOCK, 10, elementType, 1, nodesPerElement, 0, 0, 0), 0);
+  const int conn[8] = {1, 2, 3, 4, 1, 2, 3, 4};  // room for the 8-node case
+  ASSERT_EQ(ex_put_conn(id, EX_ELEM_BLOCK, 10, conn, nullptr, nullptr), 0);
+  ASSERT_EQ(ex_put_set_param(id, EX_NODE_SET, 7, 3, 0), 0);
+  const int nodes[3] = {4, 1, 4};
+  ASSERT_EQ(ex_put_set(id, EX_NODE_SET, 7, nodes, nullptr), 0);
+  ASSERT_EQ(ex_put_set_param(id, EX_SIDE_SET, 3, 1, 0), 0);
+  const int elements[1] = {1}, sides[1] = {4};
+  ASSERT_EQ(ex_put_set(id, EX_SIDE_SET, 3, elements, sides), 0);
+  ASSERT_EQ(ex_close(id), 0);
+}
+
+}  // namespace
+
+TEST(ExodusMeshReader, UnnamedEntitiesGetDefaultNames) {
+  const std::string path = tempPath("raw");
+  writeRawFile(path, "quad", 4);
+  const Mesh mesh = readExodusMesh(path);
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].name, "block_10");
+  EXPECT_EQ(mesh.blocks[0].cellType, CellType::Quad4);
+  EXPECT_EQ(mesh.blocks[0].connectivity, (std::vector<GlobalIndex>{0, 1, 2, 3}));
+  EXPECT_EQ(mesh.nodeSet("nodeset_7").nodes, (std::vector<GlobalIndex>{0, 3}));  // sorted, unique
+  EXPECT_EQ(mesh.sideSet("sideset_3").elements, (std::vector<GlobalIndex>{0}));
+  EXPECT_EQ(mesh.sideSet("sideset_3").sides, (std::vector<int>{3}));
+  EXPECT_EQ(messageOf([&] { mesh.nodeSet("top"); }), "node set 'top' does not exist in the mesh (known: nodeset_7)");
+  EXPECT_EQ(messageOf([&] { mesh.sideSet("top"); }), "side set 'top' does not exist in the mesh (known: sideset_3)");
+  std::remove(path.c_str());
+}
+
+TEST(ExodusMeshReader, RejectsUnsupportedElementTypes) {
+  const std::string path = tempPath("tri");
+  writeRawFile(path, "TRI3", 3);
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }),
+            path + ": element block 'block_10' has unsupported type 'TRI3' (supported: QUAD4, HEX8)");
+  writeRawFile(path, "QUAD8", 8);
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }),
+            path + ": element block 'block_10' has unsupported type 'QUAD8' (supported: QUAD4, HEX8)");
+  std::remove(path.c_str());
+}
+
+TEST(ExodusWriter, UnwritablePathThrowsNamingIt) {
+  const Mesh mesh = generateRectangle({});
+  const std::string path = "/nonexistent/dir/out.exo";
+  try {
+    ExodusWriter writer(path, mesh, {});
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}

@@ -1,0 +1,255 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "common/Error.hpp"
+#include "mesh/Generators.hpp"
+
+using namespace contessa;
+using namespace contessa::mesh;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+double x(const Mesh& m, GlobalIndex n) { return m.coordinates[2 * n]; }
+double y(const Mesh& m, GlobalIndex n) { return m.coordinates[2 * n + 1]; }
+double radius(const Mesh& m, GlobalIndex n) { return std::hypot(x(m, n), y(m, n)); }
+double angleDeg(const Mesh& m, GlobalIndex n) { return std::atan2(y(m, n), x(m, n)) * 180 / kPi; }
+
+// Shoelace area: positive for counter-clockwise connectivity.
+double signedArea(const Mesh& m, const ElementBlock& b, size_t element) {
+  double area = 0;
+  for (int a = 0; a < 4; ++a) {
+    const GlobalIndex p = b.connectivity[4 * element + a], q = b.connectivity[4 * element + (a + 1) % 4];
+    area += x(m, p) * y(m, q) - x(m, q) * y(m, p);
+  }
+  return area / 2;
+}
+
+bool sortedUnique(const std::vector<GlobalIndex>& v) {
+  return std::is_sorted(v.begin(), v.end()) && std::adjacent_find(v.begin(), v.end()) == v.end();
+}
+
+// Every side listed in the set must have both nodes in the node set of the same name.
+void expectSidesOnNodeSet(const Mesh& m, const std::string& name) {
+  const auto& sides = m.sideSet(name);
+  const auto& nodes = m.nodeSet(name).nodes;
+  ASSERT_EQ(sides.elements.size(), sides.sides.size());
+  for (size_t k = 0; k < sides.elements.size(); ++k) {
+    const auto loc = m.locate(sides.elements[k]);
+    const auto& block = m.blocks[loc.block];
+    for (int a : sideNodes(block.cellType, sides.sides[k])) {
+      const GlobalIndex node = block.connectivity[4 * loc.local + a];
+      EXPECT_TRUE(std::binary_search(nodes.begin(), nodes.end(), node))
+          << name << ": element " << sides.elements[k] << " side " << sides.sides[k] << " node " << node;
+    }
+  }
+}
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<no InputError>";
+}
+
+}  // namespace
+
+TEST(RectangleGenerator, CountsCoordinatesAndNumbering) {
+  RectangleSpec spec;
+  spec.x0 = -1;
+  spec.y0 = 2;
+  spec.lx = 4;
+  spec.ly = 3;
+  spec.nx = 4;
+  spec.ny = 3;
+  spec.blockName = "plate";
+  const Mesh m = generateRectangle(spec);
+  EXPECT_EQ(m.dimension, 2);
+  EXPECT_EQ(m.numNodes(), 20);
+  EXPECT_EQ(m.numElements(), 12);
+  ASSERT_EQ(m.blocks.size(), 1u);
+  EXPECT_EQ(m.blocks[0].name, "plate");
+  EXPECT_EQ(m.blocks[0].cellType, CellType::Quad4);
+  // Corners: node j*(nx+1) + i.
+  EXPECT_DOUBLE_EQ(x(m, 0), -1);
+  EXPECT_DOUBLE_EQ(y(m, 0), 2);
+  EXPECT_DOUBLE_EQ(x(m, 4), 3);
+  EXPECT_DOUBLE_EQ(y(m, 4), 2);
+  EXPECT_DOUBLE_EQ(x(m, 19), 3);
+  EXPECT_DOUBLE_EQ(y(m, 19), 5);
+  EXPECT_DOUBLE_EQ(x(m, 7), 1);  // i = 2, j = 1
+  EXPECT_DOUBLE_EQ(y(m, 7), 3);
+  // Element j*nx + i = 5 is (1, 1): nodes 6, 7, 12, 11.
+  EXPECT_EQ(m.blocks[0].elements[5], 5);
+  EXPECT_EQ(std::vector<GlobalIndex>(m.blocks[0].connectivity.begin() + 20, m.blocks[0].connectivity.begin() + 24),
+            (std::vector<GlobalIndex>{6, 7, 12, 11}));
+  for (size_t e = 0; e < 12; ++e) EXPECT_NEAR(signedArea(m, m.blocks[0], e), 1.0, 1e-12);
+}
+
+TEST(RectangleGenerator, NodeAndSideSets) {
+  RectangleSpec spec;
+  spec.lx = 2;
+  spec.ly = 1;
+  spec.nx = 4;
+  spec.ny = 2;
+  const Mesh m = generateRectangle(spec);
+  EXPECT_EQ(m.nodeSet("left").nodes, (std::vector<GlobalIndex>{0, 5, 10}));
+  EXPECT_EQ(m.nodeSet("right").nodes, (std::vector<GlobalIndex>{4, 9, 14}));
+  EXPECT_EQ(m.nodeSet("bottom").nodes, (std::vector<GlobalIndex>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(m.nodeSet("top").nodes, (std::vector<GlobalIndex>{10, 11, 12, 13, 14}));
+  EXPECT_EQ(m.nodeSet("all").nodes.size(), 15u);
+  for (const auto& s : m.nodeSets) EXPECT_TRUE(sortedUnique(s.nodes)) << s.name;
+  for (GlobalIndex n : m.nodeSet("right").nodes) EXPECT_DOUBLE_EQ(x(m, n), 2);
+  for (GlobalIndex n : m.nodeSet("top").nodes) EXPECT_DOUBLE_EQ(y(m, n), 1);
+
+  EXPECT_EQ(m.sideSet("bottom").elements, (std::vector<GlobalIndex>{0, 1, 2, 3}));
+  EXPECT_EQ(m.sideSet("bottom").sides, (std::vector<int>{0, 0, 0, 0}));
+  EXPECT_EQ(m.sideSet("right").elements, (std::vector<GlobalIndex>{3, 7}));
+  EXPECT_EQ(m.sideSet("right").sides, (std::vector<int>{1, 1}));
+  EXPECT_EQ(m.sideSet("top").elements, (std::vector<GlobalIndex>{4, 5, 6, 7}));
+  EXPECT_EQ(m.sideSet("top").sides, (std::vector<int>{2, 2, 2, 2}));
+  EXPECT_EQ(m.sideSet("left").elements, (std::vector<GlobalIndex>{0, 4}));
+  EXPECT_EQ(m.sideSet("left").sides, (std::vector<int>{3, 3}));
+  for (const char* name : {"left", "right", "bottom", "top"}) expectSidesOnNodeSet(m, name);
+}
+
+TEST(RectangleGenerator, RejectsBadSpecs) {
+  RectangleSpec spec;
+  spec.nx = 0;
+  EXPECT_EQ(messageOf([&] { generateRectangle(spec); }), "Elements X: expected a positive integer, got 0");
+  spec = {};
+  spec.ny = -3;
+  EXPECT_THROW(generateRectangle(spec), InputError);
+  spec = {};
+  spec.lx = 0;
+  EXPECT_EQ(messageOf([&] { generateRectangle(spec); }), "Length X: expected a positive number, got 0");
+  spec = {};
+  spec.ly = -1;
+  EXPECT_THROW(generateRectangle(spec), InputError);
+  spec = {};
+  spec.x0 = std::nan("");
+  EXPECT_THROW(generateRectangle(spec), InputError);
+}
+
+TEST(AnnulusSectorGenerator, CountsRadiiAndAngles) {
+  AnnulusSectorSpec spec;
+  spec.innerRadius = 100;
+  spec.thickness = 20;
+  spec.startAngleDeg = 30;
+  spec.endAngleDeg = 120;
+  spec.elementsThroughThickness = 4;
+  spec.elementsAroundArc = 9;
+  const Mesh m = generateAnnulusSector(spec);
+  EXPECT_EQ(m.numNodes(), 5 * 10);
+  EXPECT_EQ(m.numElements(), 4 * 9);
+  // Node j*(nr+1) + i: i radial, j angular.
+  for (int j = 0; j <= 9; ++j)
+    for (int i = 0; i <= 4; ++i) {
+      const GlobalIndex n = j * 5 + i;
+      EXPECT_NEAR(radius(m, n), 100 + 5.0 * i, 1e-10) << n;
+      EXPECT_NEAR(angleDeg(m, n), 30 + 10.0 * j, 1e-10) << n;
+    }
+  EXPECT_NEAR(x(m, 0), 100 * std::cos(kPi / 6), 1e-12);
+  EXPECT_NEAR(y(m, 0), 50, 1e-12);
+  EXPECT_NEAR(x(m, 49), 120 * std::cos(2 * kPi / 3), 1e-12);  // outer end corner
+  EXPECT_NEAR(y(m, 49), 120 * std::sin(2 * kPi / 3), 1e-12);
+  // Element j*nr + i = 6 is (2, 1): nodes 7, 8, 13, 12.
+  EXPECT_EQ(std::vector<GlobalIndex>(m.blocks[0].connectivity.begin() + 24, m.blocks[0].connectivity.begin() + 28),
+            (std::vector<GlobalIndex>{7, 8, 13, 12}));
+  for (size_t e = 0; e < 36; ++e) EXPECT_GT(signedArea(m, m.blocks[0], e), 0) << e;
+}
+
+TEST(AnnulusSectorGenerator, DefaultSpecMatchesTheDocumentedRing) {
+  const Mesh m = generateAnnulusSector({});
+  EXPECT_EQ(m.numNodes(), 14 * 102);
+  EXPECT_EQ(m.numElements(), 13 * 101);
+  EXPECT_EQ(m.blocks[0].name, "block_1");
+  EXPECT_NEAR(x(m, 13), 120, 1e-12);
+  EXPECT_NEAR(y(m, 13), 0, 1e-12);
+  EXPECT_NEAR(x(m, 101 * 14), 0, 1e-12);
+  EXPECT_NEAR(y(m, 101 * 14), 100, 1e-12);
+  double total = 0;
+  for (size_t e = 0; e < static_cast<size_t>(m.numElements()); ++e) {
+    const double a = signedArea(m, m.blocks[0], e);
+    EXPECT_GT(a, 0);
+    total += a;
+  }
+  // Chords cut a little off the quarter ring π(120² − 100²)/4.
+  EXPECT_NEAR(total, kPi * (120 * 120 - 100 * 100) / 4, 0.5);
+}
+
+TEST(AnnulusSectorGenerator, NodeAndSideSets) {
+  AnnulusSectorSpec spec;
+  spec.innerRadius = 10;
+  spec.thickness = 2;
+  spec.startAngleDeg = -45;
+  spec.endAngleDeg = 45;
+  spec.elementsThroughThickness = 3;
+  spec.elementsAroundArc = 6;
+  const Mesh m = generateAnnulusSector(spec);
+  ASSERT_EQ(m.nodeSet("inner").nodes.size(), 7u);
+  ASSERT_EQ(m.nodeSet("outer").nodes.size(), 7u);
+  ASSERT_EQ(m.nodeSet("start").nodes.size(), 4u);
+  ASSERT_EQ(m.nodeSet("end").nodes.size(), 4u);
+  EXPECT_EQ(m.nodeSet("all").nodes.size(), 28u);
+  for (const auto& s : m.nodeSets) EXPECT_TRUE(sortedUnique(s.nodes)) << s.name;
+  for (GlobalIndex n : m.nodeSet("inner").nodes) EXPECT_NEAR(radius(m, n), 10, 1e-12);
+  for (GlobalIndex n : m.nodeSet("outer").nodes) EXPECT_NEAR(radius(m, n), 12, 1e-12);
+  for (GlobalIndex n : m.nodeSet("start").nodes) EXPECT_NEAR(angleDeg(m, n), -45, 1e-10);
+  for (GlobalIndex n : m.nodeSet("end").nodes) EXPECT_NEAR(angleDeg(m, n), 45, 1e-10);
+  EXPECT_EQ(m.nodeSet("start").nodes, (std::vector<GlobalIndex>{0, 1, 2, 3}));
+  EXPECT_EQ(m.nodeSet("end").nodes, (std::vector<GlobalIndex>{24, 25, 26, 27}));
+
+  EXPECT_EQ(m.sideSet("inner").elements, (std::vector<GlobalIndex>{0, 3, 6, 9, 12, 15}));
+  EXPECT_EQ(m.sideSet("inner").sides, std::vector<int>(6, 3));
+  EXPECT_EQ(m.sideSet("outer").elements, (std::vector<GlobalIndex>{2, 5, 8, 11, 14, 17}));
+  EXPECT_EQ(m.sideSet("outer").sides, std::vector<int>(6, 1));
+  EXPECT_EQ(m.sideSet("start").elements, (std::vector<GlobalIndex>{0, 1, 2}));
+  EXPECT_EQ(m.sideSet("start").sides, std::vector<int>(3, 0));
+  EXPECT_EQ(m.sideSet("end").elements, (std::vector<GlobalIndex>{15, 16, 17}));
+  EXPECT_EQ(m.sideSet("end").sides, std::vector<int>(3, 2));
+  for (const char* name : {"inner", "outer", "start", "end"}) expectSidesOnNodeSet(m, name);
+}
+
+TEST(AnnulusSectorGenerator, FullRingIsAllowed) {
+  AnnulusSectorSpec spec;
+  spec.startAngleDeg = 0;
+  spec.endAngleDeg = 360;
+  spec.elementsThroughThickness = 2;
+  spec.elementsAroundArc = 12;
+  const Mesh m = generateAnnulusSector(spec);
+  EXPECT_EQ(m.numElements(), 24);
+  for (size_t e = 0; e < 24; ++e) EXPECT_GT(signedArea(m, m.blocks[0], e), 0);
+}
+
+TEST(AnnulusSectorGenerator, RejectsBadSpecs) {
+  AnnulusSectorSpec spec;
+  spec.elementsThroughThickness = 0;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }),
+            "Elements Through Thickness: expected a positive integer, got 0");
+  spec = {};
+  spec.elementsAroundArc = -2;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }), "Elements Around Arc: expected a positive integer, got -2");
+  spec = {};
+  spec.innerRadius = 0;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }), "Inner Radius: expected a positive number, got 0");
+  spec = {};
+  spec.thickness = -1;
+  EXPECT_THROW(generateAnnulusSector(spec), InputError);
+  spec = {};
+  spec.startAngleDeg = 90;
+  spec.endAngleDeg = 90;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }),
+            "End Angle: expected an angle greater than Start Angle (90), got 90");
+  spec = {};
+  spec.startAngleDeg = 10;
+  spec.endAngleDeg = 380.5;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }),
+            "End Angle: expected at most 360 degrees beyond Start Angle (10), got 380.5");
+}
