@@ -1,6 +1,7 @@
 #include "deck/ProblemDefinition.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include <Teuchos_Array.hpp>
@@ -16,8 +17,9 @@ namespace {
 using Teuchos::ParameterList;
 using Teuchos::RCP;
 using Teuchos::rcp;
+using mesh::GlobalIndex;
 
-const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Regression"};
+const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Regression", "Contact"};
 
 std::string joinNames(const std::vector<std::string>& names) {
   std::string out;
@@ -95,6 +97,97 @@ void requireNodeSet(const mesh::Mesh& mesh, const std::string& name, const std::
   throw InputError(where + ": node set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
 }
 
+// Nodes of a side set with their tributary lengths (half of each adjacent side), and its sides as
+// node pairs in element order: counter-clockwise elements make the outward normal point to the right.
+struct SideSetGeometry {
+  std::vector<GlobalIndex> nodes;
+  std::vector<double> areas;
+  std::vector<std::array<GlobalIndex, 2>> segments;
+};
+
+SideSetGeometry sideSetGeometry(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where) {
+  requireInput(mesh.dimension == 2, where + ": contact is implemented in 2D (node-to-segment) only so far");
+  SideSetGeometry g;
+  std::map<GlobalIndex, double> area;
+  for (std::size_t i = 0; i < set.elements.size(); ++i) {
+    const auto loc = mesh.locate(set.elements[i]);
+    const auto& block = mesh.blocks[loc.block];
+    const int nn = mesh::nodesPerCell(block.cellType);
+    const auto local = mesh::sideNodes(block.cellType, set.sides[i]);
+    const GlobalIndex a = block.connectivity[loc.local * nn + local[0]];
+    const GlobalIndex b = block.connectivity[loc.local * nn + local[1]];
+    const double length = std::hypot(mesh.coordinates[2 * b] - mesh.coordinates[2 * a],
+                                      mesh.coordinates[2 * b + 1] - mesh.coordinates[2 * a + 1]);
+    area[a] += 0.5 * length;
+    area[b] += 0.5 * length;
+    g.segments.push_back({a, b});
+  }
+  for (const auto& [node, tributary] : area) {
+    g.nodes.push_back(node);
+    g.areas.push_back(tributary);
+  }
+  return g;
+}
+
+void requireSideSet(const mesh::Mesh& mesh, const std::string& name, const std::string& where) {
+  if (mesh.hasSideSet(name)) return;
+  std::vector<std::string> known;
+  for (const auto& ss : mesh.sideSets) known.push_back(ss.name);
+  throw InputError(where + ": side set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
+}
+
+std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& list, const std::string& name,
+                                                          const mesh::Mesh& mesh) {
+  const std::string where = "Problem/Contact/" + name;
+  contact::ContactInterfaceSpec2D spec;
+  spec.name = name;
+  spec.law.normalPenalty = list.get<double>("Normal Penalty");
+  spec.law.tangentialPenalty = list.get<double>("Tangential Penalty");
+  spec.law.frictionCoefficient = list.get<double>("Friction Coefficient");
+  requireInput(spec.law.normalPenalty > 0, where + "/Normal Penalty: required; expected a value > 0");
+  requireInput(spec.law.frictionCoefficient == 0 || spec.law.tangentialPenalty > 0,
+               where + "/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0");
+
+  const std::string slaveSet = list.get<std::string>("Slave Side Set");
+  const std::string masterSet = list.get<std::string>("Master Side Set");
+  const auto& points = list.sublist("Rigid Surface").get<Teuchos::Array<double>>("Points");
+  const auto& motion = list.sublist("Rigid Surface").get<Teuchos::Array<double>>("Motion");
+  requireInput(!slaveSet.empty(), where + "/Slave Side Set: required");
+  requireSideSet(mesh, slaveSet, where + "/Slave Side Set");
+  const bool rigid = masterSet.empty();
+  requireInput(rigid != points.empty(),
+               where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
+                   (rigid ? "neither" : "both"));
+  const auto slave = sideSetGeometry(mesh, mesh.sideSet(slaveSet), where + "/Slave Side Set");
+  spec.slaveNodes = slave.nodes;
+  spec.slaveAreas = slave.areas;
+  if (rigid) {
+    requireInput(points.size() >= 4 && points.size() % 2 == 0,
+                 where + "/Rigid Surface/Points: expected x0, y0, x1, y1, ... (at least two points)");
+    requireInput(motion.size() == 2, where + "/Rigid Surface/Motion: expected two values (the displacement at load factor 1)");
+    requireInput(!list.get<bool>("Two Pass"), where + "/Two Pass: a rigid master has no slave side of its own");
+    spec.rigidMaster = true;
+    for (Teuchos::Array<double>::size_type i = 0; i + 1 < points.size(); i += 2) spec.rigidSurface.points.push_back({points[i], points[i + 1]});
+    spec.rigidSurface.motion = {motion[0], motion[1]};
+    for (std::size_t i = 1; i < spec.rigidSurface.points.size(); ++i)
+      requireInput(spec.rigidSurface.points[i] != spec.rigidSurface.points[i - 1],
+                   where + "/Rigid Surface/Points: two consecutive points coincide");
+    return {spec};
+  }
+  requireSideSet(mesh, masterSet, where + "/Master Side Set");
+  requireInput(masterSet != slaveSet, where + "/Master Side Set: must differ from the Slave Side Set");
+  const auto master = sideSetGeometry(mesh, mesh.sideSet(masterSet), where + "/Master Side Set");
+  spec.masterSegments = master.segments;
+  if (!list.get<bool>("Two Pass")) return {spec};
+  // Two-pass: the same interface with slave and master swapped, each pass with its own history.
+  contact::ContactInterfaceSpec2D swapped = spec;
+  swapped.name = name + " (second pass)";
+  swapped.slaveNodes = master.nodes;
+  swapped.slaveAreas = master.areas;
+  swapped.masterSegments = slave.segments;
+  return {spec, swapped};
+}
+
 }  // namespace
 
 std::vector<std::string> meshTypes() { return {"Rectangle", "Annulus Sector", "Exodus File"}; }
@@ -157,6 +250,22 @@ RCP<const ParameterList> regressionValidParameters() {
   return p;
 }
 
+RCP<const ParameterList> contactValidParameters() {
+  auto p = rcp(new ParameterList("Contact Interface"));
+  p->set("Slave Side Set", std::string(""), "Side set whose nodes may not penetrate the master (node-to-segment); required");
+  p->set("Master Side Set", std::string(""),
+         "Side set of a deformable master body; leave empty for a rigid master (Rigid Surface)");
+  auto& rigid = p->sublist("Rigid Surface", false, "A rigid master: a polyline moving rigidly with the load factor");
+  rigid.set("Points", Teuchos::Array<double>(),
+            "x0, y0, x1, y1, ...: the rigid body lies to the left of the direction of traversal");
+  rigid.set("Motion", Teuchos::Array<double>(), "Displacement of the rigid surface at load factor 1 (x, y)");
+  setNonNegative(*p, "Normal Penalty", 0.0, "Normal penalty ε_N (pressure per unit penetration), eq. (16); required");
+  setNonNegative(*p, "Tangential Penalty", 0.0, "Tangential penalty ε_T, eq. (17); required when Friction Coefficient > 0");
+  setNonNegative(*p, "Friction Coefficient", 0.0, "Coulomb coefficient μ, eq. (18); 0 = frictionless");
+  p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
+  return p;
+}
+
 RCP<const ParameterList> problemValidParameters() {
   auto p = rcp(new ParameterList("Problem"));
   p->set("Title", std::string(""), "Free text written into the Exodus file");
@@ -169,6 +278,7 @@ RCP<const ParameterList> problemValidParameters() {
   out.set("Reaction Node Sets", Teuchos::Array<std::string>(),
           "Node sets whose reaction forces are summed into the history (reaction_<set>_<x|y|z>)");
   p->sublist("Regression", false, "Expected answers (one sublist per check): Quantity, Step, Expected, tolerances");
+  p->sublist("Contact", false, "One sublist per contact interface (any name): slave, master, penalties, friction");
   return p;
 }
 
@@ -266,6 +376,10 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     requireNodeSet(mesh, s, "Problem/Output/Reaction Node Sets");
     def.reactionNodeSets.push_back(s);
   }
+
+  auto& contactList = problem.sublist("Contact");
+  for (const auto& name : validateChildren(contactList, *contactValidParameters(), "Problem/Contact"))
+    for (auto& spec : buildContact(contactList.sublist(name), name, mesh)) def.contacts.push_back(std::move(spec));
 
   auto& regressionList = problem.sublist("Regression");
   for (const auto& name : validateChildren(regressionList, *regressionValidParameters(), "Problem/Regression")) {

@@ -10,6 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "contact/ContactInterface2D.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
 #include "mesh/Mesh.hpp"
@@ -52,6 +53,8 @@ struct ProblemDefinition {
   std::vector<NodalForce> nodalForces;
   std::vector<std::string> reactionNodeSets;
   std::vector<RegressionCheck> regression;
+  /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
+  std::vector<contact::ContactInterfaceSpec2D> contacts;
 };
 
 /// Valid parameters of each part, with docs and defaults (published for the deck reference).
@@ -62,6 +65,7 @@ Teuchos::RCP<const Teuchos::ParameterList> blockValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> dirichletValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> nodalForceValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> regressionValidParameters();
+Teuchos::RCP<const Teuchos::ParameterList> contactValidParameters();
 
 /// Validates the "Problem" list in place (defaults filled in) and builds the problem; mesh file
 /// names are relative to `deckDirectory`. Throws InputError with the deck path on any problem.

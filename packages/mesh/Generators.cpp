@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "common/Error.hpp"
 
@@ -27,6 +28,35 @@ void requireFinite(double value, const char* parameter) {
 
 void requirePositiveCount(int value, const char* parameter) {
   requireInput(value > 0, std::string(parameter) + ": expected a positive integer, got " + std::to_string(value));
+}
+
+void requireBias(double value, const char* parameter) {
+  requireInput(std::isfinite(value) && value > 0,
+               std::string(parameter) + ": expected a value > 0, got " + format(value));
+}
+
+// n+1 node positions from start to start + length (exactly, at both ends) with element sizes in a
+// geometric progression whose last/first ratio is `bias`. bias = 1 reproduces start + length*i/n bit
+// for bit. With L = ln(q), q = bias^(1/(n-1)), node i sits at the fraction (q^i − 1)/(q^n − 1),
+// evaluated with expm1 so that q near 1 loses nothing to cancellation, and for q > 1 rewritten as
+// q^(i−n)·(1 − q^−i)/(1 − q^−n) so that large biases cannot overflow.
+std::vector<double> gradedPositions(double start, double length, int n, double bias, const char* parameter) {
+  std::vector<double> x(static_cast<size_t>(n) + 1);
+  const double L = n > 1 ? std::log(bias) / (n - 1) : 0.0;
+  for (int i = 0; i < n; ++i) {
+    if (L == 0) {
+      x[i] = start + length * i / n;  // uniform: exactly as the ungraded generators computed it
+      continue;
+    }
+    const double t = L < 0 ? std::expm1(i * L) / std::expm1(n * L)
+                           : std::exp((i - n) * L) * (std::expm1(-i * L) / std::expm1(-n * L));
+    x[i] = start + length * t;
+  }
+  x[n] = start + length;
+  for (int i = 0; i < n; ++i)
+    requireInput(x[i + 1] > x[i], std::string(parameter) + ": value " + format(bias) + " with " +
+                                      std::to_string(n) + " elements makes elements too small to represent");
+  return x;
 }
 
 // Both generators build the same logically structured n0 × n1 grid: node (i, j) is j*(n0+1) + i,
@@ -115,7 +145,12 @@ Mesh generateRectangle(const RectangleSpec& spec) {
   requirePositive(spec.ly, "Length Y");
   requirePositiveCount(spec.nx, "Elements X");
   requirePositiveCount(spec.ny, "Elements Y");
+  requireBias(spec.biasX, "Bias X");
+  requireBias(spec.biasY, "Bias Y");
 
+  // Positions are computed per node (not by summing steps), and the last one is set to x0 + lx.
+  const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
+  const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
   const StructuredGrid grid(spec.nx, spec.ny);
   Mesh mesh;
   mesh.dimension = 2;
@@ -123,9 +158,8 @@ Mesh generateRectangle(const RectangleSpec& spec) {
   for (int j = 0; j <= spec.ny; ++j)
     for (int i = 0; i <= spec.nx; ++i) {
       const size_t n = static_cast<size_t>(grid.node(i, j));
-      // Multiplying by i/n (not summing steps) puts the last node exactly on x0 + lx.
-      mesh.coordinates[2 * n] = spec.x0 + spec.lx * i / spec.nx;
-      mesh.coordinates[2 * n + 1] = spec.y0 + spec.ly * j / spec.ny;
+      mesh.coordinates[2 * n] = xs[i];
+      mesh.coordinates[2 * n + 1] = ys[j];
     }
   mesh.blocks.push_back(grid.block(spec.blockName));
   const std::string names[4] = {"left", "right", "bottom", "top"};
@@ -147,19 +181,27 @@ Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
                    "), got " + format(spec.endAngleDeg));
   requirePositiveCount(spec.elementsThroughThickness, "Elements Through Thickness");
   requirePositiveCount(spec.elementsAroundArc, "Elements Around Arc");
+  requireBias(spec.radialBias, "Radial Bias");
+  requireBias(spec.arcBias, "Arc Bias");
 
   const int nr = spec.elementsThroughThickness;
   const int nt = spec.elementsAroundArc;
+  // Angles are graded in degrees, so the last one is exactly endAngleDeg before conversion.
+  const std::vector<double> radii =
+      gradedPositions(spec.innerRadius, spec.thickness, nr, spec.radialBias, "Radial Bias");
+  std::vector<double> anglesDeg = gradedPositions(spec.startAngleDeg, spec.endAngleDeg - spec.startAngleDeg, nt,
+                                                  spec.arcBias, "Arc Bias");
+  anglesDeg.back() = spec.endAngleDeg;  // θ0 + (θ1 − θ0) can differ from θ1 in the last bit
   const StructuredGrid grid(nr, nt);
   const double degToRad = std::acos(-1.0) / 180.0;
   Mesh mesh;
   mesh.dimension = 2;
   mesh.coordinates.resize(2 * static_cast<size_t>(nr + 1) * (nt + 1));
   for (int j = 0; j <= nt; ++j) {
-    const double theta = (spec.startAngleDeg + (spec.endAngleDeg - spec.startAngleDeg) * j / nt) * degToRad;
+    const double theta = anglesDeg[j] * degToRad;
     const double c = std::cos(theta), s = std::sin(theta);
     for (int i = 0; i <= nr; ++i) {
-      const double r = spec.innerRadius + spec.thickness * i / nr;
+      const double r = radii[i];
       const size_t n = static_cast<size_t>(grid.node(i, j));
       mesh.coordinates[2 * n] = r * c;
       mesh.coordinates[2 * n + 1] = r * s;

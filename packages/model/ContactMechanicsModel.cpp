@@ -23,6 +23,12 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const 
                                              const RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory)
     : comm_(comm), problem_(problem), dim_(problem.mesh.dimension), solverFactory_(solverFactory) {
   buildMaps(partition);
+  for (const auto& spec : problem_.contacts) {
+    std::vector<char> evaluates(spec.slaveNodes.size());
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k)
+      evaluates[k] = partition.nodeOwner[spec.slaveNodes[k]] == comm_->getRank();
+    contacts_.emplace_back(spec, evaluates);
+  }
   solids_ = std::make_unique<SolidAssembler>(problem_, partition.ownedElements(comm_->getRank()),
                                              [this](GlobalIndex dof) { return overlapMap_->getLocalElement(dof); });
   buildGraph();
@@ -49,7 +55,15 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const 
 void ContactMechanicsModel::buildMaps(const mesh::Partition& partition) {
   const int rank = comm_->getRank();
   const auto owned = partition.ownedNodes(rank);
-  const auto overlap = partition.overlapNodes(problem_.mesh, rank);
+  auto overlap = partition.overlapNodes(problem_.mesh, rank);
+  // Contact surfaces are replicated on every rank (DESIGN.md): their nodes join the overlap, so the
+  // owner of a slave node sees its master segment wherever it slides.
+  for (const auto& spec : problem_.contacts) {
+    overlap.insert(overlap.end(), spec.slaveNodes.begin(), spec.slaveNodes.end());
+    for (const auto& seg : spec.masterSegments) overlap.insert(overlap.end(), seg.begin(), seg.end());
+  }
+  std::sort(overlap.begin(), overlap.end());
+  overlap.erase(std::unique(overlap.begin(), overlap.end()), overlap.end());
   std::vector<GO> ownedDofs, overlapDofs;
   for (GO n : owned)
     for (int c = 0; c < dim_; ++c) ownedDofs.push_back(n * dim_ + c);
@@ -61,10 +75,12 @@ void ContactMechanicsModel::buildMaps(const mesh::Partition& partition) {
   const auto elements = partition.ownedElements(rank);
   std::vector<GO> elementIds(elements.begin(), elements.end());
   elementMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(elementIds), 0, comm_));
+  nodeMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(std::vector<GO>(owned.begin(), owned.end())), 0, comm_));
   exporter_ = rcp(new Export(overlapMap_, ownedMap_));
   importer_ = rcp(new Import(ownedMap_, overlapMap_));
   overlapX_ = rcp(new Vector(overlapMap_));
   overlapForce_ = rcp(new Vector(overlapMap_));
+  overlapDfdLambda_ = rcp(new Vector(overlapMap_));
 }
 
 void ContactMechanicsModel::buildGraph() {
@@ -77,6 +93,29 @@ void ContactMechanicsModel::buildGraph() {
                       for (int i = 0; i < n; ++i)
                         for (int j = 0; j < n; ++j) rows[dofs[i]].push_back(dofs[j]);
                     });
+  // Contact couplings are reserved once: every slave node of an interface with every node of its
+  // deformable master surface, so a node can slide anywhere on it without a graph rebuild. In 2D the
+  // surfaces are small (O(√n) nodes); 3D will need a search-based reservation.
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const auto& spec = contacts_[i].spec();
+    if (spec.rigidMaster) continue;
+    std::vector<LO> masterDofs;
+    for (const auto& seg : spec.masterSegments)
+      for (GO node : seg)
+        for (int c = 0; c < dim_; ++c) masterDofs.push_back(overlapMap_->getLocalElement(node * dim_ + c));
+    std::sort(masterDofs.begin(), masterDofs.end());
+    masterDofs.erase(std::unique(masterDofs.begin(), masterDofs.end()), masterDofs.end());
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      if (!contacts_[i].evaluatesSlave()[k]) continue;
+      for (int c = 0; c < dim_; ++c) {
+        const LO s = overlapMap_->getLocalElement(spec.slaveNodes[k] * dim_ + c);
+        for (LO m : masterDofs) {
+          rows[s].push_back(m);
+          rows[m].push_back(s);
+        }
+      }
+    }
+  }
   std::size_t maxPerRow = 1;
   for (auto& r : rows) {
     std::sort(r.begin(), r.end());
@@ -87,9 +126,8 @@ void ContactMechanicsModel::buildGraph() {
   for (LO i = 0; i < numOverlap; ++i)
     if (!rows[i].empty()) overlapGraph->insertLocalIndices(i, Teuchos::ArrayView<const LO>(rows[i]));
   overlapGraph->fillComplete(ownedMap_, ownedMap_);
-  auto ownedGraph = rcp(new CrsGraph(ownedMap_, maxPerRow * 2));
-  ownedGraph->doExport(*overlapGraph, *exporter_, Tpetra::INSERT);
-  ownedGraph->fillComplete(ownedMap_, ownedMap_);
+  // Rows shared between ranks receive entries from each: the export sizes the owned rows exactly.
+  auto ownedGraph = Tpetra::exportAndFillCompleteCrsGraph<CrsGraph>(overlapGraph, *exporter_, ownedMap_, ownedMap_);
   overlapGraph_ = overlapGraph;
   ownedGraph_ = ownedGraph;
   overlapMatrix_ = rcp(new CrsMatrix(overlapGraph_));
@@ -167,16 +205,20 @@ RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> ContactMechanicsModel::ge
   return solverFactory_;
 }
 
-bool ContactMechanicsModel::assembleInternal(const Vector& x, Vector* force, CrsMatrix* stiffness) const {
+bool ContactMechanicsModel::assembleInternal(const Vector& x, double lambda, Vector* force, CrsMatrix* stiffness,
+                                             Vector* dForcedLambda, bool updateTrial) const {
   overlapX_->doImport(x, *importer_, Tpetra::INSERT);
   auto u = overlapX_->getData(0);
   overlapForce_->putScalar(0.0);
+  overlapDfdLambda_->putScalar(0.0);
   auto fo = overlapForce_->getDataNonConst(0);
+  auto dl = overlapDfdLambda_->getDataNonConst(0);
   if (stiffness != nullptr) {
     overlapMatrix_->resumeFill();
     overlapMatrix_->setAllToScalar(0.0);
   }
   std::vector<LO> cols;
+  std::vector<double> rowValues;
   const auto status = solids_->assemble(
       u.getRawPtr(), stiffness != nullptr, [&](const int* dofs, int n, const double* fe, const double* ke) {
         for (int i = 0; i < n; ++i) fo[dofs[i]] += fe[i];
@@ -186,10 +228,45 @@ bool ContactMechanicsModel::assembleInternal(const Vector& x, Vector* force, Crs
           overlapMatrix_->sumIntoLocalValues(dofs[i], Teuchos::ArrayView<const LO>(cols),
                                              Teuchos::ArrayView<const double>(ke + i * n, n));
       });
+
+  // Contact: each slave node's owner adds its node-to-segment element; rigid masters have no DOFs.
+  const auto& X = problem_.mesh.coordinates;
+  const auto position = [&](GlobalIndex node) {
+    contact::Vector<2> p;
+    for (int c = 0; c < 2; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
+    return p;
+  };
+  for (auto& interface : contacts_) {
+    interface.evaluate(position, lambda, updateTrial,
+                       [&](const GlobalIndex* dofs, int n, const double* r, const double* k, const double* drdl) {
+                         std::vector<LO> local(n);
+                         for (int i = 0; i < n; ++i)
+                           local[i] = dofs[i] < 0 ? -1 : overlapMap_->getLocalElement(dofs[i]);
+                         cols.clear();
+                         for (int j = 0; j < n; ++j)
+                           if (local[j] >= 0) cols.push_back(local[j]);
+                         for (int i = 0; i < n; ++i) {
+                           if (local[i] < 0) continue;
+                           fo[local[i]] += r[i];
+                           dl[local[i]] += drdl[i];
+                           if (stiffness == nullptr) continue;
+                           rowValues.clear();
+                           for (int j = 0; j < n; ++j)
+                             if (local[j] >= 0) rowValues.push_back(k[i * n + j]);
+                           overlapMatrix_->sumIntoLocalValues(local[i], Teuchos::ArrayView<const LO>(cols),
+                                                              Teuchos::ArrayView<const double>(rowValues));
+                         }
+                       });
+  }
   fo = Teuchos::null;
+  dl = Teuchos::null;
   if (force != nullptr) {
     force->putScalar(0.0);
     force->doExport(*overlapForce_, *exporter_, Tpetra::ADD);
+  }
+  if (dForcedLambda != nullptr) {
+    dForcedLambda->putScalar(0.0);
+    dForcedLambda->doExport(*overlapDfdLambda_, *exporter_, Tpetra::ADD);
   }
   if (stiffness != nullptr) {
     overlapMatrix_->fillComplete(ownedMap_, ownedMap_);
@@ -217,8 +294,11 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
     ++jacobianEvaluations_;
   }
 
+  RCP<MultiVector> dfdpTpetra = dfdp.is_null() ? Teuchos::null : Extract::getTpetraMultiVector(dfdp);
+  RCP<Vector> dContactdLambda = dfdp.is_null() ? Teuchos::null : rcp(new Vector(ownedMap_));
   bool ok = true;
-  if (!f.is_null() || !W.is_null()) ok = assembleInternal(*x, f.get(), W.get());
+  if (!f.is_null() || !W.is_null() || !dfdp.is_null())
+    ok = assembleInternal(*x, lambda, f.get(), W.get(), dContactdLambda.get(), true);
 
   if (!f.is_null()) {
     // Free rows: f_int − λ f_ext (eq. of equilibrium); prescribed rows: u − λ ū.
@@ -247,12 +327,85 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
     W->fillComplete(ownedMap_, ownedMap_);
   }
   if (!dfdp.is_null()) {
-    // ∂f/∂λ = −f_ext on free rows, −ū on prescribed rows.
-    auto d = Extract::getTpetraMultiVector(dfdp);
-    d->update(-1.0, *externalForce_, 0.0);
+    // ∂f/∂λ = ∂r_c/∂λ − f_ext on free rows (a rigid master moves with λ), −ū on prescribed rows.
+    auto d = dfdpTpetra;
+    d->putScalar(0.0);  // the caller's storage may hold anything, and 0·NaN is NaN
+    d->getVectorNonConst(0)->update(-1.0, *externalForce_, 1.0, *dContactdLambda, 1.0);
     auto dv = d->getDataNonConst(0);
     for (std::size_t k = 0; k < prescribedRows_.size(); ++k) dv[prescribedRows_[k]] = -prescribedValues_[k];
   }
+}
+
+void ContactMechanicsModel::commitState() {
+  solids_->commit();
+  for (auto& c : contacts_) c.commit();
+}
+
+void ContactMechanicsModel::rollbackState() {
+  solids_->rollback();
+  for (auto& c : contacts_) c.rollback();
+}
+
+std::vector<std::string> ContactMechanicsModel::contactFieldNames() {
+  return {"contact_pressure", "contact_gap", "contact_status", "contact_slip"};
+}
+
+RCP<MultiVector> ContactMechanicsModel::contactNodalFields() const {
+  auto out = rcp(new MultiVector(nodeMap_, 4));
+  for (const auto& interface : contacts_) {
+    const auto& spec = interface.spec();
+    const auto& states = interface.committedStates();
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      if (!interface.evaluatesSlave()[k]) continue;
+      const LO lo = nodeMap_->getLocalElement(spec.slaveNodes[k]);
+      const auto& st = states[k];
+      // A node on several slave surfaces shows its largest pressure.
+      if (st.pressure < out->getData(0)[lo]) continue;
+      out->replaceLocalValue(lo, 0, st.pressure);
+      out->replaceLocalValue(lo, 1, std::isfinite(st.gap) ? st.gap : std::numeric_limits<double>::quiet_NaN());
+      out->replaceLocalValue(lo, 2, static_cast<double>(static_cast<int>(st.status)));
+      out->replaceLocalValue(lo, 3, st.slip);
+    }
+  }
+  return out;
+}
+
+contact::ContactCounts ContactMechanicsModel::contactCounts() const {
+  int local[4] = {0, 0, 0, 0}, global[4] = {0, 0, 0, 0};
+  for (const auto& interface : contacts_) {
+    const auto c = interface.committedCounts();
+    local[0] += c.active;
+    local[1] += c.newlyActive;
+    local[2] += c.stick;
+    local[3] += c.slip;
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 4, local, global);
+  return {global[0], global[1], global[2], global[3]};
+}
+
+std::vector<std::pair<std::string, std::array<double, 2>>> ContactMechanicsModel::contactForces() const {
+  std::vector<std::pair<std::string, std::array<double, 2>>> out;
+  for (const auto& spec : problem_.contacts) {
+    const std::string name = spec.name.substr(0, spec.name.find(" (second pass)"));
+    if (out.empty() || out.back().first != name) out.push_back({name, {0.0, 0.0}});
+  }
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const std::string name = contacts_[i].spec().name.substr(0, contacts_[i].spec().name.find(" (second pass)"));
+    const auto f = contacts_[i].committedSlaveForce();
+    for (auto& [n, total] : out)
+      if (n == name) {
+        // The second pass pushes the other body: the force on the first slave body is its opposite.
+        const double sign = contacts_[i].spec().name == name ? 1.0 : -1.0;
+        total[0] += sign * f[0];
+        total[1] += sign * f[1];
+      }
+  }
+  for (auto& [n, total] : out) {
+    double g[2];
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 2, total.data(), g);
+    total = {g[0], g[1]};
+  }
+  return out;
 }
 
 std::vector<std::string> ContactMechanicsModel::elementStressNames(int dimension) {
@@ -280,7 +433,7 @@ RCP<MultiVector> ContactMechanicsModel::elementStresses(const Vector& x) const {
 
 std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, double loadFactor) const {
   Vector fint(ownedMap_);
-  assembleInternal(x, &fint, nullptr);
+  assembleInternal(x, loadFactor, &fint, nullptr, nullptr, false);
   fint.update(-loadFactor, *externalForce_, 1.0);
   auto fv = fint.getData(0);
   std::vector<NodeSetReaction> out;

@@ -9,6 +9,7 @@
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
+#include "contact/ContactInterface2D.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/Partition.hpp"
 #include "model/SolidAssembler.hpp"
@@ -39,9 +40,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override;
 
-  // State of the increment (internal variables; contact history later).
-  void commitState() { solids_->commit(); }
-  void rollbackState() { solids_->rollback(); }
+  // State of the increment: enhanced-strain parameters and contact history, committed after a
+  // converged increment, rolled back when an increment is abandoned.
+  void commitState();
+  void rollbackState();
 
   // Post-processing for output, at a converged state.
   const Teuchos::RCP<const Map>& ownedDofMap() const { return ownedMap_; }
@@ -50,6 +52,19 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   Teuchos::RCP<MultiVector> elementStresses(const Vector& x) const;
   static std::vector<std::string> elementStressNames(int dimension);
   std::vector<NodeSetReaction> reactions(const Vector& x, double loadFactor) const;
+
+  // Contact results at the last committed state.
+  bool hasContact() const { return !contacts_.empty(); }
+  const Teuchos::RCP<const Map>& ownedNodeMap() const { return nodeMap_; }
+  /// Columns contact_pressure, contact_gap, contact_status, contact_slip per owned node (0 off the
+  /// slave surfaces; gap NaN where no master segment is in reach).
+  Teuchos::RCP<MultiVector> contactNodalFields() const;
+  static std::vector<std::string> contactFieldNames();
+  /// Sums over all ranks and interfaces.
+  contact::ContactCounts contactCounts() const;
+  /// Force the master exerts on the slave body, per interface (both passes of a two-pass interface
+  /// are summed under the interface name), summed over ranks.
+  std::vector<std::pair<std::string, std::array<double, 2>>> contactForces() const;
 
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const { return jacobianEvaluations_; }
@@ -65,8 +80,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   void buildMaps(const mesh::Partition& partition);
   void buildGraph();
   void buildBoundaryConditions();
-  /// Internal forces (and stiffness) at owned x, exported to owned rows, no boundary conditions.
-  bool assembleInternal(const Vector& x, Vector* force, CrsMatrix* stiffness) const;
+  /// Internal and contact forces (and their stiffness and ∂/∂λ) at owned x and load factor λ,
+  /// exported to owned rows, before boundary conditions. `updateTrial` stores the trial state.
+  bool assembleInternal(const Vector& x, double lambda, Vector* force, CrsMatrix* stiffness, Vector* dForcedLambda,
+                        bool updateTrial) const;
 
   Teuchos::RCP<const Comm> comm_;
   const deck::ProblemDefinition& problem_;
@@ -83,6 +100,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   std::vector<double> prescribedValues_;     ///< ū at λ = 1, per prescribed row
   std::vector<char> isPrescribedOverlap_;    ///< per overlapped local DOF
   std::unique_ptr<SolidAssembler> solids_;
+  mutable std::vector<contact::ContactInterface2D> contacts_;
+  Teuchos::RCP<const Map> nodeMap_;
+  Teuchos::RCP<Vector> overlapDfdLambda_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> xSpace_, pSpace_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;

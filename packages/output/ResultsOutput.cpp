@@ -17,6 +17,13 @@ RCP<const model::Map> rootMap(model::GO n, const RCP<const model::Comm>& comm) {
   return rcp(new model::Map(n, Teuchos::ArrayView<const model::GO>(ids), 0, comm));
 }
 
+// History column names cannot hold spaces (interface names may).
+std::string columnName(std::string name) {
+  for (auto& c : name)
+    if (c == ' ' || c == ',') c = '_';
+  return name;
+}
+
 const std::vector<std::string> kGlobals = {"load_factor", "step_size", "beta", "active_contacts", "newton_iterations"};
 
 }  // namespace
@@ -31,18 +38,24 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   rootElementMap_ = rootMap(problem.mesh.numElements(), comm);
   dofToRoot_ = rcp(new model::Import(model.ownedDofMap(), rootDofMap_));
   elementToRoot_ = rcp(new model::Import(model.ownedElementMap(), rootElementMap_));
+  rootNodeMap_ = rootMap(problem.mesh.numNodes(), comm);
+  nodeToRoot_ = rcp(new model::Import(model.ownedNodeMap(), rootNodeMap_));
 
   columns_ = {"step", "lambda", "dlambda", "beta", "attempts", "newton_iterations", "active_contacts",
               "new_contacts", "stick", "slip", "residual_norm", "wall_s"};
   const char* axes[] = {"x", "y", "z"};
   for (const auto& set : problem.reactionNodeSets)
     for (int c = 0; c < dim; ++c) columns_.push_back("reaction_" + set + "_" + axes[c]);
+  for (const auto& [name, force] : model.contactForces())
+    for (int c = 0; c < dim; ++c) columns_.push_back("contact_force_" + columnName(name) + "_" + axes[c]);
 
   exodusPath_ = directory + "/" + name + ".exo";
   historyPath_ = directory + "/" + name + ".history.csv";
   if (root_) {
     io::ExodusFields fields;
     for (int c = 0; c < dim; ++c) fields.nodal.push_back(std::string("displ_") + axes[c]);
+    if (model.hasContact())
+      for (const auto& f : model::ContactMechanicsModel::contactFieldNames()) fields.nodal.push_back(f);
     fields.element = model::ContactMechanicsModel::elementStressNames(dim);
     fields.global = kGlobals;
     exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
@@ -67,13 +80,21 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   model::MultiVector allStress(rootElementMap_, stresses->getNumVectors());
   allStress.doImport(*stresses, *elementToRoot_, Tpetra::INSERT);
   const auto reactions = model_.reactions(x, report.lambda);
+  const auto counts = model_.contactCounts();
+  const auto contactForces = model_.contactForces();
+  model::MultiVector allContact(rootNodeMap_, 4);
+  if (model_.hasContact()) allContact.doImport(*model_.contactNodalFields(), *nodeToRoot_, Tpetra::INSERT);
   if (!root_) return;
 
   std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
                              static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
-                             0, 0, 0, 0, report.residualNorm, report.wallSeconds};
+                             static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
+                             static_cast<double>(counts.stick), static_cast<double>(counts.slip),
+                             report.residualNorm, report.wallSeconds};
   for (const auto& r : reactions)
     for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
+  for (const auto& [name, force] : contactForces)
+    for (int c = 0; c < dim; ++c) row.push_back(force[c]);
   history_->writeRow(row);
   rows_.push_back(row);
 
@@ -81,18 +102,24 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   std::vector<std::vector<double>> nodal(dim, std::vector<double>(problem_.mesh.numNodes()));
   for (model::GO n = 0; n < problem_.mesh.numNodes(); ++n)
     for (int c = 0; c < dim; ++c) nodal[c][n] = u[n * dim + c];
+  if (model_.hasContact())
+    for (std::size_t v = 0; v < 4; ++v) {
+      const auto col = allContact.getData(v);
+      nodal.emplace_back(col.begin(), col.end());
+    }
   std::vector<std::vector<double>> element(allStress.getNumVectors());
   for (std::size_t v = 0; v < element.size(); ++v) {
     const auto col = allStress.getData(v);
     element[v].assign(col.begin(), col.end());
   }
-  const std::vector<double> globals = {report.lambda, report.dlambda, report.beta, 0.0,
+  const std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
                                        static_cast<double>(report.newtonIterations)};
   exodus_->writeStep(report.lambda, nodal, element, globals);
 
   if (printTable_) {
     std::printf("%5d %12.6g %12.6g %7.3g %4d %6d %7d %11.3e %9.2f\n", report.step, report.lambda, report.dlambda,
-                report.beta, report.attempts, report.newtonIterations, 0, report.residualNorm, report.wallSeconds);
+                report.beta, report.attempts, report.newtonIterations, counts.active, report.residualNorm,
+                report.wallSeconds);
     std::fflush(stdout);
   }
 }

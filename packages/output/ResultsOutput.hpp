@@ -38,7 +38,8 @@ class ResultsOutput : public solvers::IncrementObserver {
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
   Teuchos::RCP<const model::Map> rootDofMap_, rootElementMap_;
-  Teuchos::RCP<const model::Import> dofToRoot_, elementToRoot_;
+  Teuchos::RCP<const model::Map> rootNodeMap_;
+  Teuchos::RCP<const model::Import> dofToRoot_, elementToRoot_, nodeToRoot_;
 };
 
 }  // namespace contessa::output

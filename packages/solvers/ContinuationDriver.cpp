@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <sstream>
 #include <cmath>
 
@@ -27,28 +28,42 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Converged when ||f|| ≤ max(absolute, relative · ||f|| at the solve's first iterate). NOX's own
-// relative NormF is relative to a fixed group, not to each increment's start, hence this test.
+// Converged when ||f|| ≤ max(absolute, relative · ||f|| at the solve's first iterate), or when the
+// Newton update has shrunk to round-off: ||Δx|| ≤ update · ||x||. (NOX's relative NormF is relative
+// to a fixed group, not to each increment's start, hence this test.) The update test matters with
+// penalty contact: a penalty of 1e9 on coordinates of order 100 leaves residual noise of about
+// 1e9 · 1e-14 that no iteration can remove, while the update keeps converging quadratically.
 class ResidualTest : public NOX::StatusTest::Generic {
  public:
-  ResidualTest(double absolute, double relative) : absolute_(absolute), relative_(relative) {}
+  ResidualTest(double absolute, double relative, double update)
+      : absolute_(absolute), relative_(relative), update_(update) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
     const double norm = solver.getSolutionGroup().getNormF();
-    if (solver.getNumIterations() == 0) initial_ = norm;
+    if (solver.getNumIterations() == 0) {
+      initial_ = norm;
+      updateNorm_ = -1;
+    } else {
+      auto dx = solver.getSolutionGroup().getX().clone(NOX::DeepCopy);
+      dx->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
+      updateNorm_ = dx->norm();
+      xNorm_ = solver.getSolutionGroup().getX().norm();
+    }
     norm_ = norm;
-    status_ = (std::isfinite(norm) && norm <= std::max(absolute_, relative_ * initial_)) ? NOX::StatusTest::Converged
-                                                                                         : NOX::StatusTest::Unconverged;
+    const bool residualSmall = std::isfinite(norm) && norm <= std::max(absolute_, relative_ * initial_);
+    const bool updateSmall = std::isfinite(norm) && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_;
+    status_ = residualSmall || updateSmall ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& os, int indent) const override {
     for (int i = 0; i < indent; ++i) os << ' ';
-    os << status_ << "||f|| = " << norm_ << " <= max(" << absolute_ << ", " << relative_ << " * " << initial_ << ")\n";
+    os << status_ << "||f|| = " << norm_ << " <= max(" << absolute_ << ", " << relative_ << " * " << initial_
+       << ") or ||dx|| = " << updateNorm_ << " <= " << update_ << " * " << xNorm_ << "\n";
     return os;
   }
 
  private:
-  double absolute_, relative_, initial_ = 0, norm_ = 0;
+  double absolute_, relative_, update_, initial_ = 0, norm_ = 0, updateNorm_ = -1, xNorm_ = 0;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -146,7 +161,7 @@ RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, c
   nox.sublist("Printing").set("Error Stream", errors);
   nox.sublist("Solver Options").set("Observer", observer);
   // An exception in an evaluation fails the solve (and the increment is cut back), not the run.
-  nox.set("Catch Throws During Solve", true);
+  nox.set("Catch Throws During Solve", std::getenv("CONTESSA_DEBUG_THROW") == nullptr);
 
   const auto& deckLoca = piro.sublist("LOCA");
   auto& loca = top->sublist("LOCA");
@@ -185,7 +200,8 @@ RunSummary ContinuationDriver::run() {
   auto combo = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   combo->addStatusTest(rcp(new NOX::StatusTest::FiniteValue()));
   combo->addStatusTest(rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"),
-                                            tests.get<double>("Relative Residual Tolerance"))));
+                                            tests.get<double>("Relative Residual Tolerance"),
+                                            tests.get<double>("Update Tolerance"))));
   combo->addStatusTest(rcp(new NOX::StatusTest::MaxIters(tests.get<int>("Maximum Iterations"))));
 
   RunSummary summary;

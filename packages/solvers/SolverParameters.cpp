@@ -20,11 +20,13 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setChoice(direction, "Method", "Newton", {"Newton"}, "Full Newton with the consistent tangent");
   auto& lineSearch = nox.sublist("Line Search", false, "Globalisation");
   deck::setChoice(lineSearch, "Method", "Full Step", {"Full Step", "Backtrack", "Polynomial"}, "NOX line search");
-  auto& tests = nox.sublist("Status Tests", false, "Newton convergence: converged when either residual test holds");
+  auto& tests = nox.sublist("Status Tests", false, "Newton convergence: converged when any of the three tests holds");
   deck::setPositiveInt(tests, "Maximum Iterations", 25, "Newton iterations before the increment counts as failed");
   deck::setNonNegative(tests, "Relative Residual Tolerance", 1e-10,
                        "Converged when ||f|| <= tol * ||f|| at the increment's first iterate");
   deck::setNonNegative(tests, "Absolute Residual Tolerance", 1e-8, "Converged when ||f|| <= tol (2-norm)");
+  deck::setNonNegative(tests, "Update Tolerance", 1e-10,
+                       "Converged when the Newton update ||dx|| <= tol * ||x|| (round-off floor of penalty contact)");
   auto& printing = nox.sublist("Printing", false, "Solver output");
   printing.set("Newton Details", false, "Print NOX's own per-iteration output besides the increment table");
 

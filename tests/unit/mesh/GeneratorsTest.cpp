@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "common/Error.hpp"
 #include "mesh/Generators.hpp"
@@ -252,4 +255,192 @@ TEST(AnnulusSectorGenerator, RejectsBadSpecs) {
   spec.endAngleDeg = 380.5;
   EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }),
             "End Angle: expected at most 360 degrees beyond Start Angle (10), got 380.5");
+}
+
+// ---- graded (biased) generators ----
+
+namespace {
+
+// Differences of consecutive values: element sizes from node positions.
+std::vector<double> steps(const std::vector<double>& positions) {
+  std::vector<double> h;
+  for (size_t k = 1; k < positions.size(); ++k) h.push_back(positions[k] - positions[k - 1]);
+  return h;
+}
+
+void expectGeometric(const std::vector<double>& h, double bias, double length, const std::string& what) {
+  ASSERT_GE(h.size(), 2u) << what;
+  EXPECT_NEAR(h.back() / h.front(), bias, 1e-12 * bias) << what;
+  const double q = h[1] / h[0];
+  for (size_t k = 1; k < h.size(); ++k) {
+    EXPECT_GT(h[k], 0) << what << " element " << k;
+    EXPECT_NEAR(h[k] / h[k - 1], q, 1e-10 * q) << what << " element " << k;
+  }
+  double sum = 0;
+  for (double v : h) sum += v;
+  EXPECT_NEAR(sum, length, 1e-12 * length) << what;
+}
+
+}  // namespace
+
+TEST(RectangleGenerator, GradedSizesFollowTheBias) {
+  for (const auto& [bx, by] : {std::pair{5.0, 0.2}, std::pair{0.01, 40.0}, std::pair{1 + 1e-9, 1 - 1e-9}}) {
+    RectangleSpec spec;
+    spec.x0 = 0;
+    spec.y0 = 0;
+    spec.lx = 3;
+    spec.ly = 2;
+    spec.nx = 10;
+    spec.ny = 7;
+    spec.biasX = bx;
+    spec.biasY = by;
+    const Mesh m = generateRectangle(spec);
+    std::vector<double> xs, ys;
+    for (int i = 0; i <= spec.nx; ++i) xs.push_back(x(m, i));                    // bottom row, j = 0
+    for (int j = 0; j <= spec.ny; ++j) ys.push_back(y(m, j * (spec.nx + 1)));  // left column, i = 0
+    expectGeometric(steps(xs), bx, spec.lx, "x, bias " + std::to_string(bx));
+    expectGeometric(steps(ys), by, spec.ly, "y, bias " + std::to_string(by));
+    // Every row and column sees the same grading.
+    for (int j = 0; j <= spec.ny; ++j)
+      for (int i = 0; i <= spec.nx; ++i) {
+        EXPECT_EQ(x(m, j * (spec.nx + 1) + i), xs[i]);
+        EXPECT_EQ(y(m, j * (spec.nx + 1) + i), ys[j]);
+      }
+    double area = 0;
+    for (size_t e = 0; e < static_cast<size_t>(m.numElements()); ++e) {
+      const double a = signedArea(m, m.blocks[0], e);
+      EXPECT_GT(a, 0) << e;
+      area += a;
+    }
+    EXPECT_NEAR(area, spec.lx * spec.ly, 1e-12);
+    for (const char* name : {"left", "right", "bottom", "top"}) expectSidesOnNodeSet(m, name);
+  }
+}
+
+TEST(RectangleGenerator, GradedEndpointsAreExact) {
+  RectangleSpec spec;
+  spec.x0 = -0.1;
+  spec.y0 = 0.7;
+  spec.lx = 0.3;
+  spec.ly = 1.1;
+  spec.nx = 9;
+  spec.ny = 13;
+  spec.biasX = 7;
+  spec.biasY = 1.0 / 3;
+  const Mesh m = generateRectangle(spec);
+  EXPECT_EQ(x(m, 0), spec.x0);
+  EXPECT_EQ(y(m, 0), spec.y0);
+  for (GlobalIndex n : m.nodeSet("right").nodes) EXPECT_EQ(x(m, n), spec.x0 + spec.lx);
+  for (GlobalIndex n : m.nodeSet("top").nodes) EXPECT_EQ(y(m, n), spec.y0 + spec.ly);
+  for (GlobalIndex n : m.nodeSet("left").nodes) EXPECT_EQ(x(m, n), spec.x0);
+  for (GlobalIndex n : m.nodeSet("bottom").nodes) EXPECT_EQ(y(m, n), spec.y0);
+}
+
+TEST(RectangleGenerator, UnitBiasIsTheUniformMesh) {
+  RectangleSpec spec;
+  spec.lx = 2.5;
+  spec.ly = 0.7;
+  spec.nx = 7;
+  spec.ny = 3;
+  const Mesh uniform = generateRectangle(spec);
+  spec.biasX = 1;
+  spec.biasY = 1;
+  EXPECT_EQ(generateRectangle(spec).coordinates, uniform.coordinates);
+  for (int i = 0; i <= 7; ++i) EXPECT_NEAR(x(uniform, i), 2.5 * i / 7, 1e-15);
+}
+
+TEST(RectangleGenerator, BiasIsIgnoredForASingleElement) {
+  RectangleSpec spec;
+  spec.lx = 2;
+  spec.nx = 1;
+  spec.biasX = 9;
+  const Mesh m = generateRectangle(spec);
+  EXPECT_EQ(x(m, 0), 0);
+  EXPECT_EQ(x(m, 1), 2);
+}
+
+TEST(RectangleGenerator, RejectsBadBias) {
+  RectangleSpec spec;
+  spec.biasX = 0;
+  EXPECT_EQ(messageOf([&] { generateRectangle(spec); }), "Bias X: expected a value > 0, got 0");
+  spec = {};
+  spec.biasY = -2;
+  EXPECT_EQ(messageOf([&] { generateRectangle(spec); }), "Bias Y: expected a value > 0, got -2");
+  spec = {};
+  spec.biasX = std::nan("");
+  EXPECT_THROW(generateRectangle(spec), InputError);
+  spec = {};
+  spec.biasY = HUGE_VAL;
+  EXPECT_THROW(generateRectangle(spec), InputError);
+  // So strong a grading that the first element vanishes next to x0 = 1.
+  spec = {};
+  spec.x0 = 1;
+  spec.nx = 2;
+  spec.biasX = 1e300;
+  EXPECT_EQ(messageOf([&] { generateRectangle(spec); }),
+            "Bias X: value 1e+300 with 2 elements makes elements too small to represent");
+}
+
+TEST(AnnulusSectorGenerator, GradedSizesFollowTheBias) {
+  AnnulusSectorSpec spec;
+  spec.innerRadius = 100;
+  spec.thickness = 20;
+  spec.startAngleDeg = 0;
+  spec.endAngleDeg = 90;
+  spec.elementsThroughThickness = 8;
+  spec.elementsAroundArc = 30;
+  spec.radialBias = 0.1;  // fine at the outer surface
+  spec.arcBias = 6;       // fine near the start angle
+  const Mesh m = generateAnnulusSector(spec);
+  const int nr = spec.elementsThroughThickness, nt = spec.elementsAroundArc;
+  std::vector<double> radii, angles;
+  for (int i = 0; i <= nr; ++i) radii.push_back(x(m, i));  // θ = 0: y = 0, x = r exactly
+  for (int j = 0; j <= nt; ++j) angles.push_back(angleDeg(m, j * (nr + 1)));
+  expectGeometric(steps(radii), spec.radialBias, spec.thickness, "radial");
+  // atan2 recovers the angles to ~1e-14 degrees, the arc sizes to ~1e-13 relative.
+  const auto h = steps(angles);
+  EXPECT_NEAR(h.back() / h.front(), spec.arcBias, 1e-12 * spec.arcBias);
+  double sum = 0;
+  for (double v : h) sum += v;
+  EXPECT_NEAR(sum, 90, 1e-12);
+  // Exact ends: inner and outer radius, start and end angle.
+  EXPECT_EQ(x(m, 0), 100);
+  EXPECT_EQ(y(m, 0), 0);
+  EXPECT_EQ(x(m, nr), 120);
+  const double degToRad = std::acos(-1.0) / 180.0;
+  const GlobalIndex outerEnd = static_cast<GlobalIndex>(nt) * (nr + 1) + nr;
+  EXPECT_EQ(x(m, outerEnd), 120 * std::cos(90 * degToRad));
+  EXPECT_EQ(y(m, outerEnd), 120 * std::sin(90 * degToRad));
+  for (GlobalIndex n : m.nodeSet("outer").nodes) EXPECT_NEAR(radius(m, n), 120, 1e-12);
+  for (GlobalIndex n : m.nodeSet("inner").nodes) EXPECT_NEAR(radius(m, n), 100, 1e-12);
+  for (size_t e = 0; e < static_cast<size_t>(m.numElements()); ++e) EXPECT_GT(signedArea(m, m.blocks[0], e), 0) << e;
+  for (const char* name : {"inner", "outer", "start", "end"}) expectSidesOnNodeSet(m, name);
+}
+
+TEST(AnnulusSectorGenerator, GradedEndAngleIsExact) {
+  // −50.6 + (87.8 − (−50.6)) is not 87.8 in floating point (and moves the node); the last angle must
+  // still be exactly 87.8 degrees.
+  AnnulusSectorSpec spec;
+  spec.startAngleDeg = -50.6;
+  spec.endAngleDeg = 87.8;
+  spec.elementsThroughThickness = 2;
+  spec.elementsAroundArc = 5;
+  spec.arcBias = 0.5;
+  const Mesh m = generateAnnulusSector(spec);
+  const double theta = 87.8 * (std::acos(-1.0) / 180.0);
+  const GlobalIndex innerEnd = 5 * 3;
+  EXPECT_EQ(x(m, innerEnd), 100 * std::cos(theta));
+  EXPECT_EQ(y(m, innerEnd), 100 * std::sin(theta));
+}
+
+TEST(AnnulusSectorGenerator, RejectsBadBias) {
+  AnnulusSectorSpec spec;
+  spec.radialBias = 0;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }), "Radial Bias: expected a value > 0, got 0");
+  spec = {};
+  spec.arcBias = -0.5;
+  EXPECT_EQ(messageOf([&] { generateAnnulusSector(spec); }), "Arc Bias: expected a value > 0, got -0.5");
+  spec = {};
+  spec.arcBias = std::nan("");
+  EXPECT_THROW(generateAnnulusSector(spec), InputError);
 }

@@ -1,0 +1,161 @@
+#include "contact/ContactInterface2D.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "contact/BoundingBoxTree.hpp"
+#include "contact/HistoryTransfer2D.hpp"
+
+namespace contessa::contact {
+
+ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<char> evaluatesSlave)
+    : spec_(std::move(spec)),
+      evaluatesSlave_(std::move(evaluatesSlave)),
+      element_(spec_.law),
+      history_(spec_.slaveNodes.size()),
+      trialOutput_(spec_.slaveNodes.size()),
+      committedOutput_(spec_.slaveNodes.size()) {
+  spec_.law.validate();
+  for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
+  committedOutput_ = trialOutput_;
+}
+
+std::vector<MasterSegment2D> ContactInterface2D::masterSegments(const NodePosition& position, double loadFactor) const {
+  std::vector<MasterSegment2D> segments;
+  if (spec_.rigidMaster) {
+    const auto& pts = spec_.rigidSurface.points;
+    // Rigid points are not mesh nodes: number them −1, −2, ... so shared vertices are still recognised.
+    for (std::size_t s = 0; s + 1 < pts.size(); ++s) {
+      MasterSegment2D m;
+      m.id = static_cast<int>(s);
+      m.nodes = {-1 - static_cast<int>(s), -2 - static_cast<int>(s)};
+      for (int a = 0; a < 2; ++a)
+        for (int c = 0; c < 2; ++c) m.x[a][c] = pts[s + a][c] + loadFactor * spec_.rigidSurface.motion[c];
+      segments.push_back(m);
+    }
+  } else {
+    for (std::size_t s = 0; s < spec_.masterSegments.size(); ++s) {
+      MasterSegment2D m;
+      m.id = static_cast<int>(s);
+      for (int a = 0; a < 2; ++a) {
+        m.nodes[a] = static_cast<int>(spec_.masterSegments[s][a]);
+        m.x[a] = position(spec_.masterSegments[s][a]);
+      }
+      segments.push_back(m);
+    }
+  }
+  return segments;
+}
+
+void ContactInterface2D::evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) {
+  const auto segments = masterSegments(position, loadFactor);
+  if (committedMaster_.empty()) committedMaster_ = segments;
+
+  // Global search: master segment boxes enlarged by the longest segment, so a slave node finds every
+  // segment it could project on, and its neighbours (corners).
+  double reach = 0;
+  for (const auto& m : segments)
+    reach = std::max(reach, std::hypot(m.x[1][0] - m.x[0][0], m.x[1][1] - m.x[0][1]));
+  std::vector<BoundingBox<2>> boxes(segments.size());
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    boxes[s].include(segments[s].x[0]);
+    boxes[s].include(segments[s].x[1]);
+    boxes[s].enlarge(reach);
+  }
+  const BoundingBoxTree<2> tree(boxes);
+
+  Vector<2> force{};
+  std::vector<int> hits;
+  std::vector<MasterSegment2D> candidates;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const GlobalIndex node = spec_.slaveNodes[k];
+    const Vector<2> xs = position(node);
+    hits.clear();
+    tree.query(xs, hits);
+    candidates.clear();
+    for (int h : hits) candidates.push_back(segments[h]);
+    const SegmentSelection selection = selector_.select(xs, candidates);
+
+    SlaveNodeState out;
+    out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
+    ContactHistory<1> trial = history_.committed(k);
+    if (selection.kind != SelectionKind::None) {
+      // The history is kept on the segment the node projected on at the last commit; re-express it on
+      // the segment chosen now (committed coordinates, so it stays constant within the increment).
+      ContactHistory<1> committed = history_.committed(k);
+      if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
+        committed = transferHistory2D(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+      NodeToSegmentGeometry2D geometry;
+      geometry.slave = xs;
+      geometry.master = segments[selection.segment].x;
+      const NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed);
+      trial = r.trial;
+      out.status = r.status;
+      out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
+      if (r.status != ContactStatus::Open) {
+        // t_N and t_T are tractions (eq. 14–16): the nodal force is the traction times the slave
+        // node's tributary area, so ε_N does not depend on the mesh size.
+        const double area = spec_.slaveAreas[k];
+        std::array<double, 6> residual{};
+        std::array<double, 36> tangent{};
+        std::array<double, 6> dLambda{};
+        for (int i = 0; i < 6; ++i) residual[i] = area * r.residual[i];
+        for (int i = 0; i < 6; ++i)
+          for (int j = 0; j < 6; ++j) tangent[i * 6 + j] = area * r.tangent(i, j);
+        std::array<GlobalIndex, 6> dofs{};
+        dofs[0] = 2 * node;
+        dofs[1] = 2 * node + 1;
+        for (int a = 0; a < 2; ++a)
+          for (int c = 0; c < 2; ++c)
+            dofs[2 + 2 * a + c] = spec_.rigidMaster ? -1 : 2 * spec_.masterSegments[selection.segment][a] + c;
+        if (spec_.rigidMaster) {
+          // x_master = X + λ · motion: ∂r_c/∂λ = Σ_master K[:, master] · motion.
+          for (int i = 0; i < 6; ++i)
+            for (int a = 0; a < 2; ++a)
+              for (int c = 0; c < 2; ++c) dLambda[i] += tangent[i * 6 + 2 + 2 * a + c] * spec_.rigidSurface.motion[c];
+        }
+        sink(dofs.data(), 6, residual.data(), tangent.data(), dLambda.data());
+        force[0] -= residual[0];
+        force[1] -= residual[1];
+      }
+    } else {
+      trial.status = ContactStatus::Open;
+    }
+    out.slip = trial.accumulatedSlip;
+    if (updateTrial) {
+      history_.setTrial(k, trial);
+      trialOutput_[k] = out;
+    }
+  }
+  if (updateTrial) {
+    trialForce_ = force;
+    lastSegments_ = segments;
+  }
+}
+
+void ContactInterface2D::commit() {
+  ContactCounts counts;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const auto status = history_.trial(k).status;
+    if (status == ContactStatus::Open) continue;
+    ++counts.active;
+    if (!history_.committed(k).isInContact()) ++counts.newlyActive;
+    if (status == ContactStatus::Stick) ++counts.stick;
+    if (status == ContactStatus::Slip) ++counts.slip;
+  }
+  history_.commit();
+  committedOutput_ = trialOutput_;
+  committedForce_ = trialForce_;
+  committedCounts_ = counts;
+  if (!lastSegments_.empty()) committedMaster_ = lastSegments_;
+}
+
+void ContactInterface2D::rollback() {
+  history_.rollback();
+  trialOutput_ = committedOutput_;
+  trialForce_ = committedForce_;
+}
+
+}  // namespace contessa::contact

@@ -1,0 +1,98 @@
+#pragma once
+// Coupling of one 2D contact interface: which slave nodes touch which master segments, their contact
+// forces and tangents handed to the assembler, and the committed/trial contact history. Detection
+// (BoundingBoxTree + SegmentSelector2D) and resolution (NodeToSegmentContact2D) are used as they are;
+// this class only organises them over an interface. Pure C++: the model turns the global DOF ids it
+// receives into Tpetra entries.
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "contact/ContactHistory.hpp"
+#include "contact/ContactLawParameters.hpp"
+#include "contact/NodeToSegmentContact2D.hpp"
+#include "contact/SegmentSelector2D.hpp"
+
+namespace contessa::contact {
+
+using GlobalIndex = long long;
+
+/// A rigid master surface: a polyline whose points move rigidly by λ · motion. The rigid body lies to
+/// the LEFT of the direction of traversal, so its outward normal is on the right (Line2Facet).
+struct RigidSurface2D {
+  std::vector<Vector<2>> points;  ///< reference positions, in order
+  Vector<2> motion{};             ///< displacement of every point at load factor 1
+};
+
+/// Everything that defines an interface, in mesh terms.
+struct ContactInterfaceSpec2D {
+  std::string name;
+  std::vector<GlobalIndex> slaveNodes;  ///< mesh nodes, sorted
+  std::vector<double> slaveAreas;       ///< tributary length of each slave node (reference), unit thickness
+  /// Deformable master: mesh node pairs, ordered so the master body's outward normal is on the right.
+  std::vector<std::array<GlobalIndex, 2>> masterSegments;
+  bool rigidMaster = false;
+  RigidSurface2D rigidSurface;  ///< when rigidMaster
+  ContactLawParameters law;
+};
+
+/// State of one slave node for output (at the last converged increment).
+struct SlaveNodeState {
+  double pressure = 0;  ///< contact pressure −t_N ≥ 0 (force per unit area), eq. (16)
+  double gap = 0;       ///< g_N, eq. (4); +∞ when no master segment is in reach
+  ContactStatus status = ContactStatus::Open;
+  double slip = 0;      ///< accumulated slip g_T, eq. (7)
+};
+
+struct ContactCounts {
+  int active = 0, newlyActive = 0, stick = 0, slip = 0;
+};
+
+class ContactInterface2D {
+ public:
+  /// `evaluatesSlave[i]`: this rank evaluates slave node i (its owner does, so each contribution is
+  /// assembled once).
+  ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<char> evaluatesSlave);
+
+  /// Current position of a mesh node (reference + displacement).
+  using NodePosition = std::function<Vector<2>(GlobalIndex node)>;
+  /// One contact element: global DOF ids (node·2 + c; −1 for a rigid master's DOFs, which are not
+  /// unknowns), the residual r_c and tangent ∂r_c/∂u (row-major), and ∂r_c/∂λ (rigid master motion).
+  using Sink = std::function<void(const GlobalIndex* dofs, int numDofs, const double* residual,
+                                  const double* tangent, const double* dResidualdLambda)>;
+
+  /// Evaluates every slave node this rank owns at the current positions and load factor. With
+  /// `updateTrial`, stores the trial history (Newton iterations); without, leaves it alone (reactions).
+  void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink);
+
+  /// The increment converged: trial → committed (and the master positions the history refers to).
+  void commit();
+  /// The increment is abandoned: back to the committed state.
+  void rollback();
+
+  const ContactInterfaceSpec2D& spec() const { return spec_; }
+  const std::vector<char>& evaluatesSlave() const { return evaluatesSlave_; }
+  /// Output of the owned slave nodes at the last commit.
+  const std::vector<SlaveNodeState>& committedStates() const { return committedOutput_; }
+  /// Counts over owned slave nodes at the last commit (new = open at the commit before).
+  ContactCounts committedCounts() const { return committedCounts_; }
+  /// Total force the master exerts on the owned slave nodes at the last commit (per unit thickness).
+  Vector<2> committedSlaveForce() const { return committedForce_; }
+
+ private:
+  std::vector<MasterSegment2D> masterSegments(const NodePosition& position, double loadFactor) const;
+
+  ContactInterfaceSpec2D spec_;
+  std::vector<char> evaluatesSlave_;
+  NodeToSegmentContact2D element_;
+  SegmentSelector2D selector_;
+  ContactHistoryStore<1> history_;
+  std::vector<MasterSegment2D> committedMaster_;  ///< master positions of the committed configuration
+  std::vector<MasterSegment2D> lastSegments_;     ///< master positions of the latest trial evaluation
+  std::vector<SlaveNodeState> trialOutput_, committedOutput_;
+  Vector<2> trialForce_{}, committedForce_{};
+  ContactCounts committedCounts_;
+};
+
+}  // namespace contessa::contact
