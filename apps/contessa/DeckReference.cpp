@@ -54,6 +54,10 @@ std::string deckReference() {
   md << "### Mesh types (`Problem/Mesh`)\n\n";
   for (const auto& type : deck::meshTypes()) {
     md << "#### `Type` = `" << type << "`\n\n";
+    if (type == "Parts")
+      md << "Separate bodies (for contact): every other entry is a sublist named after the part, holding a mesh of\n"
+            "one of the types above plus `Offset` (Array(double), a translation). Blocks and sets are renamed\n"
+            "`<part>_<name>`; a part with one block names it `<part>`.\n\n";
     describe(md, *deck::meshValidParameters(type), "Problem/Mesh", 5);
   }
   md << "### `Problem/Blocks/<block name>`\n\n";
@@ -67,6 +71,8 @@ std::string deckReference() {
   describe(md, *deck::dirichletValidParameters(), "Problem/Dirichlet Conditions/<name>", 4);
   md << "### `Problem/Nodal Forces/<name>`\n\n";
   describe(md, *deck::nodalForceValidParameters(), "Problem/Nodal Forces/<name>", 4);
+  md << "### `Problem/Contact/<name>`\n\n";
+  describe(md, *deck::contactValidParameters(), "Problem/Contact/<name>", 4);
   md << "### `Problem/Regression/<name>`\n\n";
   describe(md, *deck::regressionValidParameters(), "Problem/Regression/<name>", 4);
   md << "## `Piro`\n\n";

@@ -10,6 +10,7 @@
 #include "deck/ParameterValidation.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/Generators.hpp"
+#include "mesh/MeshMerge.hpp"
 
 namespace contessa::deck {
 namespace {
@@ -37,13 +38,17 @@ mesh::Mesh generate(const std::string& where, F&& make) {
   }
 }
 
-mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
-  const std::string where = "Problem/Mesh";
+mesh::Mesh buildSingleMesh(ParameterList& list, const std::string& where, const std::string& deckDirectory,
+                           bool isPart) {
+  std::vector<std::string> types = meshTypes();
+  if (isPart) types.pop_back();  // "Parts" do not nest
   requireInput(list.isParameter("Type") && list.isType<std::string>("Type"),
-               where + "/Type: required; expected one of " + joinNames(meshTypes()));
+               where + "/Type: required; expected one of " + joinNames(types));
   const std::string type = list.get<std::string>("Type");
-  requireOneOf(where + "/Type", type, meshTypes());
-  validateAndSetDefaults(list, *meshValidParameters(type), where);
+  requireOneOf(where + "/Type", type, types);
+  auto valid = Teuchos::rcp(new ParameterList(*meshValidParameters(type)));
+  if (isPart) valid->set("Offset", Teuchos::Array<double>(), "Translation of this part (x, y); empty = none");
+  validateAndSetDefaults(list, *valid, where);
 
   mesh::Mesh mesh;
   if (type == "Rectangle") {
@@ -54,6 +59,8 @@ mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
     s.ly = list.get<double>("Length Y");
     s.nx = list.get<int>("Elements X");
     s.ny = list.get<int>("Elements Y");
+    s.biasX = list.get<double>("Bias X");
+    s.biasY = list.get<double>("Bias Y");
     s.blockName = list.get<std::string>("Block Name");
     mesh = generate(where, [&] { return mesh::generateRectangle(s); });
   } else if (type == "Annulus Sector") {
@@ -64,6 +71,8 @@ mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
     s.endAngleDeg = list.get<double>("End Angle");
     s.elementsThroughThickness = list.get<int>("Elements Through Thickness");
     s.elementsAroundArc = list.get<int>("Elements Around Arc");
+    s.radialBias = list.get<double>("Radial Bias");
+    s.arcBias = list.get<double>("Arc Bias");
     s.blockName = list.get<std::string>("Block Name");
     mesh = generate(where, [&] { return mesh::generateAnnulusSector(s); });
   } else {
@@ -72,6 +81,36 @@ mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
     if (file.front() != '/' && !deckDirectory.empty()) file = deckDirectory + "/" + file;
     requireInput(std::ifstream(file).good(), where + "/File Name: mesh file '" + file + "' does not exist");
     mesh = mesh::readExodusMesh(file);
+  }
+  if (isPart) {
+    const auto& offset = list.get<Teuchos::Array<double>>("Offset");
+    if (!offset.empty()) {
+      requireInput(static_cast<int>(offset.size()) == mesh.dimension,
+                   where + "/Offset: expected " + std::to_string(mesh.dimension) + " values");
+      mesh = mesh::translateMesh(std::move(mesh), std::vector<double>(offset.begin(), offset.end()));
+    }
+  }
+  return mesh;
+}
+
+mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
+  const std::string where = "Problem/Mesh";
+  mesh::Mesh mesh;
+  if (list.isType<std::string>("Type") && list.get<std::string>("Type") == "Parts") {
+    // Separate bodies (contact): each named sublist is a mesh of its own; blocks and sets get the
+    // part's name as a prefix (mergeMeshes).
+    std::vector<std::pair<std::string, mesh::Mesh>> parts;
+    for (auto it = list.begin(); it != list.end(); ++it) {
+      const std::string& name = list.name(it);
+      if (name == "Type") continue;
+      requireInput(list.isSublist(name), where + "/" + name + ": expected a sublist (one per part) besides Type");
+      parts.emplace_back(name, mesh::Mesh());
+    }
+    requireInput(!parts.empty(), where + ": Type Parts needs at least one part sublist");
+    for (auto& [name, part] : parts) part = buildSingleMesh(list.sublist(name), where + "/" + name, deckDirectory, true);
+    mesh = mesh::mergeMeshes(parts);
+  } else {
+    mesh = buildSingleMesh(list, where, deckDirectory, false);
   }
   mesh.validate(where);
   return mesh;
@@ -190,7 +229,7 @@ std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& l
 
 }  // namespace
 
-std::vector<std::string> meshTypes() { return {"Rectangle", "Annulus Sector", "Exodus File"}; }
+std::vector<std::string> meshTypes() { return {"Rectangle", "Annulus Sector", "Exodus File", "Parts"}; }
 
 RCP<const ParameterList> meshValidParameters(const std::string& type) {
   auto p = rcp(new ParameterList("Mesh"));
@@ -202,6 +241,8 @@ RCP<const ParameterList> meshValidParameters(const std::string& type) {
     setPositive(*p, "Length Y", 1.0, "Height");
     setPositiveInt(*p, "Elements X", 1, "Elements along x");
     setPositiveInt(*p, "Elements Y", 1, "Elements along y");
+    setPositive(*p, "Bias X", 1.0, "Last over first element width along x (geometric grading; 1 = uniform)");
+    setPositive(*p, "Bias Y", 1.0, "Last over first element height along y (geometric grading; 1 = uniform)");
     p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: left, right, bottom, top (node set 'all' too)");
   } else if (type == "Annulus Sector") {
     setPositive(*p, "Inner Radius", 100.0, "Inner radius, centre at the origin");
@@ -210,9 +251,13 @@ RCP<const ParameterList> meshValidParameters(const std::string& type) {
     p->set("End Angle", 90.0, "End angle in degrees (> Start Angle)");
     setPositiveInt(*p, "Elements Through Thickness", 13, "Elements across the wall");
     setPositiveInt(*p, "Elements Around Arc", 101, "Elements along the arc");
+    setPositive(*p, "Radial Bias", 1.0, "Outermost over innermost element thickness (geometric grading; 1 = uniform)");
+    setPositive(*p, "Arc Bias", 1.0, "Last over first element angle along the arc (geometric grading; 1 = uniform)");
     p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: inner, outer, start, end (node set 'all' too)");
-  } else {
+  } else if (type == "Exodus File") {
     p->set("File Name", std::string(""), "Exodus II mesh file (relative to the deck's directory); required");
+  } else {
+    // Parts: the children are user-named sublists, each a mesh of another type plus "Offset".
   }
   return p;
 }
