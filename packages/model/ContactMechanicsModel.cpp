@@ -105,6 +105,14 @@ void ContactMechanicsModel::buildGraph() {
         for (int c = 0; c < dim_; ++c) masterDofs.push_back(overlapMap_->getLocalElement(node * dim_ + c));
     std::sort(masterDofs.begin(), masterDofs.end());
     masterDofs.erase(std::unique(masterDofs.begin(), masterDofs.end()), masterDofs.end());
+    // A master segment's own couplings exist in the global graph (its element), but this rank's
+    // overlap rows of a master node owned elsewhere must hold them too, to receive contact terms.
+    for (const auto& seg : spec.masterSegments)
+      for (GO a : seg)
+        for (GO b : seg)
+          for (int c = 0; c < dim_; ++c)
+            for (int d = 0; d < dim_; ++d)
+              rows[overlapMap_->getLocalElement(a * dim_ + c)].push_back(overlapMap_->getLocalElement(b * dim_ + d));
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
       if (!contacts_[i].evaluatesSlave()[k]) continue;
       for (int c = 0; c < dim_; ++c) {
@@ -126,8 +134,18 @@ void ContactMechanicsModel::buildGraph() {
   for (LO i = 0; i < numOverlap; ++i)
     if (!rows[i].empty()) overlapGraph->insertLocalIndices(i, Teuchos::ArrayView<const LO>(rows[i]));
   overlapGraph->fillComplete(ownedMap_, ownedMap_);
-  // Rows shared between ranks receive entries from each: the export sizes the owned rows exactly.
-  auto ownedGraph = Tpetra::exportAndFillCompleteCrsGraph<CrsGraph>(overlapGraph, *exporter_, ownedMap_, ownedMap_);
+  // Rows shared between ranks receive entries from each: the sum of the contributions bounds a row.
+  Vector overlapCounts(overlapMap_), ownedCounts(ownedMap_);
+  {
+    auto c = overlapCounts.getDataNonConst(0);
+    for (LO i = 0; i < numOverlap; ++i) c[i] = static_cast<double>(rows[i].size());
+  }
+  ownedCounts.doExport(overlapCounts, *exporter_, Tpetra::ADD);
+  std::vector<std::size_t> perRow;
+  for (double c : ownedCounts.getData(0)) perRow.push_back(std::max<std::size_t>(1, static_cast<std::size_t>(c)));
+  auto ownedGraph = rcp(new CrsGraph(ownedMap_, Teuchos::ArrayView<const std::size_t>(perRow)));
+  ownedGraph->doExport(*overlapGraph, *exporter_, Tpetra::INSERT);
+  ownedGraph->fillComplete(ownedMap_, ownedMap_);
   overlapGraph_ = overlapGraph;
   ownedGraph_ = ownedGraph;
   overlapMatrix_ = rcp(new CrsMatrix(overlapGraph_));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <cmath>
 
@@ -10,6 +11,7 @@
 #include <LOCA_Thyra.H>
 #include <LOCA_Thyra_SaveDataStrategy.H>
 #include <NOX_Observer.hpp>
+#include <NOX_Solver_LineSearchBased.H>
 #include <NOX_StatusTest_Combo.H>
 #include <NOX_StatusTest_FiniteValue.H>
 #include <NOX_StatusTest_MaxIters.H>
@@ -45,7 +47,11 @@ class ResidualTest : public NOX::StatusTest::Generic {
     } else {
       auto dx = solver.getSolutionGroup().getX().clone(NOX::DeepCopy);
       dx->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
-      updateNorm_ = dx->norm();
+      // The Newton direction, not the damped step: a line search that shrinks the step must not
+      // pass for convergence.
+      const auto* lineSearch = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver);
+      const double step = lineSearch != nullptr ? lineSearch->getStepSize() : 1.0;
+      updateNorm_ = step > 0 ? dx->norm() / step : std::numeric_limits<double>::infinity();
       xNorm_ = solver.getSolutionGroup().getX().norm();
     }
     norm_ = norm;
