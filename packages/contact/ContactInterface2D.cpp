@@ -80,7 +80,8 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     SlaveNodeState out;
     out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
     ContactHistory<1> trial = history_.committed(k);
-    if (selection.kind != SelectionKind::None) {
+    const bool frozenOpen = frozen_ && !history_.committed(k).isInContact();
+    if (selection.kind != SelectionKind::None && !frozenOpen) {
       // The history is kept on the segment the node projected on at the last commit; re-express it on
       // the segment chosen now (committed coordinates, so it stays constant within the increment).
       ContactHistory<1> committed = history_.committed(k);
@@ -132,6 +133,26 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     trialForce_ = force;
     lastSegments_ = segments;
   }
+}
+
+std::vector<SlaveGapChange> ContactInterface2D::gapChanges() const {
+  std::vector<SlaveGapChange> out;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
+    if (evaluatesSlave_[k])
+      out.push_back({committedOutput_[k].gap, trialOutput_[k].gap, history_.committed(k).isInContact()});
+  return out;
+}
+
+std::vector<SlaveGapChange> ContactInterface2D::gapChangesAt(const NodePosition& position, double loadFactor) const {
+  const auto segments = masterSegments(position, loadFactor);
+  std::vector<SlaveGapChange> out;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const SegmentSelection selection = selector_.select(position(spec_.slaveNodes[k]), segments);
+    const double gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
+    out.push_back({committedOutput_[k].gap, gap, history_.committed(k).isInContact()});
+  }
+  return out;
 }
 
 void ContactInterface2D::commit() {

@@ -45,6 +45,13 @@ struct SlaveNodeState {
   double slip = 0;      ///< accumulated slip g_T, eq. (7)
 };
 
+/// The gap of an owned slave node at the last commit and at the latest trial evaluation (for the
+/// load-step correction of eq. 11).
+struct SlaveGapChange {
+  double committedGap = 0, trialGap = 0;
+  bool inContactAtCommit = false;
+};
+
 struct ContactCounts {
   int active = 0, newlyActive = 0, stick = 0, slip = 0;
 };
@@ -65,6 +72,16 @@ class ContactInterface2D {
   /// Evaluates every slave node this rank owns at the current positions and load factor. With
   /// `updateTrial`, stores the trial history (Newton iterations); without, leaves it alone (reactions).
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink);
+
+  /// Gaps of the owned slave nodes: committed and at the latest trial evaluation.
+  std::vector<SlaveGapChange> gapChanges() const;
+  /// Gaps of the owned slave nodes at the given positions and load factor, against the committed ones
+  /// (no element, no history: a look ahead at a predicted state).
+  std::vector<SlaveGapChange> gapChangesAt(const NodePosition& position, double loadFactor) const;
+
+  /// While frozen, nodes open at the last commit carry no force (their gaps are still measured): the
+  /// first Newton iterate then shows where the body goes without new contacts (eq. 11 of Contact Beta).
+  void setNewContactsFrozen(bool frozen) { frozen_ = frozen; }
 
   /// The increment converged: trial → committed (and the master positions the history refers to).
   void commit();
@@ -93,6 +110,7 @@ class ContactInterface2D {
   std::vector<SlaveNodeState> trialOutput_, committedOutput_;
   Vector<2> trialForce_{}, committedForce_{};
   ContactCounts committedCounts_;
+  bool frozen_ = false;
 };
 
 }  // namespace contessa::contact

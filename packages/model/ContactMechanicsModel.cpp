@@ -388,6 +388,57 @@ RCP<MultiVector> ContactMechanicsModel::contactNodalFields() const {
   return out;
 }
 
+namespace {
+// Every rank needs every slave's gap change to sort the β^k of eq. (12): gather them all.
+std::vector<contact::SlaveGapChange> gatherAll(const Comm& comm, const std::vector<contact::SlaveGapChange>& local) {
+  std::vector<double> packed;
+  for (const auto& g : local) {
+    packed.push_back(g.committedGap);
+    packed.push_back(g.trialGap);
+    packed.push_back(g.inContactAtCommit ? 1.0 : 0.0);
+  }
+  const int size = comm.getSize();
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  const int mine = static_cast<int>(packed.size());
+  Teuchos::gatherAll(comm, 1, &mine, size, counts.data());
+  for (int r = 0; r < size; ++r) offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> all(offsets[size]);
+  // Teuchos has no gatherv: every rank contributes a zero-padded slice, summed.
+  std::vector<double> slice(offsets[size], 0.0);
+  std::copy(packed.begin(), packed.end(), slice.begin() + offsets[comm.getRank()]);
+  if (!all.empty()) Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(all.size()), slice.data(), all.data());
+  std::vector<contact::SlaveGapChange> out;
+  for (std::size_t i = 0; i + 2 < all.size(); i += 3) out.push_back({all[i], all[i + 1], all[i + 2] != 0.0});
+  return out;
+}
+}  // namespace
+
+std::vector<contact::SlaveGapChange> ContactMechanicsModel::contactGapChanges() const {
+  std::vector<contact::SlaveGapChange> local;
+  for (const auto& interface : contacts_) {
+    const auto g = interface.gapChanges();
+    local.insert(local.end(), g.begin(), g.end());
+  }
+  return gatherAll(*comm_, local);
+}
+
+std::vector<contact::SlaveGapChange> ContactMechanicsModel::contactGapChangesAt(const Vector& x, double loadFactor) const {
+  overlapX_->doImport(x, *importer_, Tpetra::INSERT);
+  auto u = overlapX_->getData(0);
+  const auto& X = problem_.mesh.coordinates;
+  const auto position = [&](GlobalIndex node) {
+    contact::Vector<2> p;
+    for (int c = 0; c < 2; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
+    return p;
+  };
+  std::vector<contact::SlaveGapChange> local;
+  for (const auto& interface : contacts_) {
+    const auto g = interface.gapChangesAt(position, loadFactor);
+    local.insert(local.end(), g.begin(), g.end());
+  }
+  return gatherAll(*comm_, local);
+}
+
 contact::ContactCounts ContactMechanicsModel::contactCounts() const {
   int local[4] = {0, 0, 0, 0}, global[4] = {0, 0, 0, 0};
   for (const auto& interface : contacts_) {

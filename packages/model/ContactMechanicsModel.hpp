@@ -62,6 +62,16 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   static std::vector<std::string> contactFieldNames();
   /// Sums over all ranks and interfaces.
   contact::ContactCounts contactCounts() const;
+  /// Gaps of every slave node (all ranks, all interfaces) at the last commit and at the latest
+  /// evaluation — or, given x and λ, at that state — for the load-step correction of eq. (11).
+  std::vector<contact::SlaveGapChange> contactGapChanges() const;
+  std::vector<contact::SlaveGapChange> contactGapChangesAt(const Vector& x, double loadFactor) const;
+  /// Contact Beta, Restart mode: nodes open at the last commit get no contact force while frozen.
+  void setNewContactsFrozen(bool frozen) const {
+    for (auto& c : contacts_) c.setNewContactsFrozen(frozen);
+    newContactsFrozen_ = frozen;
+  }
+  bool newContactsFrozen() const { return newContactsFrozen_; }
   /// Force the master exerts on the slave body, per interface (both passes of a two-pass interface
   /// are summed under the interface name), summed over ranks.
   std::vector<std::pair<std::string, std::array<double, 2>>> contactForces() const;
@@ -108,6 +118,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
   mutable int jacobianEvaluations_ = 0;
   mutable double lastLoadFactor_ = 0;
+  mutable bool newContactsFrozen_ = false;
 };
 
 }  // namespace contessa::model

@@ -126,8 +126,12 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
 
 void ResultsOutput::attemptFailed(const solvers::IncrementReport& report) {
   if (root_ && printTable_) {
-    std::printf("%5s %12.6g %12.6g %7s %4d %6d %7s %11s %9.2f  failed: cut back\n", "-", report.lambda,
-                report.dlambda, "-", report.attempts, report.newtonIterations, "-", "-", report.wallSeconds);
+    if (report.betaRestart)
+      std::printf("%5s %12.6g %12.6g %7.3g %4d %6d %7s %11s %9.2f  restart with beta\n", "-", report.lambda,
+                  report.dlambda, report.beta, report.attempts, report.newtonIterations, "-", "-", report.wallSeconds);
+    else
+      std::printf("%5s %12.6g %12.6g %7s %4d %6d %7s %11s %9.2f  failed: cut back\n", "-", report.lambda,
+                  report.dlambda, "-", report.attempts, report.newtonIterations, "-", "-", report.wallSeconds);
     std::fflush(stdout);
   }
 }

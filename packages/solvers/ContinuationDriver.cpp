@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include <NOX_Thyra_Vector.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
+#include "solvers/ContactBetaStepSize.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/StepSizeFactory.hpp"
 
@@ -37,8 +39,9 @@ using Clock = std::chrono::steady_clock;
 // 1e9 · 1e-14 that no iteration can remove, while the update keeps converging quadratically.
 class ResidualTest : public NOX::StatusTest::Generic {
  public:
-  ResidualTest(double absolute, double relative, double update)
-      : absolute_(absolute), relative_(relative), update_(update) {}
+  /// `mayConverge` vetoes convergence (Contact Beta: not while new contacts are frozen).
+  ResidualTest(double absolute, double relative, double update, std::function<bool()> mayConverge)
+      : absolute_(absolute), relative_(relative), update_(update), mayConverge_(std::move(mayConverge)) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
     const double norm = solver.getSolutionGroup().getNormF();
     if (solver.getNumIterations() == 0) {
@@ -57,7 +60,7 @@ class ResidualTest : public NOX::StatusTest::Generic {
     norm_ = norm;
     const bool residualSmall = std::isfinite(norm) && norm <= std::max(absolute_, relative_ * initial_);
     const bool updateSmall = std::isfinite(norm) && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_;
-    status_ = residualSmall || updateSmall ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    status_ = (residualSmall || updateSmall) && mayConverge_() ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
@@ -70,6 +73,7 @@ class ResidualTest : public NOX::StatusTest::Generic {
 
  private:
   double absolute_, relative_, update_, initial_ = 0, norm_ = 0, updateNorm_ = -1, xNorm_ = 0;
+  std::function<bool()> mayConverge_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -91,8 +95,13 @@ class NewtonCounter : public NOX::Observer {
 class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
  public:
   IncrementBookkeeper(model::ContactMechanicsModel& model, IncrementObserver& observer, const NewtonCounter& newton,
-                      double initialLambda)
-      : model_(model), observer_(observer), newton_(newton), lastLambda_(initialLambda), start_(Clock::now()) {}
+                      const ContactBetaState* contactBeta, double initialLambda)
+      : model_(model),
+        observer_(observer),
+        newton_(newton),
+        contactBeta_(contactBeta),
+        lastLambda_(initialLambda),
+        start_(Clock::now()) {}
 
   void postProcessContinuationStep(LOCA::Abstract::Iterator::StepStatus status) override {
     if (status == LOCA::Abstract::Iterator::Successful) {
@@ -104,6 +113,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
       ++attempts_;
       IncrementReport r = report(model_.lastLoadFactor());
       r.dlambda = r.lambda - lastLambda_;
+      r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested;
+      if (r.betaRestart) r.beta = contactBeta_->beta;
       observer_.attemptFailed(r);
     }
   }
@@ -132,6 +143,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   IncrementReport report(double lambda) const {
     IncrementReport r;
     r.step = first_ ? 0 : increments + 1;
+    r.beta = contactBeta_ != nullptr && !first_ ? contactBeta_->beta : 1.0;
     r.lambda = lambda;
     r.attempts = attempts_;
     r.newtonIterations = newton_.iterations;
@@ -143,6 +155,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   model::ContactMechanicsModel& model_;
   IncrementObserver& observer_;
   const NewtonCounter& newton_;
+  const ContactBetaState* contactBeta_;
   double lastLambda_;
   Clock::time_point start_;
   bool first_ = true, pendingSuccess_ = false;
@@ -191,7 +204,11 @@ RunSummary ContinuationDriver::run() {
   auto newton = rcp(new NewtonCounter());
   auto errors = rcp(new std::ostringstream());
   auto params = locaParameters(piro_, newton, errors);
-  auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory()));
+  const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
+  const bool contactBeta = stepSize.get<std::string>("Method") == "Contact Beta";
+  ContactBetaState betaState = contactBetaState(stepSize);
+  betaState.finalLoadFactor = piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value");
+  auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*model_, betaState)));
 
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
   LOCA::ParameterVector p;
@@ -199,15 +216,20 @@ RunSummary ContinuationDriver::run() {
   auto x0 = model_->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_, p, 0, true));
-  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, lambda0));
+  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr, lambda0));
   group->setSaveDataStrategy(bookkeeper);
 
   const auto& tests = piro_.sublist("NOX").sublist("Status Tests");
   auto combo = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+  // Order matters: the Contact Beta check may recompute the residual before the residual test reads it.
   combo->addStatusTest(rcp(new NOX::StatusTest::FiniteValue()));
+  if (contactBeta && betaState.mode == ContactBetaState::Mode::Restart)
+    combo->addStatusTest(rcp(new ContactBetaRestartTest(*model_, betaState)));
+  const auto* model = model_.get();
   combo->addStatusTest(rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"),
                                             tests.get<double>("Relative Residual Tolerance"),
-                                            tests.get<double>("Update Tolerance"))));
+                                            tests.get<double>("Update Tolerance"),
+                                            [model] { return !model->newContactsFrozen(); })));
   combo->addStatusTest(rcp(new NOX::StatusTest::MaxIters(tests.get<int>("Maximum Iterations"))));
 
   RunSummary summary;

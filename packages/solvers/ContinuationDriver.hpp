@@ -21,6 +21,7 @@ struct IncrementReport {
   int newtonIterations = 0;  ///< Newton iterations of the converged solve
   double residualNorm = 0;   ///< ||f|| at convergence
   double wallSeconds = 0;    ///< since the start of the run
+  bool betaRestart = false;  ///< a failed attempt stopped for a Contact Beta correction (not a Newton failure)
 };
 
 class IncrementObserver {

@@ -10,7 +10,7 @@ using Teuchos::ParameterList;
 using Teuchos::RCP;
 using Teuchos::rcp;
 
-std::vector<std::string> stepSizeMethods() { return {"Constant", "Adaptive"}; }
+std::vector<std::string> stepSizeMethods() { return {"Constant", "Adaptive", "Contact Beta"}; }
 
 RCP<const ParameterList> piroValidParameters() {
   auto piro = rcp(new ParameterList("Piro"));
@@ -42,7 +42,8 @@ RCP<const ParameterList> piroValidParameters() {
                   "Constant: previous solution; Tangent: dx/dλ from the Jacobian");
   auto& step = loca.sublist("Step Size", false, "Increment control");
   deck::setChoice(step, "Method", "Constant", stepSizeMethods(),
-                  "Constant: fixed Δλ, cut back on failure; Adaptive: LOCA's iteration-count control");
+                  "Constant: fixed Δλ, cut back on failure; Adaptive: LOCA's iteration-count control; "
+                  "Contact Beta: N_c contacts per increment (eq. 10-13)");
   deck::setPositive(step, "Initial Step Size", 0.1, "Δλ of the first increment");
   deck::setPositive(step, "Min Step Size", 1e-6, "Smallest Δλ before the run gives up");
   deck::setPositive(step, "Max Step Size", 1.0, "Largest Δλ");
@@ -50,6 +51,16 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setBounded(step, "Successful Step Increase Factor", 1.26, 1.0, 100.0,
                    "Δλ multiplier after a successful increment (Constant recovers towards the initial step)");
   deck::setBounded(step, "Aggressiveness", 0.5, 0.0, 1.0, "Adaptive only: how fast Δλ grows after easy increments");
+  deck::setPositiveInt(step, "Contacts Per Step", 2,
+                       "Contact Beta: N_c, the number of slave nodes allowed to come into contact per increment (eq. 13)");
+  deck::setChoice(step, "Mode", "Restart", {"Restart", "Predictor"},
+                  "Contact Beta: Restart = the paper's Table 1 (β at the first Newton iteration, one restart); "
+                  "Predictor = β from the predicted state before the solve (no restart)");
+  deck::setBounded(step, "Max Growth Factor", 2.0, 1.0, 1e3, "Contact Beta: largest β (growth of Δλ per increment)");
+  deck::setBounded(step, "Max Shrink Factor", 0.05, 1e-6, 1.0, "Contact Beta: smallest β (shrink of Δλ per increment)");
+  deck::setBounded(step, "Restart Tolerance", 0.1, 0.0, 1.0, "Contact Beta, Restart: no restart when |β − 1| is below this");
+  deck::setBounded(step, "Next Contact Fraction", 0.9, 0.0, 0.999,
+                   "Contact Beta: β between β^{N_c} (0 = eq. 13 as printed) and β^{N_c+1} (closing N_c nodes, not N_c + 1)");
 
   piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' added by Contessa)");
   return piro;

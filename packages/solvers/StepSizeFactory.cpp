@@ -1,12 +1,18 @@
 #include "solvers/StepSizeFactory.hpp"
 
+#include "solvers/ContactBetaStepSize.hpp"
+
 namespace contessa::solvers {
 
-bool StepSizeFactory::createStepSizeStrategy(const std::string& /*strategyName*/,
+bool StepSizeFactory::createStepSizeStrategy(const std::string& strategyName,
                                              const Teuchos::RCP<LOCA::Parameter::SublistParser>& /*topParams*/,
-                                             const Teuchos::RCP<Teuchos::ParameterList>& /*stepsizeParams*/,
-                                             Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& /*strategy*/) {
-  // No strategy of Contessa's own yet: LOCA's "Constant" and "Adaptive" are used as they are.
+                                             const Teuchos::RCP<Teuchos::ParameterList>& stepsizeParams,
+                                             Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) {
+  // Names LOCA does not know are offered here first; LOCA's own ("Constant", "Adaptive") fall through.
+  if (strategyName == "Contact Beta") {
+    strategy = Teuchos::rcp(new ContactBetaStepSize(*stepsizeParams, model_, contactBeta_));
+    return true;
+  }
   return false;
 }
 

@@ -3,16 +3,27 @@
 // strategies that LOCA does not know are registered here by name.
 #include <LOCA_Abstract_Factory.H>
 
+#include "model/ContactMechanicsModel.hpp"
+
 namespace contessa::solvers {
+
+struct ContactBetaState;
 
 class StepSizeFactory : public LOCA::Abstract::Factory {
  public:
+  /// `model` and `contactBeta` serve the "Contact Beta" strategy; both outlive the run.
+  StepSizeFactory(const model::ContactMechanicsModel& model, ContactBetaState& contactBeta)
+      : model_(model), contactBeta_(contactBeta) {}
   // LOCA's global data owns this factory: keeping a strong reference back would leak both.
   void init(const Teuchos::RCP<LOCA::GlobalData>& /*globalData*/) override {}
   bool createStepSizeStrategy(const std::string& strategyName,
                               const Teuchos::RCP<LOCA::Parameter::SublistParser>& topParams,
                               const Teuchos::RCP<Teuchos::ParameterList>& stepsizeParams,
                               Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) override;
+
+ private:
+  const model::ContactMechanicsModel& model_;
+  ContactBetaState& contactBeta_;
 };
 
 }  // namespace contessa::solvers

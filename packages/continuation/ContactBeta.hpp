@@ -1,0 +1,47 @@
+#pragma once
+// The load-step correction of the reference paper (section 2.1, Table 1, after Chamoret et al. 2002):
+// choose the increment so that only N_c slave nodes come into contact in it. Pure arithmetic on the
+// gaps of the slave nodes: the continuation strategy (solvers/ContactBetaStepSize) supplies them.
+#include <vector>
+
+namespace contessa::continuation {
+
+/// The normal gap of one slave node at the start of the increment (time t, converged) and at the
+/// first iterate of t + Δt (after the first Newton iteration, or at the predicted state).
+struct GapChange {
+  double gapStart = 0;         ///< ^t g_N (eq. 4); +∞ when no master segment is in reach
+  double gapEnd = 0;           ///< ^{t+Δt} g_N
+  bool inContactAtStart = false;
+};
+
+struct BetaOptions {
+  int contactsPerStep = 2;     ///< N_c
+  double maxGrowth = 2.0;      ///< β ≤ maxGrowth (the step may grow at most this much per increment)
+  double maxShrink = 0.05;     ///< β ≥ maxShrink
+  /// Where β falls between β^{N_c} (0: the paper's eq. 13) and β^{N_c+1} (1): see computeBeta.
+  double nextContactFraction = 0.9;
+  /// Nodes open by less than this at the start count as touching: β^k = 0 (they take one of the N_c
+  /// places, since they close in any step).
+  double touchingGap = 1e-10;
+};
+
+struct BetaResult {
+  double beta = 1;                 ///< the correction factor of eq. (10), within [maxShrink, maxGrowth]
+  std::vector<double> candidates;  ///< β^k of eq. (11), sorted as in eq. (12)
+  int predictedContacts = 0;       ///< candidates with β^k ≤ β: nodes expected to close in βΔt
+};
+
+/// β^k = ^t g / (^t g − ^{t+Δt} g), eq. (11), for every node likely to come into contact: open at the
+/// start and approaching (g_t − g_{t+Δt} > 0); 0 for a touching node (g_t ≤ touchingGap). Others
+/// return a negative value (not a candidate).
+double closureFraction(const GapChange& change, double touchingGap);
+
+/// Sorts the β^k (eq. 12) and returns the correction. Eq. (13) takes β = β^{N_c}, at which node N_c
+/// is predicted to touch with zero gap, so whether it counts as in contact is left to round-off, and
+/// nothing else closes. Contessa goes further by default, to β^{N_c} + f (β^{N_c+1} − β^{N_c}) with
+/// f = nextContactFraction = 0.9: the largest step (with a margin) in which N_c nodes close and node
+/// N_c + 1 does not; f = 0 is eq. (13) as printed. With exactly N_c candidates, or fewer, the step
+/// grows to the cap (the paper: "β > 1 grows the step when the user's step is too small").
+BetaResult computeBeta(const std::vector<GapChange>& changes, const BetaOptions& options);
+
+}  // namespace contessa::continuation
