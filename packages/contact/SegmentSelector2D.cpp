@@ -69,7 +69,27 @@ SegmentSelection SegmentSelector2D::select(const Vector<2>& slave,
     }
   }
 
-  // 3. Nothing inside and no corner: the node has left the master surface.
+  // 3. A penetrating node just past a free end of the master surface (a flush edge: the end segment
+  //    tilts as it deforms, so a node sitting on the edge projects a little outside): it stays in
+  //    contact with that segment, extended by at most freeEndTolerance in ξ.
+  if (best.kind == SelectionKind::None) {
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      const auto& p = projected[c];
+      if (!p.converged || !p.isPenetrating() || !p.isInside(options_.freeEndTolerance)) continue;
+      if (std::abs(p.gap) < bestDistance) {
+        bestDistance = std::abs(p.gap);
+        best.kind = SelectionKind::OnSegment;
+        best.segment = candidates[c].id;
+        best.vertexNode = -1;
+        best.projection = p;
+        best.gap = p.gap;
+        best.normal = p.normal;
+        best.closestPoint = p.position;
+      }
+    }
+  }
+
+  // 4. Nothing inside and no corner: the node has left the master surface.
   if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
   return best;
 }

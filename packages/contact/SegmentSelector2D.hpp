@@ -39,6 +39,10 @@ struct SegmentSelectorOptions {
   /// A projection with |ξ̄| ≤ 1 + insideTolerance counts as inside its segment. Slightly positive so a
   /// node sitting exactly on a vertex does not flicker between "on segment" and "at vertex".
   double insideTolerance = 1e-8;
+  /// A PENETRATING node past a free end of the master surface stays on the end segment while
+  /// |ξ̄| ≤ 1 + freeEndTolerance (0.1: 5 % of the segment length), so a slave node on a flush edge
+  /// is not dropped when the end segment tilts under load.
+  double freeEndTolerance = 0.1;
   ProjectionOptions projection{};
 };
 
@@ -56,8 +60,10 @@ struct SegmentSelectorOptions {
 ///    inside projection only when it is strictly closer (possible only for non-adjacent candidates).
 ///    The element is then evaluated on `segment`, the neighbour whose projection overshoots least
 ///    (i.e. on that segment extended by the overshoot).
-///  - a node whose projections all fall outside and whose clamped vertex is a free end of the
-///    candidate set has left the master surface: kind None, not in contact.
+///  - a PENETRATING node just past a free end (|ξ̄| ≤ 1 + freeEndTolerance) stays on the end segment:
+///    on a flush edge the end segment tilts under load and the edge node projects slightly outside.
+///  - otherwise a node whose projections all fall outside and whose clamped vertex is a free end of
+///    the candidate set has left the master surface: kind None, not in contact.
 class SegmentSelector2D {
  public:
   explicit SegmentSelector2D(SegmentSelectorOptions options = {}) : options_(options) {}

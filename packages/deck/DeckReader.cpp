@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <fstream>
 
+#include <Teuchos_FileInputSource.hpp>
+#include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include "common/Error.hpp"
@@ -55,6 +57,52 @@ bool setTypedImpl(Teuchos::ParameterList& list, const std::string& name, const T
   return false;
 }
 
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\n\r");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t\n\r") - first + 1);
+}
+
+// Teuchos reads numbers with a stream and keeps whatever prefix parses ("abc" → 0, "1e-2x" → 0.01):
+// every numeric and boolean value of the deck is checked here first, so a typo is an error.
+void checkValueTexts(const Teuchos::XMLObject& node, const std::string& where, const std::string& path) {
+  if (node.getTag() == "ParameterList") {
+    const std::string name = node.hasAttribute("name") ? node.getAttribute("name") : "";
+    for (int i = 0; i < node.numChildren(); ++i) checkValueTexts(node.getChild(i), joinPath(where, name), path);
+    return;
+  }
+  if (node.getTag() != "Parameter" || !node.hasAttribute("type") || !node.hasAttribute("value")) return;
+  const std::string type = node.getAttribute("type");
+  const std::string name = node.hasAttribute("name") ? node.getAttribute("name") : "?";
+  const std::string paramPath = joinPath(where, name);
+  std::vector<std::string> items;
+  std::string text = node.getAttribute("value");
+  std::string element = type;
+  if (type.rfind("Array(", 0) == 0) {
+    element = type.substr(6, type.size() - 7);
+    text = trimmed(text);
+    requireInput(text.size() >= 2 && text.front() == '{' && text.back() == '}',
+                 path + ": " + paramPath + ": expected an array {a, b, ...}, got '" + text + "'");
+    std::string inner = text.substr(1, text.size() - 2);
+    std::size_t start = 0;
+    while (!trimmed(inner).empty()) {
+      const auto comma = inner.find(',', start);
+      items.push_back(trimmed(inner.substr(start, comma - start)));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  } else {
+    items.push_back(trimmed(text));
+  }
+  for (const auto& item : items) {
+    bool ok = true;
+    if (element == "double") { double v; ok = parseDouble(item, v); }
+    else if (element == "int") { int v; ok = parseInt(item, v); }
+    else if (element == "bool") { bool v; ok = parseBool(item, v); }
+    requireInput(ok, path + ": " + paramPath + ": '" + item + "' is not a valid " + element);
+  }
+}
+
 }  // namespace
 
 bool setTypedFromText(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
@@ -66,7 +114,11 @@ Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
   std::ifstream probe(path);
   requireInput(probe.good(), path + ": cannot open deck file");
   try {
+    const auto root = Teuchos::FileInputSource(path).getObject();
+    for (int i = 0; i < root.numChildren(); ++i) checkValueTexts(root.getChild(i), "", path);
     return Teuchos::getParametersFromXmlFile(path);
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     std::string msg = e.what();
     // Teuchos' messages run over several lines; keep the gist on one.

@@ -221,3 +221,19 @@ TEST(SegmentSelector2D, NodeLeavingTheMasterSurfaceIsNotInContact) {
   // No candidates at all.
   EXPECT_EQ(selector.select({0.0, 0.0}, {}).kind, cc::SelectionKind::None);
 }
+
+TEST(SegmentSelector2D, PenetratingNodeJustPastAFreeEndStaysInContact) {
+  // A flush edge: the end segment (0,0)→(−2,0) ends at the free vertex (−2, 0). ξ̄ = −1 − 0.05 there
+  // for x = −2.05 (5 % of a half-length past the end).
+  const std::vector<cc::MasterSegment2D> candidates{segment(0, 0, 1, {2.0, 0.0}, {0.0, 0.0}),
+                                                    segment(1, 1, 2, {0.0, 0.0}, {-2.0, 0.0})};
+  const cc::SegmentSelector2D selector;
+  const auto penetrating = selector.select({-2.05, -0.01}, candidates);
+  EXPECT_EQ(penetrating.kind, cc::SelectionKind::OnSegment);
+  EXPECT_EQ(penetrating.segment, 1);
+  EXPECT_NEAR(penetrating.gap, -0.01, 1e-12);
+  // The same place above the surface is off the master (an open node past the end), and further out
+  // than the tolerance a penetrating node is off it too.
+  EXPECT_EQ(selector.select({-2.05, 0.01}, candidates).kind, cc::SelectionKind::None);
+  EXPECT_EQ(selector.select({-2.3, -0.01}, candidates).kind, cc::SelectionKind::None);
+}
