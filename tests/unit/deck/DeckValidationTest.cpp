@@ -1,6 +1,8 @@
 // Deck validation: every kind of bad input gives a one-line InputError naming the deck parameter.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include "common/Error.hpp"
@@ -194,6 +196,74 @@ TEST(DeckOverrides, TextThatDoesNotParseIsATypeError) {
   expectProblemError(*p, "Problem/Mesh/Elements Y: expected type int, got string 'many'");
 }
 
+// ---- Contact interfaces: every parameter has a bad-input case. ------------------------------------
+
+Teuchos::RCP<ParameterList> contactProblem() {
+  auto p = goodProblem();
+  auto& c = p->sublist("Contact").sublist("plate");
+  c.set("Slave Side Set", std::string("top"));
+  c.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(Teuchos::tuple<double>(3.0, 1.5, -1.0, 1.5)));
+  c.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -1.0)));
+  c.set("Normal Penalty", 1e6);
+  return p;
+}
+
+TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
+  auto p = contactProblem();
+  auto def = contessa::deck::buildProblem(*p, "");
+  ASSERT_EQ(def.contacts.size(), 1u);
+  EXPECT_TRUE(def.contacts[0].rigidMaster);
+  EXPECT_EQ(def.contacts[0].slaveNodes.size(), 3u);  // the top of a 2 × 1 mesh
+  EXPECT_NEAR(def.contacts[0].slaveAreas[0] + def.contacts[0].slaveAreas[1] + def.contacts[0].slaveAreas[2], 2.0, 1e-14);
+  auto q = goodProblem();
+  auto& c = q->sublist("Contact").sublist("self");
+  c.set("Slave Side Set", std::string("top"));
+  c.set("Master Side Set", std::string("bottom"));
+  c.set("Normal Penalty", 1e6);
+  c.set("Two Pass", true);
+  def = contessa::deck::buildProblem(*q, "");
+  EXPECT_EQ(def.contacts.size(), 2u);  // two-pass: the second pass with the roles swapped
+}
+
+TEST(ContactValidation, BadParametersAreNamed) {
+  const std::vector<std::pair<std::function<void(ParameterList&)>, std::string>> cases = {
+      {[](ParameterList& c) { c.set("Slave Side Set", std::string("")); }, "Problem/Contact/plate/Slave Side Set: required"},
+      {[](ParameterList& c) { c.set("Slave Side Set", std::string("topp")); },
+       "Problem/Contact/plate/Slave Side Set: side set 'topp' does not exist in the mesh (known:"},
+      {[](ParameterList& c) { c.set("Master Side Set", std::string("bottom")); },
+       "Problem/Contact/plate: give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not both"},
+      {[](ParameterList& c) { c.sublist("Rigid Surface").set("Points", Teuchos::Array<double>()); },
+       "not neither"},
+      {[](ParameterList& c) { c.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(3, 1.0)); },
+       "Problem/Contact/plate/Rigid Surface/Points: expected x0, y0, x1, y1"},
+      {[](ParameterList& c) { c.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(4, 1.0)); },
+       "Problem/Contact/plate/Rigid Surface/Points: two consecutive points coincide"},
+      {[](ParameterList& c) { c.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(3, 0.0)); },
+       "Problem/Contact/plate/Rigid Surface/Motion: expected two values"},
+      {[](ParameterList& c) { c.set("Normal Penalty", 0.0); }, "Problem/Contact/plate/Normal Penalty: required; expected a value > 0"},
+      {[](ParameterList& c) { c.set("Normal Penalty", -1.0); }, "Problem/Contact/plate/Normal Penalty: expected a value in [0"},
+      {[](ParameterList& c) { c.set("Friction Coefficient", 0.3); },
+       "Problem/Contact/plate/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0"},
+      {[](ParameterList& c) { c.set("Friction Coefficient", -0.1); }, "Problem/Contact/plate/Friction Coefficient: expected a value in [0"},
+      {[](ParameterList& c) { c.set("Tangential Penalty", -1.0); }, "Problem/Contact/plate/Tangential Penalty: expected a value in [0"},
+      {[](ParameterList& c) { c.set("Two Pass", true); }, "Problem/Contact/plate/Two Pass: a rigid master has no slave side of its own"},
+      {[](ParameterList& c) { c.set("Penalty", 1.0); }, "Problem/Contact/plate/Penalty: unknown parameter"},
+  };
+  for (const auto& [breakIt, expected] : cases) {
+    auto p = contactProblem();
+    breakIt(p->sublist("Contact").sublist("plate"));
+    expectProblemError(*p, expected);
+  }
+  auto q = goodProblem();
+  auto& c = q->sublist("Contact").sublist("self");
+  c.set("Slave Side Set", std::string("top"));
+  c.set("Master Side Set", std::string("top"));
+  c.set("Normal Penalty", 1e6);
+  expectProblemError(*q, "Problem/Contact/self/Master Side Set: must differ from the Slave Side Set");
+  q->sublist("Contact").sublist("self").set("Master Side Set", std::string("nowhere"));
+  expectProblemError(*q, "Problem/Contact/self/Master Side Set: side set 'nowhere' does not exist");
+}
+
 void expectPiroError(ParameterList& piro, int ranks, const std::string& expected) {
   try {
     contessa::solvers::validatePiro(piro, ranks);
@@ -214,7 +284,7 @@ TEST(PiroValidation, DefaultsAndMumpsByDefault) {
 TEST(PiroValidation, UnknownStepSizeMethod) {
   ParameterList piro("Piro");
   piro.sublist("LOCA").sublist("Step Size").set("Method", std::string("Bisection"));
-  expectPiroError(piro, 1, "Piro/LOCA/Step Size/Method: expected one of Constant, Adaptive; got 'Bisection'");
+  expectPiroError(piro, 1, "Piro/LOCA/Step Size/Method: expected one of Constant, Adaptive, Contact Beta; got 'Bisection'");
 }
 
 TEST(PiroValidation, StepSizesMustBeOrdered) {
@@ -228,6 +298,23 @@ TEST(PiroValidation, Klu2IsRefusedOnSeveralRanks) {
   piro.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
   EXPECT_NO_THROW(contessa::solvers::validatePiro(piro, 1));
   expectPiroError(piro, 2, "gives wrong solutions on more than one MPI rank");
+}
+
+TEST(PiroValidation, ContactBetaParameters) {
+  const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+      {{"Contacts Per Step", "0"}, "Piro/LOCA/Step Size/Contacts Per Step: expected an integer in [1, inf]"},
+      {{"Mode", "Corrector"}, "Piro/LOCA/Step Size/Mode: expected one of Restart, Predictor; got 'Corrector'"},
+      {{"Max Growth Factor", "0.5"}, "Piro/LOCA/Step Size/Max Growth Factor: expected a value in [1, 1000]"},
+      {{"Max Shrink Factor", "2"}, "Piro/LOCA/Step Size/Max Shrink Factor: expected a value in [1e-06, 1]"},
+      {{"Restart Tolerance", "-0.1"}, "Piro/LOCA/Step Size/Restart Tolerance: expected a value in [0, 1]"},
+      {{"Next Contact Fraction", "1"}, "Piro/LOCA/Step Size/Next Contact Fraction: expected a value in [0, 0.999]"},
+  };
+  for (const auto& [setting, expected] : cases) {
+    ParameterList deck("deck");
+    deck.sublist("Piro").sublist("LOCA").sublist("Step Size").set("Method", std::string("Contact Beta"));
+    contessa::deck::applyOverrides(deck, {"Piro/LOCA/Step Size/" + setting.first + "=" + setting.second});
+    expectPiroError(deck.sublist("Piro"), 1, expected);
+  }
 }
 
 TEST(PiroValidation, MistypedNoxParameter) {
