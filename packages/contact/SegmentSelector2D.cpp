@@ -21,22 +21,23 @@ SegmentSelection SegmentSelector2D::select(const Vector<2>& slave,
 
   SegmentSelection best;
   double bestDistance = std::numeric_limits<double>::infinity();
+  // The node is on candidate c's segment if its projection is closer than the best so far.
+  const auto considerOnSegment = [&](std::size_t c) {
+    const auto& p = projected[c];
+    if (!(std::abs(p.gap) < bestDistance)) return;
+    bestDistance = std::abs(p.gap);
+    best.kind = SelectionKind::OnSegment;
+    best.segment = candidates[c].id;
+    best.vertexNode = -1;
+    best.projection = p;
+    best.gap = p.gap;
+    best.normal = p.normal;
+    best.closestPoint = p.position;
+  };
 
   // 1. Projections inside their segment: the smaller |g_N| wins (concave corners, eq. 4).
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    const auto& p = projected[c];
-    if (!p.converged || !p.isInside(options_.insideTolerance)) continue;
-    if (std::abs(p.gap) < bestDistance) {
-      bestDistance = std::abs(p.gap);
-      best.kind = SelectionKind::OnSegment;
-      best.segment = candidates[c].id;
-      best.vertexNode = -1;
-      best.projection = p;
-      best.gap = p.gap;
-      best.normal = p.normal;
-      best.closestPoint = p.position;
-    }
-  }
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+    if (projected[c].converged && projected[c].isInside(options_.insideTolerance)) considerOnSegment(c);
 
   // 2. Corner regions: a vertex that is the clamped closest point of two candidate segments.
   for (std::size_t a = 0; a < candidates.size(); ++a) {
@@ -72,22 +73,10 @@ SegmentSelection SegmentSelector2D::select(const Vector<2>& slave,
   // 3. A penetrating node just past a free end of the master surface (a flush edge: the end segment
   //    tilts as it deforms, so a node sitting on the edge projects a little outside): it stays in
   //    contact with that segment, extended by at most freeEndTolerance in ξ.
-  if (best.kind == SelectionKind::None) {
-    for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const auto& p = projected[c];
-      if (!p.converged || !p.isPenetrating() || !p.isInside(options_.freeEndTolerance)) continue;
-      if (std::abs(p.gap) < bestDistance) {
-        bestDistance = std::abs(p.gap);
-        best.kind = SelectionKind::OnSegment;
-        best.segment = candidates[c].id;
-        best.vertexNode = -1;
-        best.projection = p;
-        best.gap = p.gap;
-        best.normal = p.normal;
-        best.closestPoint = p.position;
-      }
-    }
-  }
+  if (best.kind == SelectionKind::None)
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      if (projected[c].converged && projected[c].isPenetrating() && projected[c].isInside(options_.freeEndTolerance))
+        considerOnSegment(c);
 
   // 4. Nothing inside and no corner: the node has left the master surface.
   if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
