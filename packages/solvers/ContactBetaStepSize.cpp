@@ -46,6 +46,7 @@ ContactBetaState contactBetaState(const Teuchos::ParameterList& p) {
 NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solver::Generic& solver,
                                                                 NOX::StatusTest::CheckType) {
   status_ = NOX::StatusTest::Unconverged;
+  state_.justUnfrozen = false;
   // Table 1: β is determined at the first iteration (i = 1) of an uncorrected attempt (I_cor = 0).
   // That iterate was computed with the contact set of time t (new contacts frozen), so a node about to
   // close shows the penetration it would reach without contact: ^{t+Δt} g_N of eq. (11).
@@ -62,6 +63,7 @@ NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solve
   // The step stands (the measured β seeds the next increment's step): contact is enforced from here on, and the residual of this iterate is
   // recomputed with it before the convergence tests see it.
   state_.carriedBeta = result.beta;
+  state_.justUnfrozen = true;
   model_.setNewContactsFrozen(false);
   auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
   const auto x = group.getX().clone(NOX::DeepCopy);

@@ -28,6 +28,7 @@ struct ContactBetaState {
   double finalLoadFactor = 1;                      ///< the Stepper's Max Value
   double carriedBeta = 1;         ///< Restart: β measured but not applied (within tolerance) — used for the next base step
   bool afterFailure = false;      ///< the attempt follows a failed Newton solve: β may not grow it back
+  bool justUnfrozen = false;      ///< new contacts were switched on at this iterate: its update proves nothing
   double beta = 1;                ///< β of the current increment (1 = no correction), for the history
   int predictedContacts = 0;
 };

@@ -39,9 +39,16 @@ using Clock = std::chrono::steady_clock;
 // 1e9 · 1e-14 that no iteration can remove, while the update keeps converging quadratically.
 class ResidualTest : public NOX::StatusTest::Generic {
  public:
-  /// `mayConverge` vetoes convergence (Contact Beta: not while new contacts are frozen).
-  ResidualTest(double absolute, double relative, double update, std::function<bool()> mayConverge)
-      : absolute_(absolute), relative_(relative), update_(update), mayConverge_(std::move(mayConverge)) {}
+  /// `mayConverge` vetoes convergence (Contact Beta: not while new contacts are frozen);
+  /// `updateMeaningful` disables the update test at an iterate whose update was computed for another
+  /// residual (Contact Beta: new contacts just switched on).
+  ResidualTest(double absolute, double relative, double update, std::function<bool()> mayConverge,
+               std::function<bool()> updateMeaningful)
+      : absolute_(absolute),
+        relative_(relative),
+        update_(update),
+        mayConverge_(std::move(mayConverge)),
+        updateMeaningful_(std::move(updateMeaningful)) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
     const double norm = solver.getSolutionGroup().getNormF();
     if (solver.getNumIterations() == 0) {
@@ -59,7 +66,8 @@ class ResidualTest : public NOX::StatusTest::Generic {
     }
     norm_ = norm;
     const bool residualSmall = std::isfinite(norm) && norm <= std::max(absolute_, relative_ * initial_);
-    const bool updateSmall = std::isfinite(norm) && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_;
+    const bool updateSmall =
+        std::isfinite(norm) && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_ && updateMeaningful_();
     status_ = (residualSmall || updateSmall) && mayConverge_() ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
     return status_;
   }
@@ -73,7 +81,7 @@ class ResidualTest : public NOX::StatusTest::Generic {
 
  private:
   double absolute_, relative_, update_, initial_ = 0, norm_ = 0, updateNorm_ = -1, xNorm_ = 0;
-  std::function<bool()> mayConverge_;
+  std::function<bool()> mayConverge_, updateMeaningful_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -229,7 +237,8 @@ RunSummary ContinuationDriver::run() {
   combo->addStatusTest(rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"),
                                             tests.get<double>("Relative Residual Tolerance"),
                                             tests.get<double>("Update Tolerance"),
-                                            [model] { return !model->newContactsFrozen(); })));
+                                            [model] { return !model->newContactsFrozen(); },
+                                            [&betaState] { return !betaState.justUnfrozen; })));
   combo->addStatusTest(rcp(new NOX::StatusTest::MaxIters(tests.get<int>("Maximum Iterations"))));
 
   RunSummary summary;
