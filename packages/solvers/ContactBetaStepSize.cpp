@@ -26,7 +26,9 @@ continuation::BetaResult currentBeta(const ContactBetaState& state, const std::v
   auto options = state.options;
   if (state.afterFailure) options.maxGrowth = std::min(options.maxGrowth, 1.0);
   if (state.stepSize > 0) {
-    options.maxGrowth = std::min(options.maxGrowth, state.maxStep / state.stepSize);
+    // No growth past the step bound, nor past the final load (the stepper clips there anyway).
+    options.maxGrowth = std::min({options.maxGrowth, state.maxStep / state.stepSize,
+                                  std::max(1.0, (state.finalLoadFactor - state.startLoadFactor) / state.stepSize)});
     options.maxShrink = std::max(options.maxShrink, state.minStep / state.stepSize);
   }
   return continuation::computeBeta(toGapChanges(gaps), options);
@@ -136,6 +138,7 @@ NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
   }
   if (stepSize < min_) {
     stepSize = min_;
+    state_.hitMinimumStep = true;
     return NOX::Abstract::Group::Failed;
   }
   stepSize = std::min(stepSize, max_);
@@ -143,6 +146,7 @@ NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
   const double remaining = state_.finalLoadFactor - curGroup.getContinuationParameter();
   if (remaining > stepSize && remaining < 1.25 * stepSize && remaining <= max_) stepSize = remaining;
   state_.stepSize = stepSize;
+  state_.startLoadFactor = curGroup.getContinuationParameter();
   state_.minStep = min_;
   state_.maxStep = max_;
   if (state_.mode == ContactBetaState::Mode::Predictor) {

@@ -26,6 +26,8 @@ struct ContactBetaState {
   bool restartRequested = false;  ///< Restart: the attempt was stopped for a β correction
   double stepSize = 0, minStep = 0, maxStep = 0;  ///< the attempt's Δλ and its bounds
   double finalLoadFactor = 1;                      ///< the Stepper's Max Value
+  double startLoadFactor = 0;                      ///< λ at the start of the attempt
+  bool hitMinimumStep = false;                     ///< the strategy stopped the run at Min Step Size
   double carriedBeta = 1;         ///< Restart: β measured but not applied (within tolerance) — used for the next base step
   bool afterFailure = false;      ///< the attempt follows a failed Newton solve: β may not grow it back
   bool justUnfrozen = false;      ///< new contacts were switched on at this iterate: its update proves nothing

@@ -254,7 +254,10 @@ RunSummary ContinuationDriver::run() {
       why.erase(0, why.find_first_not_of(" \t"));
       why.erase(why.find_last_not_of(" \t") + 1);
       summary.message = "continuation stopped at load factor " + std::to_string(bookkeeper->lastLambda()) + " (" +
-                        (why.empty() ? std::string("maximum number of steps reached") : "LOCA: " + why) + ")";
+                        (!why.empty()                ? "LOCA: " + why
+                         : betaState.hitMinimumStep ? std::string("the step size fell below Min Step Size")
+                                                    : std::string("maximum number of steps reached")) +
+                        ")";
     }
   } catch (const std::exception& e) {
     summary.message = std::string("solver error: ") + e.what();
