@@ -17,6 +17,7 @@
 #include "solvers/ContinuationDriver.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/SolverParameters.hpp"
+#include "solvers/StaticSolveDriver.hpp"
 
 namespace contessa::app {
 namespace {
@@ -95,8 +96,9 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
                 static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
 
   // 3. Continuation in the load factor.
-  solvers::ContinuationDriver driver(model, piro, results);
-  const solvers::RunSummary summary = driver.run();
+  const solvers::RunSummary summary = piro.get<std::string>("Solver Type") == "NOX"
+                                          ? solvers::solveStatic(model, piro, results)
+                                          : solvers::ContinuationDriver(model, piro, results).run();
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
                 "load factor %.6g\n",

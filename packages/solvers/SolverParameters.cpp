@@ -14,6 +14,9 @@ std::vector<std::string> stepSizeMethods() { return {"Constant", "Adaptive", "Co
 
 RCP<const ParameterList> piroValidParameters() {
   auto piro = rcp(new ParameterList("Piro"));
+  deck::setChoice(*piro, "Solver Type", "LOCA", {"LOCA", "NOX"},
+                  "LOCA: natural continuation in the load factor (the Piro/LOCA list); NOX: one Newton solve at load "
+                  "factor 1 through Piro::NOXSolver");
   auto& nox = piro->sublist("NOX", false, "Newton solver (NOX parameter names)");
   deck::setChoice(nox, "Nonlinear Solver", "Line Search Based", {"Line Search Based"}, "NOX solver");
   auto& direction = nox.sublist("Direction", false, "Search direction");

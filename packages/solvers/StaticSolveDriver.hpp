@@ -1,0 +1,15 @@
+#pragma once
+// One static solve at load factor 1 through Piro::NOXSolver ("Piro/Solver Type" = "NOX"), for
+// problems that need no continuation; the result is reported as a single increment.
+#include <Teuchos_ParameterList.hpp>
+
+#include "model/ContactMechanicsModel.hpp"
+#include "solvers/ContinuationDriver.hpp"
+
+namespace contessa::solvers {
+
+/// `piro` is the validated deck list; NOX settings and status tests come from Piro/NOX.
+RunSummary solveStatic(const Teuchos::RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
+                       IncrementObserver& observer);
+
+}  // namespace contessa::solvers
