@@ -8,6 +8,10 @@
 
 namespace contessa::contact {
 
+namespace {
+constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
+}  // namespace
+
 ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<char> evaluatesSlave)
     : spec_(std::move(spec)),
       evaluatesSlave_(std::move(evaluatesSlave)),
@@ -80,7 +84,10 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     SlaveNodeState out;
     out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
     ContactHistory<1> trial = history_.committed(k);
-    const bool frozenOpen = frozen_ && !history_.committed(k).isInContact();
+    // Frozen: nodes open at the commit carry no force — except nodes already touching (zero gap),
+    // which close at once in any step and shape how their neighbours approach.
+    const bool frozenOpen =
+        frozen_ && !history_.committed(k).isInContact() && !(committedOutput_[k].gap <= kTouchingGap);
     if (selection.kind != SelectionKind::None && !frozenOpen) {
       // The history is kept on the segment the node projected on at the last commit; re-express it on
       // the segment chosen now (committed coordinates, so it stays constant within the increment).
