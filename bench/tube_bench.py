@@ -34,7 +34,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 DECK = os.path.join(ROOT, "inputs", "tube_bending.xml")
 NAME = "tube_bending"
 STEP = "Piro/LOCA/Step Size/"
-# The deck's regression checks expect the Contact Beta N_c = 2 answer (33 increments); a wide
+# The deck's regression checks expect the Contact Beta N_c = 2 answer (32 increments); a wide
 # tolerance keeps the increment check from failing the other variants (exit status 3).
 COMMON = ["Problem/Regression/increments/Absolute Tolerance=1000"]
 USER_STEP = 1.0 / 47.0  # 1.6 mm of 75.2 mm
