@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -188,7 +187,7 @@ RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, c
   nox.sublist("Printing").set("Error Stream", errors);
   nox.sublist("Solver Options").set("Observer", observer);
   // An exception in an evaluation fails the solve (and the increment is cut back), not the run.
-  nox.set("Catch Throws During Solve", std::getenv("CONTESSA_DEBUG_THROW") == nullptr);
+  nox.set("Catch Throws During Solve", true);
 
   const auto& deckLoca = piro.sublist("LOCA");
   auto& loca = top->sublist("LOCA");
