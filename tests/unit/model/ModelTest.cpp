@@ -153,24 +153,29 @@ TEST_P(ModelTest, JacobianAndDfDpMatchCentralDifferences) {
   EXPECT_LT(Thyra::norm_inf(*fd), 1e-8 * std::max(1.0, Thyra::norm_inf(*e.dfdp->col(0))));
 }
 
-// Full Newton from the undeformed state straight to λ = 1 (no continuation): the residual norms.
-std::vector<double> newtonResiduals(model::ContactMechanicsModel& m, RCP<Thyra::VectorBase<double>>& x) {
-  x = Thyra::createMember(m.get_x_space());
-  Thyra::assign(x.ptr(), 0.0);
-  auto lowsFactory = m.get_W_factory();
+// Full Newton at load factor λ from x (in place), MUMPS for the linear solves; the residual norms.
+std::vector<double> newtonAt(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda,
+                             double tolerance = 1e-10) {
   std::vector<double> norms;
-  for (int it = 0; it < 20; ++it) {
-    auto e = evaluate(m, *x, 1.0, true);
+  for (int it = 0; it < 30; ++it) {
+    auto e = evaluate(m, x, lambda, true);
     norms.push_back(Thyra::norm_2(*e.f));
-    if (norms.back() < 1e-11 || !std::isfinite(norms.back())) break;
-    auto lows = Thyra::linearOpWithSolve<double>(*lowsFactory, e.W.getConst());
+    if (norms.back() < tolerance || !std::isfinite(norms.back())) break;
+    auto lows = Thyra::linearOpWithSolve<double>(*m.get_W_factory(), e.W.getConst());
     auto dx = Thyra::createMember(m.get_x_space());
     Thyra::assign(dx.ptr(), 0.0);
     const auto status = Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
     EXPECT_EQ(status.solveStatus, Thyra::SOLVE_STATUS_CONVERGED);
-    Thyra::Vp_StV(x.ptr(), -1.0, *dx);
+    Thyra::Vp_StV(Teuchos::ptrFromRef(x), -1.0, *dx);
   }
   return norms;
+}
+
+// Full Newton from the undeformed state straight to λ = 1 (no continuation): the residual norms.
+std::vector<double> newtonResiduals(model::ContactMechanicsModel& m, RCP<Thyra::VectorBase<double>>& x) {
+  x = Thyra::createMember(m.get_x_space());
+  Thyra::assign(x.ptr(), 0.0);
+  return newtonAt(m, *x, 1.0, 1e-11);
 }
 
 TEST_P(ModelTest, NewtonConvergesQuadratically) {
@@ -305,22 +310,6 @@ deck::ProblemDefinition makeContactProblem(double mu, bool deformableBase, bool 
     contact.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(2, 0.0));
   }
   return deck::buildProblem(*p, "");
-}
-
-// Newton at load factor λ from x (in place); returns the residual norms.
-std::vector<double> newtonAt(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda) {
-  std::vector<double> norms;
-  for (int it = 0; it < 30; ++it) {
-    auto e = evaluate(m, x, lambda, true);
-    norms.push_back(Thyra::norm_2(*e.f));
-    if (norms.back() < 1e-10 || !std::isfinite(norms.back())) break;
-    auto lows = Thyra::linearOpWithSolve<double>(*m.get_W_factory(), e.W.getConst());
-    auto dx = Thyra::createMember(m.get_x_space());
-    Thyra::assign(dx.ptr(), 0.0);
-    Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
-    Thyra::Vp_StV(Teuchos::ptrFromRef(x), -1.0, *dx);
-  }
-  return norms;
 }
 
 struct ContactCase {
