@@ -62,8 +62,8 @@ NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solve
     status_ = NOX::StatusTest::Failed;  // LOCA restarts the increment; the strategy applies β
     return status_;
   }
-  // The step stands (the measured β seeds the next increment's step): contact is enforced from here on, and the residual of this iterate is
-  // recomputed with it before the convergence tests see it.
+  // The step stands (the measured β seeds the next increment's step): contact is enforced from here
+  // on, and the residual of this iterate is recomputed with it before the convergence tests see it.
   state_.carriedBeta = result.beta;
   state_.justUnfrozen = true;
   model_.setNewContactsFrozen(false);
