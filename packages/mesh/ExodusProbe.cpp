@@ -158,9 +158,8 @@ std::string netcdfProblem(const std::string& path, Signature signature, std::uin
   const int status = nc_open(path.c_str(), NC_NOWRITE, &ncid);
   if (status != NC_NOERR) {
     const std::string library = nc_strerror(status);
-    if (signature == Signature::kHdf5)
-      return "it is an HDF5 file that netCDF cannot open, probably truncated or damaged: " + library;
-    return "netCDF cannot open it: " + library;
+    return std::string("it is ") + (signature == Signature::kHdf5 ? "an HDF5" : "a netCDF classic") +
+           " file that netCDF cannot open, probably truncated or damaged: " + library;
   }
   std::string problem;
   int dimension = -1;

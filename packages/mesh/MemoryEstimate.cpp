@@ -177,6 +177,7 @@ std::string formatBytes(double bytes) {
     ++unit;
   }
   char text[48];
+  if (unit == 6 && bytes >= 1000) return formatCount(std::round(bytes)) + " " + units[unit];  // no larger unit
   if (unit == 0)
     std::snprintf(text, sizeof text, "%.0f bytes", bytes);
   else

@@ -77,7 +77,7 @@ class Mesh {
   /// - side sets: element ids and side numbers in range, and every side on the boundary (a side
   ///   shared by two elements is inside the mesh);
   /// - names of blocks, node sets and side sets unique.
-  /// Cost O(n log n) in the mesh size (about 0.1 s for 10^6 elements).
+  /// Cost O(n log n) in the mesh size: 0.06 s for 10^6 Quad4, 0.15 s for 10^6 Hex8 (bench/mesh_check_bench).
   void validate(const std::string& source) const;
 };
 

@@ -105,6 +105,7 @@ TEST(MemoryEstimate, Formats) {
   EXPECT_EQ(formatBytes(22 * kGiB), "22 GiB");
   EXPECT_EQ(formatBytes(480.4 * kGiB), "480 GiB");
   EXPECT_EQ(formatBytes(3.5 * kGiB * 1024 * 1024), "3.5 PiB");
+  EXPECT_EQ(formatBytes(75400 * kGiB * kGiB), "75400 EiB");
   EXPECT_EQ(formatCount(13000), "13000");
   EXPECT_EQ(formatCount(2e9), "2e9");
   EXPECT_EQ(formatCount(1e10), "1e10");
