@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
 #include "contact/HistoryTransfer2D.hpp"
@@ -20,6 +21,8 @@ ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<
       trialOutput_(spec_.slaveNodes.size()),
       committedOutput_(spec_.slaveNodes.size()) {
   spec_.law.validate();
+  if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size())
+    throw std::logic_error("ContactInterface2D '" + spec_.name + "': one facet length per slave node expected");
   for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
   committedOutput_ = trialOutput_;
 }
@@ -97,7 +100,8 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       NodeToSegmentGeometry2D geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
-      const NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed);
+      const NodeToSegmentResult2D r =
+          element_.evaluate(geometry, selection.segment, committed, spec_.slaveFacetLengths[k]);
       trial = r.trial;
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;

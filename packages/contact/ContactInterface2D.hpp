@@ -30,6 +30,7 @@ struct ContactInterfaceSpec2D {
   std::string name;
   std::vector<GlobalIndex> slaveNodes;  ///< mesh nodes, sorted
   std::vector<double> slaveAreas;       ///< tributary length of each slave node (reference), unit thickness
+  std::vector<double> slaveFacetLengths;  ///< mean length of the slave sides at each node (slip tolerance's L_k)
   /// Deformable master: mesh node pairs, ordered so the master body's outward normal is on the right.
   std::vector<std::array<GlobalIndex, 2>> masterSegments;
   bool rigidMaster = false;

@@ -60,8 +60,10 @@ class NodeToSegmentContact2D {
                                   TangentTerms terms = TangentTerms::Consistent);
 
   /// Residual, tangent and trial history for the current positions `x` on master segment `segment`.
-  NodeToSegmentResult2D evaluate(const NodeToSegmentGeometry2D& x, int segment,
-                                 const ContactHistory<1>& committed) const;
+  /// `facetLength` is L_k, the mean length of the slave sides at the node (reference configuration): the
+  /// length the slip tolerance refers to (ε_T = μ|t_N|/(s L_k), ContactLawParameters); unused when s = 0.
+  NodeToSegmentResult2D evaluate(const NodeToSegmentGeometry2D& x, int segment, const ContactHistory<1>& committed,
+                                 double facetLength = 0.0) const;
 
   const ContactLawParameters& parameters() const { return parameters_; }
 
