@@ -18,6 +18,7 @@ ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<
       evaluatesSlave_(std::move(evaluatesSlave)),
       element_(spec_.law),
       history_(spec_.slaveNodes.size()),
+      damping_(spec_.slaveNodes.size()),
       trialOutput_(spec_.slaveNodes.size()),
       committedOutput_(spec_.slaveNodes.size()) {
   spec_.law.validate();
@@ -100,8 +101,13 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       NodeToSegmentGeometry2D geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
-      const NodeToSegmentResult2D r =
-          element_.evaluate(geometry, selection.segment, committed, spec_.slaveFacetLengths[k]);
+      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets the stick
+      // stiffness in its tangent (SlipReversalDamping); the residual is the same either way.
+      const double facetLength = spec_.slaveFacetLengths[k];
+      const SlipTangent tangent = updateTrial ? damping_.tangent(k) : SlipTangent::Consistent;
+      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength, tangent);
+      if (updateTrial && damping_.observe(k, history_.trial(k), r.trial) && tangent == SlipTangent::Consistent)
+        r = element_.evaluate(geometry, selection.segment, committed, facetLength, SlipTangent::StickStiffness);
       trial = r.trial;
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
@@ -178,6 +184,7 @@ void ContactInterface2D::commit() {
     if (status == ContactStatus::Slip) ++counts.slip;
   }
   history_.commit();
+  damping_.reset();
   committedOutput_ = trialOutput_;
   committedForce_ = trialForce_;
   committedCounts_ = counts;
@@ -186,6 +193,7 @@ void ContactInterface2D::commit() {
 
 void ContactInterface2D::rollback() {
   history_.rollback();
+  damping_.reset();
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
 }

@@ -13,6 +13,7 @@
 #include "contact/ContactLawParameters.hpp"
 #include "contact/NodeToSegmentContact2D.hpp"
 #include "contact/SegmentSelector2D.hpp"
+#include "contact/SlipReversalDamping.hpp"
 
 namespace contessa::contact {
 
@@ -106,6 +107,7 @@ class ContactInterface2D {
   NodeToSegmentContact2D element_;
   SegmentSelector2D selector_;
   ContactHistoryStore<1> history_;
+  SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates
   std::vector<MasterSegment2D> committedMaster_;  ///< master positions of the committed configuration
   std::vector<MasterSegment2D> lastSegments_;     ///< master positions of the latest trial evaluation
   std::vector<SlaveNodeState> trialOutput_, committedOutput_;

@@ -39,7 +39,8 @@ NodeToSegmentContact2D::NodeToSegmentContact2D(const ContactLawParameters& param
 }
 
 NodeToSegmentResult2D NodeToSegmentContact2D::evaluate(const NodeToSegmentGeometry2D& x, int segment,
-                                                       const ContactHistory<1>& committed, double facetLength) const {
+                                                       const ContactHistory<1>& committed, double facetLength,
+                                                       SlipTangent slipTangent) const {
   if (committed.isInContact() && committed.segment != segment)
     throw std::logic_error("NodeToSegmentContact2D: committed history is on segment " +
                            std::to_string(committed.segment) + ", not on segment " + std::to_string(segment) +
@@ -96,6 +97,8 @@ NodeToSegmentResult2D NodeToSegmentContact2D::evaluate(const NodeToSegmentGeomet
     out.status = out.friction.status;
     tT = out.friction.traction[0];
     dT_dXi = out.friction.dTraction_dSlipIncrement(0, 0);
+    if (out.status == ContactStatus::Slip && slipTangent == SlipTangent::StickStiffness)
+      dT_dXi = out.friction.tangentialPenalty * a11;  // eq. (25)'s stiffness: damps a flipping node
     dT_dMetric = out.friction.dTraction_dMetric[0](0, 0);
     dT_dNormal = out.friction.dTraction_dNormalTraction[0];
     // eq. (7), backward Euler: g_T,n+1 = g_T,n + √(Δξ ā_11 Δξ); committed only at commit().

@@ -4,6 +4,7 @@
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/HistoryTransfer2D.hpp"
 #include "contact/PenaltyNormalLaw.hpp"
+#include "contact/SlipReversalDamping.hpp"
 
 #include <gtest/gtest.h>
 
@@ -340,4 +341,43 @@ TEST(HistoryTransfer2D, UnrollsTheContactPointAcrossTheSharedVertex) {
   const auto back = cc::transferHistory2D(moved, second, first);
   EXPECT_NEAR(back.xi[0], 0.5, 1e-14);
   EXPECT_NEAR(back.tangentialTraction[0], 3.0, 1e-14);
+}
+
+// ---- Slip reversal damping (tangent only) ------------------------------------------------------------
+
+TEST(SlipReversalDamping, FlagsANodeWhoseSlipDirectionReversesUntilItSticks) {
+  auto state = [](ContactStatus status, double traction) {
+    cc::ContactHistory<1> h;
+    h.segment = 2;
+    h.status = status;
+    h.tangentialTraction = {traction};
+    return h;
+  };
+  cc::SlipReversalDamping damping(3);
+  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::Consistent);
+  const auto forward = state(ContactStatus::Slip, 0.3), backward = state(ContactStatus::Slip, -0.3);
+  // Slip forwards, then slip forwards again: no reversal.
+  EXPECT_FALSE(damping.observe(1, forward, state(ContactStatus::Slip, 0.31)));
+  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::Consistent);
+  // Forwards, then backwards: reversed, stick stiffness from now on.
+  EXPECT_TRUE(damping.observe(1, forward, backward));
+  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::StickStiffness);
+  EXPECT_EQ(damping.tangent(0), cc::SlipTangent::Consistent);  // other nodes untouched
+  // The same iterate evaluated again (residual and Jacobian in two calls) changes nothing.
+  EXPECT_FALSE(damping.observe(1, backward, backward));
+  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::StickStiffness);
+  // Still slipping backwards: stays damped; once it sticks, the consistent tangent again.
+  EXPECT_FALSE(damping.observe(1, backward, state(ContactStatus::Slip, -0.29)));
+  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::StickStiffness);
+  EXPECT_FALSE(damping.observe(1, backward, state(ContactStatus::Stick, -0.1)));
+  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::Consistent);
+  // A reversal counts only on the same segment (another segment has its own orientation).
+  auto elsewhere = backward;
+  elsewhere.segment = 3;
+  EXPECT_FALSE(damping.observe(2, forward, elsewhere));
+  EXPECT_TRUE(damping.observe(2, backward, forward));
+  EXPECT_EQ(damping.reversals(), 2);
+  damping.reset();  // commit or rollback of the increment
+  EXPECT_EQ(damping.tangent(2), cc::SlipTangent::Consistent);
+  EXPECT_EQ(damping.reversals(), 0);
 }
