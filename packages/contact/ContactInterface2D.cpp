@@ -101,13 +101,15 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       NodeToSegmentGeometry2D geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
-      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets the stick
-      // stiffness in its tangent (SlipReversalDamping); the residual is the same either way.
+      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
+      // tangential stiffness (SlipReversalDamping); the residual is the same either way.
       const double facetLength = spec_.slaveFacetLengths[k];
-      const SlipTangent tangent = updateTrial ? damping_.tangent(k) : SlipTangent::Consistent;
-      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength, tangent);
-      if (updateTrial && damping_.observe(k, history_.trial(k), r.trial) && tangent == SlipTangent::Consistent)
-        r = element_.evaluate(geometry, selection.segment, committed, facetLength, SlipTangent::StickStiffness);
+      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength);
+      if (updateTrial) {
+        damping_.observe(k, history_.trial(k), r.trial);
+        const SlipTangent tangent = damping_.tangent(k);
+        if (tangent.secant) r = element_.evaluate(geometry, selection.segment, committed, facetLength, tangent);
+      }
       trial = r.trial;
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;

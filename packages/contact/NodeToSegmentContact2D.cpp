@@ -1,5 +1,6 @@
 #include "contact/NodeToSegmentContact2D.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -97,8 +98,8 @@ NodeToSegmentResult2D NodeToSegmentContact2D::evaluate(const NodeToSegmentGeomet
     out.status = out.friction.status;
     tT = out.friction.traction[0];
     dT_dXi = out.friction.dTraction_dSlipIncrement(0, 0);
-    if (out.status == ContactStatus::Slip && slipTangent == SlipTangent::StickStiffness)
-      dT_dXi = out.friction.tangentialPenalty * a11;  // eq. (25)'s stiffness: damps a flipping node
+    if (out.status == ContactStatus::Slip && slipTangent.secant)  // a node in a slip cycle: its secant
+      dT_dXi = std::min(slipTangent.stiffness, out.friction.tangentialPenalty * a11);
     dT_dMetric = out.friction.dTraction_dMetric[0](0, 0);
     dT_dNormal = out.friction.dTraction_dNormalTraction[0];
     // eq. (7), backward Euler: g_T,n+1 = g_T,n + √(Δξ ā_11 Δξ); committed only at commit().

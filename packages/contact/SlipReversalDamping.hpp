@@ -12,32 +12,47 @@ namespace contessa::contact {
 /// Newton step can carry it across its whole stick range into slip the other way, and the next step back:
 /// the two-state cycle of nearly unloaded nodes (MOOSE's ping-pong, Code_Aster's "sliding forward/backward"
 /// cycle, docs/theory-contact.md §5). This class watches each slave node's trial state from iterate to
-/// iterate; when its slip direction reverses, the node's tangent takes the stick stiffness
-/// (SlipTangent::StickStiffness) until it sticks or keeps its direction for one iterate, then the
-/// consistent tangent again (quadratic convergence at the end). Only the tangent changes, never the
-/// residual: the converged answer is the same with or without damping.
+/// iterate. When its slip direction reverses, the solution lies between the two states (in the stick range
+/// or at its edge), and the node's tangent takes the secant stiffness of t_T1 between them,
+/// Δt_T1/Δξ (SlipTangent::secantOf): regula falsi on the node's friction law, a step that lands between the
+/// two states instead of across them. A further reversal narrows the bracket. The secant ends when the node
+/// sticks (its consistent tangent is then the stick stiffness), or when it has slipped the same way for
+/// `kReleaseIterates` iterates (it really slips: the consistent tangent restores quadratic convergence).
+/// Only the tangent changes, never the residual: the converged answer is the same with or without it.
 ///
-/// State per Newton iterate: reset when the increment is committed or abandoned. The same evaluation
-/// repeated at the same iterate (residual and Jacobian computed in separate calls) changes nothing.
+/// State per increment: reset when the increment is committed or abandoned. The same evaluation repeated at
+/// the same iterate (residual and Jacobian computed in separate calls) changes nothing.
 class SlipReversalDamping {
  public:
-  explicit SlipReversalDamping(std::size_t numNodes) : damped_(numNodes, 0) {}
+  static constexpr int kReleaseIterates = 2;
+
+  explicit SlipReversalDamping(std::size_t numNodes) : nodes_(numNodes) {}
 
   /// The slip tangent to use for `node` at the next evaluation.
   SlipTangent tangent(std::size_t node) const {
-    return damped_[node] ? SlipTangent::StickStiffness : SlipTangent::Consistent;
+    const NodeState& n = nodes_[node];
+    return n.secant > 0.0 ? SlipTangent::secantOf(n.secant) : SlipTangent::consistent();
   }
 
   /// Compares the node's new trial state with the one of the previous iterate (the committed state at the
   /// first iterate of an increment). Returns true when the slip direction has just reversed.
   bool observe(std::size_t node, const ContactHistory<1>& previous, const ContactHistory<1>& current) {
     if (current == previous) return false;  // the same iterate evaluated again
-    const bool reversed = previous.status == ContactStatus::Slip && current.status == ContactStatus::Slip &&
-                          previous.segment == current.segment &&
-                          previous.tangentialTraction[0] * current.tangentialTraction[0] < 0.0;
-    if (reversed) ++reversals_;
-    if (reversed) damped_[node] = 1;
-    else if (current.status != ContactStatus::Slip) damped_[node] = 0;
+    NodeState& n = nodes_[node];
+    const bool bothSlip = previous.status == ContactStatus::Slip && current.status == ContactStatus::Slip &&
+                          previous.segment == current.segment;
+    const double dt = current.tangentialTraction[0] - previous.tangentialTraction[0];
+    const double dxi = current.xi[0] - previous.xi[0];
+    const bool reversed = bothSlip && previous.tangentialTraction[0] * current.tangentialTraction[0] < 0.0;
+    if (reversed && dt * dxi > 0.0) {
+      n.secant = dt / dxi;  // > 0: the traction follows the motion across the stick range
+      n.streak = 0;
+      ++reversals_;
+    } else if (current.status == ContactStatus::Slip && n.secant > 0.0 && ++n.streak >= kReleaseIterates) {
+      n.secant = 0.0;
+    } else if (current.status != ContactStatus::Slip) {
+      n.secant = 0.0;
+    }
     return reversed;
   }
 
@@ -45,12 +60,16 @@ class SlipReversalDamping {
   int reversals() const { return reversals_; }
 
   void reset() {
-    damped_.assign(damped_.size(), 0);
+    nodes_.assign(nodes_.size(), NodeState{});
     reversals_ = 0;
   }
 
  private:
-  std::vector<char> damped_;
+  struct NodeState {
+    double secant = 0.0;  ///< secant stiffness Δt_T1/Δξ of the last reversal; 0 = consistent tangent
+    int streak = 0;       ///< iterates slipping the same way since the last reversal
+  };
+  std::vector<NodeState> nodes_;
   int reversals_ = 0;
 };
 

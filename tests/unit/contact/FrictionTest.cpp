@@ -345,39 +345,46 @@ TEST(HistoryTransfer2D, UnrollsTheContactPointAcrossTheSharedVertex) {
 
 // ---- Slip reversal damping (tangent only) ------------------------------------------------------------
 
-TEST(SlipReversalDamping, FlagsANodeWhoseSlipDirectionReversesUntilItSticks) {
-  auto state = [](ContactStatus status, double traction) {
+TEST(SlipReversalDamping, GivesANodeWhoseSlipDirectionReversesTheSecantStiffness) {
+  auto state = [](ContactStatus status, double xi, double traction) {
     cc::ContactHistory<1> h;
     h.segment = 2;
     h.status = status;
+    h.xi = {xi};
     h.tangentialTraction = {traction};
     return h;
   };
   cc::SlipReversalDamping damping(3);
-  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::Consistent);
-  const auto forward = state(ContactStatus::Slip, 0.3), backward = state(ContactStatus::Slip, -0.3);
-  // Slip forwards, then slip forwards again: no reversal.
-  EXPECT_FALSE(damping.observe(1, forward, state(ContactStatus::Slip, 0.31)));
-  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::Consistent);
-  // Forwards, then backwards: reversed, stick stiffness from now on.
+  EXPECT_FALSE(damping.tangent(1).secant);
+  const auto forward = state(ContactStatus::Slip, 0.10, 0.3), backward = state(ContactStatus::Slip, 0.04, -0.3);
+  // Slip forwards, then forwards again: no reversal, consistent tangent.
+  EXPECT_FALSE(damping.observe(1, forward, state(ContactStatus::Slip, 0.12, 0.31)));
+  EXPECT_FALSE(damping.tangent(1).secant);
+  // Forwards, then backwards: the secant Δt/Δξ = (−0.3 − 0.3)/(0.04 − 0.10) = 10 between the two states.
   EXPECT_TRUE(damping.observe(1, forward, backward));
-  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::StickStiffness);
-  EXPECT_EQ(damping.tangent(0), cc::SlipTangent::Consistent);  // other nodes untouched
+  ASSERT_TRUE(damping.tangent(1).secant);
+  EXPECT_NEAR(damping.tangent(1).stiffness, 10.0, 1e-12);
+  EXPECT_FALSE(damping.tangent(0).secant);  // other nodes untouched
   // The same iterate evaluated again (residual and Jacobian in two calls) changes nothing.
   EXPECT_FALSE(damping.observe(1, backward, backward));
-  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::StickStiffness);
-  // Still slipping backwards: stays damped; once it sticks, the consistent tangent again.
-  EXPECT_FALSE(damping.observe(1, backward, state(ContactStatus::Slip, -0.29)));
-  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::StickStiffness);
-  EXPECT_FALSE(damping.observe(1, backward, state(ContactStatus::Stick, -0.1)));
-  EXPECT_EQ(damping.tangent(1), cc::SlipTangent::Consistent);
+  EXPECT_TRUE(damping.tangent(1).secant);
+  // Slipping the same way for kReleaseIterates iterates: it really slips, consistent tangent again.
+  const auto further = state(ContactStatus::Slip, 0.03, -0.3), furthest = state(ContactStatus::Slip, 0.02, -0.3);
+  EXPECT_FALSE(damping.observe(1, backward, further));
+  EXPECT_TRUE(damping.tangent(1).secant);
+  EXPECT_FALSE(damping.observe(1, further, furthest));
+  EXPECT_FALSE(damping.tangent(1).secant);
+  // A node that sticks after its reversal takes its consistent (stick) tangent at once.
+  EXPECT_TRUE(damping.observe(0, forward, backward));
+  EXPECT_FALSE(damping.observe(0, backward, state(ContactStatus::Stick, 0.07, 0.1)));
+  EXPECT_FALSE(damping.tangent(0).secant);
   // A reversal counts only on the same segment (another segment has its own orientation).
   auto elsewhere = backward;
   elsewhere.segment = 3;
   EXPECT_FALSE(damping.observe(2, forward, elsewhere));
   EXPECT_TRUE(damping.observe(2, backward, forward));
-  EXPECT_EQ(damping.reversals(), 2);
+  EXPECT_EQ(damping.reversals(), 3);
   damping.reset();  // commit or rollback of the increment
-  EXPECT_EQ(damping.tangent(2), cc::SlipTangent::Consistent);
+  EXPECT_FALSE(damping.tangent(2).secant);
   EXPECT_EQ(damping.reversals(), 0);
 }

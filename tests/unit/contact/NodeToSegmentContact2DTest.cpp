@@ -186,10 +186,10 @@ TEST(NodeToSegmentContact2D, SlipToleranceTangentMatchesCentralDifferences) {
   EXPECT_GT(asymmetry(r.tangent), 1e-3);  // ∂t/∂t_N ε_N D^1 Nᵀ: non-symmetric even in stick
 }
 
-// The damped slip tangent (SlipReversalDamping) changes the tangent only: same residual and trial
-// state, and K_damped − K = ε_T ā_11 (∂ξ̄/∂u)(∂ξ̄/∂u)ᵀ, the stick stiffness along the slip: symmetric and
-// positive semi-definite. A sticking node is unaffected.
-TEST(NodeToSegmentContact2D, StickStiffnessInSlipChangesOnlyTheTangent) {
+// The secant slip tangent (SlipReversalDamping) changes the tangent only: same residual and trial state,
+// and K_secant − K = k (∂ξ̄/∂u)(∂ξ̄/∂u)ᵀ with k the given ∂t_T1/∂ξ̄ (capped by the stick stiffness
+// ε_T ā_11): symmetric, rank one, positive semi-definite. A sticking node is unaffected.
+TEST(NodeToSegmentContact2D, SecantSlipTangentChangesOnlyTheTangent) {
   const cc::NodeToSegmentContact2D element({1e3, 0.0, 0.3, 0.005});
   const double facetLength = 4.0;
   for (const Configuration& conf : kConfigurations) {
@@ -197,20 +197,34 @@ TEST(NodeToSegmentContact2D, StickStiffnessInSlipChangesOnlyTheTangent) {
     const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
     const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Slip);
     const auto consistent = element.evaluate(g, 7, committed, facetLength);
-    const auto damped = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::StickStiffness);
     ASSERT_EQ(consistent.status, ContactStatus::Slip);
-    for (int i = 0; i < 6; ++i) EXPECT_EQ(consistent.residual[i], damped.residual[i]);
-    EXPECT_EQ(consistent.trial, damped.trial);
-    Mat6 difference = damped.tangent;
-    cc::addScaled(difference, -1.0, consistent.tangent);
-    const double size = cc::frobeniusNorm(difference);
-    EXPECT_GT(size, 0.1 * consistent.friction.tangentialPenalty);
-    EXPECT_LT(asymmetry(difference), 1e-12);
-    // Rank one: every 2 × 2 minor vanishes, and the diagonal is non-negative.
-    for (int i = 0; i < 6; ++i) {
-      EXPECT_GE(difference(i, i), -1e-12 * size);
-      for (int j = 0; j < 6; ++j)
-        EXPECT_NEAR(difference(i, i) * difference(j, j), difference(i, j) * difference(j, i), 1e-10 * size * size);
+    const double stick = consistent.friction.tangentialPenalty * consistent.projection.metric(0, 0);
+    for (double k : {0.25 * stick, 4.0 * stick}) {  // the second is capped at the stick stiffness
+      const auto secant = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(k));
+      for (int i = 0; i < 6; ++i) EXPECT_EQ(consistent.residual[i], secant.residual[i]);
+      EXPECT_EQ(consistent.trial, secant.trial);
+      Mat6 difference = secant.tangent;
+      cc::addScaled(difference, -1.0, consistent.tangent);
+      const double size = cc::frobeniusNorm(difference);
+      EXPECT_GT(size, 0.0);
+      EXPECT_LT(asymmetry(difference), 1e-12);
+      for (int i = 0; i < 6; ++i) {
+        EXPECT_GE(difference(i, i), -1e-12 * size);
+        for (int j = 0; j < 6; ++j)  // rank one: every 2 × 2 minor vanishes
+          EXPECT_NEAR(difference(i, i) * difference(j, j), difference(i, j) * difference(j, i), 1e-10 * size * size);
+      }
+      // Linear in k below the cap; the trace of k (∂ξ̄/∂u)(∂ξ̄/∂u)ᵀ is k ‖∂ξ̄/∂u‖².
+      double trace = 0.0;
+      for (int i = 0; i < 6; ++i) trace += difference(i, i);
+      if (k < stick) {
+        const auto half = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(0.5 * k));
+        double halfTrace = 0.0;
+        for (int i = 0; i < 6; ++i) halfTrace += half.tangent(i, i) - consistent.tangent(i, i);
+        EXPECT_NEAR(halfTrace, 0.5 * trace, 1e-10 * trace);
+      } else {
+        const auto atCap = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(stick));
+        EXPECT_EQ(relativeDifference(atCap.tangent, secant.tangent), 0.0);
+      }
     }
   }
   const Configuration& conf = kConfigurations[0];
@@ -218,7 +232,7 @@ TEST(NodeToSegmentContact2D, StickStiffnessInSlipChangesOnlyTheTangent) {
   const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
   const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
   const auto a = sticking.evaluate(g, 7, committed, facetLength);
-  const auto b = sticking.evaluate(g, 7, committed, facetLength, cc::SlipTangent::StickStiffness);
+  const auto b = sticking.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(1.0));
   ASSERT_EQ(a.status, ContactStatus::Stick);
   EXPECT_EQ(relativeDifference(a.tangent, b.tangent), 0.0);
 }
