@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
 #include "contact/HistoryTransfer2D.hpp"
@@ -17,9 +18,12 @@ ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<
       evaluatesSlave_(std::move(evaluatesSlave)),
       element_(spec_.law),
       history_(spec_.slaveNodes.size()),
+      damping_(spec_.slaveNodes.size()),
       trialOutput_(spec_.slaveNodes.size()),
       committedOutput_(spec_.slaveNodes.size()) {
   spec_.law.validate();
+  if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size())
+    throw std::logic_error("ContactInterface2D '" + spec_.name + "': one facet length per slave node expected");
   for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
   committedOutput_ = trialOutput_;
 }
@@ -97,7 +101,15 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       NodeToSegmentGeometry2D geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
-      const NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed);
+      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
+      // tangential stiffness (SlipReversalDamping); the residual is the same either way.
+      const double facetLength = spec_.slaveFacetLengths[k];
+      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength);
+      if (updateTrial) {
+        damping_.observe(k, history_.trial(k), r.trial);
+        const SlipTangent tangent = damping_.tangent(k);
+        if (tangent.secant) r = element_.evaluate(geometry, selection.segment, committed, facetLength, tangent);
+      }
       trial = r.trial;
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
@@ -174,6 +186,7 @@ void ContactInterface2D::commit() {
     if (status == ContactStatus::Slip) ++counts.slip;
   }
   history_.commit();
+  damping_.reset();
   committedOutput_ = trialOutput_;
   committedForce_ = trialForce_;
   committedCounts_ = counts;
@@ -182,6 +195,7 @@ void ContactInterface2D::commit() {
 
 void ContactInterface2D::rollback() {
   history_.rollback();
+  damping_.reset();
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
 }

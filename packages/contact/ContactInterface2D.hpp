@@ -13,6 +13,7 @@
 #include "contact/ContactLawParameters.hpp"
 #include "contact/NodeToSegmentContact2D.hpp"
 #include "contact/SegmentSelector2D.hpp"
+#include "contact/SlipReversalDamping.hpp"
 
 namespace contessa::contact {
 
@@ -30,6 +31,7 @@ struct ContactInterfaceSpec2D {
   std::string name;
   std::vector<GlobalIndex> slaveNodes;  ///< mesh nodes, sorted
   std::vector<double> slaveAreas;       ///< tributary length of each slave node (reference), unit thickness
+  std::vector<double> slaveFacetLengths;  ///< mean length of the slave sides at each node (slip tolerance's L_k)
   /// Deformable master: mesh node pairs, ordered so the master body's outward normal is on the right.
   std::vector<std::array<GlobalIndex, 2>> masterSegments;
   bool rigidMaster = false;
@@ -105,6 +107,7 @@ class ContactInterface2D {
   NodeToSegmentContact2D element_;
   SegmentSelector2D selector_;
   ContactHistoryStore<1> history_;
+  SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates
   std::vector<MasterSegment2D> committedMaster_;  ///< master positions of the committed configuration
   std::vector<MasterSegment2D> lastSegments_;     ///< master positions of the latest trial evaluation
   std::vector<SlaveNodeState> trialOutput_, committedOutput_;
