@@ -42,7 +42,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   nodeToRoot_ = rcp(new model::Import(model.ownedNodeMap(), rootNodeMap_));
 
   columns_ = {"step", "lambda", "dlambda", "beta", "attempts", "newton_iterations", "active_contacts",
-              "new_contacts", "stick", "slip", "residual_norm", "wall_s"};
+              "new_contacts", "new_events", "stick", "slip", "residual_norm", "wall_s"};
   const char* axes[] = {"x", "y", "z"};
   for (const auto& set : problem.reactionNodeSets)
     for (int c = 0; c < dim; ++c) columns_.push_back("reaction_" + set + "_" + axes[c]);
@@ -61,7 +61,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
                                                  problem.title.empty() ? "Contessa results" : problem.title);
     const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
-                                                     "new_contacts", "stick", "slip"};
+                                                     "new_contacts", "new_events", "stick", "slip"};
     history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
     if (printTable_) {
       std::printf("%5s %12s %12s %7s %4s %6s %7s %11s %9s\n", "incr", "lambda", "dlambda", "beta", "att", "newton",
@@ -89,7 +89,7 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
                              static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
                              static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
-                             static_cast<double>(counts.stick), static_cast<double>(counts.slip),
+                             static_cast<double>(report.newEvents), static_cast<double>(counts.stick), static_cast<double>(counts.slip),
                              report.residualNorm, report.wallSeconds};
   for (const auto& r : reactions)
     for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);

@@ -102,11 +102,13 @@ class NewtonCounter : public NOX::Observer {
 class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
  public:
   IncrementBookkeeper(model::ContactMechanicsModel& model, IncrementObserver& observer, const NewtonCounter& newton,
-                      const ContactBetaState* contactBeta, double initialLambda)
+                      const continuation::ContactBetaControl* contactBeta, continuation::CountedEvents counted,
+                      double initialLambda)
       : model_(model),
         observer_(observer),
         newton_(newton),
         contactBeta_(contactBeta),
+        counted_(counted),
         lastLambda_(initialLambda),
         start_(Clock::now()) {}
 
@@ -120,8 +122,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
       ++attempts_;
       IncrementReport r = report(model_.lastLoadFactor());
       r.dlambda = r.lambda - lastLambda_;
-      r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested;
-      if (r.betaRestart) r.beta = contactBeta_->beta;
+      r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested();
+      if (r.betaRestart) r.beta = contactBeta_->beta();
       observer_.attemptFailed(r);
     }
   }
@@ -135,6 +137,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     if (first_) model_.commitState();
     IncrementReport r = report(lambda);
     r.dlambda = first_ ? 0.0 : lambda - lastLambda_;
+    r.newEvents = first_ ? 0 : continuation::countEvents(model_.committedIncrement(), counted_);
     observer_.incrementConverged(*tpetraX, r);
     if (!first_) ++increments;
     lastLambda_ = lambda;
@@ -150,7 +153,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   IncrementReport report(double lambda) const {
     IncrementReport r;
     r.step = first_ ? 0 : increments + 1;
-    r.beta = contactBeta_ != nullptr && !first_ ? contactBeta_->beta : 1.0;
+    r.beta = contactBeta_ != nullptr && !first_ ? contactBeta_->beta() : 1.0;
     r.lambda = lambda;
     r.attempts = attempts_;
     r.newtonIterations = newton_.iterations;
@@ -162,7 +165,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   model::ContactMechanicsModel& model_;
   IncrementObserver& observer_;
   const NewtonCounter& newton_;
-  const ContactBetaState* contactBeta_;
+  const continuation::ContactBetaControl* contactBeta_;
+  continuation::CountedEvents counted_;
   double lastLambda_;
   Clock::time_point start_;
   bool first_ = true, pendingSuccess_ = false;
@@ -213,8 +217,8 @@ RunSummary ContinuationDriver::run() {
   auto params = locaParameters(piro_, newton, errors);
   const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
   const bool contactBeta = stepSize.get<std::string>("Method") == "Contact Beta";
-  ContactBetaState betaState = contactBetaState(stepSize);
-  betaState.finalLoadFactor = piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value");
+  continuation::ContactBetaControl betaState(
+      contactBetaSettings(stepSize, piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value")));
   auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*model_, betaState)));
 
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
@@ -223,21 +227,22 @@ RunSummary ContinuationDriver::run() {
   auto x0 = model_->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_, p, 0, true));
-  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr, lambda0));
+  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr,
+                                                betaState.settings().counted, lambda0));
   group->setSaveDataStrategy(bookkeeper);
 
   const auto& tests = piro_.sublist("NOX").sublist("Status Tests");
   auto combo = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   // Order matters: the Contact Beta check may recompute the residual before the residual test reads it.
   combo->addStatusTest(rcp(new NOX::StatusTest::FiniteValue()));
-  if (contactBeta && betaState.mode == ContactBetaState::Mode::Restart)
+  if (contactBeta && betaState.settings().mode == continuation::ContactBetaSettings::Mode::Restart)
     combo->addStatusTest(rcp(new ContactBetaRestartTest(*model_, betaState)));
   const auto* model = model_.get();
   combo->addStatusTest(rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"),
                                             tests.get<double>("Relative Residual Tolerance"),
                                             tests.get<double>("Update Tolerance"),
                                             [model] { return !model->newContactsFrozen(); },
-                                            [&betaState] { return !betaState.justUnfrozen; })));
+                                            [&betaState] { return !betaState.newContactsJustReleased(); })));
   combo->addStatusTest(rcp(new NOX::StatusTest::MaxIters(tests.get<int>("Maximum Iterations"))));
 
   RunSummary summary;
@@ -254,7 +259,7 @@ RunSummary ContinuationDriver::run() {
       why.erase(why.find_last_not_of(" \t") + 1);
       summary.message = "continuation stopped at load factor " + std::to_string(bookkeeper->lastLambda()) + " (" +
                         (!why.empty()                ? "LOCA: " + why
-                         : betaState.hitMinimumStep ? std::string("the step size fell below Min Step Size")
+                         : betaState.hitMinimumStep() ? std::string("the step size fell below Min Step Size")
                                                     : std::string("maximum number of steps reached")) +
                         ")";
     }
