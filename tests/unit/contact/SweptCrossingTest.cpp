@@ -164,8 +164,8 @@ TEST(SweptCrossing3D, FaceMovingThroughStaticNode) {
 
 TEST(SweptCrossing3D, TiltingFaceCubic) {
   // Node 2 rises from z = −1 to z = 3 (the face warps; each triangle's φ is a cubic in general). The
-  // node (0.7, 0.2, 0.5) sits over triangle 0–1–2, whose plane is z = x·y·… no: z = (y) · z_2 on it;
-  // at the node z_plane = 0.2 z_2(t) = 0.2 (−1 + 4t), equal to 0.5 at t = 7/8.
+  // node (0.7, 0.2, 0.5) lies over triangle 0–1–2, whose plane is z = y · z_2: at the node
+  // z = 0.2 z_2(t) = 0.2 (−1 + 4t), which reaches 0.5 at t = 7/8.
   std::array<P3, 4> f0 = kFace, f1 = kFace;
   f0[2][2] = -1.0;
   f1[2][2] = 3.0;
