@@ -248,7 +248,8 @@ std::string oneLine(std::string text) {
 // The one-line reason a continuation stopped: where, why it could not go on, and the real reason of the
 // last failed attempt (not only "maximum number of steps").
 std::string stopMessage(const StopCause& c) {
-  const std::string reason = c.failure.reason.empty() ? std::string("no reason given") : c.failure.reason;
+  const std::string reason =
+      c.failure.reason.empty() ? std::string("the continuation rejected the step (no Newton failure)") : c.failure.reason;
   if (!c.initialStateSolved)
     return "the initial state at load factor " + loadFactorText(c.initialLambda) + " could not be solved: " + reason;
   std::string out = "continuation stopped at load factor " + loadFactorText(c.lambda);

@@ -34,6 +34,8 @@ constexpr int icntl(int k) { return k - 1; }
 constexpr int cntl(int k) { return k - 1; }
 constexpr int infog(int k) { return k - 1; }
 
+constexpr int kDescribedNullVectors = 12;
+
 // One MUMPS instance bound to a matrix pattern: analysis once per pattern, factorization per matrix.
 class MumpsContext {
  public:
@@ -141,25 +143,27 @@ class MumpsContext {
     return id_.infog[0] >= 0;
   }
 
-  // The null space basis of the last factorization (ICNTL(25) = −1), on every rank.
+  // The first vectors of the null space basis of the last factorization (ICNTL(25) = i), on every rank.
+  // At most kDescribedNullVectors: enough for every rigid-body mode of a 3D body, and bounded memory
+  // when a broken mesh has thousands of null pivots.
   std::vector<std::vector<double>> nullSpace(int count) {
     int rank = 0;
     MPI_Comm_rank(comm_, &rank);
-    std::vector<double> all(rank == 0 ? static_cast<std::size_t>(n_) * count : 0);
-    id_.job = 3;
-    id_.icntl[icntl(25)] = -1;
-    id_.nrhs = count;
-    id_.lrhs = static_cast<MUMPS_INT>(n_);
-    id_.rhs = all.empty() ? nullptr : all.data();
-    dmumps_c(&id_);
-    id_.icntl[icntl(25)] = 0;
-    id_.nrhs = 1;
-    const bool ok = id_.infog[0] >= 0;
-    if (!ok) return {};
-    all.resize(static_cast<std::size_t>(n_) * count);
-    MPI_Bcast(all.data(), static_cast<int>(all.size()), MPI_DOUBLE, 0, comm_);
-    std::vector<std::vector<double>> basis(count);
-    for (int k = 0; k < count; ++k) basis[k].assign(all.begin() + k * n_, all.begin() + (k + 1) * n_);
+    std::vector<std::vector<double>> basis;
+    for (int i = 1; i <= std::min(count, kDescribedNullVectors); ++i) {
+      std::vector<double> v(rank == 0 ? static_cast<std::size_t>(n_) : 0);
+      id_.job = 3;
+      id_.icntl[icntl(25)] = i;
+      id_.nrhs = 1;
+      id_.lrhs = static_cast<MUMPS_INT>(n_);
+      id_.rhs = v.empty() ? nullptr : v.data();
+      dmumps_c(&id_);
+      id_.icntl[icntl(25)] = 0;
+      if (id_.infog[0] < 0) break;  // global: every rank stops here
+      v.resize(static_cast<std::size_t>(n_));
+      MPI_Bcast(v.data(), static_cast<int>(v.size()), MPI_DOUBLE, 0, comm_);
+      basis.push_back(std::move(v));
+    }
     return basis;
   }
 

@@ -15,8 +15,8 @@ struct MumpsFailures {
   long count = 0;        ///< failed factorizations so far
   int info = 0;          ///< INFOG(1) of the last one (e.g. −10: numerically singular; 0 with null pivots)
   int nullPivots = 0;    ///< INFOG(28) of the last one: the rank deficiency MUMPS detected
-  /// The last one's null space basis (INFOG(28) vectors over all DOFs, global numbering): the directions
-  /// in which the structure can move without resistance.
+  /// The last one's null space basis (its first INFOG(28) vectors, at most 12, over all DOFs in global
+  /// numbering): the directions in which the structure can move without resistance.
   std::vector<std::vector<double>> nullSpace;
 };
 

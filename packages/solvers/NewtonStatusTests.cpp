@@ -125,6 +125,10 @@ SolveFailure NewtonStatusTests::linearSolverFailure() const {
   if (failures->nullPivots > 0)
     return {SolveFailure::Kind::LinearSolver,
             "the stiffness matrix is singular: " + model_.describeFreeMotion(failures->nullSpace) +
+                (failures->nullPivots > static_cast<int>(failures->nullSpace.size())
+                     ? " (and " + std::to_string(failures->nullPivots - static_cast<int>(failures->nullSpace.size())) +
+                           " more null pivots)"
+                     : std::string()) +
                 (model_.hasContact() ? " (add a support; an open contact holds nothing, so a body held by contact "
                                        "alone must touch it from the start)"
                                      : " (add a support: a Dirichlet condition that holds it)")};
