@@ -44,7 +44,10 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
   // The convergence test of a single solve is the absolute residual tolerance (a relative one has no
   // increment start to refer to; the update test belongs to the continuation driver), within the same
   // tests as the continuation: finite residual, no tunnelling, the iteration limit.
-  NewtonStatusTests tests(*model, rcp(new NOX::StatusTest::NormF(deckTests.get<double>("Absolute Residual Tolerance"))),
+  // The unscaled 2-norm, as NOX's status-test factory builds NormF from a parameter list.
+  NewtonStatusTests tests(*model,
+                          rcp(new NOX::StatusTest::NormF(deckTests.get<double>("Absolute Residual Tolerance"),
+                                                         NOX::Abstract::Vector::TwoNorm, NOX::StatusTest::NormF::Unscaled)),
                           deckTests.get<int>("Maximum Iterations"));
   auto noxOutput = rcp(new std::ostringstream());
   auto solveObserver = rcp(new SolveObserver(tests, *noxOutput));
