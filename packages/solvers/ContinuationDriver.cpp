@@ -134,6 +134,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
       lastFailure = newton_.failure;
       lastFailedTarget = r.lambda;
       lastAttemptFailed = true;
+      r.failure = lastFailure.reason;
       r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested;
       if (r.betaRestart) r.beta = contactBeta_->beta;
       observer_.attemptFailed(r);
@@ -265,7 +266,8 @@ std::string stopMessage(const StopCause& c) {
            std::to_string(c.contactsPerStep) + " contacts close per increment)";
   if (c.lastAttemptFailed)
     return out + " (the step cannot be cut below Min Step Size = " + shortNumber(c.minStep) + "): " + attempt;
-  const std::string loca = oneLine(c.locaErrors);
+  std::string loca = oneLine(c.locaErrors);
+  if (loca.size() > 300) loca = "..." + loca.substr(loca.size() - 300);
   return out + (loca.empty() ? std::string(" (LOCA gave no reason)") : " (LOCA: " + loca + ")");
 }
 
@@ -329,13 +331,12 @@ RunSummary ContinuationDriver::run() {
       cause.initialLambda = lambda0;
       cause.lambda = bookkeeper->lastLambda();
       cause.increments = bookkeeper->increments;
-      cause.maxStepsReached = bookkeeper->increments + bookkeeper->failedAttempts >=
-                              piro_.sublist("LOCA").sublist("Stepper").get<int>("Max Steps");
       cause.maxSteps = piro_.sublist("LOCA").sublist("Stepper").get<int>("Max Steps");
+      cause.maxStepsReached = bookkeeper->increments + bookkeeper->failedAttempts >= cause.maxSteps;
       cause.minStep = stepSize.get<double>("Min Step Size");
       cause.lastAttemptFailed = bookkeeper->lastAttemptFailed;
-      cause.failure = bookkeeper->lastAttemptFailed || !cause.initialStateSolved ? bookkeeper->lastFailure : SolveFailure{};
-      if (!cause.initialStateSolved) cause.failure = newton->failure;
+      // The initial solve is no step of LOCA's: its failure is the latest solve's.
+      cause.failure = cause.initialStateSolved ? bookkeeper->lastFailure : newton->failure;
       cause.failedTarget = bookkeeper->lastFailedTarget;
       cause.contactBetaBelowMinimum = betaState.hitMinimumStep && !bookkeeper->lastAttemptFailed;
       cause.contactsPerStep = betaState.options.contactsPerStep;
