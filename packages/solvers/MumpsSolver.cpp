@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -333,7 +334,9 @@ RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParamet
     // cantilever 1000 times longer than thick is flagged from 1e-6.
     valid->set("Null Pivot Threshold", 1e-11,
                "A pivot row is null (the matrix singular: a rigid-body mode) when its infinity norm is below this "
-               "times that of the scaled matrix (CNTL(3)); the solve then fails and names the free direction");
+               "times that of the scaled matrix (CNTL(3), in (0, 1)); the solve then fails and names the free "
+               "direction",
+               rcp(new Teuchos::EnhancedNumberValidator<double>(std::numeric_limits<double>::min(), 1.0)));
     valid->set("Verbose", false, "Print MUMPS' own diagnostics");
   }
   return valid;
