@@ -34,17 +34,18 @@ SolidAssembler::SolidAssembler(const deck::ProblemDefinition& problem, std::vect
   committed_ = trial_;
 }
 
-mechanics::ElementStatus SolidAssembler::assemble(const double* u, bool withStiffness, const Sink& sink) {
+SolidAssembler::Status SolidAssembler::assemble(const double* u, bool withStiffness, const Sink& sink) {
   std::vector<double> ue(maxDofs_), fe(maxDofs_), ke(withStiffness ? maxDofs_ * maxDofs_ : 0);
-  mechanics::ElementStatus status = mechanics::ElementStatus::Ok;
-  for (auto& d : data_) {
+  Status status;
+  for (std::size_t k = 0; k < data_.size(); ++k) {
+    auto& d = data_[k];
     const int n = static_cast<int>(d.dofs.size());
     for (int i = 0; i < n; ++i) ue[i] = u[d.dofs[i]];
     double* internal = trial_.empty() ? nullptr : trial_.data() + d.internalOffset;
     const auto s = d.physics->element->evaluate(d.X.data(), ue.data(), internal, *d.physics->material, fe.data(),
                                                 withStiffness ? ke.data() : nullptr);
     if (s != mechanics::ElementStatus::Ok) {
-      if (status == mechanics::ElementStatus::Ok) status = s;
+      if (status.ok()) status = {s, elements_[k]};
       continue;
     }
     sink(d.dofs.data(), n, fe.data(), withStiffness ? ke.data() : nullptr);

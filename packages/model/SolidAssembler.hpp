@@ -26,9 +26,15 @@ class SolidAssembler {
   /// requested, stiffness (row-major).
   using Sink = std::function<void(const int* dofs, int numDofs, const double* force, const double* stiffness)>;
 
+  /// The first element whose evaluation failed (the caller marks the evaluation failed), if any.
+  struct Status {
+    mechanics::ElementStatus status = mechanics::ElementStatus::Ok;
+    GlobalIndex element = -1;  ///< global id of that element
+    bool ok() const { return status == mechanics::ElementStatus::Ok; }
+  };
+
   /// Assembles every element at the overlapped displacement `u`. Updates the trial internal variables.
-  /// Returns the first non-Ok element status (the caller marks the evaluation failed).
-  mechanics::ElementStatus assemble(const double* u, bool withStiffness, const Sink& sink);
+  Status assemble(const double* u, bool withStiffness, const Sink& sink);
 
   /// Average Cauchy stress of each element (3 × 3), in the order of `elements()`.
   std::vector<mechanics::Tensor2> elementStresses(const double* u) const;

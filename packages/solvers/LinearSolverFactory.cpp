@@ -36,6 +36,14 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
   try {
     // The solvers keep pointers into the list: give them their own copy.
     builder.setParameterList(Teuchos::rcp(new Teuchos::ParameterList(stratimikos)));
+    // Stratimikos hands a solver its sublist only at the first solve: check MUMPS' now, before the run.
+    if (stratimikos.isSublist("Linear Solver Types") && stratimikos.sublist("Linear Solver Types").isSublist("MUMPS")) {
+      Teuchos::ParameterList mumps(stratimikos.sublist("Linear Solver Types").sublist("MUMPS"));
+      const auto valid = MumpsLinearOpWithSolveFactory().getValidParameters();
+      // Twice: the first pass turns a number given as text (--set) into a number, the second checks its range.
+      mumps.validateParametersAndSetDefaults(*valid);
+      mumps.validateParametersAndSetDefaults(*valid);
+    }
     return Thyra::createLinearSolveStrategy(builder);
   } catch (const std::exception& e) {
     throw InputError("Piro/Stratimikos: " + oneLine(e.what()));
