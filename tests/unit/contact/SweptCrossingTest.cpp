@@ -189,6 +189,7 @@ cc::ContactInterfaceSpec2D plateSpec(std::vector<cc::Vector<2>> points, double m
   spec.name = "plate";
   spec.slaveNodes = {0, 1, 2};
   spec.slaveAreas = {0.5, 1.0, 0.5};
+  spec.slaveFacetLengths = {1.0, 1.0, 1.0};
   spec.rigidMaster = true;
   spec.rigidSurface.points = std::move(points);
   spec.rigidSurface.motion = {0.0, -motion};
