@@ -10,8 +10,9 @@ namespace contessa::mechanics {
 /// False when a pivot is zero or negligible (≤ 1e-14 · max |A_ij|) or not finite.
 template <int N, int R>
 bool solveDenseInPlace(double* A, double* B) {
-  double maxAbs = 0.0;
-  for (int k = 0; k < N * N; ++k) maxAbs = std::fmax(maxAbs, std::fabs(A[k]));
+  double maxAbs = 0.0;  // NaN entries are skipped here (as fmax would) and fail the pivot test below
+  for (int k = 0; k < N * N; ++k)
+    if (std::fabs(A[k]) > maxAbs) maxAbs = std::fabs(A[k]);
   if (!(maxAbs > 0.0) || !std::isfinite(maxAbs)) return false;
   const double tiny = 1e-14 * maxAbs;
   for (int c = 0; c < N; ++c) {

@@ -27,13 +27,13 @@ bool NeoHookean::stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* A) const {
   if (A) {
     // With ∂F⁻ᵀ_iJ/∂F_kL = −F⁻¹_Jk F⁻¹_Li and ∂ln J/∂F_kL = F⁻¹_Lk:
     // A_iJkL = μ δ_ik δ_JL + (μ − λ ln J) F⁻¹_Jk F⁻¹_Li + λ F⁻¹_Ji F⁻¹_Lk.
-    const auto delta = [](int i, int j) { return i == j ? 1.0 : 0.0; };
+    const double c = mu - lambda * lnJ;
     for (int i = 0; i < D; ++i)
       for (int J = 0; J < D; ++J)
         for (int k = 0; k < D; ++k)
           for (int L = 0; L < D; ++L)
-            (*A)[((D * i + J) * D + k) * D + L] = mu * delta(i, k) * delta(J, L) +
-                                                  (mu - lambda * lnJ) * Finv[D * J + k] * Finv[D * L + i] +
+            (*A)[((D * i + J) * D + k) * D + L] = (i == k && J == L ? mu : 0.0) +
+                                                  c * Finv[D * J + k] * Finv[D * L + i] +
                                                   lambda * Finv[D * J + i] * Finv[D * L + k];
   }
   return true;

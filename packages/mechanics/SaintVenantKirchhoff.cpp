@@ -18,7 +18,6 @@ bool SaintVenantKirchhoff::stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* 
   // like every finite-strain law so the solver cuts back instead of converging to it.
   if (!(determinantOf<D>(F) > 0.0)) return false;
   const double lambda = lame_.lambda, mu = lame_.mu;
-  const auto delta = [](int i, int j) { return i == j ? 1.0 : 0.0; };
   // E = ½ (FᵀF − I), S = λ tr(E) I + 2μ E, P = F S. In plane strain E_33 = 0, so tr E and the
   // in-plane S, P are those of the in-plane block.
   Matrix<D> E{}, S{};
@@ -26,11 +25,12 @@ bool SaintVenantKirchhoff::stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* 
     for (int J = 0; J < D; ++J) {
       double C = 0.0;
       for (int k = 0; k < D; ++k) C += F[D * k + I] * F[D * k + J];
-      E[D * I + J] = 0.5 * (C - delta(I, J));
+      E[D * I + J] = 0.5 * (C - (I == J ? 1.0 : 0.0));
     }
   double trE = 0.0;
   for (int I = 0; I < D; ++I) trE += E[D * I + I];
-  for (int n = 0; n < D * D; ++n) S[n] = lambda * trE * delta(n / D, n % D) + 2.0 * mu * E[n];
+  for (int n = 0; n < D * D; ++n) S[n] = 2.0 * mu * E[n];
+  for (int I = 0; I < D; ++I) S[D * I + I] += lambda * trE;
   for (int i = 0; i < D; ++i)
     for (int J = 0; J < D; ++J) {
       double s = 0.0;
@@ -49,8 +49,8 @@ bool SaintVenantKirchhoff::stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* 
         for (int k = 0; k < D; ++k)
           for (int L = 0; L < D; ++L)
             (*A)[((D * i + J) * D + k) * D + L] =
-                delta(i, k) * S[D * J + L] + lambda * F[D * i + J] * F[D * k + L] +
-                mu * (b[D * i + k] * delta(J, L) + F[D * i + L] * F[D * k + J]);
+                (i == k ? S[D * J + L] : 0.0) + lambda * F[D * i + J] * F[D * k + L] +
+                mu * ((J == L ? b[D * i + k] : 0.0) + F[D * i + L] * F[D * k + J]);
   }
   return true;
 }

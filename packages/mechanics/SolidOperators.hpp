@@ -43,18 +43,23 @@ template <int D, int Rows, int Cols>
 inline void addTangent(const double* g, const double* h, const Tangent<D>& A, double wj, double* K, int ld) {
   for (int a = 0; a < Rows; ++a)
     for (int i = 0; i < D; ++i) {
-      // Row (a, i): first contract g_a into A, then sweep the columns.
-      double AN[D][D] = {};  // Σ_J g_aJ A_iJkL, indexed [k][L]
+      // Row (a, i): first contract g_a into A, then sweep the columns. (Sums start from their first
+      // term rather than from 0.0, and each row entry is written once: the compiler may do neither
+      // for us, since x + 0.0 is not x for x = −0.0 and K might alias g or h.)
+      double AN[D][D];  // Σ_J g_aJ A_iJkL · wj, indexed [L][k]
       for (int J = 0; J < D; ++J) {
         const double gJ = g[D * a + J] * wj;
         for (int k = 0; k < D; ++k)
-          for (int L = 0; L < D; ++L) AN[k][L] += gJ * A[((D * i + J) * D + k) * D + L];
+          for (int L = 0; L < D; ++L) {
+            const double term = gJ * A[((D * i + J) * D + k) * D + L];
+            AN[L][k] = J == 0 ? term : AN[L][k] + term;
+          }
       }
       double* row = K + static_cast<std::size_t>(D * a + i) * ld;
       for (int b = 0; b < Cols; ++b)
         for (int k = 0; k < D; ++k) {
-          double s = 0.0;
-          for (int L = 0; L < D; ++L) s += AN[k][L] * h[D * b + L];
+          double s = AN[0][k] * h[D * b];
+          for (int L = 1; L < D; ++L) s += AN[L][k] * h[D * b + L];
           row[D * b + k] += s;
         }
     }
