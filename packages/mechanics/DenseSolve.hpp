@@ -15,6 +15,7 @@ bool solveDenseInPlace(double* A, double* B) {
     if (std::fabs(A[k]) > maxAbs) maxAbs = std::fabs(A[k]);
   if (!(maxAbs > 0.0) || !std::isfinite(maxAbs)) return false;
   const double tiny = 1e-14 * maxAbs;
+  double inversePivot[N];  // one division per column, multiplications elsewhere
   for (int c = 0; c < N; ++c) {
     int p = c;
     for (int r = c + 1; r < N; ++r)
@@ -24,8 +25,9 @@ bool solveDenseInPlace(double* A, double* B) {
       for (int k = 0; k < N; ++k) std::swap(A[c * N + k], A[p * N + k]);
       for (int k = 0; k < R; ++k) std::swap(B[c * R + k], B[p * R + k]);
     }
+    inversePivot[c] = 1.0 / A[c * N + c];
     for (int r = c + 1; r < N; ++r) {
-      const double factor = A[r * N + c] / A[c * N + c];
+      const double factor = A[r * N + c] * inversePivot[c];
       if (factor == 0.0) continue;
       for (int k = c; k < N; ++k) A[r * N + k] -= factor * A[c * N + k];
       for (int k = 0; k < R; ++k) B[r * R + k] -= factor * B[c * R + k];
@@ -35,7 +37,7 @@ bool solveDenseInPlace(double* A, double* B) {
     for (int k = 0; k < R; ++k) {
       double s = B[c * R + k];
       for (int j = c + 1; j < N; ++j) s -= A[c * N + j] * B[j * R + k];
-      B[c * R + k] = s / A[c * N + c];
+      B[c * R + k] = s * inversePivot[c];
     }
   return true;
 }
