@@ -53,16 +53,7 @@ class CountingMaterial final : public Material {
   const Material& law_;
 };
 
-struct Case {
-  std::string element, material;
-};
-void PrintTo(const Case& c, std::ostream* os) { *os << c.element << " / " << c.material; }
-
-class ElementState : public ::testing::TestWithParam<Case> {
- protected:
-  std::unique_ptr<ElementKernel> kernel = ElementFactory::create(GetParam().element, "Test/Element");
-  std::unique_ptr<Material> material = makeMaterial(GetParam().material, 100.0, 0.3);
-};
+class ElementState : public ElementMaterial {};
 
 TEST_P(ElementState, PrecomputedGeometryOfASetGivesTheSingleElementAnswer) {
   const auto X = allCoordinates();
@@ -143,20 +134,6 @@ TEST_P(ElementState, TangentWithCarriedStateMatchesCentralDifferences) {
   std::printf("[measure] element FD with carried state %s / %s: rel err %.2e\n", GetParam().element.c_str(),
               GetParam().material.c_str(), err);
   EXPECT_LT(err, 1e-6);
-}
-
-std::vector<Case> allCases() {
-  std::vector<Case> cases;
-  for (const auto& e : ElementFactory::names())
-    for (const auto& m : MaterialFactory::names()) cases.push_back({e, m});
-  return cases;
-}
-
-std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  std::string s = info.param.element + "_" + info.param.material;
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return s;
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElementsAllLaws, ElementState, ::testing::ValuesIn(allCases()), caseName);
