@@ -87,7 +87,11 @@ struct RigidModes {
     const int n = count();
     std::vector<double> g = gram, a(n);
     for (int m = 0; m < n; ++m) a[m] = dotFields(fields[m], field);
-    if (!mechanics::solveDenseInPlace(n, g.data(), 1, a.data())) a.assign(n, 0.0);  // a single node: no rotation
+    // n rigid modes: 3 in 2D, 6 in 3D.
+    const bool solved = n == 3   ? mechanics::solveDenseInPlace<3, 1>(g.data(), a.data())
+                        : n == 6 ? mechanics::solveDenseInPlace<6, 1>(g.data(), a.data())
+                                 : false;
+    if (!solved) a.assign(n, 0.0);  // a single node: no rotation
     return a;
   }
 
