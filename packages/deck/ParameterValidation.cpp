@@ -1,6 +1,7 @@
 #include "deck/ParameterValidation.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -36,6 +37,8 @@ std::string valueText(const Teuchos::ParameterEntry& entry) {
 }
 
 std::string formatNumber(double v) {
+  if (v >= std::numeric_limits<double>::max()) return "inf";  // a bound that means "none"
+  if (v <= -std::numeric_limits<double>::max()) return "-inf";
   std::ostringstream os;
   os << v;
   return os.str();

@@ -170,7 +170,7 @@ class Parser {
     advance();
     std::string value;
     while (true) {
-      if (atEnd()) fail(start, what + " is not closed (no matching " + quote + " before the end of the file)");
+      if (atEnd()) fail(start, what + " is not closed: the file ends first (a truncated file, or a missing " + quote + "?)");
       const char c = peek();
       if (c == quote) break;
       if (c == '<') fail(line_, "'<' in " + what + " (a missing closing quote? write < as &lt;)");

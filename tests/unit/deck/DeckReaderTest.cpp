@@ -90,7 +90,7 @@ TEST(DeckReader, MalformedXmlNamesTheLine) {
       {"  \n\n <!-- only a comment -->\n", "deck.xml: the deck is empty"},
       {kGood.substr(0, kGood.find("</ParameterList>")),  // truncated after line 6
        "deck.xml:3: unclosed element <ParameterList name=\"Mesh\"> (the file ends at line 7"},
-      {kGood.substr(0, kGood.find("value=\"4\"") + 8), "deck.xml:6: <Parameter name=\"Elements X\">: the value of 'value' is not closed"},
+      {kGood.substr(0, kGood.find("value=\"4\"") + 8), "deck.xml:6: <Parameter name=\"Elements X\">: the value of 'value' is not closed: the file ends first"},
       {kGood.substr(0, kGood.find("type=\"int\"")), "deck.xml:6: the file ends inside the tag <Parameter name=\"Elements X\">"},
       {replaced(kGood, "value=\"2.0\"/>", "value=\"2.0\">"),
        "deck.xml:5: unclosed element <Parameter name=\"Length X\"> (line 7 has </ParameterList> first; a Parameter ends with '/>')"},
