@@ -314,6 +314,32 @@ TEST(PiroValidation, Klu2IsRefusedOnSeveralRanks) {
   expectPiroError(piro, 2, "gives wrong solutions on more than one MPI rank");
 }
 
+TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
+  // Stratimikos' Epetra solvers would fail at the first solve: they are refused with the allowed list.
+  const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+      {{"Linear Solver Type", "Pardiso"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'Pardiso'"},
+      {{"Linear Solver Type", "AztecOO"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'AztecOO'"},
+      {{"Preconditioner Type", "ML"}, "Piro/Stratimikos/Preconditioner Type: expected one of None, Ifpack2; got 'ML'"},
+  };
+  for (const auto& [setting, expected] : cases) {
+    ParameterList piro("Piro");
+    piro.sublist("Stratimikos").set(setting.first, setting.second);
+    expectPiroError(piro, 1, expected);
+  }
+  ParameterList piro("Piro");
+  piro.sublist("Stratimikos").set("Linear Solver Type", 3);
+  expectPiroError(piro, 1, "Piro/Stratimikos/Linear Solver Type: expected a string, one of MUMPS, Amesos2, Belos");
+  ParameterList amesos2("Piro");
+  amesos2.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
+  amesos2.sublist("Stratimikos").sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", std::string("SuperLU"));
+  expectPiroError(amesos2, 1, "Piro/Stratimikos/Linear Solver Types/Amesos2/Solver Type: expected one of KLU2; got 'SuperLU'");
+  // Stratimikos' default preconditioner (Ifpack) is an Epetra one: Contessa's default is None.
+  ParameterList belos("Piro");
+  belos.sublist("Stratimikos").set("Linear Solver Type", std::string("Belos"));
+  contessa::solvers::validatePiro(belos, 2);
+  EXPECT_EQ(belos.sublist("Stratimikos").get<std::string>("Preconditioner Type"), "None");
+}
+
 TEST(PiroValidation, ContactBetaParameters) {
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
       {{"Contacts Per Step", "0"}, "Piro/LOCA/Step Size/Contacts Per Step: expected an integer in [1, inf]"},
