@@ -36,8 +36,12 @@ BetaResult betaFromFractions(std::vector<double> fractions, const BetaOptions& o
   }
   double beta = options.maxGrowth;
   result.fewCandidates = result.candidates.size() <= nc;
-  if (!result.fewCandidates)
-    beta = result.candidates[nc - 1] + options.nextContactFraction * (result.candidates[nc] - result.candidates[nc - 1]);
+  if (!result.fewCandidates) {
+    const double below = result.candidates[nc - 1], above = result.candidates[nc];
+    beta = below + options.nextContactFraction * (above - below);
+    // Where the planned step (β = 1) falls between event N_c and event N_c + 1.
+    result.placement = above > below ? (1.0 - below) / (above - below) : (1.0 < below ? -1.0 : 2.0);
+  }
   result.beta = std::clamp(beta, options.maxShrink, options.maxGrowth);
   result.fromEvents = !result.fewCandidates && result.beta == beta;
   result.predictedContacts = static_cast<int>(

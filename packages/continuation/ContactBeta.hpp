@@ -2,6 +2,7 @@
 // The load-step correction of the reference paper (section 2.1, Table 1, after Chamoret et al. 2002):
 // choose the increment so that only N_c slave nodes come into contact in it. Pure arithmetic on the
 // gaps of the slave nodes: the continuation strategy (solvers/ContactBetaStepSize) supplies them.
+#include <limits>
 #include <vector>
 
 namespace contessa::continuation {
@@ -34,6 +35,9 @@ struct BetaResult {
   int predictedContacts = 0;       ///< candidates with β^k ≤ β: nodes expected to close (events) in βΔt
   bool fewCandidates = false;      ///< at most N_c candidates: β is the growth cap, not an event's
   bool fromEvents = false;         ///< β was set by the events' β^k, not by a bound
+  /// Where the planned step (β = 1) lies between β^{N_c} (0) and β^{N_c+1} (1): in [0, 1) it takes
+  /// exactly N_c events; < 0 fewer, ≥ 1 more. NaN with few candidates.
+  double placement = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// β^k = ^t g / (^t g − ^{t+Δt} g), eq. (11), for every node likely to come into contact: open at the

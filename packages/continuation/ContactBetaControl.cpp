@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <cstdio>
-#include <cstdlib>
-static const bool kTrace = std::getenv("CONTESSA_BETA_TRACE") != nullptr;  // TRACE
 
 namespace contessa::continuation {
 
@@ -36,8 +33,11 @@ AttemptPlan ContactBetaControl::plan(double base, double lambda) {
   if (remaining > step && remaining < 1.25 * step && remaining <= settings_.maxStep) step = remaining;
   step_ = plannedStep_ = step;
   startLambda_ = lambda;
+  rechecks_ = 0;
+  redos_ = 0;
+  redoing_ = false;
   checkPending_ = settings_.mode == ContactBetaSettings::Mode::Restart;
-  return {true, step_, checkPending_};
+  return {true, step_, checkPending_, false};
 }
 
 AttemptPlan ContactBetaControl::firstAttempt(double lambda) {
@@ -55,14 +55,7 @@ AttemptPlan ContactBetaControl::afterConvergedIncrement(double lambda, const std
     std::vector<double> fractions = predictedFractions_;
     for (double& s : fractions) s *= predictionStep_ / step_;
     const double before = correction_.scale();
-    if (kTrace) {  // TRACE
-      std::vector<double> f = fractions; std::sort(f.begin(), f.end());
-      std::fprintf(stderr, "TRACE learn: step %.5f observed %d c %.4f; s:", step_, countEvents(increment, settings_.counted), correction_.scale());
-      for (std::size_t i = 0; i < f.size() && i < 14; ++i) std::fprintf(stderr, " %.3f", f[i]);
-      std::fprintf(stderr, "\n");
-    }
     correction_.observe(std::move(fractions), countEvents(increment, settings_.counted));
-    if (kTrace) std::fprintf(stderr, "TRACE   -> c %.4f\n", correction_.scale());  // TRACE
     // Restart mode carries the β measured at the last first iterate; it scales with c (β is homogeneous
     // in the β^k when an event, not a bound, determined it), so the next check need not restart for it.
     if (settings_.mode == ContactBetaSettings::Mode::Restart && lastBetaFromEvents_)
@@ -79,9 +72,19 @@ AttemptPlan ContactBetaControl::afterConvergedIncrement(double lambda, const std
 AttemptPlan ContactBetaControl::afterBetaRestart() {
   // eq. (10): Δt_cor = β Δt, solved once more without a new check (I_cor = 1).
   restartRequested_ = false;
-  checkPending_ = false;
   step_ *= beta_;
-  return {true, step_, false};
+  if (redoing_) {  // a redo after a converged attempt: new contacts active from the start, no check
+    redoing_ = false;
+    checkPending_ = false;
+    return {true, step_, false, true};
+  }
+  // A β far from 1 extrapolated the first iterate's gaps far beyond the step they were measured
+  // with: the corrected step is checked once more at its own first iterate (eq. 11 re-linearised).
+  ++rechecks_;
+  checkPending_ = settings_.beta.nextContactFraction > 0 && rechecks_ <= settings_.maxCorrections &&
+                  std::abs(std::log(beta_)) > std::log(2.0);
+  plannedStep_ = step_;
+  return {true, step_, checkPending_, true};
 }
 
 AttemptPlan ContactBetaControl::afterFailedAttempt(double lambda) {
@@ -104,7 +107,7 @@ bool ContactBetaControl::restartAtFirstIterate(const std::vector<SlaveNodeIncrem
   checkPending_ = false;
   const BetaResult r = betaFor(firstIterate);
   recordPrediction(firstIterate, r);
-  if (std::abs(r.beta - 1.0) > settings_.restartTolerance) {
+  if (!standsAsPlanned(r)) {
     beta_ = r.beta;
     restartRequested_ = true;
     return true;
@@ -112,6 +115,53 @@ bool ContactBetaControl::restartAtFirstIterate(const std::vector<SlaveNodeIncrem
   carriedBeta_ = r.beta;
   justReleased_ = true;
   return false;
+}
+
+bool ContactBetaControl::standsAsPlanned(const BetaResult& r) const {
+  const double f = settings_.beta.nextContactFraction;
+  if (f <= 0 || r.fewCandidates || !r.fromEvents) return std::abs(r.beta - 1.0) <= settings_.restartTolerance;
+  return r.placement >= 0.5 * f && r.placement < 0.5 * (1.0 + f);
+}
+
+std::string ContactBetaControl::redoAtConvergence(const std::vector<SlaveNodeIncrement>& converged) {
+  const double f = settings_.beta.nextContactFraction;
+  const int n = std::max(1, settings_.beta.contactsPerStep);
+  if (f <= 0 || redos_ >= settings_.maxCorrections || step_ <= 0) return "";  // f = 0: Table 1 as printed
+  const int observed = countEvents(converged, settings_.counted);
+  if (observed == n) return "";
+  double beta = 1;
+  if (observed < n) {
+    // Fewer events than N_c: the nodes still heading for an event at the converged state give their
+    // fractions of this step (eq. 11 between the commit and the converged state: > 1), now with the
+    // stiffness of the contacts closed in it.
+    if (afterFailure_) return "";
+    std::vector<double> s = eventFractions(converged, settings_.counted, settings_.beta.touchingGap);
+    std::sort(s.begin(), s.end());
+    if (static_cast<int>(s.size()) <= n) return "";  // not N_c events ahead: the quiet growth decides
+    beta = s[n - 1] + f * (s[n] - s[n - 1]);
+  } else {
+    // More events than N_c: the converged state only says they closed; their order is the predicted
+    // one, rescaled so that the O-th predicted event falls where the step ended (EventRateCorrection).
+    if (predictionStep_ <= 0) return "";
+    std::vector<double> s = predictedFractions_;
+    for (double& x : s) x *= predictionStep_ / step_;
+    std::sort(s.begin(), s.end());
+    const int m = static_cast<int>(s.size());
+    const int unavoidable = static_cast<int>(std::upper_bound(s.begin(), s.end(), 0.0) - s.begin());
+    if (m <= n || unavoidable >= observed || s[n - 1] <= 0) return "";
+    const int o = std::min(observed, m);
+    const double at = o < m ? s[o - 1] + f * (s[o] - s[o - 1]) : s[o - 1];
+    beta = (s[n - 1] + f * (s[n] - s[n - 1])) / at;
+  }
+  const double maxGrowth = std::min({settings_.beta.maxGrowth, settings_.maxStep / step_,
+                                     std::max(1.0, (settings_.finalLoadFactor - startLambda_) / step_)});
+  beta = std::clamp(beta, std::max(settings_.beta.maxShrink, settings_.minStep / step_), std::max(1.0, maxGrowth));
+  if (std::abs(beta - 1.0) < 0.02) return "";  // the bounds leave nothing to correct
+  ++redos_;
+  beta_ = beta;
+  redoing_ = true;
+  restartRequested_ = true;
+  return std::to_string(observed) + " events instead of " + std::to_string(n) + ", step x " + std::to_string(beta);
 }
 
 void ContactBetaControl::recordPrediction(const std::vector<SlaveNodeIncrement>& nodes, const BetaResult& r) {
@@ -132,11 +182,6 @@ BetaResult ContactBetaControl::betaFor(const std::vector<SlaveNodeIncrement>& no
     options.maxShrink = std::max(options.maxShrink, settings_.minStep / step_);
   }
   BetaResult r = betaFromFractions(eventFractions(nodes, settings_.counted, settings_.beta.touchingGap), options);
-  if (kTrace) {  // TRACE
-    std::fprintf(stderr, "TRACE beta: step %.5f c %.4f beta %.4f pred %d few %d; cand:", step_, options.eventRateScale, r.beta, r.predictedContacts, (int)r.fewCandidates);
-    for (std::size_t i = 0; i < r.candidates.size() && i < 14; ++i) std::fprintf(stderr, " %.3f", r.candidates[i]);
-    std::fprintf(stderr, "\n");
-  }
   if (r.fewCandidates && settings_.quietGrowth == QuietGrowth::Newton && lastNewtonIterations_ > 0) {
     r.beta = std::clamp(newtonGrowth(), std::min(1.0, options.maxGrowth), options.maxGrowth);
     r.predictedContacts = static_cast<int>(std::upper_bound(r.candidates.begin(), r.candidates.end(), r.beta) -

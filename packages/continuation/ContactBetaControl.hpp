@@ -3,6 +3,7 @@
 // additions, docs/theory-load-stepping.md): which Δλ each attempt gets, when the first iterate asks
 // for a restart, what is learned from a converged increment. Pure C++ with named operations; the LOCA
 // strategy and the NOX status test (solvers/ContactBetaStepSize) only relay LOCA's calls to it.
+#include <string>
 #include <vector>
 
 #include "continuation/ContactBeta.hpp"
@@ -30,7 +31,11 @@ struct ContactBetaSettings {
   double initialStep = 0.1, minStep = 1e-6, maxStep = 1.0, failedStepFactor = 0.5;
   double finalLoadFactor = 1.0;  ///< the stepper's Max Value
   QuietGrowth quietGrowth = QuietGrowth::Cap;
-  int targetNewtonIterations = 6;  ///< QuietGrowth::Newton: the iterations an increment aims at
+  int targetNewtonIterations = 6;
+  /// Beyond the paper's one restart per increment: first-iterate re-checks of a restarted step whose β
+  /// was far from 1, and re-solves of converged attempts with other than N_c events (redoAtConvergence),
+  /// each at most this many per increment. 0: Table 1 as printed.
+  int maxCorrections = 3;  ///< QuietGrowth::Newton: the iterations an increment aims at
 };
 
 /// The step of one attempt.
@@ -38,6 +43,7 @@ struct AttemptPlan {
   bool ok = true;                  ///< false: the step fell below Min Step Size (the run stops)
   double step = 0;                 ///< Δλ
   bool checkFirstIterate = false;  ///< Restart, I_cor = 0: freeze new contacts, check β at the first iterate
+  bool corrected = false;          ///< a β-corrected step (restart or redo): no Predictor-mode β on top
 };
 
 class ContactBetaControl {
@@ -63,6 +69,10 @@ class ContactBetaControl {
   /// True: |β − 1| > Restart Tolerance, stop and restart with β. False: the step stands, its β is
   /// carried to the next increment, and new contacts are to be switched on.
   bool restartAtFirstIterate(const std::vector<SlaveNodeIncrement>& firstIterate);
+  /// At a converged state of the current attempt (every slave node against the commit): "" accepts it;
+  /// otherwise it brought other than N_c counted events and the step is to be solved again with
+  /// Δλ × β (the reason, for the log). At most `maxCorrections` per increment; never with f = 0.
+  std::string redoAtConvergence(const std::vector<SlaveNodeIncrement>& converged);
   /// Every Newton iterate: the release of new contacts concerns only the iterate it happened at.
   void nextIterate() { justReleased_ = false; }
 
@@ -84,6 +94,7 @@ class ContactBetaControl {
 
  private:
   AttemptPlan plan(double base, double lambda);
+  bool standsAsPlanned(const BetaResult& result) const;
   void recordPrediction(const std::vector<SlaveNodeIncrement>& nodes, const BetaResult& result);
   double newtonGrowth() const;
   bool learning() const { return settings_.learnEventRate && settings_.beta.nextContactFraction > 0; }
@@ -99,6 +110,9 @@ class ContactBetaControl {
   bool hitMinimumStep_ = false;
   bool lastBetaFromEvents_ = false;  ///< the last β was set by an event, not by a bound
   int predictedEvents_ = 0;
+  int rechecks_ = 0;  ///< restarts of the current increment
+  int redos_ = 0;     ///< redoAtConvergence corrections of the current increment
+  bool redoing_ = false;
   int lastNewtonIterations_ = 0;
   std::vector<double> predictedFractions_;  ///< unscaled β^k of the last check / prediction
   double predictionStep_ = 0;               ///< the Δλ they refer to (0: none recorded)

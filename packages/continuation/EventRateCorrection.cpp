@@ -4,7 +4,6 @@
 #include <cstddef>
 #include <limits>
 #include <cmath>
-#include <cstdlib>
 
 namespace contessa::continuation {
 
@@ -25,8 +24,6 @@ bool EventRateCorrection::observe(std::vector<double> s, int observed) {
   if (scale_ > lo && scale_ <= hi) return false;     // consistent: keep
   double c = hi;
   if (o < n) c = 1.0 / (below + nextFraction_ * (s[o] - below));
-  static const double w = std::getenv("CB_W") ? std::atof(std::getenv("CB_W")) : 1.0;  // TRACE
-  c = std::exp((1 - w) * std::log(scale_) + w * std::log(c));  // TRACE
   c = std::clamp(c, minScale_, maxScale_);
   const bool changed = c != scale_;
   scale_ = c;

@@ -24,6 +24,7 @@ ContactBetaSettings contactBetaSettings(const Teuchos::ParameterList& p, double 
   s.learnEventRate = p.get<bool>("Learn Event Rate");
   s.quietGrowth = continuation::quietGrowthByName(p.get<std::string>("Growth Without Events"));
   s.targetNewtonIterations = p.get<int>("Target Newton Iterations");
+  s.maxCorrections = p.get<int>("Max Corrections Per Increment");
   s.restartTolerance = p.get<double>("Restart Tolerance");
   s.initialStep = p.get<double>("Initial Step Size");
   s.minStep = p.get<double>("Min Step Size");
@@ -94,7 +95,7 @@ NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
   }
   stepSize = plan.step;
   if (!plan.ok) return NOX::Abstract::Group::Failed;
-  if (control_.settings().mode == ContactBetaSettings::Mode::Predictor)
+  if (control_.settings().mode == ContactBetaSettings::Mode::Predictor && !plan.corrected)
     stepSize = control_.correctByPrediction(predictedNodes(curGroup, predictor, stepSize));
   if (plan.checkFirstIterate) model_.setNewContactsFrozen(true);
   previous_ = stepSize;

@@ -306,7 +306,11 @@ RunSummary ContinuationDriver::run() {
       tests.get<int>("Maximum Iterations"),
       contactBeta && betaState.settings().mode == continuation::ContactBetaSettings::Mode::Restart
           ? Teuchos::RCP<NOX::StatusTest::Generic>(rcp(new ContactBetaRestartTest(*model_, betaState)))
-          : Teuchos::null);
+          : Teuchos::null,
+      contactBeta ? std::function<std::string()>([&betaState, model] {
+        return betaState.redoAtConvergence(model->trialIncrement());
+      })
+                  : std::function<std::string()>());
 
   auto errors = rcp(new std::ostringstream());
   auto newton = rcp(new NewtonCounter(newtonTests, *errors));

@@ -1,5 +1,7 @@
 #include "solvers/SolverParameters.hpp"
 
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
 #include "common/Error.hpp"
 #include "continuation/ContactBetaControl.hpp"
 #include "deck/DeckReader.hpp"
@@ -88,6 +90,11 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setChoice(step, "Growth Without Events", "Max Growth Factor", continuation::quietGrowthNames(),
                   "Contact Beta: how the step grows while at most N_c events lie ahead: to Max Growth Factor, or by "
                   "the Newton iterations of the last increment (towards Target Newton Iterations)");
+  step.set("Max Corrections Per Increment", 3,
+           "Contact Beta (f > 0): beyond the paper's one restart, how often per increment a restarted step with β "
+           "far from 1 is checked again at its first iterate, and how often a converged increment with other than "
+           "N_c counted events is solved again with a corrected step; 0 = Table 1 as printed ([0, 10])",
+           Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 10)));
   deck::setPositiveInt(step, "Target Newton Iterations", 6,
                        "Contact Beta with Growth Without Events = Newton Iterations: the iterations an increment aims at");
 
