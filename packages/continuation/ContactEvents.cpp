@@ -18,10 +18,12 @@ double zeroCrossing(double start, double end) {
   return -start / rise;
 }
 
-double openingFraction(const SlaveNodeIncrement& n, double touchingGap) {
+double openingFraction(const SlaveNodeIncrement& n) {
   if (!std::isfinite(n.committedGap) || !std::isfinite(n.trialGap)) return -1;
   if (!(n.trialGap > n.committedGap)) return -1;  // pressed harder, or unchanged
-  if (n.committedGap >= -touchingGap) return 0;     // no pressure left: opens in any step
+  // No pressure left (g_t ≥ 0): opens in any step. A node pressed by a tiny penetration still carries
+  // ε_N |g_t| (touchingGap is a length for closures, not a pressure): it opens where the line crosses.
+  if (n.committedGap >= 0) return 0;
   return zeroCrossing(n.committedGap, n.trialGap);
 }
 
@@ -76,7 +78,7 @@ int countEvents(const std::vector<SlaveNodeIncrement>& nodes, CountedEvents rule
 double eventFraction(const SlaveNodeIncrement& n, CountedEvents rule, double touchingGap) {
   if (!n.inContactAtCommit()) return closureFraction({n.committedGap, n.trialGap, false}, touchingGap);  // eq. (11)
   if (rule == CountedEvents::Closures) return -1;
-  const double opening = openingFraction(n, touchingGap);
+  const double opening = openingFraction(n);
   const double friction = frictionFraction(n);
   if (opening < 0) return friction;
   if (friction < 0) return opening;
