@@ -5,6 +5,7 @@
 #include "contact/ContactLawParameters.hpp"
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/PenaltyNormalLaw.hpp"
+#include "contact/NodeToFacetContact.hpp"
 #include "contact/Projection.hpp"
 
 namespace contessa::contact {
@@ -14,23 +15,6 @@ namespace contessa::contact {
 struct NodeToSegmentGeometry2D {
   Vector<2> slave{};
   std::array<Vector<2>, 2> master{};
-};
-
-/// Which tangent to build. Consistent is the exact derivative of the residual (quadratic Newton);
-/// PaperMainTerms keeps only eq. (24)–(26), for comparison and verification.
-enum class TangentTerms { Consistent, PaperMainTerms };
-
-/// The tangential stiffness ∂t_T1/∂ξ̄ of a slipping node in the tangent. Consistent: eq. (27), zero along the
-/// slip with one surface coordinate. Secant: a given stiffness instead, for a node whose slip direction
-/// flips between Newton iterates (SlipReversalDamping): the secant of t_T1 between the two states of the
-/// cycle, so the step lands between them, in the stick range, instead of jumping across it. The residual,
-/// hence the converged answer, is the same either way.
-struct SlipTangent {
-  bool secant = false;
-  double stiffness = 0.0;  ///< ∂t_T1/∂ξ̄ used when `secant` (at most the stick stiffness ε_T ā_11)
-
-  static SlipTangent consistent() { return {}; }
-  static SlipTangent secantOf(double stiffness) { return {true, stiffness}; }
 };
 
 struct NodeToSegmentResult2D {
