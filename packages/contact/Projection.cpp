@@ -112,20 +112,15 @@ ProjectionResult<Facet> Projection<Facet>::project(const Point& slave, const Nod
     return project(slave, master, Facet::center());
   } else {
     ProjectionResult<Facet> best;
-    double bestDistance = std::numeric_limits<double>::infinity();
-    bool first = true;
+    int tried = 0;
     for (const SurfaceCoords& start : startCandidates(slave, master)) {
       ProjectionResult<Facet> p = project(slave, master, start);
-      if (first) best = p;  // reported when no start converges
-      first = false;
+      if (++tried == 1) best = p;  // reported when no start converges
       if (!p.converged) continue;
-      const double distance = norm(subtract(slave, p.position));
-      if (distance < bestDistance) {
-        bestDistance = distance;
-        best = p;
-      }
-      break;  // the best start converged: it is the nearest stationary point of φ
+      best = p;
+      break;  // the closest start converged: its stationary point of φ is the projection
     }
+    best.starts = tried;
     return best;
   }
 }

@@ -26,6 +26,7 @@ struct ProjectionResult {
 
   bool converged = false;  ///< Newton met the tolerance on |Δξ|
   int iterations = 0;      ///< Newton corrections computed (the last one is below the tolerance)
+  int starts = 1;          ///< starts tried (> 1: the best start failed and the fallback was used)
 
   /// ξ̄ lies in the parent domain enlarged by `tolerance` (in units of ξ).
   bool isInside(double tolerance) const { return Facet::contains(xi, tolerance); }
@@ -56,7 +57,7 @@ struct ProjectionOptions {
 ///     parent domain) and halved until φ does not grow (backtracking), so the iteration cannot run off
 ///     along the unbounded bilinear extension of a warped face;
 ///   - fallback: when Newton from the best start does not converge (a degenerate metric, the iteration
-///     limit), the other starts are tried, and the converged result closest to x^k is returned.
+///     limit), the other starts are tried in order of their distance, and the first that converges is taken.
 /// The result is NOT clamped to the parent domain: choosing among facets is the selector's job.
 template <class Facet>
 class Projection {
