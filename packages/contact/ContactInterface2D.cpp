@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
-#include "contact/HistoryTransfer2D.hpp"
+#include "contact/HistoryTransfer.hpp"
 #include "contact/SweptCrossing.hpp"
 
 namespace contessa::contact {
@@ -100,14 +100,14 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       // the segment chosen now (committed coordinates, so it stays constant within the increment).
       ContactHistory<1> committed = history_.committed(k);
       if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
-        committed = transferHistory2D(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
-      NodeToSegmentGeometry2D geometry;
+        committed = transferHistory(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+      NodeToFacetGeometry<Line2Facet> geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
       // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
       // tangential stiffness (SlipReversalDamping); the residual is the same either way.
       const double facetLength = spec_.slaveFacetLengths[k];
-      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength);
+      NodeToFacetResult<Line2Facet> r = element_.evaluate(geometry, selection.segment, committed, facetLength);
       if (updateTrial) {
         damping_.observe(k, history_.trial(k), r.trial);
         const SlipTangent tangent = damping_.tangent(k);
