@@ -9,6 +9,7 @@
 
 #include "common/Error.hpp"
 #include "mesh/ExodusMeshReader.hpp"
+#include "mesh/GmshMeshReader.hpp"
 #include "mesh/Generators.hpp"
 
 namespace contessa::mesh {
@@ -248,6 +249,35 @@ Mesh createExodusFile(const ParameterList& list, const std::string& where, const
   return readExodusMesh(meshFile(list, where, directory, "an Exodus II mesh file"));
 }
 
+RCP<ParameterList> gmshFileParameters() { return fileParameters("Gmsh File", "Gmsh mesh file (.msh)"); }
+
+Mesh createGmshFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+  return readGmshMesh(meshFile(list, where, directory, "a Gmsh .msh file"));
+}
+
+// "Mesh File": the reader chosen by the file's extension.
+const struct {
+  const char* extension;
+  Mesh (*read)(const std::string&);
+} kReaders[] = {{".msh", &readGmshMesh}, {".exo", &readExodusMesh}, {".e", &readExodusMesh},
+                {".g", &readExodusMesh},  {".gen", &readExodusMesh}, {".ex2", &readExodusMesh}};
+
+RCP<ParameterList> meshFileParameters() {
+  return fileParameters("Mesh File", "Mesh file: .msh (Gmsh) or .exo, .e, .g, .gen, .ex2 (Exodus II)");
+}
+
+Mesh createMeshFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+  const std::string file = meshFile(list, where, directory, "a .msh or Exodus II mesh file");
+  std::string known;
+  for (const auto& r : kReaders) {
+    const std::string ext = r.extension;
+    if (file.size() > ext.size() && file.compare(file.size() - ext.size(), ext.size(), ext) == 0) return r.read(file);
+    known += (known.empty() ? "" : ", ") + ext;
+  }
+  throw InputError(where + "/File Name: '" + file + "' has none of the extensions " + known +
+                   " (or choose the reader with Type = Exodus File or Gmsh File)");
+}
+
 // ---- The registry ----
 
 struct MeshSourceEntry {
@@ -257,7 +287,7 @@ struct MeshSourceEntry {
   Mesh (*create)(const ParameterList&, const std::string& where, const std::string& directory);
 };
 
-const std::array<MeshSourceEntry, 6> kRegistry = {{
+const std::array<MeshSourceEntry, 8> kRegistry = {{
     {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters, &createRectangle},
     {"Annulus Sector",
      "A ring segment of QUAD4 (2D) centred at the origin, graded through the wall and along the arc",
@@ -274,6 +304,12 @@ const std::array<MeshSourceEntry, 6> kRegistry = {{
     {"Exodus File",
      "An Exodus II mesh: QUAD4 or HEX8 element blocks, node sets and side sets with their names",
      &exodusFileParameters, &createExodusFile},
+    {"Gmsh File",
+     "A Gmsh mesh (.msh): physical volumes (2D: surfaces) become HEX8 (QUAD4) element blocks, physical groups "
+     "one dimension lower side sets and node sets, physical points and curves node sets",
+     &gmshFileParameters, &createGmshFile},
+    {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension", &meshFileParameters,
+     &createMeshFile},
 }};
 
 const MeshSourceEntry& lookup(const std::string& type, const std::string& where = "") {
