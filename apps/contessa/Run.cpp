@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "Failure.hpp"
 #include "common/Error.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
@@ -78,26 +80,35 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // Before the first HDF5 call (the mesh reader may make it): readers may open the results while
   // the run writes them (io/ExodusWriter.hpp).
   io::disableHdf5FileLocking();
-  // 1. The whole deck is validated before anything runs.
-  auto deckList = deck::readDeck(cl.deck);
-  deck::applyOverrides(*deckList, cl.overrides);
-  const output::RunDescription description{commandLineText(cl), output::deckText(*deckList)};
-  Teuchos::ParameterList validTop("Contessa deck");
-  validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
-  validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
-  deck::validateAndSetDefaults(*deckList, validTop, "", {"Problem", "Piro"});
-  requireInput(deckList->isSublist("Problem") && deckList->sublist("Problem").isSublist("Mesh"),
-               "Problem/Mesh: required (the deck has no mesh)");
+  // 1. The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
+  //    validates it and reads the mesh, and a failure on any rank (a file only some ranks can read)
+  //    stops every rank with one message (agreeOnInput).
+  const std::string deckText = shareDeckText(*comm, cl.deck);
+  Teuchos::RCP<Teuchos::ParameterList> deckList;
+  deck::ProblemDefinition problem;
+  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
+  output::RunDescription description;
+  agreeOnInput(*comm, [&] {
+    deckList = deck::parseDeck(deckText, cl.deck);
+    deck::applyOverrides(*deckList, cl.overrides);
+    description = {commandLineText(cl), output::deckText(*deckList)};
+    Teuchos::ParameterList validTop("Contessa deck");
+    validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
+    validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
+    deck::validateAndSetDefaults(*deckList, validTop, "", {"Problem", "Piro"});
+    requireInput(deckList->isSublist("Problem") && deckList->sublist("Problem").isSublist("Mesh"),
+                 "Problem/Mesh: required (the deck has no mesh)");
 
-  const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
-  deck::ProblemDefinition problem = deck::buildProblem(deckList->sublist("Problem"), deckDirectory);
+    const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
+    problem = deck::buildProblem(deckList->sublist("Problem"), deckDirectory);
+    solvers::validatePiro(deckList->sublist("Piro"), comm->getSize());
+    linearSolver = solvers::createLinearSolverFactory(deckList->sublist("Piro").sublist("Stratimikos"));
+
+    std::error_code ec;
+    fs::create_directories(cl.outputDirectory, ec);
+    requireInput(fs::is_directory(cl.outputDirectory), "--output-dir " + cl.outputDirectory + ": cannot create the directory");
+  });
   auto& piro = deckList->sublist("Piro");
-  solvers::validatePiro(piro, comm->getSize());
-  auto linearSolver = solvers::createLinearSolverFactory(piro.sublist("Stratimikos"));
-
-  std::error_code ec;
-  fs::create_directories(cl.outputDirectory, ec);
-  requireInput(fs::is_directory(cl.outputDirectory), "--output-dir " + cl.outputDirectory + ": cannot create the directory");
   const std::string name = fs::path(cl.deck).stem().string();
 
   // 2. Partition, model, output.
@@ -114,7 +125,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
 
   // 3. Continuation in the load factor.
   // An output error ends the run on every rank (ResultsOutput agrees on it): the drivers report it as
-  // a stopped run, or it reaches here from the initial state; its own message is the one to show.
+  // a stopped run, or it reaches here from the initial state. Its own message is the one to show; it
+  // is thrown on every rank alike, so FailureReporter prints it once (exit status 1).
   solvers::RunSummary summary;
   try {
     summary = piro.get<std::string>("Solver Type") == "NOX" ? solvers::solveStatic(model, piro, results)
@@ -122,10 +134,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   } catch (const std::exception&) {
     if (results.failure().empty()) throw;
   }
-  if (!results.failure().empty()) {
-    if (root) std::fprintf(stderr, "contessa: error: %s\n", results.failure().c_str());
-    return 1;
-  }
+  if (!results.failure().empty()) throw std::runtime_error(results.failure());
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
                 "load factor %.6g\n",

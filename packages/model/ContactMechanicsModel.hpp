@@ -76,6 +76,21 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   /// are summed under the interface name), summed over ranks.
   std::vector<std::pair<std::string, std::array<double, 2>>> contactForces() const;
 
+  // Why a solve failed or must not be accepted, in words for the one-line stop message. Collective:
+  // every rank calls them at the same point and gets the same text.
+  /// The lowest-numbered element (over all ranks) whose evaluation failed at the latest residual
+  /// evaluation — the reason the residual was set to NaN — e.g. "element 17 of block 'tube' is inverted
+  /// or degenerate (det F <= 0)"; empty when every element was admissible.
+  std::string inadmissibleElement() const;
+  /// Slave nodes that passed through their master surface between the last commit and the latest
+  /// evaluation and are not in contact now (ContactInterface2D::tunnellingNodes, every interface and
+  /// rank), e.g. "slave node 41 of interface 'plate' (and 28 more) passed through the master surface";
+  /// empty when none did.
+  std::string contactTunnelling() const;
+  /// The null space of a singular Jacobian (vectors over all DOFs in global numbering, the same on every
+  /// rank) in words: which blocks are free to move, and how (FreeMotion.hpp).
+  std::string describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const;
+
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const { return jacobianEvaluations_; }
   /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
@@ -92,8 +107,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   void buildBoundaryConditions();
   /// Internal and contact forces (and their stiffness and ∂/∂λ) at owned x and load factor λ,
   /// exported to owned rows, before boundary conditions. `updateTrial` stores the trial state.
-  bool assembleInternal(const Vector& x, double lambda, Vector* force, CrsMatrix* stiffness, Vector* dForcedLambda,
-                        bool updateTrial) const;
+  SolidAssembler::Status assembleInternal(const Vector& x, double lambda, Vector* force, CrsMatrix* stiffness,
+                                          Vector* dForcedLambda, bool updateTrial) const;
 
   Teuchos::RCP<const Comm> comm_;
   const deck::ProblemDefinition& problem_;
@@ -119,6 +134,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   mutable int jacobianEvaluations_ = 0;
   mutable double lastLoadFactor_ = 0;
   mutable bool newContactsFrozen_ = false;
+  mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank
 };
 
 }  // namespace contessa::model
