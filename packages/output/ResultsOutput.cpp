@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 
@@ -218,6 +219,10 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
     } catch (const std::exception& e) {
       error = "cannot write step " + std::to_string(report.step) + ": " + e.what();
     }
+    // What the user still has: both files hold the same increments, up to the last one written.
+    if (!error.empty())
+      error += rows_.empty() ? " (no step was written)"
+                             : " (the results keep steps 0 to " + std::to_string(std::llround(rows_.back()[0])) + ")";
   }
   error = agree(*model_.ownedDofMap()->getComm(), error);
   if (!error.empty()) {

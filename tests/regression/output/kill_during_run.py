@@ -4,7 +4,8 @@
 A run killed with SIGKILL at any moment leaves valid output: the Exodus file opens, and every
 increment of the history CSV is in it, readable, with the same load factor (output_files.py). The
 run is killed N times, each after a different number of increments (random moments within them);
-the uniaxial deck with 400 small increments keeps the output busy, so kills often land in a write."""
+the uniaxial deck with 400 small increments keeps the output busy, so kills often land in a write.
+The killed run leaves its lock file behind: a new run into the same directory must take it over."""
 import argparse
 import os
 import random
@@ -48,4 +49,21 @@ for k in range(args.kills):
     rows = rows_written(history)
     print(f"kill {k + 1}: after {rows} history rows; " + ("; ".join(problems + notes) or "files agree"))
     failed |= bool(problems)
+
+# The lock file of the last killed run is still there (nobody removed it); its holder is dead, so the
+# next run takes the output over and finishes.
+lock = f"{args.outdir}/{name}.lock"
+if not os.path.exists(lock):
+    print(f"FAIL: the killed run left no {lock}: the takeover below is not tested")
+    failed = True
+again = subprocess.run([args.contessa, args.deck, "--quiet", "--output-dir", args.outdir],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+print(f"run after the kills: exit {again.returncode} {again.stderr.strip()}")
+if again.returncode != 0 or again.stderr:
+    print("FAIL: a run into the directory of a killed run did not finish cleanly")
+    failed = True
+problems, _ = check_results(exo, history)
+for p in problems:
+    print("FAIL:", p)
+failed |= bool(problems)
 sys.exit(1 if failed else 0)
