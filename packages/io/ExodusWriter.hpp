@@ -1,8 +1,9 @@
 #pragma once
 // Exodus II results file (netCDF-4/HDF5 flavour), written on one rank with the whole mesh. The file
-// stays open for the run and every step is flushed to disk (ex_update) before writeStep returns, after
-// the disk space it needs has been reserved: whatever happens to the process later (a kill -9, a
-// crash, a full disk), the file on disk is valid and holds every step written so far.
+// stays open for the run and every step is flushed out of the process (ex_update: HDF5 hands its
+// buffers to the operating system; no fsync) before writeStep returns, after the disk space it needs
+// has been reserved: whatever happens to the process later (a kill -9, a crash, a full disk), the file
+// is valid and holds every step written so far.
 #include <array>
 #include <string>
 #include <vector>
