@@ -10,6 +10,7 @@ packages=(
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
   netcdf-bin python3-netcdf4 python3-matplotlib python3-numpy
   libgtest-dev googletest
+  paraview python3-paraview xvfb xauth
 )
 
 missing=()
