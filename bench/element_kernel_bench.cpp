@@ -1,16 +1,17 @@
 // element_kernel_bench: cost of the solid element kernels per element and evaluation, the hot path of
 // every residual and Jacobian. Not a test; run it by hand (Release build):
 //   build/bin/element_kernel_bench [--repeat N]
-// For Q4 and Q4 Enhanced with Saint Venant-Kirchhoff and Neo-Hookean it prints the median (over N
+// For Q4, Q4 Enhanced, Hex8 and Hex8 Enhanced with Saint Venant-Kirchhoff and Neo-Hookean it prints the median (over N
 // repetitions, default 7) wall time in ns per element of a residual pass (internal force only) and of
 // a Jacobian pass (internal force and tangent), and for the enhanced element the local (enhanced
 // parameter) Newton iterations per evaluation, i.e. material calls per evaluation (each call
 // evaluates every Gauss point).
 //
 // The workload imitates what the model asks of each element during a load-stepped Newton solve:
-// 64 distorted quadrilaterals of tube-element size (~1.6 mm, node positions jittered by ±15 %), each
-// following its own finite-strain path u(t) (a rigid rotation of up to 0.4 rad, stretches and shear
-// of up to 15 %, and an hourglass/bending pattern that the enhanced modes resist, so α ≠ 0), cut into
+// 64 distorted quadrilaterals (or hexahedra: a cube) of tube-element size (~1.6 mm, node positions
+// jittered by ±15 %), each following its own finite-strain path u(t) (a rigid rotation of up to
+// 0.4 rad, about z in 2D and a random axis in 3D, stretches and shear of up to 15 %, and an
+// hourglass/bending pattern ξ_a η_a that the enhanced modes resist, so α ≠ 0), cut into
 // 47 increments like the tube. In each increment the residual is evaluated at 6 Newton iterates
 // u_k = u(t_n) + ε_k |Δu_n| r_k (ε_k = 1, 0.3, 3e-2, 1e-3, 1e-6, 1e-12; r_k a smooth pseudo-random
 // correction field) and the Jacobian at the first 5, the same pattern as the tube's Newton loops.
@@ -43,58 +44,107 @@ constexpr int kElements = 64;
 constexpr int kIncrements = 47;
 constexpr int kIterates = 6;  // residual passes per increment; Jacobian passes: kIterates − 1
 constexpr double kErrors[kIterates] = {1.0, 0.3, 3e-2, 1e-3, 1e-6, 1e-12};
-constexpr int kNodes = 4, kDofs = 8;
+constexpr int kMaxDofs = 24;  // Hex8
 
 /// One element: reference coordinates and the displacement at every (increment, iterate).
 struct Workload {
-  std::array<double, kDofs> X{};
-  std::vector<std::array<double, kDofs>> u;  ///< [increment · kIterates + iterate]
+  std::vector<double> X;
+  std::vector<std::vector<double>> u;  ///< [increment · kIterates + iterate]
 };
 
-std::array<double, kDofs> pathDisplacement(const std::array<double, kDofs>& X, double t, double theta, double size,
-                                           const double (&H)[2][2]) {
-  const double c = std::cos(theta * t), s = std::sin(theta * t);
-  const double hourglass[4] = {1.0, -1.0, 1.0, -1.0};
-  std::array<double, kDofs> u{};
-  for (int a = 0; a < kNodes; ++a) {
-    // F = R(θ t) (I + t H): x = F X, plus the bending pattern t · 0.04 size (1, ½) h_a.
-    const double x = X[2 * a], y = X[2 * a + 1];
-    const double ux = x + t * (H[0][0] * x + H[0][1] * y), uy = y + t * (H[1][0] * x + H[1][1] * y);
-    u[2 * a] = c * ux - s * uy - x + t * 0.04 * size * hourglass[a];
-    u[2 * a + 1] = s * ux + c * uy - y + t * 0.02 * size * hourglass[a];
+/// Parent coordinates of the nodes (Q4 counter-clockwise; Hex8 in the Exodus order).
+const double kQuadNodes[4][3] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+const double kHexNodes[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+
+/// The hourglass/bending pattern h_a = ξ_a η_a that the enhanced modes resist.
+double hourglass(int D, int a) {
+  const auto& n = D == 2 ? kQuadNodes[a] : kHexNodes[a];
+  return n[0] * n[1];
+}
+
+/// F = R(θ t) (I + t H): x = F X, plus the bending pattern t · size · (0.04, 0.02, 0.03) h_a. R turns
+/// about z in 2D and about `axis` in 3D.
+std::vector<double> pathDisplacement(int D, const std::vector<double>& X, double t, double theta, double size,
+                                     const double (&H)[3][3], const double (&axis)[3]) {
+  const double c = std::cos(theta * t), s = std::sin(theta * t), omc = 1.0 - c;
+  double R[3][3];
+  if (D == 2) {
+    R[0][0] = c, R[0][1] = -s, R[1][0] = s, R[1][1] = c;
+  } else {
+    const double x = axis[0], y = axis[1], z = axis[2];  // unit vector; Rodrigues
+    const double r[3][3] = {{omc * x * x + c, omc * x * y - s * z, omc * x * z + s * y},
+                            {omc * x * y + s * z, omc * y * y + c, omc * y * z - s * x},
+                            {omc * x * z - s * y, omc * y * z + s * x, omc * z * z + c}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) R[i][j] = r[i][j];
+  }
+  const double amplitude[3] = {0.04, 0.02, 0.03};
+  const int N = static_cast<int>(X.size()) / D;
+  std::vector<double> u(X.size());
+  for (int a = 0; a < N; ++a) {
+    double y[3] = {};
+    for (int i = 0; i < D; ++i) {
+      double hx = 0.0;
+      for (int J = 0; J < D; ++J) hx += H[i][J] * X[D * a + J];
+      y[i] = X[D * a + i] + t * hx;
+    }
+    for (int i = 0; i < D; ++i) {
+      double rx = 0.0;
+      for (int J = 0; J < D; ++J) rx += R[i][J] * y[J];
+      u[D * a + i] = rx - X[D * a + i] + t * amplitude[i] * size * hourglass(D, a);
+    }
   }
   return u;
 }
 
-std::vector<Workload> makeWorkload() {
-  std::mt19937 gen(2024);
+std::vector<Workload> makeWorkload(int D) {
+  std::mt19937 gen(D == 2 ? 2024 : 3024);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   const double size = 1.6;  // mm, as the tube's elements
-  const std::array<double, kDofs> base = {0.0, 0.0, 1.0, 0.1, 1.15, 0.95, -0.1, 0.85};
+  const int N = D == 2 ? 4 : 8, ND = D * N;
+  // A slightly irregular parallelogram (2D) or the unit cube (3D), before jitter.
+  const std::vector<double> quad = {0.0, 0.0, 1.0, 0.1, 1.15, 0.95, -0.1, 0.85};
+  std::vector<double> base(ND);
+  for (int a = 0; a < N; ++a)
+    for (int i = 0; i < D; ++i) base[D * a + i] = D == 2 ? quad[D * a + i] : 0.5 * (1.0 + kHexNodes[a][i]);
   std::vector<Workload> work(kElements);
   for (auto& w : work) {
-    for (int k = 0; k < kDofs; ++k) w.X[k] = size * (base[k] + 0.15 * unit(gen));
+    w.X.resize(ND);
+    for (int k = 0; k < ND; ++k) w.X[k] = size * (base[k] + 0.15 * unit(gen));
     const double theta = 0.4 * unit(gen);
-    const double H[2][2] = {{0.15 * unit(gen), 0.1 * unit(gen)}, {0.1 * unit(gen), 0.15 * unit(gen)}};
+    double H[3][3] = {}, axis[3] = {0.0, 0.0, 1.0};
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) H[i][j] = (i == j ? 0.15 : 0.1) * unit(gen);
+    if (D == 3) {
+      for (double& v : axis) v = unit(gen);
+      const double n = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+      for (double& v : axis) v /= n;
+    }
     // Newton corrections are smooth fields: mostly a homogeneous gradient (translation, rotation,
     // stretch) plus a smaller hourglass part.
-    std::vector<std::array<double, kDofs>> directions(kIterates);
+    std::vector<std::vector<double>> directions(kIterates, std::vector<double>(ND));
     for (auto& r : directions) {
-      const double G[2][2] = {{unit(gen), unit(gen)}, {unit(gen), unit(gen)}};
-      const double t[2] = {unit(gen), unit(gen)}, hg[2] = {0.1 * unit(gen), 0.1 * unit(gen)};
-      const double hourglass[4] = {1.0, -1.0, 1.0, -1.0};
-      for (int a = 0; a < kNodes; ++a)
-        for (int i = 0; i < 2; ++i)
-          r[2 * a + i] = t[i] + (G[i][0] * w.X[2 * a] + G[i][1] * w.X[2 * a + 1]) / size + hg[i] * hourglass[a];
+      double G[3][3] = {}, t[3] = {}, hg[3] = {};
+      for (int i = 0; i < D; ++i)
+        for (int j = 0; j < D; ++j) G[i][j] = unit(gen);
+      for (int i = 0; i < D; ++i) t[i] = unit(gen);
+      for (int i = 0; i < D; ++i) hg[i] = 0.1 * unit(gen);
+      for (int a = 0; a < N; ++a)
+        for (int i = 0; i < D; ++i) {
+          double gx = 0.0;
+          for (int J = 0; J < D; ++J) gx += G[i][J] * w.X[D * a + J];
+          r[D * a + i] = t[i] + gx / size + hg[i] * hourglass(D, a);
+        }
     }
     for (int n = 1; n <= kIncrements; ++n) {
-      const auto target = pathDisplacement(w.X, double(n) / kIncrements, theta, size, H);
-      const auto previous = pathDisplacement(w.X, double(n - 1) / kIncrements, theta, size, H);
+      const auto target = pathDisplacement(D, w.X, double(n) / kIncrements, theta, size, H, axis);
+      const auto previous = pathDisplacement(D, w.X, double(n - 1) / kIncrements, theta, size, H, axis);
       double step = 0.0;
-      for (int k = 0; k < kDofs; ++k) step = std::max(step, std::fabs(target[k] - previous[k]));
+      for (int k = 0; k < ND; ++k) step = std::max(step, std::fabs(target[k] - previous[k]));
       for (int it = 0; it < kIterates; ++it) {
         auto u = target;
-        for (int k = 0; k < kDofs; ++k) u[k] += kErrors[it] * step * directions[it][k];
+        for (int k = 0; k < ND; ++k) u[k] += kErrors[it] * step * directions[it][k];
         w.u.push_back(u);
       }
     }
@@ -146,7 +196,7 @@ __attribute__((noinline)) double residualPass(const cm::ElementKernel& kernel, c
                                               const cm::Material& material, const std::vector<Workload>& work,
                                               int n, int it, double* states) {
   const int ns = kernel.numStateValues();
-  std::array<double, kDofs> f{};
+  std::array<double, kMaxDofs> f{};
   double sink = 0.0;
   for (int e = 0; e < kElements; ++e) {
     if (kernel.evaluate(geometry, e, work[e].u[n * kIterates + it].data(), states + e * ns, material, f.data(),
@@ -163,8 +213,8 @@ __attribute__((noinline)) double jacobianPass(const cm::ElementKernel& kernel, c
                                               const cm::Material& material, const std::vector<Workload>& work,
                                               int n, int it, double* states) {
   const int ns = kernel.numStateValues();
-  std::array<double, kDofs> f{};
-  std::array<double, kDofs * kDofs> K{};
+  std::array<double, kMaxDofs> f{};
+  std::array<double, kMaxDofs * kMaxDofs> K{};
   double sink = 0.0;
   for (int e = 0; e < kElements; ++e) {
     if (kernel.evaluate(geometry, e, work[e].u[n * kIterates + it].data(), states + e * ns, material, f.data(),
@@ -237,20 +287,21 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const auto work = makeWorkload();
+  const std::vector<Workload> workloads[2] = {makeWorkload(2), makeWorkload(3)};
   std::printf("element_kernel_bench: %d distorted elements, %d increments x (%d residual + %d Jacobian passes), "
               "median of %d repetitions\n",
               kElements, kIncrements, kIterates, kIterates - 1, repeat);
-  std::printf("%-12s %-24s %14s %14s %14s %14s\n", "element", "material", "residual ns", "jacobian ns",
+  std::printf("%-14s %-24s %14s %14s %14s %14s\n", "element", "material", "residual ns", "jacobian ns",
               "local it./res", "local it./jac");
-  for (const char* elementName : {"Q4", "Q4 Enhanced"}) {
+  for (const char* elementName : {"Q4", "Q4 Enhanced", "Hex8", "Hex8 Enhanced"}) {
     for (const char* model : {"Saint Venant-Kirchhoff", "Neo-Hookean"}) {
       if (!onlyElement.empty() && (onlyElement != elementName || onlyMaterial != model)) continue;
       const auto kernel = cm::ElementFactory::create(elementName, "bench");
+      const auto& work = workloads[kernel->dimension() - 2];
       const auto material = makeMaterial(model);
       if (once) {
         const PassTimes t = run(*kernel, *material, work);
-        std::printf("%-12s %-24s one run: %ld residual and %ld Jacobian element evaluations\n", elementName, model,
+        std::printf("%-14s %-24s one run: %ld residual and %ld Jacobian element evaluations\n", elementName, model,
                     t.residualEvaluations, t.jacobianEvaluations);
         continue;
       }
@@ -270,7 +321,7 @@ int main(int argc, char** argv) {
         std::snprintf(resIt, sizeof resIt, "%.3f", double(residualCalls) / counted.residualEvaluations);
         std::snprintf(jacIt, sizeof jacIt, "%.3f", double(jacobianCalls) / counted.jacobianEvaluations);
       }
-      std::printf("%-12s %-24s %14.1f %14.1f %14s %14s\n", elementName, model, median(residual), median(jacobian),
+      std::printf("%-14s %-24s %14.1f %14.1f %14s %14s\n", elementName, model, median(residual), median(jacobian),
                   resIt, jacIt);
     }
   }

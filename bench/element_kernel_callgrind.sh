@@ -8,8 +8,8 @@ set -eu
 BENCH=${1:-build/bin/element_kernel_bench}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-printf '%-12s %-24s %16s %16s\n' element material "residual Ir/el" "jacobian Ir/el"
-for element in "Q4" "Q4 Enhanced"; do
+printf '%-14s %-24s %16s %16s\n' element material "residual Ir/el" "jacobian Ir/el"
+for element in "Q4" "Q4 Enhanced" "Hex8" "Hex8 Enhanced"; do
   for material in "Saint Venant-Kirchhoff" "Neo-Hookean"; do
     out=""
     for pass in residualPass jacobianPass; do
@@ -23,6 +23,6 @@ for element in "Q4" "Q4 Enhanced"; do
       total=$(sed -n 's/^summary: *\([0-9]*\).*/\1/p' "$TMP/cg.out")
       out="$out $(awk -v t="$total" -v n="$evals" 'BEGIN { printf "%16.0f", t / n }')"
     done
-    printf '%-12s %-24s%s\n' "$element" "$material" "$out"
+    printf '%-14s %-24s%s\n' "$element" "$material" "$out"
   done
 done

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
 
@@ -12,9 +13,11 @@
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
+#include "io/ExodusWriter.hpp"
 #include "mesh/MemoryEstimate.hpp"
 #include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
+#include "output/DeckText.hpp"
 #include "output/ResultsOutput.hpp"
 #include "solvers/ContinuationDriver.hpp"
 #include "solvers/LinearSolverFactory.hpp"
@@ -61,10 +64,23 @@ int checkRegression(const deck::ProblemDefinition& problem, const output::Result
   return failed;
 }
 
+// The command line as the results file records it (words with spaces quoted).
+std::string commandLineText(const CommandLine& cl) {
+  auto word = [](const std::string& w) { return w.find_first_of(" \t'") == std::string::npos ? w : "\"" + w + "\""; };
+  std::string text = "contessa " + word(cl.deck);
+  if (cl.outputDirectory != ".") text += " --output-dir " + word(cl.outputDirectory);
+  for (const auto& o : cl.overrides) text += " --set " + word(o);
+  if (cl.quiet) text += " --quiet";
+  return text;
+}
+
 }  // namespace
 
 int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
   const bool root = comm->getRank() == 0;
+  // Before the first HDF5 call (the mesh reader may make it): readers may open the results while
+  // the run writes them (io/ExodusWriter.hpp).
+  io::disableHdf5FileLocking();
   // 1. The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
   //    validates it and reads the mesh, and a failure on any rank (a file only some ranks can read)
   //    stops every rank with one message (agreeOnInput).
@@ -73,9 +89,11 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   Teuchos::RCP<Teuchos::ParameterList> deckList;
   deck::ProblemDefinition problem;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
+  output::RunDescription description;
   agreeOnInput(*comm, [&] {
     deckList = deck::parseDeck(deckText, cl.deck);
     deck::applyOverrides(*deckList, cl.overrides);
+    description = {commandLineText(cl), output::deckText(*deckList)};
     Teuchos::ParameterList validTop("Contessa deck");
     validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
     validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
@@ -98,7 +116,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // 2. Partition, model, output.
   const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
   auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, partition, linearSolver));
-  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet);
+  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description);
+  if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
   requireHistoryColumns(problem, results.historyColumns());
   if (root && !cl.quiet)
     std::printf("contessa: %s on %d rank(s): %lld nodes, %lld elements, %lld unknowns\n", cl.deck.c_str(),
@@ -107,9 +126,17 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
                 static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
 
   // 3. Continuation in the load factor.
-  const solvers::RunSummary summary = piro.get<std::string>("Solver Type") == "NOX"
-                                          ? solvers::solveStatic(model, piro, results)
-                                          : solvers::ContinuationDriver(model, piro, results).run();
+  // An output error ends the run on every rank (ResultsOutput agrees on it): the drivers report it as
+  // a stopped run, or it reaches here from the initial state. Its own message is the one to show; it
+  // is thrown on every rank alike, so FailureReporter prints it once (exit status 1).
+  solvers::RunSummary summary;
+  try {
+    summary = piro.get<std::string>("Solver Type") == "NOX" ? solvers::solveStatic(model, piro, results)
+                                                            : solvers::ContinuationDriver(model, piro, results).run();
+  } catch (const std::exception&) {
+    if (results.failure().empty()) throw;
+  }
+  if (!results.failure().empty()) throw std::runtime_error(results.failure());
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
                 "load factor %.6g\n",

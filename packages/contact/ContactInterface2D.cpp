@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
-#include "contact/HistoryTransfer2D.hpp"
+#include "contact/HistoryTransfer.hpp"
 #include "contact/SweptCrossing.hpp"
 
 namespace contessa::contact {
@@ -103,14 +103,14 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       // the segment chosen now (committed coordinates, so it stays constant within the increment).
       ContactHistory<1> committed = history_.committed(k);
       if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
-        committed = transferHistory2D(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
-      NodeToSegmentGeometry2D geometry;
+        committed = transferHistory(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+      NodeToFacetGeometry<Line2Facet> geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
       // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
       // tangential stiffness (SlipReversalDamping); the residual is the same either way.
       const double facetLength = spec_.slaveFacetLengths[k];
-      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength);
+      NodeToFacetResult<Line2Facet> r = element_.evaluate(geometry, selection.segment, committed, facetLength);
       if (updateTrial) {
         damping_.observe(k, history_.trial(k), r.trial);
         const SlipTangent tangent = damping_.tangent(k);
@@ -210,7 +210,7 @@ std::vector<TunnellingNode> ContactInterface2D::tunnellingNodes() const {
   return out;
 }
 
-SlaveNodeChange ContactInterface2D::changeOf(std::size_t k, double gap, const NodeToSegmentResult2D* result,
+SlaveNodeChange ContactInterface2D::changeOf(std::size_t k, double gap, const NodeToFacetResult<Line2Facet>* result,
                                              const ContactHistory<1>& committed) const {
   SlaveNodeChange c = unchanged(k);
   c.trialGap = gap;
@@ -260,11 +260,11 @@ std::vector<SlaveNodeChange> ContactInterface2D::changesAt(const NodePosition& p
     }
     ContactHistory<1> committed = history_.committed(k);
     if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
-      committed = transferHistory2D(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
-    NodeToSegmentGeometry2D geometry;
+      committed = transferHistory(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+    NodeToFacetGeometry<Line2Facet> geometry;
     geometry.slave = xs;
     geometry.master = segments[selection.segment].x;
-    const NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, spec_.slaveFacetLengths[k]);
+    const NodeToFacetResult<Line2Facet> r = element_.evaluate(geometry, selection.segment, committed, spec_.slaveFacetLengths[k]);
     out.push_back(changeOf(k, selection.gap, &r, committed));
   }
   return out;

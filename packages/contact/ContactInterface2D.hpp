@@ -1,7 +1,7 @@
 #pragma once
 // Coupling of one 2D contact interface: which slave nodes touch which master segments, their contact
 // forces and tangents handed to the assembler, and the committed/trial contact history. Detection
-// (BoundingBoxTree + SegmentSelector2D) and resolution (NodeToSegmentContact2D) are used as they are;
+// (BoundingBoxTree + SegmentSelector2D) and resolution (NodeToFacetContact) are used as they are;
 // this class only organises them over an interface. Pure C++: the model turns the global DOF ids it
 // receives into Tpetra entries.
 #include <array>
@@ -12,7 +12,7 @@
 
 #include "contact/ContactHistory.hpp"
 #include "contact/ContactLawParameters.hpp"
-#include "contact/NodeToSegmentContact2D.hpp"
+#include "contact/NodeToFacetContact.hpp"
 #include "contact/SegmentSelector2D.hpp"
 #include "contact/SlipReversalDamping.hpp"
 
@@ -129,7 +129,7 @@ class ContactInterface2D {
   std::vector<MasterSegment2D> masterSegments(const NodePosition& position, double loadFactor) const;
   /// Slave node k against its commit: `result` is its contact evaluation with `committed` (its committed
   /// history on the evaluated segment), or null when it was not evaluated (no master, or frozen).
-  SlaveNodeChange changeOf(std::size_t k, double gap, const NodeToSegmentResult2D* result,
+  SlaveNodeChange changeOf(std::size_t k, double gap, const NodeToFacetResult<Line2Facet>* result,
                            const ContactHistory<1>& committed) const;
   /// Slave node k with nothing changed since the commit.
   SlaveNodeChange unchanged(std::size_t k) const;
@@ -137,7 +137,7 @@ class ContactInterface2D {
 
   ContactInterfaceSpec2D spec_;
   std::vector<char> evaluatesSlave_;
-  NodeToSegmentContact2D element_;
+  NodeToFacetContact<Line2Facet> element_;
   SegmentSelector2D selector_;
   ContactHistoryStore<1> history_;
   SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates

@@ -16,6 +16,11 @@
 //   flatPieces()               -> the facet as kSpaceDim-node simplices (node indices, oriented like n̄):
 //                                 the segment itself, two triangles of a 4-node face. Geometry that needs
 //                                 a flat facet (the swept crossing test, SweptCrossing.hpp) works on these.
+//   nodeCoords(i)              -> ξ of node i in the parent domain
+//   kAffine                    -> x̄(ξ) is affine in ξ (a straight segment): the projection's Newton step is
+//                                 exact, no start search is needed
+// Every facet here is multilinear in ξ (degree ≤ 1 in each ξ^α), so the third derivatives H_i,αβγ vanish;
+// the projection and the element's consistent tangent rely on that (NodeToFacetContact.hpp).
 #include "contact/SmallMatrix.hpp"
 
 #include <cmath>
@@ -64,6 +69,8 @@ struct Line2Facet {
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1}}}; }
 
   static SurfaceCoords center() { return {0.0}; }
+  static SurfaceCoords nodeCoords(int i) { return {i == 0 ? -1.0 : 1.0}; }
+  static constexpr bool kAffine = true;
 };
 
 /// 4-node bilinear master face in 3D: (ξ^1, ξ^2) ∈ [−1, 1]², nodes at (−1,−1), (1,−1), (1,1), (−1,1),
@@ -119,10 +126,30 @@ struct Quad4Facet {
   }
 
   static SurfaceCoords center() { return {0.0, 0.0}; }
+  static SurfaceCoords nodeCoords(int i) { return {kNodeXi[i], kNodeEta[i]}; }
+  /// A warped face is curved (b̄_12 ≠ 0), and even a flat non-parallelogram face has x̄,12 ≠ 0.
+  static constexpr bool kAffine = false;
 
   /// Two triangles split along the diagonal node 0 – node 2, each counter-clockwise seen from outside.
   static constexpr int kPieces = 2;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1, 2}, {0, 2, 3}}}; }
+};
+
+/// One master facet as the contact search and the history transfer see it: an id, the global ids of its
+/// nodes (to recognise shared vertices and edges between neighbours; rigid points carry negative ids) and
+/// the positions of its nodes, in the facet's node order.
+template <class Facet>
+struct MasterFacetNodes {
+  int id = -1;
+  std::array<int, Facet::kNodes> nodes = unknownNodes();
+  std::array<typename Facet::Point, Facet::kNodes> x{};
+
+ private:
+  static std::array<int, Facet::kNodes> unknownNodes() {
+    std::array<int, Facet::kNodes> n{};
+    n.fill(-1);
+    return n;
+  }
 };
 
 }  // namespace contessa::contact

@@ -10,7 +10,7 @@ namespace contessa::contact {
 ///
 /// Sign convention: g_N < 0 gives t_N < 0, a compressive normal traction, consistent with t̄_N ≤ 0 of
 /// eq. (15). The force this traction exerts on the slave node is −t_N n̄ = ε_N |g_N| n̄, along the
-/// master's outward normal: it pushes the slave node out of the master body (see NodeToSegmentContact2D).
+/// master's outward normal: it pushes the slave node out of the master body (see NodeToFacetContact).
 class PenaltyNormalLaw {
  public:
   explicit PenaltyNormalLaw(double normalPenalty) : penalty_(normalPenalty) {

@@ -3,6 +3,8 @@
 // written for any facet type of MasterFacet.hpp (2D: Line2Facet, one ξ; 3D: Quad4Facet, two ξ^α).
 #include "contact/MasterFacet.hpp"
 
+#include <vector>
+
 namespace contessa::contact {
 
 /// Geometry of the master facet at a surface point ξ̄, seen from one slave node x^k.
@@ -24,6 +26,7 @@ struct ProjectionResult {
 
   bool converged = false;  ///< Newton met the tolerance on |Δξ|
   int iterations = 0;      ///< Newton corrections computed (the last one is below the tolerance)
+  int starts = 1;          ///< starts tried (> 1: the best start failed and the fallback was used)
 
   /// ξ̄ lies in the parent domain enlarged by `tolerance` (in units of ξ).
   bool isInside(double tolerance) const { return Facet::contains(xi, tolerance); }
@@ -43,9 +46,19 @@ struct ProjectionOptions {
 /// which stays defined when the slave node lies exactly on the facet, with the Jacobian
 ///   ∂r_α/∂ξ^β = −ā_αβ + (x^k − x̄) · x̄,αβ ,
 /// (x̄,αβ = Σ H_i,αβ x_i; zero for the straight 2-node segment, so there Newton is exact in one step).
-/// Far from a curved facet the Jacobian can lose definiteness; then the step falls back to the
-/// Gauss–Newton matrix −ā_αβ, which is always a descent direction for ½‖x^k − x̄‖².
-/// The result is NOT clamped to the parent domain: choosing among segments is the SegmentSelector's job.
+/// r_α = −∂φ/∂ξ^α with φ(ξ) = ½‖x^k − x̄(ξ)‖²: the closest point is a stationary point of φ.
+///
+/// Straight facets (Facet::kAffine): plain Newton from the centre, exact after one step.
+/// Curved facets (the bilinear 4-node face), made robust in three ways:
+///   - start: the best (closest) of the centre and the closest points of the facet's flat pieces (its two
+///     triangles), mapped to ξ; a slave node near an edge or a corner starts there, not at the centre;
+///   - step: Newton where −∂r/∂ξ = ā_αβ − (x^k − x̄)·x̄,αβ is positive definite, else the Gauss–Newton step
+///     with ā_αβ (always a descent direction of φ); each step is limited to 2 in ξ (the width of the
+///     parent domain) and halved until φ does not grow (backtracking), so the iteration cannot run off
+///     along the unbounded bilinear extension of a warped face;
+///   - fallback: when Newton from the best start does not converge (a degenerate metric, the iteration
+///     limit), the other starts are tried in order of their distance, and the first that converges is taken.
+/// The result is NOT clamped to the parent domain: choosing among facets is the selector's job.
 template <class Facet>
 class Projection {
  public:
@@ -55,12 +68,18 @@ class Projection {
 
   explicit Projection(ProjectionOptions options = {}) : options_(options) {}
 
-  /// Newton iteration on r_α(ξ) = 0 from `start`.
-  ProjectionResult<Facet> project(const Point& slave, const NodeCoords& master,
-                                  const SurfaceCoords& start = Facet::center()) const;
+  /// The closest point, from the robust start described above (the centre for a straight facet).
+  ProjectionResult<Facet> project(const Point& slave, const NodeCoords& master) const;
+
+  /// Newton iteration on r_α(ξ) = 0 from a given `start` (e.g. the previous iterate's ξ̄).
+  ProjectionResult<Facet> project(const Point& slave, const NodeCoords& master, const SurfaceCoords& start) const;
 
   /// Facet geometry (x̄, ā_α, ā_αβ, ā^αβ, ā^α, n̄, g_N) at a given ξ, without iterating.
   static ProjectionResult<Facet> evaluateAt(const Point& slave, const NodeCoords& master, const SurfaceCoords& xi);
+
+  /// The starts tried by project(slave, master): the centre, then the closest point of each flat piece
+  /// (clamped to the piece), best (closest to x^k on the facet) first.
+  static std::vector<SurfaceCoords> startCandidates(const Point& slave, const NodeCoords& master);
 
   const ProjectionOptions& options() const { return options_; }
 

@@ -10,11 +10,7 @@ namespace contessa::contact {
 
 /// One master segment as the selector sees it: its id, its global node ids (to recognise shared
 /// vertices between neighbours) and the current positions of its nodes.
-struct MasterSegment2D {
-  int id = -1;
-  std::array<int, 2> nodes{-1, -1};
-  std::array<Vector<2>, 2> x{};
-};
+using MasterSegment2D = MasterFacetNodes<Line2Facet>;
 
 enum class SelectionKind {
   OnSegment,  ///< ξ̄ inside [−1 − tol, 1 + tol] of `segment`

@@ -1,7 +1,7 @@
 #pragma once
 // Damping of two-state cycles in the slip direction during the Newton iterations of an increment.
 #include "contact/ContactHistory.hpp"
-#include "contact/NodeToSegmentContact2D.hpp"
+#include "contact/NodeToFacetContact.hpp"
 
 #include <cstddef>
 #include <vector>

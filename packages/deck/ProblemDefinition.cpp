@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 #include <Teuchos_Array.hpp>
 
 #include "common/Error.hpp"
 #include "deck/ParameterValidation.hpp"
-#include "mesh/ExodusMeshReader.hpp"
-#include "mesh/Generators.hpp"
+#include "mesh/MeshFactory.hpp"
 #include "mesh/MeshMerge.hpp"
 
 namespace contessa::deck {
@@ -28,60 +26,18 @@ std::string joinNames(const std::vector<std::string>& names) {
   return out;
 }
 
-// Generators report what was expected; the deck path is added here.
-template <class F>
-mesh::Mesh generate(const std::string& where, F&& make) {
-  try {
-    return make();
-  } catch (const InputError& e) {
-    throw InputError(where + "/" + e.what());
-  }
-}
-
 mesh::Mesh buildSingleMesh(ParameterList& list, const std::string& where, const std::string& deckDirectory,
                            bool isPart) {
-  std::vector<std::string> types = meshTypes();
-  if (isPart) types.pop_back();  // "Parts" do not nest
+  std::vector<std::string> types = mesh::MeshFactory::names();  // "Parts" do not nest
   requireInput(list.isParameter("Type") && list.isType<std::string>("Type"),
-               where + "/Type: required; expected one of " + joinNames(types));
+               where + "/Type: required; expected one of " + joinNames(isPart ? types : meshTypes()));
   const std::string type = list.get<std::string>("Type");
-  requireOneOf(where + "/Type", type, types);
+  requireOneOf(where + "/Type", type, isPart ? types : meshTypes());
   auto valid = Teuchos::rcp(new ParameterList(*meshValidParameters(type)));
-  if (isPart) valid->set("Offset", Teuchos::Array<double>(), "Translation of this part (x, y); empty = none");
+  if (isPart) valid->set("Offset", Teuchos::Array<double>(), "Translation of this part (x, y[, z]); empty = none");
   validateAndSetDefaults(list, *valid, where);
 
-  mesh::Mesh mesh;
-  if (type == "Rectangle") {
-    mesh::RectangleSpec s;
-    s.x0 = list.get<double>("X Origin");
-    s.y0 = list.get<double>("Y Origin");
-    s.lx = list.get<double>("Length X");
-    s.ly = list.get<double>("Length Y");
-    s.nx = list.get<int>("Elements X");
-    s.ny = list.get<int>("Elements Y");
-    s.biasX = list.get<double>("Bias X");
-    s.biasY = list.get<double>("Bias Y");
-    s.blockName = list.get<std::string>("Block Name");
-    mesh = generate(where, [&] { return mesh::generateRectangle(s); });
-  } else if (type == "Annulus Sector") {
-    mesh::AnnulusSectorSpec s;
-    s.innerRadius = list.get<double>("Inner Radius");
-    s.thickness = list.get<double>("Thickness");
-    s.startAngleDeg = list.get<double>("Start Angle");
-    s.endAngleDeg = list.get<double>("End Angle");
-    s.elementsThroughThickness = list.get<int>("Elements Through Thickness");
-    s.elementsAroundArc = list.get<int>("Elements Around Arc");
-    s.radialBias = list.get<double>("Radial Bias");
-    s.arcBias = list.get<double>("Arc Bias");
-    s.blockName = list.get<std::string>("Block Name");
-    mesh = generate(where, [&] { return mesh::generateAnnulusSector(s); });
-  } else {
-    std::string file = list.get<std::string>("File Name");
-    requireInput(!file.empty(), where + "/File Name: required (an Exodus II mesh file)");
-    if (file.front() != '/' && !deckDirectory.empty()) file = deckDirectory + "/" + file;
-    requireInput(std::ifstream(file).good(), where + "/File Name: mesh file '" + file + "' does not exist");
-    mesh = mesh::readExodusMesh(file);
-  }
+  mesh::Mesh mesh = mesh::MeshFactory::create(type, list, where, deckDirectory);
   if (isPart) {
     const auto& offset = list.get<Teuchos::Array<double>>("Offset");
     if (!offset.empty()) {
@@ -238,36 +194,21 @@ std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& l
 
 }  // namespace
 
-std::vector<std::string> meshTypes() { return {"Rectangle", "Annulus Sector", "Exodus File", "Parts"}; }
+std::vector<std::string> meshTypes() {
+  std::vector<std::string> types = mesh::MeshFactory::names();
+  types.push_back("Parts");
+  return types;
+}
 
 RCP<const ParameterList> meshValidParameters(const std::string& type) {
   auto p = rcp(new ParameterList("Mesh"));
-  setChoice(*p, "Type", type, meshTypes(), "Inline generator or Exodus II file");
-  if (type == "Rectangle") {
-    p->set("X Origin", 0.0, "x of the lower-left corner");
-    p->set("Y Origin", 0.0, "y of the lower-left corner");
-    setPositive(*p, "Length X", 1.0, "Width");
-    setPositive(*p, "Length Y", 1.0, "Height");
-    setPositiveInt(*p, "Elements X", 1, "Elements along x");
-    setPositiveInt(*p, "Elements Y", 1, "Elements along y");
-    setPositive(*p, "Bias X", 1.0, "Last over first element width along x (geometric grading; 1 = uniform)");
-    setPositive(*p, "Bias Y", 1.0, "Last over first element height along y (geometric grading; 1 = uniform)");
-    p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: left, right, bottom, top (node set 'all' too)");
-  } else if (type == "Annulus Sector") {
-    setPositive(*p, "Inner Radius", 100.0, "Inner radius, centre at the origin");
-    setPositive(*p, "Thickness", 20.0, "Wall thickness (outer radius = inner radius + thickness)");
-    p->set("Start Angle", 0.0, "Start angle in degrees, counter-clockwise from +x");
-    p->set("End Angle", 90.0, "End angle in degrees (> Start Angle)");
-    setPositiveInt(*p, "Elements Through Thickness", 13, "Elements across the wall");
-    setPositiveInt(*p, "Elements Around Arc", 101, "Elements along the arc");
-    setPositive(*p, "Radial Bias", 1.0, "Outermost over innermost element thickness (geometric grading; 1 = uniform)");
-    setPositive(*p, "Arc Bias", 1.0, "Last over first element angle along the arc (geometric grading; 1 = uniform)");
-    p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: inner, outer, start, end (node set 'all' too)");
-  } else if (type == "Exodus File") {
-    p->set("File Name", std::string(""), "Exodus II mesh file (relative to the deck's directory); required");
-  } else {
-    // Parts: the children are user-named sublists, each a mesh of another type plus "Offset".
+  if (type == "Parts") {
+    // The children are user-named sublists, each a mesh of another type plus "Offset".
+    setChoice(*p, "Type", type, meshTypes(), "Separate bodies, one sublist per part");
+    return p;
   }
+  setChoice(*p, "Type", type, meshTypes(), mesh::MeshFactory::description(type));
+  p->setParameters(*mesh::MeshFactory::validParameters(type));
   return p;
 }
 

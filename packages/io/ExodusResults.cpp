@@ -16,6 +16,8 @@ struct ExodusResults::Impl {
   int64_t numNodes = 0;
   std::vector<int64_t> blockIds;
   std::vector<int64_t> blockSizes;
+  std::vector<std::string> blockNames, blockTypes;
+  std::vector<int> truth;  ///< element variable v is defined on block b when truth[b * count + v]
   std::vector<std::string> nodalNames, elementNames, globalNames;
 
   Impl(const std::string& path, int id) : file(path, id) {}
@@ -89,9 +91,22 @@ ExodusResults::ExodusResults(const std::string& path) {
     block.type = EX_ELEM_BLOCK;
     impl_->check(ex_get_block_param(id, &block), "element block " + std::to_string(blockId));
     impl_->blockSizes.push_back(block.num_entry);
+    impl_->blockTypes.emplace_back(block.topology);
+  }
+  if (init.num_elem_blk > 0) {
+    std::vector<std::vector<char>> buffers(impl_->blockIds.size(), std::vector<char>(impl_->nameLength + 1, '\0'));
+    std::vector<char*> pointers;
+    for (auto& b : buffers) pointers.push_back(b.data());
+    impl_->check(ex_get_names(id, EX_ELEM_BLOCK, pointers.data()), "element block names");
+    for (auto& b : buffers) impl_->blockNames.emplace_back(b.data());
   }
   impl_->nodalNames = impl_->variableNames(EX_NODAL, "nodal variable names");
   impl_->elementNames = impl_->variableNames(EX_ELEM_BLOCK, "element variable names");
+  impl_->truth.assign(impl_->blockIds.size() * impl_->elementNames.size(), 1);
+  if (!impl_->truth.empty())
+    impl_->check(ex_get_truth_table(id, EX_ELEM_BLOCK, static_cast<int>(impl_->blockIds.size()),
+                                    static_cast<int>(impl_->elementNames.size()), impl_->truth.data()),
+                 "the element variable truth table");
   impl_->globalNames = impl_->variableNames(EX_GLOBAL, "global variable names");
 }
 
@@ -104,6 +119,40 @@ int ExodusResults::numSteps() const { return impl_->numSteps(); }
 const std::vector<std::string>& ExodusResults::nodalNames() const { return impl_->nodalNames; }
 const std::vector<std::string>& ExodusResults::elementNames() const { return impl_->elementNames; }
 const std::vector<std::string>& ExodusResults::globalNames() const { return impl_->globalNames; }
+
+const std::vector<std::string>& ExodusResults::blockNames() const { return impl_->blockNames; }
+const std::vector<std::string>& ExodusResults::blockTypes() const { return impl_->blockTypes; }
+int64_t ExodusResults::numNodes() const { return impl_->numNodes; }
+
+std::vector<std::array<std::string, 4>> ExodusResults::qaRecords() const {
+  const int64_t count = ex_inquire_int(impl_->file.id(), EX_INQ_QA);
+  impl_->check(count < 0 ? -1 : 0, "the number of QA records");
+  std::vector<std::array<std::string, 4>> records(static_cast<size_t>(count));
+  if (count == 0) return records;
+  std::vector<std::array<std::vector<char>, 4>> buffers(records.size());
+  std::vector<std::array<char*, 4>> pointers(records.size());
+  for (size_t r = 0; r < records.size(); ++r)
+    for (int k = 0; k < 4; ++k) {
+      buffers[r][k].assign(MAX_STR_LENGTH + 1, '\0');
+      pointers[r][k] = buffers[r][k].data();
+    }
+  impl_->check(ex_get_qa(impl_->file.id(), reinterpret_cast<char* (*)[4]>(pointers.data())), "the QA records");
+  for (size_t r = 0; r < records.size(); ++r)
+    for (int k = 0; k < 4; ++k) records[r][k] = buffers[r][k].data();
+  return records;
+}
+
+std::vector<std::string> ExodusResults::infoRecords() const {
+  const int64_t count = ex_inquire_int(impl_->file.id(), EX_INQ_INFO);
+  impl_->check(count < 0 ? -1 : 0, "the number of information records");
+  std::vector<std::vector<char>> buffers(static_cast<size_t>(count), std::vector<char>(MAX_LINE_LENGTH + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& b : buffers) pointers.push_back(b.data());
+  if (count > 0) impl_->check(ex_get_info(impl_->file.id(), pointers.data()), "the information records");
+  std::vector<std::string> records;
+  for (auto& b : buffers) records.emplace_back(b.data());
+  return records;
+}
 
 std::vector<double> ExodusResults::times() const {
   std::vector<double> result(static_cast<size_t>(numSteps()));
@@ -126,6 +175,7 @@ std::vector<double> ExodusResults::element(const std::string& name, int step) co
   std::vector<double> values;
   std::vector<double> blockValues;
   for (size_t b = 0; b < impl_->blockIds.size(); ++b) {
+    if (!impl_->truth[b * impl_->elementNames.size() + static_cast<size_t>(variable) - 1]) continue;
     blockValues.assign(static_cast<size_t>(impl_->blockSizes[b]), 0.0);
     if (!blockValues.empty())
       impl_->check(ex_get_elem_var(impl_->file.id(), exodusStep, variable, impl_->blockIds[b], impl_->blockSizes[b],

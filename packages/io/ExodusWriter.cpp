@@ -1,9 +1,17 @@
 #include "io/ExodusWriter.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
+#include <cstdlib>
 #include <stdexcept>
 
+#include "io/DiskSpace.hpp"
+#include "io/OutputWriteError.hpp"
 #include "mesh/ExodusFile.hpp"
 
 namespace contessa::io {
@@ -13,28 +21,13 @@ namespace {
 using mesh::GlobalIndex;
 using mesh::detail::ExodusFile;
 
-[[noreturn]] void fail(const std::string& path, const std::string& message) {
-  const std::string detail = ExodusFile::lastError();
-  throw std::runtime_error(path + ": " + message + (detail.empty() ? "" : " (" + detail + ")"));
-}
-
-void check(int status, const std::string& path, const std::string& what) {
-  if (status < 0) fail(path, "cannot write " + what);  // positive statuses are warnings
-}
+constexpr long long kMargin = 64 * 1024;  // HDF5 metadata that may grow in a step (B-tree nodes, heaps)
 
 // Exodus takes names as a mutable char* array; the strings outlive the call.
 std::vector<char*> namePointers(std::vector<std::string>& names) {
   std::vector<char*> pointers;
   for (auto& n : names) pointers.push_back(n.data());
   return pointers;
-}
-
-void writeVariableNames(int id, const std::string& path, ex_entity_type type, std::vector<std::string> names,
-                        const char* what) {
-  if (names.empty()) return;
-  check(ex_put_variable_param(id, type, static_cast<int>(names.size())), path, what);
-  auto pointers = namePointers(names);
-  check(ex_put_variable_names(id, type, static_cast<int>(names.size()), pointers.data()), path, what);
 }
 
 std::vector<std::string> coordinateNames(int dimension) {
@@ -44,10 +37,11 @@ std::vector<std::string> coordinateNames(int dimension) {
 }
 
 // The library truncates names beyond its default 32 characters unless told the longest one first.
-int longestName(const mesh::Mesh& mesh, const ExodusFields& fields) {
+int longestName(const mesh::Mesh& mesh, const ExodusFields& fields, const std::vector<ExodusLineBlock>& lineBlocks) {
   size_t longest = 32;
   auto consider = [&longest](const std::string& name) { longest = std::max(longest, name.size()); };
   for (const auto& b : mesh.blocks) consider(b.name);
+  for (const auto& b : lineBlocks) consider(b.name);
   for (const auto& s : mesh.nodeSets) consider(s.name);
   for (const auto& s : mesh.sideSets) consider(s.name);
   for (const auto* list : {&fields.nodal, &fields.element, &fields.global})
@@ -59,151 +53,286 @@ void checkSizes(const std::string& path, const char* kind, const std::vector<std
                 const std::vector<std::string>& names, GlobalIndex expected) {
   if (values.size() != names.size())
     throw std::runtime_error(path + ": " + std::to_string(values.size()) + " " + kind + " variables given, " +
-                             std::to_string(names.size()) + " declared");
+                                std::to_string(names.size()) + " declared");
   for (size_t v = 0; v < values.size(); ++v)
     if (static_cast<GlobalIndex>(values[v].size()) != expected)
       throw std::runtime_error(path + ": " + kind + " variable '" + names[v] + "' has " +
-                               std::to_string(values[v].size()) + " values, expected " + std::to_string(expected));
+                                  std::to_string(values[v].size()) + " values, expected " + std::to_string(expected));
 }
+
+long long fileSize(int fd) {
+  struct stat info {};
+  return fstat(fd, &info) == 0 ? static_cast<long long>(info.st_size) : 0;
+}
+
+// Writes through the Exodus API, turning a failed call into an OutputWriteError that says what was
+// being written and, when the system knows, why.
+class Calls {
+ public:
+  Calls(std::string path, std::string action) : path_(std::move(path)), action_(std::move(action)) {}
+  void operator()(int status, const std::string& what) const {
+    if (status >= 0) return;  // positive statuses are warnings
+    const int error = errno;  // HDF5 leaves the failed system call's errno
+    std::string reason = what + " failed";
+    const std::string detail = ExodusFile::lastError();
+    if (!detail.empty()) reason += " (" + detail + ")";
+    if (error != 0) reason = systemMessage(error) + " (" + reason + ")";
+    throw OutputWriteError(path_, action_, reason);
+  }
+
+ private:
+  std::string path_, action_;
+};
 
 }  // namespace
 
+std::vector<std::string> infoRecords(const std::vector<std::string>& lines) {
+  const size_t width = MAX_LINE_LENGTH;
+  std::vector<std::string> records;
+  for (const auto& line : lines) {
+    size_t start = 0;
+    while (line.size() - start > width) {
+      records.push_back(line.substr(start, width - 1) + "\\");
+      start += width - 1;
+    }
+    records.push_back(line.substr(start));
+  }
+  return records;
+}
+
+void disableHdf5FileLocking() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
+
 ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
-                           const std::string& title)
+                           const ExodusRecords& records, const std::vector<ExodusLineBlock>& lineBlocks)
     : path_(path), mesh_(mesh), fields_(fields) {
+  const int dim = mesh.dimension;
+  numNodes_ = mesh.numNodes();
+  for (const auto& line : lineBlocks) numNodes_ += static_cast<GlobalIndex>(line.points.size()) / dim;
+
+  // The system's reason for a path that cannot be written (a directory, no permission, a read-only
+  // file system): the library's own message would blame netCDF-4 support for any failure.
+  spaceFd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (spaceFd_ < 0) throw OutputWriteError(path, "cannot create", systemMessage(errno));
+  const long long meshBytes =
+      8 * (static_cast<long long>(numNodes_) * dim + static_cast<long long>(mesh.numElements()) * 8) + kMargin;
+  if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) {
+    ::close(spaceFd_);
+    throw OutputWriteError(path, "cannot create", systemMessage(error));
+  }
+
   int cpuWordSize = 8, ioWordSize = 8;
   // netCDF-4/HDF5: no 2 GiB variable limits, and what current ParaView/SEACAS tools expect.
   // 64-bit integers through the API take GlobalIndex data without narrowing copies.
-  const int id = ex_create(path.c_str(), EX_CLOBBER | EX_NETCDF4 | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize);
-  // The library's own message blames netCDF-4 support for any failure, so leave it out.
-  if (id < 0) throw std::runtime_error(path + ": cannot create the Exodus file (is the directory writable?)");
-  ExodusFile file(path, id);
-  check(ex_set_max_name_length(id, longestName(mesh, fields)), path, "the name length");
+  errno = 0;
+  id_ = ex_create(path.c_str(), EX_CLOBBER | EX_NETCDF4 | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize);
+  if (id_ < 0) {
+    const int error = errno;
+    ::close(spaceFd_);
+    throw OutputWriteError(path, "cannot create",
+                           error != 0 ? systemMessage(error) : std::string("the Exodus library cannot create it"));
+  }
+  try {
+    const Calls check(path, "cannot create");
+    const int id = id_;
+    check(ex_set_max_name_length(id, longestName(mesh, fields, lineBlocks)), "the name length");
 
-  const int dim = mesh.dimension;
-  const GlobalIndex numNodes = mesh.numNodes();
-  const std::string shortTitle = title.substr(0, MAX_LINE_LENGTH);
-  check(ex_put_init(id, shortTitle.c_str(), dim, numNodes, mesh.numElements(),
-                    static_cast<int64_t>(mesh.blocks.size()), static_cast<int64_t>(mesh.nodeSets.size()),
-                    static_cast<int64_t>(mesh.sideSets.size())),
-        path, "the header");
+    const size_t meshBlocks = mesh.blocks.size(), numBlocks = meshBlocks + lineBlocks.size();
+    const std::string title = records.title.substr(0, MAX_LINE_LENGTH);
+    GlobalIndex segments = 0;
+    for (const auto& line : lineBlocks)
+      segments += std::max<GlobalIndex>(0, static_cast<GlobalIndex>(line.points.size()) / dim - 1);
+    check(ex_put_init(id, title.c_str(), dim, numNodes_, mesh.numElements() + segments,
+                      static_cast<int64_t>(numBlocks), static_cast<int64_t>(mesh.nodeSets.size()),
+                      static_cast<int64_t>(mesh.sideSets.size())),
+          "the header");
 
-  std::vector<std::vector<double>> xyz(static_cast<size_t>(dim), std::vector<double>(numNodes));
-  for (GlobalIndex n = 0; n < numNodes; ++n)
-    for (int d = 0; d < dim; ++d) xyz[d][n] = mesh.coordinates[n * dim + d];
-  check(ex_put_coord(id, xyz[0].data(), xyz[1].data(), dim == 3 ? xyz[2].data() : nullptr), path, "coordinates");
-  auto coordNames = coordinateNames(dim);
-  auto coordPointers = namePointers(coordNames);
-  check(ex_put_coord_names(id, coordPointers.data()), path, "coordinate names");
+    // Coordinates: the mesh nodes, then the line blocks' points.
+    std::vector<std::vector<double>> xyz(static_cast<size_t>(dim), std::vector<double>(numNodes_));
+    const GlobalIndex meshNodes = mesh.numNodes();
+    for (GlobalIndex n = 0; n < meshNodes; ++n)
+      for (int d = 0; d < dim; ++d) xyz[d][n] = mesh.coordinates[n * dim + d];
+    GlobalIndex nextNode = meshNodes;
+    for (const auto& line : lineBlocks)
+      for (size_t p = 0; p + dim <= line.points.size(); p += dim, ++nextNode)
+        for (int d = 0; d < dim; ++d) xyz[d][nextNode] = line.points[p + d];
+    check(ex_put_coord(id, xyz[0].data(), xyz[1].data(), dim == 3 ? xyz[2].data() : nullptr), "coordinates");
+    auto coordNames = coordinateNames(dim);
+    auto coordPointers = namePointers(coordNames);
+    check(ex_put_coord_names(id, coordPointers.data()), "coordinate names");
 
-  // Exodus numbers elements 1.. over the blocks in order; side sets refer to that numbering.
-  std::vector<int64_t> exodusElement(static_cast<size_t>(mesh.numElements()));
-  int64_t next = 1;
-  std::vector<std::string> blockNames;
-  for (size_t b = 0; b < mesh.blocks.size(); ++b) {
-    const auto& block = mesh.blocks[b];
-    const int64_t blockId = static_cast<int64_t>(b) + 1;
-    const std::string what = "element block '" + block.name + "'";
-    check(ex_put_block(id, EX_ELEM_BLOCK, blockId, mesh::exodusCellName(block.cellType), block.numElements(),
-                       mesh::nodesPerCell(block.cellType), 0, 0, 0),
-          path, what);
-    if (block.numElements() > 0) {
-      std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
-      for (int64_t& node : connectivity) ++node;
-      check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), path, what);
+    // Exodus numbers elements 1.. over the blocks in order; side sets refer to that numbering.
+    std::vector<int64_t> exodusElement(static_cast<size_t>(mesh.numElements()));
+    int64_t next = 1;
+    std::vector<std::string> blockNames;
+    for (size_t b = 0; b < meshBlocks; ++b) {
+      const auto& block = mesh.blocks[b];
+      const int64_t blockId = static_cast<int64_t>(b) + 1;
+      const std::string what = "element block '" + block.name + "'";
+      check(ex_put_block(id, EX_ELEM_BLOCK, blockId, mesh::exodusCellName(block.cellType), block.numElements(),
+                         mesh::nodesPerCell(block.cellType), 0, 0, 0),
+            what);
+      if (block.numElements() > 0) {
+        std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
+        for (int64_t& node : connectivity) ++node;
+        check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
+      }
+      for (GlobalIndex e : block.elements) exodusElement[e] = next++;
+      blockNames.push_back(block.name);
     }
-    for (GlobalIndex e : block.elements) exodusElement[e] = next++;
-    blockNames.push_back(block.name);
-  }
-  if (!blockNames.empty()) {
-    auto pointers = namePointers(blockNames);
-    check(ex_put_names(id, EX_ELEM_BLOCK, pointers.data()), path, "element block names");
-  }
-
-  std::vector<std::string> nodeSetNames;
-  for (size_t s = 0; s < mesh.nodeSets.size(); ++s) {
-    const auto& set = mesh.nodeSets[s];
-    const int64_t setId = static_cast<int64_t>(s) + 1;
-    const std::string what = "node set '" + set.name + "'";
-    check(ex_put_set_param(id, EX_NODE_SET, setId, static_cast<int64_t>(set.nodes.size()), 0), path, what);
-    if (!set.nodes.empty()) {
-      std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
-      for (int64_t& node : nodes) ++node;
-      check(ex_put_set(id, EX_NODE_SET, setId, nodes.data(), nullptr), path, what);
+    int64_t firstPoint = meshNodes + 1;  // Exodus node number of the block's first point
+    for (size_t l = 0; l < lineBlocks.size(); ++l) {
+      const auto& line = lineBlocks[l];
+      const int64_t blockId = static_cast<int64_t>(meshBlocks + l) + 1;
+      const int64_t points = static_cast<int64_t>(line.points.size()) / dim;
+      const int64_t segments = std::max<int64_t>(0, points - 1);
+      const std::string what = "line block '" + line.name + "'";
+      check(ex_put_block(id, EX_ELEM_BLOCK, blockId, "BAR2", segments, 2, 0, 0, 0), what);
+      if (segments > 0) {
+        std::vector<int64_t> connectivity;
+        for (int64_t s = 0; s < segments; ++s) connectivity.insert(connectivity.end(), {firstPoint + s, firstPoint + s + 1});
+        check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
+      }
+      firstPoint += points;
+      blockNames.push_back(line.name);
     }
-    nodeSetNames.push_back(set.name);
-  }
-  if (!nodeSetNames.empty()) {
-    auto pointers = namePointers(nodeSetNames);
-    check(ex_put_names(id, EX_NODE_SET, pointers.data()), path, "node set names");
-  }
-
-  std::vector<std::string> sideSetNames;
-  for (size_t s = 0; s < mesh.sideSets.size(); ++s) {
-    const auto& set = mesh.sideSets[s];
-    const int64_t setId = static_cast<int64_t>(s) + 1;
-    const std::string what = "side set '" + set.name + "'";
-    check(ex_put_set_param(id, EX_SIDE_SET, setId, static_cast<int64_t>(set.elements.size()), 0), path, what);
-    if (!set.elements.empty()) {
-      std::vector<int64_t> elements, sides;
-      for (GlobalIndex e : set.elements) elements.push_back(exodusElement[e]);
-      for (int side : set.sides) sides.push_back(side + 1);
-      check(ex_put_set(id, EX_SIDE_SET, setId, elements.data(), sides.data()), path, what);
+    if (!blockNames.empty()) {
+      auto pointers = namePointers(blockNames);
+      check(ex_put_names(id, EX_ELEM_BLOCK, pointers.data()), "element block names");
     }
-    sideSetNames.push_back(set.name);
-  }
-  if (!sideSetNames.empty()) {
-    auto pointers = namePointers(sideSetNames);
-    check(ex_put_names(id, EX_SIDE_SET, pointers.data()), path, "side set names");
-  }
 
-  writeVariableNames(id, path, EX_NODAL, fields.nodal, "nodal variable names");
-  writeVariableNames(id, path, EX_ELEM_BLOCK, fields.element, "element variable names");
-  writeVariableNames(id, path, EX_GLOBAL, fields.global, "global variable names");
-  if (!fields.element.empty() && !mesh.blocks.empty()) {
-    // Declaring every variable on every block up front avoids per-step redefinition.
-    std::vector<int> truth(mesh.blocks.size() * fields.element.size(), 1);
-    check(ex_put_truth_table(id, EX_ELEM_BLOCK, static_cast<int>(mesh.blocks.size()),
-                             static_cast<int>(fields.element.size()), truth.data()),
-          path, "the element variable truth table");
+    std::vector<std::string> nodeSetNames;
+    for (size_t s = 0; s < mesh.nodeSets.size(); ++s) {
+      const auto& set = mesh.nodeSets[s];
+      const int64_t setId = static_cast<int64_t>(s) + 1;
+      const std::string what = "node set '" + set.name + "'";
+      check(ex_put_set_param(id, EX_NODE_SET, setId, static_cast<int64_t>(set.nodes.size()), 0), what);
+      if (!set.nodes.empty()) {
+        std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
+        for (int64_t& node : nodes) ++node;
+        check(ex_put_set(id, EX_NODE_SET, setId, nodes.data(), nullptr), what);
+      }
+      nodeSetNames.push_back(set.name);
+    }
+    if (!nodeSetNames.empty()) {
+      auto pointers = namePointers(nodeSetNames);
+      check(ex_put_names(id, EX_NODE_SET, pointers.data()), "node set names");
+    }
+
+    std::vector<std::string> sideSetNames;
+    for (size_t s = 0; s < mesh.sideSets.size(); ++s) {
+      const auto& set = mesh.sideSets[s];
+      const int64_t setId = static_cast<int64_t>(s) + 1;
+      const std::string what = "side set '" + set.name + "'";
+      check(ex_put_set_param(id, EX_SIDE_SET, setId, static_cast<int64_t>(set.elements.size()), 0), what);
+      if (!set.elements.empty()) {
+        std::vector<int64_t> elements, sides;
+        for (GlobalIndex e : set.elements) elements.push_back(exodusElement[e]);
+        for (int side : set.sides) sides.push_back(side + 1);
+        check(ex_put_set(id, EX_SIDE_SET, setId, elements.data(), sides.data()), what);
+      }
+      sideSetNames.push_back(set.name);
+    }
+    if (!sideSetNames.empty()) {
+      auto pointers = namePointers(sideSetNames);
+      check(ex_put_names(id, EX_SIDE_SET, pointers.data()), "side set names");
+    }
+
+    if (!records.qa.empty()) {
+      std::vector<std::array<std::string, 4>> qa = records.qa;
+      std::vector<std::array<char*, 4>> pointers(qa.size());
+      for (size_t r = 0; r < qa.size(); ++r)
+        for (int k = 0; k < 4; ++k) {
+          qa[r][k] = qa[r][k].substr(0, MAX_STR_LENGTH);
+          pointers[r][k] = qa[r][k].data();
+        }
+      check(ex_put_qa(id, static_cast<int>(qa.size()), reinterpret_cast<char* (*)[4]>(pointers.data())), "QA records");
+    }
+    if (!records.info.empty()) {
+      auto info = infoRecords(records.info);
+      auto pointers = namePointers(info);
+      check(ex_put_info(id, static_cast<int>(info.size()), pointers.data()), "information records");
+    }
+
+    auto putNames = [&](ex_entity_type type, std::vector<std::string> names, const char* what) {
+      if (names.empty()) return;
+      check(ex_put_variable_param(id, type, static_cast<int>(names.size())), what);
+      auto pointers = namePointers(names);
+      check(ex_put_variable_names(id, type, static_cast<int>(names.size()), pointers.data()), what);
+    };
+    putNames(EX_NODAL, fields.nodal, "nodal variable names");
+    putNames(EX_ELEM_BLOCK, fields.element, "element variable names");
+    putNames(EX_GLOBAL, fields.global, "global variable names");
+    if (!fields.element.empty() && numBlocks > 0) {
+      // Element variables live on the mesh blocks, not on the line blocks. Declaring them up front
+      // avoids per-step redefinition.
+      std::vector<int> truth(numBlocks * fields.element.size(), 0);
+      for (size_t b = 0; b < meshBlocks; ++b)
+        std::fill_n(truth.begin() + static_cast<std::ptrdiff_t>(b * fields.element.size()), fields.element.size(), 1);
+      check(ex_put_truth_table(id, EX_ELEM_BLOCK, static_cast<int>(numBlocks), static_cast<int>(fields.element.size()),
+                               truth.data()),
+            "the element variable truth table");
+    }
+    // On disk before the first step: a run that dies at once still leaves a valid file with the mesh.
+    check(ex_update(id), "the file (flush)");
+  } catch (...) {
+    ex_close(id_);
+    ::close(spaceFd_);
+    throw;
   }
-  check(file.close(), path, "the file (close)");
+}
+
+ExodusWriter::~ExodusWriter() {
+  ex_close(id_);  // every step is already on disk; nothing is left to report
+  releaseAfterEnd(spaceFd_);
+  ::close(spaceFd_);
 }
 
 void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>& nodal,
                              const std::vector<std::vector<double>>& element, const std::vector<double>& global) {
-  checkSizes(path_, "nodal", nodal, fields_.nodal, mesh_.numNodes());
+  checkSizes(path_, "nodal", nodal, fields_.nodal, numNodes_);
   checkSizes(path_, "element", element, fields_.element, mesh_.numElements());
   if (global.size() != fields_.global.size())
     throw std::runtime_error(path_ + ": " + std::to_string(global.size()) + " global variables given, " +
-                             std::to_string(fields_.global.size()) + " declared");
+                                std::to_string(fields_.global.size()) + " declared");
 
-  int cpuWordSize = 8, ioWordSize = 0;
-  float version = 0;
-  const int id = ex_open(path_.c_str(), EX_WRITE, &cpuWordSize, &ioWordSize, &version);
-  if (id < 0) fail(path_, "cannot reopen the Exodus file to write step " + std::to_string(steps_ + 1));
-  ExodusFile file(path_, id);
   const int step = steps_ + 1;  // Exodus steps count from 1
-  const std::string what = "step " + std::to_string(step);
-  check(ex_put_time(id, step, &time), path_, what + " time");
-  for (size_t v = 0; v < nodal.size(); ++v)
-    check(ex_put_nodal_var(id, step, static_cast<int>(v) + 1, mesh_.numNodes(), nodal[v].data()), path_,
-          what + " nodal variable '" + fields_.nodal[v] + "'");
-  std::vector<double> blockValues;
-  for (size_t v = 0; v < element.size(); ++v)
-    for (size_t b = 0; b < mesh_.blocks.size(); ++b) {
-      const auto& block = mesh_.blocks[b];
-      if (block.numElements() == 0) continue;
-      blockValues.clear();
-      for (GlobalIndex e : block.elements) blockValues.push_back(element[v][e]);
-      check(ex_put_elem_var(id, step, static_cast<int>(v) + 1, static_cast<int64_t>(b) + 1, block.numElements(),
-                            blockValues.data()),
-            path_, what + " element variable '" + fields_.element[v] + "' on block '" + block.name + "'");
-    }
-  if (!global.empty())
-    check(ex_put_glob_vars(id, step, static_cast<int>(global.size()), global.data()), path_,
-          what + " global variables");
-  check(file.close(), path_, what + " (close)");
+  const std::string action = "cannot write step " + std::to_string(step) + " to";
+  if (failed_) throw OutputWriteError(path_, action, "an earlier step could not be written");
+  // Reserve twice what a step has taken so far (or its raw data, for the first): the disk filling
+  // up then stops the run between steps, with the file intact.
+  const long long raw =
+      8 * (static_cast<long long>(nodal.size()) * numNodes_ +
+           static_cast<long long>(element.size()) * mesh_.numElements() + static_cast<long long>(global.size()) + 1);
+  const long long before = fileSize(spaceFd_);
+  if (const int error = reserveAfterEnd(spaceFd_, 2 * std::max(raw, stepBytes_) + kMargin))
+    throw OutputWriteError(path_, action, systemMessage(error));
+
+  try {
+    const Calls check(path_, action);
+    errno = 0;
+    check(ex_put_time(id_, step, &time), "the time");
+    for (size_t v = 0; v < nodal.size(); ++v)
+      check(ex_put_nodal_var(id_, step, static_cast<int>(v) + 1, numNodes_, nodal[v].data()),
+            "nodal variable '" + fields_.nodal[v] + "'");
+    std::vector<double> blockValues;
+    for (size_t v = 0; v < element.size(); ++v)
+      for (size_t b = 0; b < mesh_.blocks.size(); ++b) {
+        const auto& block = mesh_.blocks[b];
+        if (block.numElements() == 0) continue;
+        blockValues.clear();
+        for (GlobalIndex e : block.elements) blockValues.push_back(element[v][e]);
+        check(ex_put_elem_var(id_, step, static_cast<int>(v) + 1, static_cast<int64_t>(b) + 1, block.numElements(),
+                              blockValues.data()),
+              "element variable '" + fields_.element[v] + "' on block '" + block.name + "'");
+      }
+    if (!global.empty())
+      check(ex_put_glob_vars(id_, step, static_cast<int>(global.size()), global.data()), "global variables");
+    check(ex_update(id_), "the flush to disk");
+  } catch (...) {
+    failed_ = true;
+    throw;
+  }
+  stepBytes_ = std::max(stepBytes_, fileSize(spaceFd_) - before);
   steps_ = step;
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-// Exodus II results file (netCDF-4/HDF5 flavour), written on one rank with the whole mesh. Each
-// step reopens, appends and closes the file, so the file stays valid up to the last step written
-// even if the run dies later.
+// Exodus II results file (netCDF-4/HDF5 flavour), written on one rank with the whole mesh. The file
+// stays open for the run and every step is flushed out of the process (ex_update: HDF5 hands its
+// buffers to the operating system; no fsync) before writeStep returns, after the disk space it needs
+// has been reserved: whatever happens to the process later (a kill -9, a crash, a full disk), the file
+// is valid and holds every step written so far.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -11,28 +14,76 @@ namespace contessa::io {
 
 struct ExodusFields {
   std::vector<std::string> nodal;    ///< e.g. displ_x, displ_y, contact_pressure
-  std::vector<std::string> element;  ///< e.g. stress_xx, von_mises (defined on every block)
+  std::vector<std::string> element;  ///< e.g. stress_xx, von_mises (defined on every mesh block)
   std::vector<std::string> global;   ///< e.g. load_factor, step_size
 };
 
+/// A polyline drawn as its own block of 2-node line elements (BAR2) next to the mesh, e.g. a rigid
+/// contact surface. Its points are appended after the mesh nodes (blocks in order), so nodal values
+/// cover them too; no element variable is defined on it.
+struct ExodusLineBlock {
+  std::string name;
+  std::vector<double> points;  ///< point-major: x0 y0 [z0] x1 y1 [z1] ...; segments join consecutive points
+};
+
+/// What the file says about the run besides the results.
+struct ExodusRecords {
+  std::string title = "Contessa results";  ///< cut to 80 characters
+  /// QA records: code name, code version, date, time (each cut to 32 characters).
+  std::vector<std::array<std::string, 4>> qa;
+  /// Information records: lines of free text, each split into records of at most 80 characters
+  /// (infoRecords).
+  std::vector<std::string> info;
+};
+
+/// Splits lines into Exodus information records of at most 80 characters: a longer line continues
+/// on the next record, and every record but the last piece of a line ends with a backslash.
+std::vector<std::string> infoRecords(const std::vector<std::string>& lines);
+
+/// HDF5 takes an exclusive lock on a file it writes, for as long as the file is open, unless told not
+/// to; the results file is open for the whole run, so ParaView or a netCDF script could not open it
+/// before the run ends (and the run could not reopen a file a reader holds). Sets
+/// HDF5_USE_FILE_LOCKING=FALSE for this process. HDF5 reads the variable once, when the library
+/// initialises (its first call, e.g. reading an Exodus mesh): call this before any Exodus or netCDF
+/// call. Runs are kept apart by OutputLock instead.
+void disableHdf5FileLocking();
+
 class ExodusWriter {
  public:
-  /// Creates (clobbers) `path` and writes the mesh: coordinates, blocks, node sets, side sets, names.
+  /// Creates (clobbers) `path` and writes the mesh (coordinates, blocks, node sets, side sets, names),
+  /// the line blocks, the records and the variable names, and flushes it. Throws OutputWriteError
+  /// naming the file when it cannot be created or written.
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
-               const std::string& title = "Contessa results");
+               const ExodusRecords& records = {}, const std::vector<ExodusLineBlock>& lineBlocks = {});
+  ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields, const std::string& title)
+      : ExodusWriter(path, mesh, fields, ExodusRecords{title, {}, {}}) {}
+  /// Closes the file.
+  ~ExodusWriter();
+  ExodusWriter(const ExodusWriter&) = delete;
+  ExodusWriter& operator=(const ExodusWriter&) = delete;
 
-  /// Appends one output step. nodal[v][node], element[v][global element], global[v].
+  /// Appends one output step and flushes it. nodal[v][node] over the mesh nodes then the line-block
+  /// points, element[v][global element] over the mesh elements, global[v]. Values of the wrong size
+  /// throw std::runtime_error; a failed write throws OutputWriteError (a runtime_error too), and the
+  /// file keeps the steps written before (no step is written after a failure).
   void writeStep(double time, const std::vector<std::vector<double>>& nodal,
                  const std::vector<std::vector<double>>& element, const std::vector<double>& global);
 
   int stepsWritten() const { return steps_; }
   const std::string& path() const { return path_; }
+  /// Mesh nodes plus line-block points: the length of every nodal variable.
+  mesh::GlobalIndex numNodes() const { return numNodes_; }
 
  private:
   std::string path_;
   const mesh::Mesh& mesh_;
   ExodusFields fields_;
+  mesh::GlobalIndex numNodes_ = 0;
+  int id_ = -1;          ///< Exodus file id
+  int spaceFd_ = -1;     ///< the same file, opened to reserve disk space (DiskSpace.hpp)
+  long long stepBytes_ = 0;  ///< the largest growth of the file by one step so far
   int steps_ = 0;
+  bool failed_ = false;
 };
 
 }  // namespace contessa::io

@@ -1,9 +1,18 @@
 #include "io/HistoryWriter.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
+
+#include "io/DiskSpace.hpp"
+#include "io/OutputWriteError.hpp"
 
 namespace contessa::io {
 
@@ -17,6 +26,9 @@ std::string csvField(const std::string& text) {
   return quoted + "\"";
 }
 
+// Room for a few rows at a time: reserving is a system call, a row is ~200 bytes.
+constexpr long long kReserveBytes = 16 * 1024;
+
 }  // namespace
 
 HistoryWriter::HistoryWriter(const std::string& path, std::vector<std::string> columns,
@@ -28,28 +40,60 @@ HistoryWriter::HistoryWriter(const std::string& path, std::vector<std::string> c
       throw std::invalid_argument(path_ + ": integer column '" + name + "' is not one of the columns");
     integer_[static_cast<size_t>(it - columns_.begin())] = true;
   }
-  out_.open(path_, std::ios::out | std::ios::trunc);
-  if (!out_) throw std::runtime_error(path_ + ": cannot create history file");
-  for (size_t c = 0; c < columns_.size(); ++c) out_ << (c ? "," : "") << csvField(columns_[c]);
-  out_ << '\n' << std::flush;
-  if (!out_) throw std::runtime_error(path_ + ": cannot write history file header");
-  out_ << std::setprecision(12);
+  fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw OutputWriteError(path_, "cannot create", systemMessage(errno));
+  std::string header;
+  for (size_t c = 0; c < columns_.size(); ++c) header += (c ? "," : "") + csvField(columns_[c]);
+  append(header + "\n", "cannot write the header to");
+}
+
+HistoryWriter::~HistoryWriter() {
+  if (fd_ < 0) return;
+  releaseAfterEnd(fd_);
+  ::close(fd_);
 }
 
 void HistoryWriter::writeRow(const std::vector<double>& values) {
   if (values.size() != columns_.size())
     throw std::invalid_argument(path_ + ": history row has " + std::to_string(values.size()) + " values for " +
                                 std::to_string(columns_.size()) + " columns");
+  std::ostringstream row;
+  row << std::setprecision(12);
   for (size_t c = 0; c < values.size(); ++c) {
-    if (c) out_ << ',';
+    if (c) row << ',';
     if (integer_[c] && std::isfinite(values[c]))
-      out_ << std::llround(values[c]);
+      row << std::llround(values[c]);
     else
-      out_ << values[c];
+      row << values[c];
   }
-  out_ << '\n' << std::flush;
-  if (!out_) throw std::runtime_error(path_ + ": cannot write history row " + std::to_string(rows_ + 1));
+  row << '\n';
+  append(row.str(), "cannot write row " + std::to_string(rows_ + 1) + " to");
   ++rows_;
+}
+
+void HistoryWriter::reserveRow() {
+  if (const int error = reserveAfterEnd(fd_, kReserveBytes))
+    throw OutputWriteError(path_, "cannot write row " + std::to_string(rows_ + 1) + " to", systemMessage(error));
+}
+
+void HistoryWriter::append(const std::string& text, const std::string& what) {
+  struct stat info {};
+  if (fstat(fd_, &info) != 0) throw OutputWriteError(path_, what, systemMessage(errno));
+  if (const int error = reserveAfterEnd(fd_, std::max<long long>(kReserveBytes, 2 * text.size())))
+    throw OutputWriteError(path_, what, systemMessage(error));
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      if (ftruncate(fd_, info.st_size) != 0) {
+        // the partial row stays; the error below still ends the run
+      }
+      throw OutputWriteError(path_, what, systemMessage(error));
+    }
+    done += static_cast<size_t>(n);
+  }
 }
 
 }  // namespace contessa::io

@@ -1,7 +1,7 @@
 #pragma once
 // Standard (displacement-only) total-Lagrangian solid kernel over a reference element Shape
 // (ReferenceElement.hpp): f_int = Σ_gp Bᵀ P w j, K = Σ_gp Bᵀ A B w j. "Q4" is this with the bilinear
-// quadrilateral; a Hex8 is this with a trilinear hexahedron. Fixed-size arithmetic throughout, the
+// quadrilateral, "Hex8" with the trilinear hexahedron (Hex8.hpp). Fixed-size arithmetic throughout, the
 // reference gradients precomputed per element, one material call per evaluation for all points.
 // evaluate() returns InadmissibleDeformation when the material rejects F at a Gauss point or when the
 // reference element itself has j ≤ 0 (clockwise node order or a degenerate element).

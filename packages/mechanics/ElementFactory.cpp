@@ -1,9 +1,10 @@
-// Element registry: one row per kernel. Adding Hex8 = its reference-element (and enhanced-mode)
-// traits, a make function like Quad4.cpp's, and its rows here.
+// Element registry: one row per kernel. Adding an element = its reference-element (and enhanced-mode)
+// traits, a make function like Quad4.cpp's or Hex8.cpp's, and its rows here.
 #include <array>
 
 #include "common/Error.hpp"
 #include "mechanics/Element.hpp"
+#include "mechanics/Hex8.hpp"
 #include "mechanics/Quad4.hpp"
 
 namespace contessa::mechanics {
@@ -14,8 +15,9 @@ struct ElementEntry {
   std::unique_ptr<ElementKernel> (*create)(const std::string& name);
 };
 
-const std::array<ElementEntry, 2> kRegistry = {ElementEntry{"Q4", &makeQuad4},
-                                               ElementEntry{"Q4 Enhanced", &makeQuad4Enhanced}};
+const std::array<ElementEntry, 4> kRegistry = {
+    ElementEntry{"Q4", &makeQuad4}, ElementEntry{"Q4 Enhanced", &makeQuad4Enhanced}, ElementEntry{"Hex8", &makeHex8},
+    ElementEntry{"Hex8 Enhanced", &makeHex8Enhanced}};
 
 }  // namespace
 

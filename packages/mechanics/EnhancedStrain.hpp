@@ -15,7 +15,7 @@ namespace contessa::mechanics {
 /// Simo–Armero form H̃ = (j0 / j(ξ)) α̂(ξ) J0⁻¹ with α̂_iβ = ξ_β α_(β,i): for every parent direction β
 /// the parent gradient of the Wilson bubble 1 − ξ_β² (up to a factor absorbed in α), mapped like
 /// GRAD u = (∂u/∂ξ) J⁻¹ but with J0 = ∂X/∂ξ at the element centre, j0 = det J0. So
-/// g_β,J = (j0 / j) ξ_β (J0⁻¹)_βJ, D² parameters (4 for Quad4, 9 for a Hex8 of this type).
+/// g_β,J = (j0 / j) ξ_β (J0⁻¹)_βJ, D² parameters (4 for Q4 Enhanced, 9 for Hex8 Enhanced).
 /// Since dV = j dξ, ∫ H̃ dV = j0 (∫ α̂ dξ) J0⁻¹ = 0 (α̂ is odd in ξ_β) on any element shape: H̃ does
 /// no work on a constant stress, which is what makes the patch test pass.
 template <int D>

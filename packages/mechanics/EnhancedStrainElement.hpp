@@ -2,8 +2,8 @@
 // Enhanced assumed strain solid kernel (Simo & Armero 1992, IJNME 33:1413) over a reference element
 // Shape and its enhanced modes Modes (EnhancedStrain.hpp): F = I + GRAD u + H̃(α), with the element
 // parameters α condensed out at every evaluation by a local Newton solve of R_α(u, α) = 0. "Q4
-// Enhanced" is this with the bilinear quadrilateral and its 4 Wilson-bubble modes; a Hex8 with 9
-// modes is the same template with other traits.
+// Enhanced" is this with the bilinear quadrilateral and its 4 Wilson-bubble modes, "Hex8 Enhanced"
+// the same template with the trilinear hexahedron and its 9 modes (Hex8.hpp).
 //
 // Lean by construction (docs/theory-solids.md §4): sizes are compile-time constants; per element,
 // ∂N/∂X, the mode gradients g_β, w j and the tolerance scales are precomputed (Geometry); the modes

@@ -6,7 +6,7 @@
 //   static std::array<QuadraturePoint<kDimension>, kPoints> quadrature();
 //   static void shapeGradients(const double* xi, double* dNdxi);  // ∂N_a/∂ξ_β at kDimension·a + β
 //
-// BilinearQuadrilateral (Quad4.hpp) is one; a trilinear hexahedron (2 × 2 × 2 Gauss) is another, with
+// BilinearQuadrilateral (Quad4.hpp) is one; TrilinearHexahedron (Hex8.hpp, 2 × 2 × 2 Gauss) is another, with
 // no change to the kernels. Shapes and rules are only used when an element's reference geometry is
 // computed (once per element, SolidOperators.hpp), never in the residual or Jacobian loops.
 #include <array>

@@ -97,3 +97,30 @@ void scaledCornerJacobians(CellType type, const double* x, double* jacobians) {
 }
 
 }  // namespace contessa::mesh
+
+namespace contessa::mesh {
+
+double cellMeasure(CellType type, const double* x) {
+  // ∫ det(∂x/∂ξ) dξ over [−1, 1]^d with 2 Gauss points per direction: exact for Quad4 (det J is
+  // bilinear) and for Hex8 (det J is of degree 2 in each ξ_k, within the rule's degree 3).
+  const int d = cellDimension(type), corners = nodesPerCell(type);
+  const double g = 1 / std::sqrt(3.0);
+  double measure = 0;
+  for (int point = 0; point < corners; ++point) {  // the Gauss points sit at ±g in corner order
+    double xi[kMaxDimension];
+    for (int k = 0; k < d; ++k) xi[k] = g * kCornerSigns[point][k];
+    double columns[kMaxDimension][kMaxDimension] = {};  // columns[k][i] = ∂x_i/∂ξ_k
+    for (int a = 0; a < corners; ++a)
+      for (int k = 0; k < d; ++k) {
+        // ∂N_a/∂ξ_k of N_a = Π_j (1 + s_aj ξ_j)/2
+        double dN = kCornerSigns[a][k] / 2.0;
+        for (int j = 0; j < d; ++j)
+          if (j != k) dN *= (1 + kCornerSigns[a][j] * xi[j]) / 2;
+        for (int i = 0; i < d; ++i) columns[k][i] += dN * x[a * d + i];
+      }
+    measure += determinant(d, columns);
+  }
+  return measure;
+}
+
+}  // namespace contessa::mesh

@@ -27,4 +27,8 @@ void cornerJacobians(CellType type, const double* x, double* jacobians);
 /// size and aspect ratio. 0 where an edge has zero length.
 void scaledCornerJacobians(CellType type, const double* x, double* jacobians);
 
+/// Area (Quad4) or volume (Hex8) of the isoparametric cell, ∫ det(∂x/∂ξ) dξ by 2^d-point Gauss
+/// quadrature (exact for these cells); negative for an inverted cell.
+double cellMeasure(CellType type, const double* x);
+
 }  // namespace contessa::mesh

@@ -1,7 +1,10 @@
 #include "mesh/Generators.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <new>
+#include <tuple>
+#include <utility>
 #include <sstream>
 #include <vector>
 
@@ -37,19 +40,30 @@ void requireBias(double value, const char* parameter) {
                std::string(parameter) + ": expected a value > 0, got " + format(value));
 }
 
-// Before anything is allocated: an n0 × n1 grid's counts must be indexable and its run must fit in
-// memory (requireRunFits). Returns what the
-// generator must say if an allocation fails all the same.
-std::string requireGridFits(int n0, int n1, const std::string& name0, const std::string& name1) {
-  MeshSize size;
-  size.nodes = (n0 + 1.0) * (n1 + 1.0);
-  size.elements = static_cast<double>(n0) * n1;
-  size.dimension = 2;
-  size.nodesPerElement = 4;
-  const std::string what = name0 + " = " + std::to_string(n0) + ", " + name1 + " = " + std::to_string(n1);
-  const std::string advice = "reduce " + name0 + " or " + name1;
+// Before anything is allocated: a grid of `counts` elements per direction (nodes counts+1 each, or
+// `size` when given) must be indexable and its run must fit in memory (requireRunFits). Returns what
+// the generator must say if an allocation fails all the same.
+std::string requireFits(const MeshSize& size, const std::vector<std::pair<std::string, int>>& counts) {
+  std::string what, advice;
+  for (size_t k = 0; k < counts.size(); ++k) {
+    what += (k ? ", " : "") + counts[k].first + " = " + std::to_string(counts[k].second);
+    advice += (k == 0 ? "reduce " : k + 1 == counts.size() ? " or " : ", ") + counts[k].first;
+  }
   requireRunFits(size, what, advice);
   return what + ": not enough memory for " + formatCount(size.elements) + " elements; " + advice;
+}
+
+std::string requireGridFits(const std::vector<std::pair<std::string, int>>& counts) {
+  MeshSize size;
+  size.nodes = 1;
+  size.elements = 1;
+  for (const auto& c : counts) {
+    size.nodes *= c.second + 1.0;
+    size.elements *= c.second;
+  }
+  size.dimension = static_cast<int>(counts.size());
+  size.nodesPerElement = size.dimension == 2 ? 4 : 8;
+  return requireFits(size, counts);
 }
 
 template <class Generate>
@@ -85,81 +99,123 @@ std::vector<double> gradedPositions(double start, double length, int n, double b
   return x;
 }
 
-// Both generators build the same logically structured n0 × n1 grid: node (i, j) is j*(n0+1) + i,
-// element (i, j) is j*n0 + i, and its corners (i,j), (i+1,j), (i+1,j+1), (i,j+1) are
-// counter-clockwise whenever the map from (i, j) to (x, y) preserves orientation.
+// Local side (0-based Exodus) of a cell's face where reference coordinate ξ_axis is −1 (min) or +1
+// (max): the same numbers for Quad4 edges (axes 0, 1) and Hex8 faces (axes 0, 1, 2).
+int sideOfFace(int axis, bool max) {
+  static const int kSides[3][2] = {{3, 1}, {0, 2}, {4, 5}};
+  return kSides[axis][max ? 1 : 0];
+}
+
+// All generators build logically structured grids of n0 × n1 (× n2) cells: node (i, j, k) is
+// (k*(n1+1) + j)*(n0+1) + i, element (i, j, k) is (k*n1 + j)*n0 + i (in 2D k = 0, which gives the
+// 2D numbering j*(n0+1) + i), and a cell lists its corners in Exodus order: (i,j), (i+1,j),
+// (i+1,j+1), (i,j+1) at k, then (Hex8) the same at k+1. Its Jacobians are positive whenever the map
+// from (i, j, k) to (x, y, z) preserves orientation.
 class StructuredGrid {
  public:
-  StructuredGrid(int n0, int n1) : n0_(n0), n1_(n1) {}
+  explicit StructuredGrid(std::vector<int> counts) : n_(std::move(counts)) {
+    if (n_.size() == 2) n_.push_back(0);
+  }
 
-  GlobalIndex node(int i, int j) const { return static_cast<GlobalIndex>(j) * (n0_ + 1) + i; }
-  GlobalIndex element(int i, int j) const { return static_cast<GlobalIndex>(j) * n0_ + i; }
+  int dimension() const { return n_[2] == 0 ? 2 : 3; }
+  int count(int axis) const { return n_[axis]; }
+  GlobalIndex numNodes() const { return static_cast<GlobalIndex>(n_[0] + 1) * (n_[1] + 1) * (n_[2] + 1); }
+  GlobalIndex numElements() const {
+    return static_cast<GlobalIndex>(n_[0]) * n_[1] * (dimension() == 2 ? 1 : n_[2]);
+  }
+  GlobalIndex node(int i, int j, int k = 0) const {
+    return (static_cast<GlobalIndex>(k) * (n_[1] + 1) + j) * (n_[0] + 1) + i;
+  }
+  GlobalIndex element(int i, int j, int k = 0) const { return (static_cast<GlobalIndex>(k) * n_[1] + j) * n_[0] + i; }
+
+  // Calls f(i, j, k) for every node, or with `fixedAxis` ≥ 0 for those with index `fixed` on it,
+  // in ascending node id.
+  template <class F>
+  void forNodes(F&& f, int fixedAxis = -1, int fixed = 0) const {
+    int lo[3] = {0, 0, 0}, hi[3] = {n_[0], n_[1], n_[2]};
+    if (fixedAxis >= 0) lo[fixedAxis] = hi[fixedAxis] = fixed;
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i) f(i, j, k);
+  }
+
+  // Calls f(i, j, k) for every cell, or for those with index `fixed` on `fixedAxis`, in ascending id.
+  template <class F>
+  void forCells(F&& f, int fixedAxis = -1, int fixed = 0) const {
+    int lo[3] = {0, 0, 0}, hi[3] = {n_[0] - 1, n_[1] - 1, dimension() == 2 ? 0 : n_[2] - 1};
+    if (fixedAxis >= 0) lo[fixedAxis] = hi[fixedAxis] = fixed;
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i) f(i, j, k);
+  }
+
+  // Node coordinates from point(i, j, k, x) writing dimension() values at x.
+  template <class Point>
+  void setCoordinates(Mesh& mesh, Point&& point) const {
+    const int d = dimension();
+    mesh.dimension = d;
+    mesh.coordinates.resize(static_cast<size_t>(d) * numNodes());
+    forNodes([&](int i, int j, int k) { point(i, j, k, &mesh.coordinates[d * static_cast<size_t>(node(i, j, k))]); });
+  }
+
+  // The corners of cell (i, j, k) in Exodus order.
+  void cellNodes(int i, int j, int k, std::vector<GlobalIndex>& out) const {
+    for (int layer = 0; layer < (dimension() == 2 ? 1 : 2); ++layer)
+      for (GlobalIndex n : {node(i, j, k + layer), node(i + 1, j, k + layer), node(i + 1, j + 1, k + layer),
+                            node(i, j + 1, k + layer)})
+        out.push_back(n);
+  }
 
   ElementBlock block(const std::string& name) const {
     ElementBlock b;
     b.name = name;
-    b.cellType = CellType::Quad4;
-    b.elements.reserve(static_cast<size_t>(n0_) * n1_);
-    b.connectivity.reserve(4 * static_cast<size_t>(n0_) * n1_);
-    for (int j = 0; j < n1_; ++j)
-      for (int i = 0; i < n0_; ++i) {
-        b.elements.push_back(element(i, j));
-        for (GlobalIndex n : {node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)})
-          b.connectivity.push_back(n);
-      }
+    b.cellType = dimension() == 2 ? CellType::Quad4 : CellType::Hex8;
+    b.elements.reserve(static_cast<size_t>(numElements()));
+    b.connectivity.reserve(static_cast<size_t>(nodesPerCell(b.cellType)) * numElements());
+    forCells([&](int i, int j, int k) {
+      b.elements.push_back(element(i, j, k));
+      cellNodes(i, j, k, b.connectivity);
+    });
     return b;
   }
 
-  // Grid edges: i = 0 (side 3), i = n0 (side 1), j = 0 (side 0), j = n1 (side 2).
-  enum Edge { kMin0, kMax0, kMin1, kMax1 };
-
-  NodeSet nodeSet(const std::string& name, Edge edge) const {
+  NodeSet nodeSet(const std::string& name, int axis, bool max) const {
     NodeSet s;
     s.name = name;
-    if (edge == kMin0 || edge == kMax0) {
-      const int i = edge == kMin0 ? 0 : n0_;
-      for (int j = 0; j <= n1_; ++j) s.nodes.push_back(node(i, j));
-    } else {
-      const int j = edge == kMin1 ? 0 : n1_;
-      for (int i = 0; i <= n0_; ++i) s.nodes.push_back(node(i, j));
-    }
+    forNodes([&](int i, int j, int k) { s.nodes.push_back(node(i, j, k)); }, axis, max ? n_[axis] : 0);
     return s;  // ascending by construction
   }
 
-  SideSet sideSet(const std::string& name, Edge edge) const {
+  SideSet sideSet(const std::string& name, int axis, bool max) const {
     SideSet s;
     s.name = name;
-    auto add = [&s](GlobalIndex e, int side) {
-      s.elements.push_back(e);
-      s.sides.push_back(side);
-    };
-    switch (edge) {
-      case kMin0: for (int j = 0; j < n1_; ++j) add(element(0, j), 3); break;
-      case kMax0: for (int j = 0; j < n1_; ++j) add(element(n0_ - 1, j), 1); break;
-      case kMin1: for (int i = 0; i < n0_; ++i) add(element(i, 0), 0); break;
-      case kMax1: for (int i = 0; i < n0_; ++i) add(element(i, n1_ - 1), 2); break;
-    }
+    const int side = sideOfFace(axis, max);
+    forCells(
+        [&](int i, int j, int k) {
+          s.elements.push_back(element(i, j, k));
+          s.sides.push_back(side);
+        },
+        axis, max ? n_[axis] - 1 : 0);
     return s;
   }
 
   NodeSet allNodes() const {
     NodeSet s;
     s.name = "all";
-    s.nodes.resize(static_cast<size_t>(n0_ + 1) * (n1_ + 1));
+    s.nodes.resize(static_cast<size_t>(numNodes()));
     for (size_t k = 0; k < s.nodes.size(); ++k) s.nodes[k] = static_cast<GlobalIndex>(k);
     return s;
   }
 
-  // Sets named after the grid edges, in the order min0, max0, min1, max1, then "all".
-  void addSets(Mesh& mesh, const std::string names[4]) const {
-    const Edge edges[4] = {kMin0, kMax0, kMin1, kMax1};
-    for (int k = 0; k < 4; ++k) mesh.nodeSets.push_back(nodeSet(names[k], edges[k]));
+  // Sets named after the grid faces, in the order min0, max0, min1, max1[, min2, max2], then "all".
+  void addSets(Mesh& mesh, const std::vector<std::string>& names) const {
+    for (int f = 0; f < 2 * dimension(); ++f) mesh.nodeSets.push_back(nodeSet(names[f], f / 2, f % 2 == 1));
     mesh.nodeSets.push_back(allNodes());
-    for (int k = 0; k < 4; ++k) mesh.sideSets.push_back(sideSet(names[k], edges[k]));
+    for (int f = 0; f < 2 * dimension(); ++f) mesh.sideSets.push_back(sideSet(names[f], f / 2, f % 2 == 1));
   }
 
  private:
-  int n0_, n1_;
+  std::vector<int> n_;
 };
 
 // The allocating part of the generators, once their specs are checked and known to fit.
@@ -167,54 +223,235 @@ Mesh buildRectangle(const RectangleSpec& spec) {
   // Positions are computed per node (not by summing steps), and the last one is set to x0 + lx.
   const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
   const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
-  const StructuredGrid grid(spec.nx, spec.ny);
+  const StructuredGrid grid({spec.nx, spec.ny});
   Mesh mesh;
-  mesh.dimension = 2;
-  mesh.coordinates.resize(2 * static_cast<size_t>(spec.nx + 1) * (spec.ny + 1));
-  for (int j = 0; j <= spec.ny; ++j)
-    for (int i = 0; i <= spec.nx; ++i) {
-      const size_t n = static_cast<size_t>(grid.node(i, j));
-      mesh.coordinates[2 * n] = xs[i];
-      mesh.coordinates[2 * n + 1] = ys[j];
-    }
+  grid.setCoordinates(mesh, [&](int i, int j, int, double* x) {
+    x[0] = xs[i];
+    x[1] = ys[j];
+  });
   mesh.blocks.push_back(grid.block(spec.blockName));
-  const std::string names[4] = {"left", "right", "bottom", "top"};
-  grid.addSets(mesh, names);
+  grid.addSets(mesh, {"left", "right", "bottom", "top"});
   mesh.validate("rectangle mesh");
   return mesh;
 }
 
-Mesh buildAnnulusSector(const AnnulusSectorSpec& spec) {
-  const int nr = spec.elementsThroughThickness;
-  const int nt = spec.elementsAroundArc;
-  // Angles are graded in degrees, so the last one is exactly endAngleDeg before conversion.
-  const std::vector<double> radii =
-      gradedPositions(spec.innerRadius, spec.thickness, nr, spec.radialBias, "Radial Bias");
-  std::vector<double> anglesDeg = gradedPositions(spec.startAngleDeg, spec.endAngleDeg - spec.startAngleDeg, nt,
-                                                  spec.arcBias, "Arc Bias");
-  anglesDeg.back() = spec.endAngleDeg;  // θ0 + (θ1 − θ0) can differ from θ1 in the last bit
-  const StructuredGrid grid(nr, nt);
-  const double degToRad = std::acos(-1.0) / 180.0;
+Mesh buildBox(const BoxSpec& spec) {
+  const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
+  const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
+  const std::vector<double> zs = gradedPositions(spec.z0, spec.lz, spec.nz, spec.biasZ, "Bias Z");
+  const StructuredGrid grid({spec.nx, spec.ny, spec.nz});
   Mesh mesh;
-  mesh.dimension = 2;
-  mesh.coordinates.resize(2 * static_cast<size_t>(nr + 1) * (nt + 1));
-  for (int j = 0; j <= nt; ++j) {
-    const double theta = anglesDeg[j] * degToRad;
-    const double c = std::cos(theta), s = std::sin(theta);
-    for (int i = 0; i <= nr; ++i) {
-      const double r = radii[i];
-      const size_t n = static_cast<size_t>(grid.node(i, j));
-      mesh.coordinates[2 * n] = r * c;
-      mesh.coordinates[2 * n + 1] = r * s;
-    }
+  grid.setCoordinates(mesh, [&](int i, int j, int k, double* x) {
+    x[0] = xs[i];
+    x[1] = ys[j];
+    x[2] = zs[k];
+  });
+  mesh.blocks.push_back(grid.block(spec.blockName));
+  grid.addSets(mesh, {"left", "right", "bottom", "top", "back", "front"});
+  mesh.validate("box mesh");
+  return mesh;
+}
+
+// The annulus sector's radii and angles (degrees). Angles are graded in degrees, so the last one is
+// exactly endAngleDeg before conversion.
+struct AnnulusPositions {
+  std::vector<double> radii, anglesDeg;
+  explicit AnnulusPositions(const AnnulusSectorSpec& spec)
+      : radii(gradedPositions(spec.innerRadius, spec.thickness, spec.elementsThroughThickness, spec.radialBias,
+                              "Radial Bias")),
+        anglesDeg(gradedPositions(spec.startAngleDeg, spec.endAngleDeg - spec.startAngleDeg, spec.elementsAroundArc,
+                                  spec.arcBias, "Arc Bias")) {
+    anglesDeg.back() = spec.endAngleDeg;  // θ0 + (θ1 − θ0) can differ from θ1 in the last bit
   }
   // (r, θ) → (x, y) has Jacobian r > 0, so the grid's counter-clockwise order carries over.
+  void point(int i, int j, double* x) const {
+    const double theta = anglesDeg[j] * (std::acos(-1.0) / 180.0);
+    x[0] = radii[i] * std::cos(theta);
+    x[1] = radii[i] * std::sin(theta);
+  }
+};
+
+Mesh buildAnnulusSector(const AnnulusSectorSpec& spec) {
+  const AnnulusPositions annulus(spec);
+  const StructuredGrid grid({spec.elementsThroughThickness, spec.elementsAroundArc});
+  Mesh mesh;
+  grid.setCoordinates(mesh, [&](int i, int j, int, double* x) { annulus.point(i, j, x); });
   mesh.blocks.push_back(grid.block(spec.blockName));
-  const std::string names[4] = {"inner", "outer", "start", "end"};
-  grid.addSets(mesh, names);
+  grid.addSets(mesh, {"inner", "outer", "start", "end"});
   mesh.validate("annulus sector mesh");
   return mesh;
 }
+
+Mesh buildHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
+  const AnnulusPositions annulus(spec.section);
+  const std::vector<double> zs = gradedPositions(spec.z0, spec.length, spec.layers, spec.axialBias, "Bias Z");
+  const StructuredGrid grid({spec.section.elementsThroughThickness, spec.section.elementsAroundArc, spec.layers});
+  Mesh mesh;
+  // (r, θ, z) → (x, y, z) has Jacobian r > 0: right-handed cells.
+  grid.setCoordinates(mesh, [&](int i, int j, int k, double* x) {
+    annulus.point(i, j, x);
+    x[2] = zs[k];
+  });
+  mesh.blocks.push_back(grid.block(spec.section.blockName));
+  grid.addSets(mesh, {"inner", "outer", "start", "end", "back", "front"});
+  mesh.validate("hollow cylinder sector mesh");
+  return mesh;
+}
+
+// The sphere octant in local coordinates (u, v, w) ≥ 0 about the centre, w towards the pole, then
+// placed by a rotation (never a reflection, so right-handed cells stay right-handed).
+class SphereOctant {
+ public:
+  explicit SphereOctant(const SphereOctantSpec& spec)
+      : spec_(spec), n_(spec.elementsAlongEdge), m_(spec.elementsThroughShell), cube_({n_, n_, n_}) {
+    const double a = spec.innerCubeFraction * spec.radius;
+    // Equiangular cube coordinates a·tan(π/4·t); the pole patch's axes u, v graded towards the pole.
+    const double quarterPi = std::atan(1.0);
+    auto cubeCoordinates = [&](double bias, const char* parameter) {
+      std::vector<double> t = gradedPositions(0, 1, n_, bias, parameter);
+      for (double& c : t) c = a * std::tan(quarterPi * c);
+      t.back() = a;  // tan(π/4) is 1 - 1e-16 in floating point
+      return t;
+    };
+    axis_[0] = axis_[1] = cubeCoordinates(spec.poleBias, "Pole Bias");
+    axis_[2] = cubeCoordinates(1.0, "Pole Bias");
+    layers_ = gradedPositions(0, 1, m_, spec.radialBias, "Radial Bias");
+    placeAxes();
+    // Shell nodes sit on rays through the cube's outer-boundary nodes: number those.
+    boundaryIndex_.assign(static_cast<size_t>(cube_.numNodes()), -1);
+    cube_.forNodes([&](int i, int j, int k) {
+      if (i == n_ || j == n_ || k == n_) boundaryIndex_[cube_.node(i, j, k)] = boundaryCount_++;
+    });
+  }
+
+  // The cube's (n+1)³ nodes and n³ elements, and per shell layer the 3n² + 3n + 1 nodes of the
+  // cube's outer boundary and 3n² elements.
+  static MeshSize size(int n, int m) {
+    MeshSize s;
+    s.nodes = (n + 1.0) * (n + 1.0) * (n + 1.0) + m * (3.0 * n * n + 3.0 * n + 1.0);
+    s.elements = static_cast<double>(n) * n * n + 3.0 * n * n * m;
+    s.dimension = 3;
+    s.nodesPerElement = 8;
+    return s;
+  }
+
+  Mesh build() const {
+    Mesh mesh;
+    mesh.dimension = 3;
+    const GlobalIndex cubeNodes = cube_.numNodes();
+    mesh.coordinates.resize(3 * static_cast<size_t>(cubeNodes + m_ * boundaryCount_));
+    cube_.forNodes([&](int i, int j, int k) {
+      const double local[3] = {axis_[0][i], axis_[1][j], axis_[2][k]};
+      place(local, &mesh.coordinates[3 * static_cast<size_t>(cube_.node(i, j, k))]);
+      if (boundaryIndex_[cube_.node(i, j, k)] < 0) return;
+      // Shell layer l: (1 − ρ_l)·P + ρ_l·R·P/|P|, along the ray from the centre through P.
+      const double norm = std::sqrt(local[0] * local[0] + local[1] * local[1] + local[2] * local[2]);
+      for (int l = 1; l <= m_; ++l) {
+        const double scale = (1 - layers_[l]) + layers_[l] * spec_.radius / norm;
+        const double p[3] = {scale * local[0], scale * local[1], scale * local[2]};
+        place(p, &mesh.coordinates[3 * static_cast<size_t>(shellNode(l, cube_.node(i, j, k)))]);
+      }
+    });
+
+    ElementBlock block;
+    block.name = spec_.blockName;
+    block.cellType = CellType::Hex8;
+    SideSet surface{"surface", {}, {}}, equator{"equator", {}, {}}, symmetry[2];
+    auto addSide = [&block](SideSet& set, int side) {
+      set.elements.push_back(block.numElements() - 1);
+      set.sides.push_back(side);
+    };
+    // The inner cube: the box numbering; its faces at u = 0, v = 0, w = 0 are symmetry and equator.
+    cube_.forCells([&](int i, int j, int k) {
+      block.elements.push_back(block.numElements());
+      cube_.cellNodes(i, j, k, block.connectivity);
+      if (i == 0) addSide(symmetry[0], sideOfFace(0, false));
+      if (j == 0) addSide(symmetry[1], sideOfFace(1, false));
+      if (k == 0) addSide(equator, sideOfFace(2, false));
+    });
+    // The shells over the cube faces u = a, v = a, w = a. Each spans two cube axes (p, q) with
+    // p × q = the face's outward normal, so (p, q, outwards) is right-handed: the face's quad at
+    // layer l, then at l + 1, is an Exodus-ordered Hex8 with reference axes (p, q, radial).
+    for (int normal = 0; normal < 3; ++normal) {
+      const int p = (normal + 1) % 3, q = (normal + 2) % 3;
+      for (int b = 0; b < n_; ++b)
+        for (int a = 0; a < n_; ++a)
+          for (int l = 0; l < m_; ++l) {
+            block.elements.push_back(block.numElements());
+            for (int layer = l; layer <= l + 1; ++layer)
+              for (auto [da, db] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+                int index[3];
+                index[normal] = n_;
+                index[p] = a + da;
+                index[q] = b + db;
+                block.connectivity.push_back(shellNode(layer, cube_.node(index[0], index[1], index[2])));
+              }
+            // Faces on the planes p = 0, q = 0 (symmetry or equator), and the sphere.
+            for (auto [axis, index, side] : {std::tuple{p, a, sideOfFace(0, false)}, {q, b, sideOfFace(1, false)}})
+              if (index == 0) addSide(axis == 2 ? equator : symmetry[axis], side);
+            if (l == m_ - 1) addSide(surface, sideOfFace(2, true));
+          }
+    }
+    mesh.blocks.push_back(std::move(block));
+
+    symmetry[0].name = "symmetry_" + std::string(1, "xyz"[globalAxis_[0]]);
+    symmetry[1].name = "symmetry_" + std::string(1, "xyz"[globalAxis_[1]]);
+    for (const SideSet* s : {&surface, &equator, &symmetry[0], &symmetry[1]}) {
+      mesh.sideSets.push_back(*s);
+      mesh.nodeSets.push_back(nodesOf(mesh, *s));
+    }
+    mesh.nodeSets.push_back({"pole", {shellNode(m_, cube_.node(0, 0, n_))}});
+    NodeSet all{"all", std::vector<GlobalIndex>(static_cast<size_t>(mesh.numNodes()))};
+    for (size_t k = 0; k < all.nodes.size(); ++k) all.nodes[k] = static_cast<GlobalIndex>(k);
+    mesh.nodeSets.push_back(std::move(all));
+    mesh.validate("sphere octant mesh");
+    return mesh;
+  }
+
+ private:
+  // Layer 0 of the shell is the cube's boundary itself.
+  GlobalIndex shellNode(int layer, GlobalIndex cubeNode) const {
+    if (layer == 0) return cubeNode;
+    return cube_.numNodes() + static_cast<GlobalIndex>(layer - 1) * boundaryCount_ + boundaryIndex_[cubeNode];
+  }
+
+  // Local axes (u, v, w) → global: w along the pole direction; u, v along the other two axes in the
+  // order that makes the map a rotation (cyclic order for a + pole, swapped for a − pole).
+  void placeAxes() {
+    const std::string& d = spec_.poleDirection;
+    const int pole = d[1] - 'x';
+    const bool negative = d[0] == '-';
+    const int next = (pole + 1) % 3, last = (pole + 2) % 3;
+    globalAxis_[0] = negative ? last : next;
+    globalAxis_[1] = negative ? next : last;
+    globalAxis_[2] = pole;
+    sign_[0] = sign_[1] = 1;
+    sign_[2] = negative ? -1 : 1;
+  }
+
+  void place(const double local[3], double* x) const {
+    for (int a = 0; a < 3; ++a) x[globalAxis_[a]] = spec_.center[globalAxis_[a]] + sign_[a] * local[a];
+  }
+
+  static NodeSet nodesOf(const Mesh& mesh, const SideSet& set) {
+    NodeSet s{set.name, {}};
+    const ElementBlock& block = mesh.blocks[0];
+    for (size_t k = 0; k < set.elements.size(); ++k)
+      for (int a : sideNodes(CellType::Hex8, set.sides[k]))
+        s.nodes.push_back(block.connectivity[8 * static_cast<size_t>(set.elements[k]) + a]);
+    std::sort(s.nodes.begin(), s.nodes.end());
+    s.nodes.erase(std::unique(s.nodes.begin(), s.nodes.end()), s.nodes.end());
+    return s;
+  }
+
+  const SphereOctantSpec& spec_;
+  int n_, m_;
+  StructuredGrid cube_;
+  std::vector<double> axis_[3], layers_;
+  int globalAxis_[3] = {0, 1, 2}, sign_[3] = {1, 1, 1};
+  std::vector<GlobalIndex> boundaryIndex_;
+  GlobalIndex boundaryCount_ = 0;
+};
 
 }  // namespace
 
@@ -227,11 +464,13 @@ Mesh generateRectangle(const RectangleSpec& spec) {
   requirePositiveCount(spec.ny, "Elements Y");
   requireBias(spec.biasX, "Bias X");
   requireBias(spec.biasY, "Bias Y");
-  const std::string outOfMemory = requireGridFits(spec.nx, spec.ny, "Elements X", "Elements Y");
+  const std::string outOfMemory = requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}});
   return guardAllocation(outOfMemory, [&spec] { return buildRectangle(spec); });
 }
 
-Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
+namespace {
+
+void requireAnnulusSector(const AnnulusSectorSpec& spec) {
   requirePositive(spec.innerRadius, "Inner Radius");
   requirePositive(spec.thickness, "Thickness");
   requireFinite(spec.startAngleDeg, "Start Angle");
@@ -246,9 +485,68 @@ Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
   requirePositiveCount(spec.elementsAroundArc, "Elements Around Arc");
   requireBias(spec.radialBias, "Radial Bias");
   requireBias(spec.arcBias, "Arc Bias");
-  const std::string outOfMemory = requireGridFits(spec.elementsThroughThickness, spec.elementsAroundArc,
-                                                  "Elements Through Thickness", "Elements Around Arc");
+}
+
+}  // namespace
+
+Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
+  requireAnnulusSector(spec);
+  const std::string outOfMemory = requireGridFits(
+      {{"Elements Through Thickness", spec.elementsThroughThickness}, {"Elements Around Arc", spec.elementsAroundArc}});
   return guardAllocation(outOfMemory, [&spec] { return buildAnnulusSector(spec); });
+}
+
+Mesh generateBox(const BoxSpec& spec) {
+  requireFinite(spec.x0, "X Origin");
+  requireFinite(spec.y0, "Y Origin");
+  requireFinite(spec.z0, "Z Origin");
+  requirePositive(spec.lx, "Length X");
+  requirePositive(spec.ly, "Length Y");
+  requirePositive(spec.lz, "Length Z");
+  requirePositiveCount(spec.nx, "Elements X");
+  requirePositiveCount(spec.ny, "Elements Y");
+  requirePositiveCount(spec.nz, "Elements Z");
+  requireBias(spec.biasX, "Bias X");
+  requireBias(spec.biasY, "Bias Y");
+  requireBias(spec.biasZ, "Bias Z");
+  const std::string outOfMemory =
+      requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}, {"Elements Z", spec.nz}});
+  return guardAllocation(outOfMemory, [&spec] { return buildBox(spec); });
+}
+
+Mesh generateHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
+  requireAnnulusSector(spec.section);
+  requireFinite(spec.z0, "Z Origin");
+  requirePositive(spec.length, "Length Z");
+  requirePositiveCount(spec.layers, "Elements Z");
+  requireBias(spec.axialBias, "Bias Z");
+  const std::string outOfMemory = requireGridFits({{"Elements Through Thickness", spec.section.elementsThroughThickness},
+                                                   {"Elements Around Arc", spec.section.elementsAroundArc},
+                                                   {"Elements Z", spec.layers}});
+  return guardAllocation(outOfMemory, [&spec] { return buildHollowCylinderSector(spec); });
+}
+
+Mesh generateSphereOctant(const SphereOctantSpec& spec) {
+  requirePositive(spec.radius, "Radius");
+  requireFinite(spec.center[0], "X Center");
+  requireFinite(spec.center[1], "Y Center");
+  requireFinite(spec.center[2], "Z Center");
+  const std::string& d = spec.poleDirection;
+  requireInput(d.size() == 2 && (d[0] == '-' || d[0] == '+') && d[1] >= 'x' && d[1] <= 'z',
+               "Pole Direction: expected one of -x, +x, -y, +y, -z, +z, got '" + d + "'");
+  requirePositiveCount(spec.elementsAlongEdge, "Elements Along Edge");
+  requirePositiveCount(spec.elementsThroughShell, "Elements Through Shell");
+  // The shell's rays must leave the cube before the sphere: its corner f·R·√3 lies inside R.
+  requireInput(std::isfinite(spec.innerCubeFraction) && spec.innerCubeFraction > 0 &&
+                   spec.innerCubeFraction * std::sqrt(3.0) < 1,
+               "Inner Cube Fraction: expected a value in (0, 0.57735) (the inner cube's corner inside the sphere: "
+               "fraction < 1/sqrt(3)), got " + format(spec.innerCubeFraction));
+  requireBias(spec.poleBias, "Pole Bias");
+  requireBias(spec.radialBias, "Radial Bias");
+  const std::string outOfMemory =
+      requireFits(SphereOctant::size(spec.elementsAlongEdge, spec.elementsThroughShell),
+                  {{"Elements Along Edge", spec.elementsAlongEdge}, {"Elements Through Shell", spec.elementsThroughShell}});
+  return guardAllocation(outOfMemory, [&spec] { return SphereOctant(spec).build(); });
 }
 
 }  // namespace contessa::mesh

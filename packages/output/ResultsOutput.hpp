@@ -1,6 +1,8 @@
 #pragma once
 // Everything a run writes after each converged increment: the Exodus II file, the history CSV and
-// the progress table on stdout (DESIGN.md contracts). Fields are gathered to rank 0, which writes.
+// the progress table on stdout (DESIGN.md contracts). Fields are gathered to rank 0, which writes;
+// whether a write succeeded is then agreed by all ranks, so that an output error ends the run on
+// every rank instead of leaving the others waiting in the next collective call.
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,31 +10,58 @@
 #include "deck/ProblemDefinition.hpp"
 #include "io/ExodusWriter.hpp"
 #include "io/HistoryWriter.hpp"
+#include "io/OutputLock.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/ContinuationDriver.hpp"
 
 namespace contessa::output {
 
+/// What the results file records about the run besides the results (Exodus QA and information
+/// records): the command line and the deck as run.
+struct RunDescription {
+  std::string commandLine;  ///< e.g. "contessa tube.xml --set ..."
+  std::vector<std::string> deck;  ///< the deck after --set overrides (before defaults are filled in), by line
+};
+
 class ResultsOutput : public solvers::IncrementObserver {
  public:
-  /// Writes `<directory>/<name>.exo` and `<directory>/<name>.history.csv`.
+  /// Locks `<directory>/<name>.lock` and creates `<directory>/<name>.exo` and
+  /// `<directory>/<name>.history.csv` on rank 0. Collective: when another run holds the lock or a
+  /// file cannot be created, every rank throws InputError with rank 0's one-line reason.
   ResultsOutput(const deck::ProblemDefinition& problem, const model::ContactMechanicsModel& model,
-                const std::string& directory, const std::string& name, bool printTable);
+                const std::string& directory, const std::string& name, bool printTable,
+                const RunDescription& run = {});
 
+  /// Collective. When rank 0 cannot write the increment, every rank throws std::runtime_error with
+  /// the reason (also kept in failure()); the files keep every increment before it.
   void incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) override;
   void attemptFailed(const solvers::IncrementReport& report) override;
 
-  /// The last converged row of the history, by column name (for the deck's regression checks).
+  /// The history so far, by column name (for the deck's regression checks).
   const std::vector<std::string>& historyColumns() const { return columns_; }
   const std::vector<std::vector<double>>& historyRows() const { return rows_; }
   std::string exodusPath() const { return exodusPath_; }
   std::string historyPath() const { return historyPath_; }
+  /// Why the output failed ("" while it has not), on every rank.
+  const std::string& failure() const { return failure_; }
+  /// A note for the user about the output (e.g. no lock on this file system), rank 0; "" if none.
+  const std::string& warning() const { return warning_; }
 
  private:
+  /// One rigid contact surface drawn as a line block: its points move by λ · motion.
+  struct RigidSurface {
+    std::string name;
+    std::size_t points = 0;
+    std::vector<double> motion;  ///< displacement at λ = 1, one entry per component
+  };
+
   const deck::ProblemDefinition& problem_;
   const model::ContactMechanicsModel& model_;
   bool root_, printTable_;
-  std::string exodusPath_, historyPath_;
+  std::string exodusPath_, historyPath_, failure_, warning_;
+  std::vector<RigidSurface> rigidSurfaces_;
+  // Declared before the writers: the lock is released after the files are closed.
+  std::unique_ptr<io::OutputLock> lock_;
   std::unique_ptr<io::ExodusWriter> exodus_;
   std::unique_ptr<io::HistoryWriter> history_;
   std::vector<std::string> columns_;

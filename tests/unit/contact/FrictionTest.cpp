@@ -2,7 +2,8 @@
 #include "contact/ContactHistory.hpp"
 #include "contact/ContactLawParameters.hpp"
 #include "contact/CoulombReturnMapping.hpp"
-#include "contact/HistoryTransfer2D.hpp"
+#include "contact/HistoryTransfer.hpp"
+#include "contact/SegmentSelector2D.hpp"
 #include "contact/PenaltyNormalLaw.hpp"
 #include "contact/SlipReversalDamping.hpp"
 
@@ -320,7 +321,7 @@ TEST(ContactHistoryStore, RollbackRestoresTheCommittedStateExactly) {
   EXPECT_EQ(store.trial(1).xi[0], 0.123456789);  // bit for bit
 }
 
-TEST(HistoryTransfer2D, UnrollsTheContactPointAcrossTheSharedVertex) {
+TEST(HistoryTransfer, UnrollsTheContactPointAcrossTheSharedVertex) {
   // Counter-clockwise top of a block: segment 0 from (4,0) to (2,0) (‖ā_1‖ = 1), then segment 1 from
   // (2,0) to (−2,0) (‖ā_1‖ = 2).
   const cc::MasterSegment2D first{0, {0, 1}, {{{4.0, 0.0}, {2.0, 0.0}}}};
@@ -331,16 +332,59 @@ TEST(HistoryTransfer2D, UnrollsTheContactPointAcrossTheSharedVertex) {
   h.tangentialTraction = {3.0};   // physical 3.0/1
   h.status = ContactStatus::Stick;
   h.accumulatedSlip = 0.2;
-  const auto moved = cc::transferHistory2D(h, first, second);
+  const auto moved = cc::transferHistory(h, first, second);
   EXPECT_EQ(moved.segment, 1);
   EXPECT_NEAR(moved.xi[0], -1.25, 1e-14);  // x = 2.5 on the line of segment 1: ξ = −1 − 0.5/2
   EXPECT_NEAR(moved.tangentialTraction[0], 6.0, 1e-14);  // same physical traction, ‖ā_1‖ = 2
   EXPECT_EQ(moved.status, ContactStatus::Stick);
   EXPECT_EQ(moved.accumulatedSlip, 0.2);
   // And back.
-  const auto back = cc::transferHistory2D(moved, second, first);
+  const auto back = cc::transferHistory(moved, second, first);
   EXPECT_NEAR(back.xi[0], 0.5, 1e-14);
   EXPECT_NEAR(back.tangentialTraction[0], 3.0, 1e-14);
+}
+
+// 3D: a node sliding from face A over the shared edge x = 2 onto face B. Coplanar, and folded down by 90°
+// (a convex edge): unfolding about the edge gives B the same ξ_n and covariant traction in both cases, i.e.
+// the arc length slid and the traction along the path are carried over the edge.
+TEST(HistoryTransfer, UnfoldsTheContactPointAndTractionAboutTheSharedEdge) {
+  using Face = cc::MasterFacetNodes<cc::Quad4Facet>;
+  const Face a{0, {0, 1, 2, 3}, {{{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {2.0, 2.0, 0.0}, {0.0, 2.0, 0.0}}}};
+  const Face flat{1, {1, 4, 5, 2}, {{{2.0, 0.0, 0.0}, {5.0, 0.0, 0.0}, {5.0, 2.0, 0.0}, {2.0, 2.0, 0.0}}}};
+  const Face folded{2, {1, 4, 5, 2}, {{{2.0, 0.0, 0.0}, {2.0, 0.0, -3.0}, {2.0, 2.0, -3.0}, {2.0, 2.0, 0.0}}}};
+  cc::ContactHistory<2> h;
+  h.segment = 0;
+  h.xi = {0.5, 0.2};                   // x = (1.5, 1.2, 0), 0.5 before the edge
+  h.tangentialTraction = {3.0, 1.0};   // ā_α = e_x, e_y on A: physical traction (3, 1, 0)
+  h.status = ContactStatus::Slip;
+  h.accumulatedSlip = 0.7;
+  for (const Face* b : {&flat, &folded}) {
+    SCOPED_TRACE(b->id);
+    const auto moved = cc::transferHistory(h, a, *b);
+    EXPECT_EQ(moved.segment, b->id);
+    EXPECT_EQ(moved.status, ContactStatus::Slip);
+    EXPECT_EQ(moved.accumulatedSlip, 0.7);
+    EXPECT_NEAR(moved.xi[0], -1.0 - 0.5 / 1.5, 1e-12);  // 0.5 before the edge, ‖ā_1‖ = 1.5 on B
+    EXPECT_NEAR(moved.xi[1], 0.2, 1e-12);
+    EXPECT_NEAR(moved.tangentialTraction[0], 3.0 * 1.5, 1e-12);  // t·ā_1: across the edge, along the path
+    EXPECT_NEAR(moved.tangentialTraction[1], 1.0, 1e-12);        // t·ā_2: along the edge
+    const auto back = cc::transferHistory(moved, *b, a);
+    EXPECT_NEAR(back.xi[0], 0.5, 1e-12);
+    EXPECT_NEAR(back.xi[1], 0.2, 1e-12);
+    EXPECT_NEAR(back.tangentialTraction[0], 3.0, 1e-12);
+    EXPECT_NEAR(back.tangentialTraction[1], 1.0, 1e-12);
+  }
+  // Faces sharing only a corner: the old point is projected onto the new face, the traction onto its
+  // tangent plane with its magnitude kept.
+  const Face tilted{3, {2, 6, 7, 8}, {{{2.0, 2.0, 0.0}, {4.0, 2.0, 0.5}, {4.0, 4.0, 0.5}, {2.0, 4.0, 0.0}}}};
+  const auto moved = cc::transferHistory(h, a, tilted);
+  const auto p = cc::FaceProjection3D().project({1.5, 1.2, 0.0}, tilted.x);
+  EXPECT_NEAR(moved.xi[0], p.xi[0], 1e-12);
+  EXPECT_NEAR(moved.xi[1], p.xi[1], 1e-12);
+  Vector<3> t{};
+  for (int al = 0; al < 2; ++al) cc::addScaled(t, moved.tangentialTraction[al], p.contravariantBasis[al]);
+  EXPECT_NEAR(cc::norm(t), std::sqrt(10.0), 1e-12);
+  EXPECT_NEAR(cc::dot(t, p.normal), 0.0, 1e-12);
 }
 
 // ---- Slip reversal damping (tangent only) ------------------------------------------------------------

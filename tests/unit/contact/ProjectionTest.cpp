@@ -117,6 +117,106 @@ TEST(Projection3D, WarpedQuadFaceConvergesInAFewNewtonIterations) {
   EXPECT_GT(cc::norm(d), closest - 1e-3);
 }
 
+namespace {
+
+/// eq. (1) holds at ξ̄: (x^k − x̄)·ā_α = 0, relative to the sizes involved.
+void expectOrthogonal(const Vector<3>& slave, const cc::ProjectionResult<cc::Quad4Facet>& p) {
+  const Vector<3> d = cc::subtract(slave, p.position);
+  for (int alpha = 0; alpha < 2; ++alpha)
+    EXPECT_NEAR(cc::dot(d, p.covariantBasis[alpha]), 0.0, 1e-12 * (1.0 + cc::norm(d)) * cc::norm(p.covariantBasis[alpha]));
+  EXPECT_NEAR(std::abs(p.gap), cc::norm(d), 1e-12 * (1.0 + cc::norm(d)));
+}
+
+}  // namespace
+
+TEST(Projection3D, FlatFaceIsExactAndStartsFromTheClosestPiece) {
+  // Flat, not a parallelogram: x̄(ξ) is still bilinear, so Newton iterates; the start is the closest
+  // point of the nearer triangle, which is already close.
+  const cc::FaceProjection3D::NodeCoords face{{{0.0, 0.0, 0.0}, {2.4, 0.2, 0.0}, {2.1, 1.8, 0.0}, {-0.3, 2.2, 0.0}}};
+  for (const Vector<2> xi : {Vector<2>{0.0, 0.0}, Vector<2>{0.9, -0.7}, Vector<2>{-0.99, 0.98}}) {
+    const auto onFace = cc::FaceProjection3D::evaluateAt({0.0, 0.0, 0.0}, face, xi);
+    const Vector<3> slave = cc::add(onFace.position, Vector<3>{0.0, 0.0, -0.3});
+    const auto p = cc::FaceProjection3D().project(slave, face);
+    ASSERT_TRUE(p.converged);
+    EXPECT_LE(p.iterations, 5);
+    EXPECT_NEAR(p.xi[0], xi[0], 1e-12);
+    EXPECT_NEAR(p.xi[1], xi[1], 1e-12);
+    EXPECT_NEAR(p.gap, -0.3, 1e-12);
+    expectOrthogonal(slave, p);
+  }
+}
+
+TEST(Projection3D, FarOutsideAWarpedFaceConvergesOnItsExtension) {
+  // Far beyond an edge and a corner of a warped face: the unclamped projection onto the bilinear
+  // extension (ξ̄ outside [−1, 1]², for the selector to judge), reached with limited, backtracked steps.
+  const cc::FaceProjection3D::NodeCoords face{{{0.0, 0.0, 0.0}, {2.0, 0.1, 0.4}, {2.2, 2.0, -0.1}, {-0.1, 1.9, 0.3}}};
+  for (const Vector<3> slave : {Vector<3>{6.0, 1.0, 0.5}, Vector<3>{-3.0, -4.0, 2.0}, Vector<3>{1.0, 9.0, -1.0}}) {
+    const auto p = cc::FaceProjection3D().project(slave, face);
+    ASSERT_TRUE(p.converged);
+    EXPECT_FALSE(p.isInside(0.1));
+    expectOrthogonal(slave, p);
+    // A local minimum of the distance on the extension: no nearby surface point is closer.
+    const double distance = cc::norm(cc::subtract(slave, p.position));
+    for (int i = -2; i <= 2; ++i)
+      for (int j = -2; j <= 2; ++j) {
+        const auto q = cc::FaceProjection3D::evaluateAt(slave, face, {p.xi[0] + 0.05 * i, p.xi[1] + 0.05 * j});
+        EXPECT_GE(cc::norm(cc::subtract(slave, q.position)), distance - 1e-12);
+      }
+  }
+}
+
+TEST(Projection3D, NearlyDegenerateFaceFallsBackToAnotherStart) {
+  // A face collapsed almost to a triangle (nodes 2 and 3 a hair apart): near the collapsed edge ā_1 nearly
+  // vanishes; projections inside the triangle still converge.
+  const cc::FaceProjection3D::NodeCoords face{{{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {1.0, 2.0, 0.0}, {1.0 - 1e-9, 2.0, 0.0}}};
+  for (const Vector<3> slave : {Vector<3>{1.0, 1.9, 0.2}, Vector<3>{0.7, 0.5, -0.1}, Vector<3>{1.0, 2.0, 0.05}}) {
+    const auto p = cc::FaceProjection3D().project(slave, face);
+    ASSERT_TRUE(p.converged) << slave[0] << " " << slave[1];
+    EXPECT_NEAR(std::abs(p.gap), std::abs(slave[2]), 1e-9);
+    EXPECT_NEAR(p.position[0], slave[0], 1e-6);
+    EXPECT_NEAR(p.position[1], slave[1], 1e-6);
+  }
+  // Nodes 2 and 3 coincident: ā_1 = 0 along the collapsed edge η = 1, so Newton cannot start there ...
+  const cc::FaceProjection3D::NodeCoords collapsed{{{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {1.0, 2.0, 0.0}, {1.0, 2.0, 0.0}}};
+  EXPECT_FALSE(cc::FaceProjection3D().project({1.0, 1.2, 0.3}, collapsed, {0.3, 1.0}).converged);
+  const auto inside = cc::FaceProjection3D().project({1.0, 1.2, 0.3}, collapsed);
+  ASSERT_TRUE(inside.converged);
+  EXPECT_EQ(inside.starts, 1);
+  EXPECT_NEAR(inside.gap, 0.3, 1e-12);
+  // ... and a node just beyond the collapsed corner has its two closest starts there: both fail, the
+  // fallback (the centre) converges, on the extension beyond the corner (η̄ > 1: outside, for the selector).
+  const Vector<3> beyond{1.0, 2.05, 0.05};
+  const auto p = cc::FaceProjection3D().project(beyond, collapsed);
+  ASSERT_TRUE(p.converged);
+  EXPECT_EQ(p.starts, 3);
+  EXPECT_NEAR(p.xi[1], 1.05, 1e-12);
+  EXPECT_FALSE(p.isInside(0.01));
+  EXPECT_NEAR(std::abs(p.gap), 0.05, 1e-12);
+  expectOrthogonal(beyond, p);
+}
+
+TEST(Projection3D, GapIsInvariantUnderRigidRotation) {
+  const cc::FaceProjection3D::NodeCoords face{{{0.0, 0.0, 0.0}, {2.0, 0.1, 0.4}, {2.2, 2.0, -0.1}, {-0.1, 1.9, 0.3}}};
+  const Vector<3> slave{0.7, 1.3, -0.2};
+  const auto reference = cc::FaceProjection3D().project(slave, face);
+  ASSERT_TRUE(reference.converged);
+  for (const double angle : {0.3, 1.9, -2.6}) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    // About the x axis, then about z: a general rotation, plus a translation.
+    auto move = [&](const Vector<3>& x) {
+      const Vector<3> r1{x[0], c * x[1] - s * x[2], s * x[1] + c * x[2]};
+      return Vector<3>{c * r1[0] - s * r1[1] + 3.0, s * r1[0] + c * r1[1] - 1.0, r1[2] + 0.5};
+    };
+    cc::FaceProjection3D::NodeCoords rotated{};
+    for (int i = 0; i < 4; ++i) rotated[i] = move(face[i]);
+    const auto p = cc::FaceProjection3D().project(move(slave), rotated);
+    ASSERT_TRUE(p.converged);
+    EXPECT_NEAR(p.gap, reference.gap, 1e-13);
+    EXPECT_NEAR(p.xi[0], reference.xi[0], 1e-12);
+    EXPECT_NEAR(p.xi[1], reference.xi[1], 1e-12);
+  }
+}
+
 // ---- Segment selection --------------------------------------------------------------------------------
 
 namespace {

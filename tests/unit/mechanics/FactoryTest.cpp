@@ -90,7 +90,7 @@ TEST(MaterialFactory, RejectsMissingOrNonPositiveYoungsModulus) {
 }
 
 TEST(ElementFactory, CreatesRegisteredKernels) {
-  EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced"}));
+  EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced", "Hex8", "Hex8 Enhanced"}));
   const auto q4 = ElementFactory::create("Q4", "E");
   EXPECT_EQ(q4->name(), "Q4");
   EXPECT_EQ(q4->numDofs(), 8);
@@ -100,11 +100,23 @@ TEST(ElementFactory, CreatesRegisteredKernels) {
   EXPECT_EQ(eas->dimension(), 2);
   EXPECT_EQ(eas->numNodes(), 4);
   EXPECT_EQ(eas->numInternalVariables(), 4);
+  const auto hex = ElementFactory::create("Hex8", "E");
+  EXPECT_EQ(hex->name(), "Hex8");
+  EXPECT_EQ(hex->dimension(), 3);
+  EXPECT_EQ(hex->numNodes(), 8);
+  EXPECT_EQ(hex->numDofs(), 24);
+  EXPECT_EQ(hex->numInternalVariables(), 0);
+  const auto hexEas = ElementFactory::create("Hex8 Enhanced", "E");
+  EXPECT_EQ(hexEas->name(), "Hex8 Enhanced");
+  EXPECT_EQ(hexEas->dimension(), 3);
+  EXPECT_EQ(hexEas->numInternalVariables(), 9);
+  // State: α (9), the displacements it belongs to (24), dα/du (9 × 24).
+  EXPECT_EQ(hexEas->numStateValues(), 9 + 24 + 9 * 24);
 }
 
 TEST(ElementFactory, UnknownNameListsKnownNames) {
   EXPECT_EQ(messageOf([] { ElementFactory::create("Q9", "Problem/Discretization/Element"); }),
-            "Problem/Discretization/Element: unknown element 'Q9' (known: Q4, Q4 Enhanced)");
+            "Problem/Discretization/Element: unknown element 'Q9' (known: Q4, Q4 Enhanced, Hex8, Hex8 Enhanced)");
 }
 
 }  // namespace

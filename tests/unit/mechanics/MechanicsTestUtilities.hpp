@@ -100,6 +100,55 @@ inline Tensor2 randomDeformationGradient(unsigned seed, double amplitude, bool p
   }
 }
 
+/// Three distorted hexahedra (about 2 × 1.5 × 1, no two faces parallel, non-planar faces), positively
+/// oriented in the Exodus HEX8 order: the 3D counterparts of the tests' distorted quadrilaterals.
+inline std::vector<std::vector<double>> distortedBricks() {
+  const double node[8][3] = {{0, 0, 0}, {2, 0, 0}, {2, 1.5, 0}, {0, 1.5, 0}, {0, 0, 1}, {2, 0, 1}, {2, 1.5, 1}, {0, 1.5, 1}};
+  const double jitter[3][8][3] = {
+      {{0.05, -0.1, 0.02}, {0.2, 0.1, -0.05}, {-0.1, 0.15, 0.1}, {0.1, -0.05, -0.08},
+       {-0.05, 0.1, 0.1}, {0.1, -0.1, 0.05}, {0.15, 0.2, -0.1}, {-0.1, 0.05, 0.15}},
+      {{-0.1, 0.05, -0.1}, {0.1, -0.15, 0.1}, {0.2, 0.05, -0.1}, {-0.15, 0.1, 0.05},
+       {0.1, -0.05, -0.15}, {-0.2, 0.1, 0.2}, {0.05, -0.1, 0.1}, {0.1, 0.15, -0.05}},
+      {{0.15, 0.1, 0.05}, {-0.1, 0.2, -0.1}, {0.05, -0.2, 0.15}, {0.2, 0.05, 0.1},
+       {-0.15, -0.1, -0.05}, {0.05, 0.15, -0.1}, {-0.2, -0.05, 0.05}, {0.15, -0.15, -0.1}}};
+  std::vector<std::vector<double>> bricks;
+  for (int e = 0; e < 3; ++e) {
+    std::vector<double> X(24);
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) X[3 * a + i] = node[a][i] + jitter[e][a][i] + 0.5 * e * (i == 0);
+    bricks.push_back(X);
+  }
+  return bricks;
+}
+
+/// A finite deformation of hexahedron X (24 values): a rotation of 0.5 a rad about an oblique axis
+/// of the homogeneous stretch and shear I + a H, plus a bending pattern u_x ∝ x (z − ½), u_z ∝ −x²
+/// and an hourglass pattern (both resisted by the enhanced modes, so α ≠ 0), for amplitude a.
+inline std::vector<double> brickDeformation(const std::vector<double>& X, double amplitude) {
+  const double H[3][3] = {{0.12, 0.05, -0.04}, {-0.03, -0.08, 0.06}, {0.02, 0.04, 0.1}};
+  const double hourglass[8] = {1, -1, 1, -1, -1, 1, -1, 1};  // ξηζ at the nodes
+  const Tensor2 R = rotation(0.5 * amplitude, 1.0, -2.0, 3.0);
+  std::vector<double> u(24);
+  for (int a = 0; a < 8; ++a) {
+    const double* x = &X[3 * a];
+    double y[3];
+    for (int i = 0; i < 3; ++i) y[i] = x[i] + amplitude * (H[i][0] * x[0] + H[i][1] * x[1] + H[i][2] * x[2]);
+    for (int i = 0; i < 3; ++i) u[3 * a + i] = R[idx2(i, 0)] * y[0] + R[idx2(i, 1)] * y[1] + R[idx2(i, 2)] * y[2] - x[i];
+    u[3 * a] += amplitude * (0.1 * (x[2] - 0.5) * x[0] + 0.05 * hourglass[a]);
+    u[3 * a + 1] += amplitude * 0.03 * hourglass[a];
+    u[3 * a + 2] -= amplitude * 0.05 * x[0] * x[0];
+  }
+  return u;
+}
+
+/// Reference element X mirrored through the plane y = 0: negatively oriented (a
+/// clockwise quadrilateral, an inside-out hexahedron).
+inline std::vector<double> mirroredElement(const std::vector<double>& X, int dimension) {
+  std::vector<double> mirrored = X;
+  for (std::size_t k = 1; k < mirrored.size(); k += dimension) mirrored[k] = -mirrored[k];
+  return mirrored;
+}
+
 /// Solves A x = b (n × n, row-major) by Gaussian elimination with partial pivoting.
 inline std::vector<double> solveDense(std::vector<double> A, std::vector<double> b) {
   const int n = static_cast<int>(b.size());
@@ -125,17 +174,20 @@ inline std::vector<double> solveDense(std::vector<double> A, std::vector<double>
   return x;
 }
 
-/// A 2D mesh of 4-node quadrilaterals (nodes counter-clockwise).
-struct QuadMesh {
-  std::vector<double> X;  ///< x0 y0 x1 y1 ...
-  std::vector<std::array<int, 4>> cells;
-  int numNodes() const { return static_cast<int>(X.size() / 2); }
+/// A mesh of one element type in 2D (4-node quadrilaterals, counter-clockwise) or 3D (8-node
+/// hexahedra, Exodus HEX8 order): the small dense "model" of the patch and bending tests.
+struct TestMesh {
+  int dimension = 2;
+  std::vector<double> X;  ///< x0 y0 [z0] x1 y1 [z1] ...
+  std::vector<std::vector<int>> cells;
+  int numNodes() const { return static_cast<int>(X.size()) / dimension; }
   int numDofs() const { return static_cast<int>(X.size()); }
 };
 
 /// nx × ny rectangles on [0, lx] × [0, ly]; node (i, j) has id j (nx + 1) + i.
-inline QuadMesh rectangleMesh(int nx, int ny, double lx, double ly) {
-  QuadMesh m;
+inline TestMesh rectangleMesh(int nx, int ny, double lx, double ly) {
+  TestMesh m;
+  m.dimension = 2;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       m.X.push_back(lx * i / nx);
@@ -149,47 +201,68 @@ inline QuadMesh rectangleMesh(int nx, int ny, double lx, double ly) {
   return m;
 }
 
-/// Element-local gather of a nodal field (2 values per node).
-inline std::array<double, 8> gather(const std::vector<double>& field, const std::array<int, 4>& cell) {
-  std::array<double, 8> local{};
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 2; ++i) local[2 * a + i] = field[2 * cell[a] + i];
+/// nx × ny × nz bricks on [0, lx] × [y0, y0 + ly] × [z0, z0 + lz]; node (i, j, k) has id
+/// (k (ny + 1) + j)(nx + 1) + i.
+inline TestMesh brickMesh(int nx, int ny, int nz, double lx, double ly, double lz, double y0 = 0.0, double z0 = 0.0) {
+  TestMesh m;
+  m.dimension = 3;
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) m.X.insert(m.X.end(), {lx * i / nx, y0 + ly * j / ny, z0 + lz * k / nz});
+  const auto id = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        m.cells.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                           id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+  return m;
+}
+
+/// Element-local gather of a nodal field (`dimension` values per node).
+inline std::vector<double> gather(const std::vector<double>& field, const std::vector<int>& cell, int dimension) {
+  std::vector<double> local;
+  for (int n : cell) local.insert(local.end(), field.begin() + dimension * n, field.begin() + dimension * (n + 1));
   return local;
 }
 
 /// Assembles f_int and (if K is not null) the tangent; `internal` holds numInternalVariables() per
 /// element and is updated (the trial state). Returns false unless every element reports Ok.
-inline bool assemble(const ElementKernel& kernel, const Material& material, const QuadMesh& mesh,
+inline bool assemble(const ElementKernel& kernel, const Material& material, const TestMesh& mesh,
                      const std::vector<double>& u, std::vector<double>& internal, std::vector<double>& f,
                      std::vector<double>* K) {
-  const int nd = mesh.numDofs(), ni = kernel.numInternalVariables();
+  const int nd = mesh.numDofs(), ni = kernel.numInternalVariables(), ne = kernel.numDofs(), D = mesh.dimension;
+  EXPECT_EQ(kernel.dimension(), D);
   internal.resize(mesh.cells.size() * ni, 0.0);
   f.assign(nd, 0.0);
   if (K) K->assign(static_cast<std::size_t>(nd) * nd, 0.0);
+  std::vector<double> fe(ne), Ke(static_cast<std::size_t>(ne) * ne);
   for (std::size_t e = 0; e < mesh.cells.size(); ++e) {
     const auto& cell = mesh.cells[e];
-    const auto Xe = gather(mesh.X, cell), ue = gather(u, cell);
-    std::array<double, 8> fe{};
-    std::array<double, 64> Ke{};
+    const auto Xe = gather(mesh.X, cell, D), ue = gather(u, cell, D);
     const auto status = kernel.evaluate(Xe.data(), ue.data(), ni ? &internal[e * ni] : nullptr, material,
                                         fe.data(), K ? Ke.data() : nullptr);
     if (status != ElementStatus::Ok) return false;
-    for (int r = 0; r < 8; ++r) {
-      const int gr = 2 * cell[r / 2] + r % 2;
+    for (int r = 0; r < ne; ++r) {
+      const int gr = D * cell[r / D] + r % D;
       f[gr] += fe[r];
       if (K)
-        for (int c = 0; c < 8; ++c) (*K)[static_cast<std::size_t>(gr) * nd + 2 * cell[c / 2] + c % 2] += Ke[r * 8 + c];
+        for (int c = 0; c < ne; ++c)
+          (*K)[static_cast<std::size_t>(gr) * nd + D * cell[c / D] + c % D] += Ke[static_cast<std::size_t>(r) * ne + c];
     }
   }
   return true;
 }
 
 /// Newton on the free dofs for f_int(u) = f_ext (u holds the prescribed values on the other dofs).
-/// Returns the number of iterations, or −1 if it does not converge to a relative residual of 1e-10
-/// (the round-off floor of the assembled residual is ~1e-12 of the load for the bending meshes).
-inline int solveEquilibrium(const ElementKernel& kernel, const Material& material, const QuadMesh& mesh,
+/// Returns the number of iterations, or −1 if it does not converge. Converged: a relative residual
+/// of 1e-10 · roundOff (the round-off floor of the assembled residual is ~1e-12 of the load for the
+/// bending meshes), or a Newton correction below 1e-12 · roundOff of u. `roundOff` is 1 except for
+/// nearly incompressible laws, where it is λ/μ: f_int then sums λ tr ε with tr ε ~ (1 − 2ν) ε, and
+/// that cancellation raises the floor of the residual (and of the enhanced element's local solve,
+/// hence of the Newton corrections) by λ/μ.
+inline int solveEquilibrium(const ElementKernel& kernel, const Material& material, const TestMesh& mesh,
                             const std::vector<int>& freeDofs, const std::vector<double>& fExt, std::vector<double>& u,
-                            std::vector<double>& internal, int maxIterations = 20) {
+                            std::vector<double>& internal, double roundOff = 1.0, int maxIterations = 20) {
   const int nd = mesh.numDofs(), nf = static_cast<int>(freeDofs.size());
   double reference = 0.0;
   for (int it = 0; it <= maxIterations; ++it) {
@@ -202,9 +275,10 @@ inline int solveEquilibrium(const ElementKernel& kernel, const Material& materia
       r[a] = fExt[freeDofs[a]] - f[freeDofs[a]];
       for (int b = 0; b < nf; ++b) Kff[a * nf + b] = K[static_cast<std::size_t>(freeDofs[a]) * nd + freeDofs[b]];
     }
-    if (maxAbs(r) <= 1e-10 * reference) return it;
+    if (maxAbs(r) <= 1e-10 * roundOff * reference) return it;
     const auto du = solveDense(Kff, r);
     for (int a = 0; a < nf; ++a) u[freeDofs[a]] += du[a];
+    if (it > 0 && maxAbs(du) <= 1e-12 * roundOff * maxAbs(u)) return it + 1;
   }
   return -1;
 }

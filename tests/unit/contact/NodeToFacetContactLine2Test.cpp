@@ -1,7 +1,10 @@
-// The 2D node-to-segment contact element: residual (forces) and consistent tangent against central
-// finite differences of the residual on all 6 dofs, for normal-only, stick and slip states.
-#include "contact/HistoryTransfer2D.hpp"
-#include "contact/NodeToSegmentContact2D.hpp"
+// The node-to-facet contact element on a 2-node segment (2D node-to-segment, 6 dofs): residual (forces)
+// and consistent tangent against central finite differences of the residual on all 6 dofs, for
+// normal-only, stick and slip states. (These are the tests of the former NodeToSegmentContact2D, which the
+// Line2Facet instantiation reproduced to round-off before it was removed.)
+#include "contact/HistoryTransfer.hpp"
+#include "contact/NodeToFacetContact.hpp"
+#include "contact/SegmentSelector2D.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,19 +17,21 @@ using cc::ContactStatus;
 using cc::Vector;
 using Mat6 = cc::Matrix<6, 6>;
 using Vec6 = Vector<6>;
+using Element = cc::NodeToFacetContact<cc::Line2Facet>;
+using Geometry = cc::NodeToFacetGeometry<cc::Line2Facet>;
 
 namespace {
 
-cc::NodeToSegmentGeometry2D fromDofs(const Vec6& x) {
+Geometry fromDofs(const Vec6& x) {
   return {{x[0], x[1]}, {{{x[2], x[3]}, {x[4], x[5]}}}};
 }
 
-Vec6 toDofs(const cc::NodeToSegmentGeometry2D& g) {
+Vec6 toDofs(const Geometry& g) {
   return {g.slave[0], g.slave[1], g.master[0][0], g.master[0][1], g.master[1][0], g.master[1][1]};
 }
 
 /// Central differences of the residual: K_FD(:, j) = (r(x + h e_j) − r(x − h e_j)) / 2h.
-Mat6 finiteDifferenceTangent(const cc::NodeToSegmentContact2D& element, const cc::NodeToSegmentGeometry2D& g,
+Mat6 finiteDifferenceTangent(const Element& element, const Geometry& g,
                              const cc::ContactHistory<1>& committed, double h, double facetLength = 0.0) {
   Mat6 k;
   const Vec6 x = toDofs(g);
@@ -64,7 +69,7 @@ cc::ContactHistory<1> inContact(int segment, double xiN, double tractionN, Conta
 }
 
 /// Geometry with the slave node at parameter ξ on the segment x1 → x2, at signed distance g along n̄.
-cc::NodeToSegmentGeometry2D slaveAt(Vector<2> x1, Vector<2> x2, double xi, double gap) {
+Geometry slaveAt(Vector<2> x1, Vector<2> x2, double xi, double gap) {
   const auto p = cc::SegmentProjection2D::evaluateAt({0.0, 0.0}, {{x1, x2}}, {xi});
   return {cc::add(p.position, cc::scaled(gap, p.normal)), {{x1, x2}}};
 }
@@ -106,10 +111,10 @@ const Case kCases[] = {
 
 }  // namespace
 
-TEST(NodeToSegmentContact2D, ConsistentTangentMatchesCentralDifferences) {
+TEST(NodeToFacetContactLine2, ConsistentTangentMatchesCentralDifferences) {
   double worst = 0.0;
   for (const Case& c : kCases) {
-    const cc::NodeToSegmentContact2D element(c.parameters);
+    const Element element(c.parameters);
     for (const Configuration& conf : kConfigurations) {
       SCOPED_TRACE(std::string(c.law) + " / " + conf.name);
       const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
@@ -132,7 +137,7 @@ TEST(NodeToSegmentContact2D, ConsistentTangentMatchesCentralDifferences) {
 // in stick. Checked against central differences in stick and slip, at a normal penetration and at a
 // penetration of 1e-5 of the segment (a nearly unloaded node: p = 1e-2 with ε_N = 1e3), with and
 // without the cap. L = 4 and s = 1 for stick (s L = 4 exceeds every configuration's slip), s = 0.005 for slip.
-TEST(NodeToSegmentContact2D, SlipToleranceTangentMatchesCentralDifferences) {
+TEST(NodeToFacetContactLine2, SlipToleranceTangentMatchesCentralDifferences) {
   struct ToleranceCase {
     const char* name;
     cc::ContactLawParameters parameters;
@@ -147,7 +152,7 @@ TEST(NodeToSegmentContact2D, SlipToleranceTangentMatchesCentralDifferences) {
   const double facetLength = 4.0;
   double worst = 0.0;
   for (const ToleranceCase& c : cases) {
-    const cc::NodeToSegmentContact2D element(c.parameters);
+    const Element element(c.parameters);
     for (const double gapScale : {1.0, 2.5e-4}) {
       for (const Configuration& conf : kConfigurations) {
         SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
@@ -176,7 +181,7 @@ TEST(NodeToSegmentContact2D, SlipToleranceTangentMatchesCentralDifferences) {
   }
   std::printf("[ FD       ] slip tolerance: worst relative error %.2e\n", worst);
   // The new stick term is there and matters: without ∂ε_T/∂t_N the tangent misses the FD derivative.
-  const cc::NodeToSegmentContact2D element({1e3, 0.0, 0.3, 1.0}, cc::TangentTerms::Consistent);
+  const Element element({1e3, 0.0, 0.3, 1.0}, cc::TangentTerms::Consistent);
   const Configuration& conf = kConfigurations[2];
   const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
   const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
@@ -189,8 +194,8 @@ TEST(NodeToSegmentContact2D, SlipToleranceTangentMatchesCentralDifferences) {
 // The secant slip tangent (SlipReversalDamping) changes the tangent only: same residual and trial state,
 // and K_secant − K = k (∂ξ̄/∂u)(∂ξ̄/∂u)ᵀ with k the given ∂t_T1/∂ξ̄ (capped by the stick stiffness
 // ε_T ā_11): symmetric, rank one, positive semi-definite. A sticking node is unaffected.
-TEST(NodeToSegmentContact2D, SecantSlipTangentChangesOnlyTheTangent) {
-  const cc::NodeToSegmentContact2D element({1e3, 0.0, 0.3, 0.005});
+TEST(NodeToFacetContactLine2, SecantSlipTangentChangesOnlyTheTangent) {
+  const Element element({1e3, 0.0, 0.3, 0.005});
   const double facetLength = 4.0;
   for (const Configuration& conf : kConfigurations) {
     SCOPED_TRACE(conf.name);
@@ -228,7 +233,7 @@ TEST(NodeToSegmentContact2D, SecantSlipTangentChangesOnlyTheTangent) {
     }
   }
   const Configuration& conf = kConfigurations[0];
-  const cc::NodeToSegmentContact2D sticking({1e3, 0.0, 0.3, 1.0});
+  const Element sticking({1e3, 0.0, 0.3, 1.0});
   const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
   const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
   const auto a = sticking.evaluate(g, 7, committed, facetLength);
@@ -237,8 +242,8 @@ TEST(NodeToSegmentContact2D, SecantSlipTangentChangesOnlyTheTangent) {
   EXPECT_EQ(relativeDifference(a.tangent, b.tangent), 0.0);
 }
 
-TEST(NodeToSegmentContact2D, SlipTangentIsNonSymmetricLikeItsFiniteDifference) {
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2});
+TEST(NodeToFacetContactLine2, SlipTangentIsNonSymmetricLikeItsFiniteDifference) {
+  const Element element({1e3, 5e2, 0.2});
   for (const Configuration& conf : kConfigurations) {
     SCOPED_TRACE(conf.name);
     const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
@@ -252,12 +257,12 @@ TEST(NodeToSegmentContact2D, SlipTangentIsNonSymmetricLikeItsFiniteDifference) {
   }
 }
 
-TEST(NodeToSegmentContact2D, PaperMainTermsAloneMissTheGeometricTerms) {
+TEST(NodeToFacetContactLine2, PaperMainTermsAloneMissTheGeometricTerms) {
   // eq. (24)–(26) are the exact tangent only in the limit g_N → 0, t_T → 0; at a finite penetration the
   // geometric terms are needed to match the derivative of the residual.
   for (const Case& c : kCases) {
-    const cc::NodeToSegmentContact2D main(c.parameters, cc::TangentTerms::PaperMainTerms);
-    const cc::NodeToSegmentContact2D full(c.parameters);
+    const Element main(c.parameters, cc::TangentTerms::PaperMainTerms);
+    const Element full(c.parameters);
     const Configuration& conf = kConfigurations[2];
     const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
     const auto committed = inContact(7, conf.xiN, c.committedTraction, ContactStatus::Stick);
@@ -274,8 +279,8 @@ TEST(NodeToSegmentContact2D, PaperMainTermsAloneMissTheGeometricTerms) {
   }
 }
 
-TEST(NodeToSegmentContact2D, ContactForcePushesTheSlaveOutAndBalances) {
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.3});
+TEST(NodeToFacetContactLine2, ContactForcePushesTheSlaveOutAndBalances) {
+  const Element element({1e3, 5e2, 0.3});
   const Configuration& conf = kConfigurations[2];
   const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
   const auto r = element.evaluate(g, 7, inContact(7, conf.xiN, 0.0, ContactStatus::Stick));
@@ -300,8 +305,8 @@ TEST(NodeToSegmentContact2D, ContactForcePushesTheSlaveOutAndBalances) {
   EXPECT_NEAR(moment, 0.0, 1e-10);
 }
 
-TEST(NodeToSegmentContact2D, OpenNodeHasNoForceAndFrictionlessNoTangentialForce) {
-  const cc::NodeToSegmentContact2D frictional({1e3, 5e2, 0.3});
+TEST(NodeToFacetContactLine2, OpenNodeHasNoForceAndFrictionlessNoTangentialForce) {
+  const Element frictional({1e3, 5e2, 0.3});
   const auto open = frictional.evaluate(slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.2, 0.01), 7,
                                         inContact(7, 0.0, 2.0, ContactStatus::Stick));
   EXPECT_EQ(open.status, ContactStatus::Open);
@@ -310,36 +315,36 @@ TEST(NodeToSegmentContact2D, OpenNodeHasNoForceAndFrictionlessNoTangentialForce)
   for (int i = 0; i < 6; ++i) EXPECT_EQ(open.residual[i], 0.0);
   EXPECT_EQ(cc::frobeniusNorm(open.tangent), 0.0);
 
-  const cc::NodeToSegmentContact2D frictionless({1e3, 0.0, 0.0});
+  const Element frictionless({1e3, 0.0, 0.0});
   const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.2, -0.01);
   const auto r = frictionless.evaluate(g, 7, inContact(7, -0.5, 0.0, ContactStatus::Slip));
   EXPECT_EQ(r.status, ContactStatus::Slip);
-  EXPECT_EQ(r.tangentialTraction, 0.0);
+  EXPECT_EQ(r.tangentialTraction[0], 0.0);
   EXPECT_NEAR(r.slaveForce()[0], 0.0, 1e-12);  // horizontal segment: purely normal force
   EXPECT_NEAR(r.slaveForce()[1], 10.0, 1e-12);
 }
 
-TEST(NodeToSegmentContact2D, FirstContactStartsStickingWithoutTraction) {
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.3});
+TEST(NodeToFacetContactLine2, FirstContactStartsStickingWithoutTraction) {
+  const Element element({1e3, 5e2, 0.3});
   const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.4, -0.01);
   const auto r = element.evaluate(g, 3, cc::ContactHistory<1>{});  // committed: open
   EXPECT_EQ(r.status, ContactStatus::Stick);
-  EXPECT_EQ(r.tangentialTraction, 0.0);
+  EXPECT_EQ(r.tangentialTraction[0], 0.0);
   EXPECT_EQ(r.trial.segment, 3);
   EXPECT_NEAR(r.trial.xi[0], 0.4, 1e-12);  // the stick reference point of the next increment
   const Mat6 fd = finiteDifferenceTangent(element, g, cc::ContactHistory<1>{}, kFdStep);
   EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
 }
 
-TEST(NodeToSegmentContact2D, TrialHistoryAccumulatesSlipAndCommitsThroughTheStore) {
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2});
+TEST(NodeToFacetContactLine2, TrialHistoryAccumulatesSlipAndCommitsThroughTheStore) {
+  const Element element({1e3, 5e2, 0.2});
   cc::ContactHistoryStore<1> store(1);
   store.setTrial(0, inContact(7, -0.5, 0.0, ContactStatus::Stick));
   store.commit();
   // ‖ā_1‖ = 1: sliding from ξ = −0.5 to 0.3 is 0.8 of arc length, eq. (7).
   const auto r = element.evaluate(slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.3, -0.01), 7, store.committed(0));
   EXPECT_EQ(r.status, ContactStatus::Slip);
-  EXPECT_NEAR(std::abs(r.tangentialTraction), 0.2 * 10.0, 1e-12);
+  EXPECT_NEAR(std::abs(r.tangentialTraction[0]), 0.2 * 10.0, 1e-12);
   EXPECT_NEAR(r.trial.accumulatedSlip, 0.8, 1e-12);
   store.setTrial(0, r.trial);
   EXPECT_EQ(store.committed(0).accumulatedSlip, 0.0);  // updated at commit only
@@ -351,29 +356,29 @@ TEST(NodeToSegmentContact2D, TrialHistoryAccumulatesSlipAndCommitsThroughTheStor
   EXPECT_NEAR(store.committed(0).xi[0], 0.3, 1e-12);
 }
 
-TEST(NodeToSegmentContact2D, RejectsAHistoryLeftOnAnotherSegment) {
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2});
+TEST(NodeToFacetContactLine2, RejectsAHistoryLeftOnAnotherSegment) {
+  const Element element({1e3, 5e2, 0.2});
   const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.3, -0.01);
   EXPECT_THROW(element.evaluate(g, 8, inContact(7, 0.0, 0.0, ContactStatus::Stick)), std::logic_error);
 }
 
-TEST(NodeToSegmentContact2D, StickingNodeCrossingAVertexKeepsItsTraction) {
-  // Two collinear segments of different lengths vs one long segment: after transferHistory2D the
+TEST(NodeToFacetContactLine2, StickingNodeCrossingAVertexKeepsItsTraction) {
+  // Two collinear segments of different lengths vs one long segment: after transferHistory the
   // physical tangential traction t_T1/‖ā_1‖ is the same as on the single segment.
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 50.0});
+  const Element element({1e3, 5e2, 50.0});
   const cc::MasterSegment2D right{0, {0, 1}, {{{3.0, 0.0}, {1.0, 0.0}}}};
   const cc::MasterSegment2D left{1, {1, 2}, {{{1.0, 0.0}, {-3.0, 0.0}}}};
   const cc::MasterSegment2D whole{2, {0, 2}, {{{3.0, 0.0}, {-3.0, 0.0}}}};
   // Committed: stuck at x = 1.4 with a physical traction of 0.6.
   const auto onRight = inContact(0, 0.6, 0.6 * 1.0, ContactStatus::Stick);
   const auto onWhole = inContact(2, -1.4 / 3.0, 0.6 * 3.0, ContactStatus::Stick);
-  const auto transferred = cc::transferHistory2D(onRight, right, left);
-  const cc::NodeToSegmentGeometry2D now{{0.9, -0.01}, left.x};  // slid across the vertex at x = 1
+  const auto transferred = cc::transferHistory(onRight, right, left);
+  const Geometry now{{0.9, -0.01}, left.x};  // slid across the vertex at x = 1
   const auto a = element.evaluate(now, 1, transferred);
   const auto b = element.evaluate({{0.9, -0.01}, whole.x}, 2, onWhole);
   ASSERT_EQ(a.status, ContactStatus::Stick);
   ASSERT_EQ(b.status, ContactStatus::Stick);
-  EXPECT_NEAR(a.tangentialTraction / 2.0, b.tangentialTraction / 3.0, 1e-10);
+  EXPECT_NEAR(a.tangentialTraction[0] / 2.0, b.tangentialTraction[0] / 3.0, 1e-10);
   EXPECT_NEAR(a.slaveForce()[0], b.slaveForce()[0], 1e-10);
   EXPECT_NEAR(a.slaveForce()[1], b.slaveForce()[1], 1e-10);
 }
@@ -405,7 +410,7 @@ Vec6 solve(Mat6 a, Vec6 b) {  // Gaussian elimination with partial pivoting
 
 /// Residual norms of Newton on R(x) = k (x − X) + r_c(x) − F.
 std::vector<double> newtonHistory(cc::TangentTerms terms) {
-  const cc::NodeToSegmentContact2D element({1e3, 5e2, 0.2}, terms);
+  const Element element({1e3, 5e2, 0.2}, terms);
   const Vec6 reference{0.3, -0.005, 1.0, 0.0, -1.0, 0.0};
   const Vec6 force{3.0, -8.0, 0.0, 0.0, 0.0, 0.0};  // presses and drags the slave: slips
   const double spring = 40.0;
@@ -430,7 +435,7 @@ std::vector<double> newtonHistory(cc::TangentTerms terms) {
 
 }  // namespace
 
-TEST(NodeToSegmentContact2D, ConsistentTangentGivesQuadraticNewtonConvergence) {
+TEST(NodeToFacetContactLine2, ConsistentTangentGivesQuadraticNewtonConvergence) {
   const auto consistent = newtonHistory(cc::TangentTerms::Consistent);
   const auto paper = newtonHistory(cc::TangentTerms::PaperMainTerms);
   for (double v : consistent) std::printf("[ Newton   ] consistent %.3e\n", v);

@@ -1,0 +1,121 @@
+#pragma once
+// The node-to-facet penalty contact element with Coulomb friction, for any master facet of
+// MasterFacet.hpp: one slave node k and the kNodes nodes of its master facet, kDofs = kSpaceDim·(1 + kNodes)
+// dofs ordered [x^k, x_1, …, x_kNodes] (2D node-to-segment: 6 dofs; 3D node-to-face on a 4-node face: 15).
+// It returns the contact residual and its consistent tangent for the current positions x = X + u and
+// the committed history, in the paper's surface notation (eq. 1–9, 14–27).
+#include "contact/ContactLawParameters.hpp"
+#include "contact/CoulombReturnMapping.hpp"
+#include "contact/PenaltyNormalLaw.hpp"
+#include "contact/Projection.hpp"
+
+namespace contessa::contact {
+
+/// Current positions of the slave node and of the master facet's nodes, in the facet's node order (see
+/// the facet for the orientation that makes n̄ the outward normal of the master body).
+template <class Facet>
+struct NodeToFacetGeometry {
+  typename Facet::Point slave{};
+  std::array<typename Facet::Point, Facet::kNodes> master{};
+};
+
+/// Which tangent to build. Consistent is the exact derivative of the residual (quadratic Newton);
+/// PaperMainTerms keeps only eq. (24)–(26), for comparison and verification.
+enum class TangentTerms { Consistent, PaperMainTerms };
+
+/// The tangential stiffness of a slipping node along its slip direction. Consistent: eq. (27) (zero along
+/// the slip, the stick stiffness across it). Secant: a given stiffness along the slip instead, for a node
+/// whose slip direction flips between Newton iterates (SlipReversalDamping): the secant of the traction
+/// between the two states of the cycle, so the step lands between them, in the stick range, instead of
+/// jumping across it. The residual, hence the converged answer, is the same either way.
+///
+/// The stiffness is ∂t_T/∂ξ along the slip in the facet's coordinates: with the slip direction
+/// s_α = n^trial_α/|n^trial| (covariant components normalised in the parent coordinates; s_1 = ±1 with one
+/// surface coordinate, where the stiffness is ∂t_T1/∂ξ̄), ∂t_α/∂Δξ^β becomes
+///   ∂t_α/∂Δξ^β + (k − s_γ ∂t_γ/∂Δξ^δ s_δ) s_α s_β,   k = min(stiffness, ε_T s_γ ā_γδ s_δ),
+/// capped by the stick stiffness along the same direction.
+struct SlipTangent {
+  bool secant = false;
+  double stiffness = 0.0;  ///< ∂t_T/∂ξ along the slip used when `secant`
+
+  static SlipTangent consistent() { return {}; }
+  static SlipTangent secantOf(double stiffness) { return {true, stiffness}; }
+};
+
+template <class Facet>
+struct NodeToFacetResult {
+  static constexpr int kSurfaceDim = Facet::kSurfaceDim;
+  static constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
+
+  ProjectionResult<Facet> projection{};        ///< ξ̄, ā_α, ā_αβ, n̄, g_N on the facet (unclamped)
+  ContactStatus status = ContactStatus::Open;  ///< Open, Stick or Slip at this iterate
+  double normalTraction = 0.0;                 ///< t_N = ε_N g_N, eq. (16)
+  Vector<kSurfaceDim> tangentialTraction{};    ///< t_Tα, covariant, eq. (22)
+  ReturnMappingResult<kSurfaceDim> friction{}; ///< trial state of eq. (20)–(23), when evaluated
+  Vector<kDofs> residual{};                    ///< r_c = t_N ∂g_N/∂u + t_Tα ∂ξ̄^α/∂u
+  Matrix<kDofs, kDofs> tangent{};              ///< K_c = ∂r_c/∂u
+  ContactHistory<kSurfaceDim> trial{};         ///< trial history to store for this slave node
+
+  /// Force exerted by the contact on the slave node, −r_c[0..kSpaceDim); along +n̄ when penetrating.
+  typename Facet::Point slaveForce() const {
+    typename Facet::Point f{};
+    for (int c = 0; c < Facet::kSpaceDim; ++c) f[c] = -residual[c];
+    return f;
+  }
+};
+
+/// Node-to-facet contact element.
+///
+/// Kinematics (eq. 1–5 at the converged projection, where x^k − x̄ = g_N n̄). With the operators
+/// (each a kDofs column: a slave block, then one block per master node i; H_i = H_i(ξ̄))
+///   N   = [ n̄;   −H_i n̄ ]        T_α = [ ā_α; −H_i ā_α ]        D^α = ā^αβ T_β         (eq. 26)
+///   N̄_α = [ 0;  H_i,α n̄ ]        (N̄_α·δu = n̄·δā_α at fixed ξ: the master nodes tilt the facet)
+/// and the curvature b̄_αβ = x̄,αβ·n̄, the exact first variations are
+///   ∂g_N/∂u = N,     ∂ξ̄^α/∂u = Ξ^α = (A⁻¹)^αβ (T_β + g_N N̄_β),     A_αβ = ā_αβ − g_N b̄_αβ.
+/// (Straight segment: b̄ = 0, Ξ = D + g_N ā^11 N̄_1; flat parallelogram: b̄ = 0 too; a warped 4-node face
+/// has b̄_12 ≠ 0.)
+///
+/// Residual (virtual work of the tractions of eq. 14, 16, 22: t_T·δg_T = t_Tα ā^α·ā_β δξ^β = t_Tα δξ^α):
+///   r_c = t_N N + t_Tα Ξ^α.
+/// It is added to the internal forces: R(u) = f_int + r_c − f_ext, K = ∂R/∂u. Since t_N < 0 in contact,
+/// the force on the slave node, −r_c = ε_N|g_N| n̄ + …, pushes it out.
+///
+/// Tangent (docs/theory-contact.md §6 has the derivation):
+///   K_c = ε_N N Nᵀ + t_N ∂²g_N/∂u² + Ξ^α (dt_Tα/du)ᵀ + t_Tα ∂²ξ̄^α/∂u²,
+/// where dt_Tα/du is the return mapping's linearisation (∂t/∂Δξ, ∂t/∂ā_βγ, ∂t/∂t_N) chained with Ξ, the
+/// total variation of ā_βγ and ε_N N. TangentTerms::PaperMainTerms keeps ε_N N Nᵀ + D^α (∂t_α/∂Δξ^β D^β +
+/// ∂t_α/∂t_N ε_N N)ᵀ only, which is eq. (24) + (25) in stick and (24) + (26) in slip.
+///
+/// History: the element reads the committed history of the node on THIS facet (after a facet change,
+/// first map it with transferHistory) and returns the trial history. A node whose committed status is
+/// Open is a first contact: its stick reference point is the current ξ̄ and it carries no tangential
+/// traction in this increment (friction starts from the first converged contact point).
+template <class Facet>
+class NodeToFacetContact {
+ public:
+  static constexpr int kSurfaceDim = Facet::kSurfaceDim;
+  static constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
+  using Geometry = NodeToFacetGeometry<Facet>;
+  using Result = NodeToFacetResult<Facet>;
+
+  explicit NodeToFacetContact(const ContactLawParameters& parameters, TangentTerms terms = TangentTerms::Consistent);
+
+  /// Residual, tangent and trial history for the current positions `x` on master facet `facet`.
+  /// `facetLength` is L_k, the mean size of the slave facets at the node (reference configuration): the
+  /// length the slip tolerance refers to (ε_T = μ|t_N|/(s L_k), ContactLawParameters); unused when s = 0.
+  Result evaluate(const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed,
+                  double facetLength = 0.0, SlipTangent slipTangent = SlipTangent::consistent()) const;
+
+  const ContactLawParameters& parameters() const { return parameters_; }
+
+ private:
+  ContactLawParameters parameters_;
+  TangentTerms terms_;
+  PenaltyNormalLaw normalLaw_;
+  CoulombReturnMapping<kSurfaceDim> returnMapping_;
+};
+
+extern template class NodeToFacetContact<Line2Facet>;
+extern template class NodeToFacetContact<Quad4Facet>;
+
+}  // namespace contessa::contact

@@ -1,0 +1,271 @@
+#include "mesh/GmshMeshReader.hpp"
+
+#include <gmsh.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "common/Error.hpp"
+#include "mesh/MemoryEstimate.hpp"
+
+namespace contessa::mesh {
+namespace {
+
+// Gmsh element type numbers (its MSH format's): 2-node line, 4-node quadrilateral, 8-node hexahedron.
+constexpr int kGmshLine2 = 1, kGmshQuad4 = 3, kGmshHex8 = 5;
+
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
+
+// The Gmsh library is one global state: initialised silently (no configuration files, nothing
+// printed: General.Terminal = 0) for one read, finalised whatever happens.
+class GmshSession {
+ public:
+  GmshSession() {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshSession() { gmsh::finalize(); }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+struct Group {
+  int dim = 0, tag = 0;
+  std::string name;
+};
+
+class Reader {
+ public:
+  explicit Reader(std::string path) : path_(std::move(path)) {}
+
+  Mesh read() {
+    requireReadableMshFile();
+    GmshSession session;
+    try {
+      gmsh::open(path_);
+      return build();
+    } catch (const std::string& gmshError) {  // how the Gmsh 4.8 API reports an error
+      throw InputError(path_ + ": not a readable Gmsh file (" + oneLine(gmshError) + ")");
+    }
+  }
+
+ private:
+  // Gmsh chooses its reader by the extension (and would run a .geo script): only .msh is read.
+  void requireReadableMshFile() const {
+    struct stat info {};
+    requireInput(::stat(path_.c_str(), &info) == 0, path_ + ": the mesh file does not exist");
+    requireInput(S_ISREG(info.st_mode), path_ + ": not a readable Gmsh file (it is not a regular file)");
+    requireInput(info.st_size > 0, path_ + ": not a readable Gmsh file (it is empty)");
+    const bool msh = path_.size() > 4 && path_.compare(path_.size() - 4, 4, ".msh") == 0;
+    requireInput(msh, path_ + ": not a Gmsh mesh file (expected the extension .msh)");
+  }
+
+  Mesh build() {
+    std::vector<std::pair<int, int>> dimTags;
+    gmsh::model::getPhysicalGroups(dimTags);
+    int d = 0;
+    for (const auto& [dim, tag] : dimTags) d = std::max(d, dim);
+    requireInput(d >= 2, path_ + ": no physical surface or volume (Contessa makes its element blocks from the " +
+                             "physical groups of the mesh's dimension: add e.g. Physical Volume(\"body\") = {1}; to the .geo)");
+    std::vector<Group> groups;
+    for (const auto& [dim, tag] : dimTags) {
+      Group g{dim, tag, ""};
+      gmsh::model::getPhysicalName(dim, tag, g.name);
+      if (g.name.empty()) {
+        static const char* kWords[] = {"point", "curve", "surface", "volume"};
+        g.name = std::string(kWords[dim]) + "_" + std::to_string(tag);
+      }
+      groups.push_back(g);
+    }
+
+    Mesh mesh;
+    mesh.dimension = d;
+    readBlocks(mesh, groups);
+    readNodes(mesh);
+    for (const Group& g : groups)
+      if (g.dim == d - 1) readSideSet(mesh, g);
+    for (const Group& g : groups)
+      if (g.dim < d) readNodeSet(mesh, g);
+    mesh.validate(path_);
+    return mesh;
+  }
+
+  // Elements (type, tags, node tags) of every entity of group g.
+  template <class F>
+  void forElements(const Group& g, F&& f) const {
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(g.dim, g.tag, entities);
+    for (int entity : entities) {
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> tags, nodes;
+      gmsh::model::mesh::getElements(types, tags, nodes, g.dim, entity);
+      for (size_t t = 0; t < types.size(); ++t) f(types[t], tags[t], nodes[t]);
+    }
+  }
+
+  std::string typeName(int type) const {
+    std::string name;
+    int dim = 0, order = 0, numNodes = 0, numPrimary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, numNodes, local, numPrimary);
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+    return name;
+  }
+
+  void requireType(int type, int expected, const Group& g) const {
+    requireInput(type == expected, path_ + ": element type '" + typeName(type) + "' in physical group '" + g.name +
+                                       "' is not supported (Contessa reads 4-node quadrilaterals and 8-node hexahedra)");
+  }
+
+  void readBlocks(Mesh& mesh, const std::vector<Group>& groups) {
+    const int d = mesh.dimension;
+    const CellType cell = d == 3 ? CellType::Hex8 : CellType::Quad4;
+    const int nn = nodesPerCell(cell);
+    std::map<std::size_t, std::string> blockOf;  // Gmsh element tag → block, to find one in two blocks
+    GlobalIndex next = 0;
+    for (const Group& g : groups) {
+      if (g.dim != d) continue;
+      ElementBlock block;
+      block.name = g.name;
+      block.cellType = cell;
+      forElements(g, [&](int type, const std::vector<std::size_t>& tags, const std::vector<std::size_t>& nodes) {
+        requireType(type, d == 3 ? kGmshHex8 : kGmshQuad4, g);
+        for (size_t e = 0; e < tags.size(); ++e) {
+          auto [it, inserted] = blockOf.emplace(tags[e], g.name);
+          requireInput(inserted, path_ + ": element " + std::to_string(tags[e]) + " is in physical groups '" +
+                                     it->second + "' and '" + g.name + "'; an element belongs to one block");
+          block.elements.push_back(next++);
+          // Gmsh's node order of these cells is Exodus' (bottom face counter-clockwise, then top).
+          for (int a = 0; a < nn; ++a) block.connectivity.push_back(static_cast<GlobalIndex>(nodes[nn * e + a]));
+        }
+      });
+      mesh.blocks.push_back(std::move(block));
+    }
+  }
+
+  // Keeps the nodes of block elements, numbered by ascending Gmsh tag; connectivity still holds tags.
+  void readNodes(Mesh& mesh) {
+    for (const auto& b : mesh.blocks)
+      for (GlobalIndex tag : b.connectivity) used_.push_back(static_cast<std::size_t>(tag));
+    std::sort(used_.begin(), used_.end());
+    used_.erase(std::unique(used_.begin(), used_.end()), used_.end());
+    MeshSize size;
+    size.nodes = static_cast<double>(used_.size());
+    size.elements = static_cast<double>(mesh.numElements());
+    size.dimension = mesh.dimension;
+    size.nodesPerElement = mesh.dimension == 2 ? 4 : 8;
+    requireRunFits(size, path_, "use a coarser mesh or a machine with more memory");
+
+    std::vector<std::size_t> tags;
+    std::vector<double> xyz, parametric;
+    gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+    const int d = mesh.dimension;
+    mesh.coordinates.assign(d * used_.size(), 0.0);
+    double extent = 0;
+    for (size_t k = 0; k < tags.size(); ++k) {
+      const GlobalIndex n = index(tags[k]);
+      if (n < 0) continue;
+      for (int i = 0; i < d; ++i) mesh.coordinates[d * n + i] = xyz[3 * k + i];
+      for (int i = 0; i < 3; ++i) extent = std::max(extent, std::abs(xyz[3 * k + i]));
+    }
+    if (d == 2)
+      for (size_t k = 0; k < tags.size(); ++k)
+        requireInput(index(tags[k]) < 0 || std::abs(xyz[3 * k + 2]) <= 1e-12 * extent,
+                     path_ + ": node " + std::to_string(tags[k]) + " has z = " + std::to_string(xyz[3 * k + 2]) +
+                         "; a 2D mesh must lie in the plane z = 0");
+    for (auto& b : mesh.blocks)
+      for (GlobalIndex& n : b.connectivity) n = index(static_cast<std::size_t>(n));
+  }
+
+  // Contessa's node number of a Gmsh node tag, −1 for a node of no block element.
+  GlobalIndex index(std::size_t tag) const {
+    auto it = std::lower_bound(used_.begin(), used_.end(), tag);
+    return it != used_.end() && *it == tag ? static_cast<GlobalIndex>(it - used_.begin()) : -1;
+  }
+
+  GlobalIndex requireNode(std::size_t tag, const Group& g) const {
+    const GlobalIndex n = index(tag);
+    requireInput(n >= 0, path_ + ": physical group '" + g.name + "' holds node " + std::to_string(tag) +
+                             ", which is in no element of the blocks (the physical groups of the mesh's dimension)");
+    return n;
+  }
+
+  using FaceKey = std::array<GlobalIndex, 4>;  // sorted node numbers; −1 pads the 2-node sides of 2D
+
+  static FaceKey key(std::vector<GlobalIndex> nodes) {
+    std::sort(nodes.begin(), nodes.end());
+    FaceKey k{-1, -1, -1, -1};
+    std::copy(nodes.begin(), nodes.end(), k.begin());
+    return k;
+  }
+
+  // Every side of every block element by its nodes (built once, when a side set needs it).
+  void buildFaces(const Mesh& mesh) {
+    if (sidesBuilt_) return;
+    sidesBuilt_ = true;
+    for (const auto& b : mesh.blocks) {
+      const int nn = nodesPerCell(b.cellType);
+      for (size_t e = 0; e < b.elements.size(); ++e)
+        for (int s = 0; s < numSides(b.cellType); ++s) {
+          std::vector<GlobalIndex> nodes;
+          for (int a : sideNodes(b.cellType, s)) nodes.push_back(b.connectivity[nn * e + a]);
+          faces_.emplace(key(nodes), std::make_pair(b.elements[e], s));
+        }
+    }
+  }
+
+  void readSideSet(Mesh& mesh, const Group& g) {
+    buildFaces(mesh);
+    const int nn = mesh.dimension == 3 ? 4 : 2;
+    SideSet set;
+    set.name = g.name;
+    forElements(g, [&](int type, const std::vector<std::size_t>&, const std::vector<std::size_t>& nodes) {
+      requireType(type, mesh.dimension == 3 ? kGmshQuad4 : kGmshLine2, g);
+      for (size_t f = 0; f < nodes.size() / nn; ++f) {
+        std::vector<GlobalIndex> face;
+        for (int a = 0; a < nn; ++a) face.push_back(requireNode(nodes[nn * f + a], g));
+        // A boundary face bounds one element; a face shared by two is inside the mesh, which
+        // Mesh::validate reports (naming the set and both elements) when the first is listed.
+        auto it = faces_.find(key(face));
+        requireInput(it != faces_.end(), path_ + ": physical group '" + g.name + "' holds a " +
+                                             (nn == 4 ? "face" : "line") + " (nodes " + std::to_string(nodes[nn * f]) +
+                                             ", ...) that is not a side of any element of the blocks");
+        set.elements.push_back(it->second.first);
+        set.sides.push_back(it->second.second);
+      }
+    });
+    mesh.sideSets.push_back(std::move(set));
+  }
+
+  void readNodeSet(Mesh& mesh, const Group& g) {
+    NodeSet set;
+    set.name = g.name;
+    forElements(g, [&](int, const std::vector<std::size_t>&, const std::vector<std::size_t>& nodes) {
+      for (std::size_t tag : nodes) set.nodes.push_back(requireNode(tag, g));
+    });
+    std::sort(set.nodes.begin(), set.nodes.end());
+    set.nodes.erase(std::unique(set.nodes.begin(), set.nodes.end()), set.nodes.end());
+    mesh.nodeSets.push_back(std::move(set));
+  }
+
+  std::string path_;
+  std::vector<std::size_t> used_;
+  std::multimap<FaceKey, std::pair<GlobalIndex, int>> faces_;
+  bool sidesBuilt_ = false;
+};
+
+}  // namespace
+
+Mesh readGmshMesh(const std::string& path) { return Reader(path).read(); }
+
+}  // namespace contessa::mesh

@@ -1,0 +1,340 @@
+// Mesh source registry: one row per generator or file reader (name, description, parameters, build).
+#include "mesh/MeshFactory.hpp"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "common/Error.hpp"
+#include "mesh/ExodusMeshReader.hpp"
+#include "mesh/GmshMeshReader.hpp"
+#include "mesh/Generators.hpp"
+
+namespace contessa::mesh {
+namespace {
+
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+// Publishing helpers: the validator enforces the range (the deck's validateAndSetDefaults reports a
+// violation with the parameter's path) and the doc string states it for the deck reference.
+void setPositive(ParameterList& p, const std::string& name, double value, const std::string& doc) {
+  auto v = rcp(new Teuchos::EnhancedNumberValidator<double>());
+  v->setMin(std::nextafter(0.0, 1.0));
+  p.set(name, value, doc + " (> 0)", v);
+}
+
+void setPositiveInt(ParameterList& p, const std::string& name, int value, const std::string& doc) {
+  auto v = rcp(new Teuchos::EnhancedNumberValidator<int>());
+  v->setMin(1);
+  p.set(name, value, doc + " (>= 1)", v);
+}
+
+void setChoice(ParameterList& p, const std::string& name, const std::string& value,
+               const std::vector<std::string>& choices, const std::string& doc) {
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
+  p.set(name, value, doc + " (one of: " + list + ")",
+        rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(choices.begin(), choices.end()))));
+}
+
+// Generators say which parameter is wrong; the deck path is added here.
+template <class F>
+Mesh generate(const std::string& where, F&& make) {
+  try {
+    return make();
+  } catch (const InputError& e) {
+    throw InputError(where + "/" + e.what());
+  }
+}
+
+// ---- Rectangle (Quad4) ----
+
+RCP<ParameterList> rectangleParameters() {
+  auto p = rcp(new ParameterList("Rectangle"));
+  p->set("X Origin", 0.0, "x of the lower-left corner");
+  p->set("Y Origin", 0.0, "y of the lower-left corner");
+  setPositive(*p, "Length X", 1.0, "Width");
+  setPositive(*p, "Length Y", 1.0, "Height");
+  setPositiveInt(*p, "Elements X", 1, "Elements along x");
+  setPositiveInt(*p, "Elements Y", 1, "Elements along y");
+  setPositive(*p, "Bias X", 1.0, "Last over first element width along x (geometric grading; 1 = uniform)");
+  setPositive(*p, "Bias Y", 1.0, "Last over first element height along y (geometric grading; 1 = uniform)");
+  p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: left, right, bottom, top (node set 'all' too)");
+  return p;
+}
+
+Mesh createRectangle(const ParameterList& list, const std::string& where, const std::string&) {
+  RectangleSpec s;
+  s.x0 = list.get<double>("X Origin");
+  s.y0 = list.get<double>("Y Origin");
+  s.lx = list.get<double>("Length X");
+  s.ly = list.get<double>("Length Y");
+  s.nx = list.get<int>("Elements X");
+  s.ny = list.get<int>("Elements Y");
+  s.biasX = list.get<double>("Bias X");
+  s.biasY = list.get<double>("Bias Y");
+  s.blockName = list.get<std::string>("Block Name");
+  return generate(where, [&] { return generateRectangle(s); });
+}
+
+// ---- Annulus Sector (Quad4) and its extrusion, Hollow Cylinder Sector (Hex8) ----
+
+void addAnnulusSectorParameters(ParameterList& p) {
+  setPositive(p, "Inner Radius", 100.0, "Inner radius, centre at the origin");
+  setPositive(p, "Thickness", 20.0, "Wall thickness (outer radius = inner radius + thickness)");
+  p.set("Start Angle", 0.0, "Start angle in degrees, counter-clockwise from +x");
+  p.set("End Angle", 90.0, "End angle in degrees (> Start Angle)");
+  setPositiveInt(p, "Elements Through Thickness", 13, "Elements across the wall");
+  setPositiveInt(p, "Elements Around Arc", 101, "Elements along the arc");
+  setPositive(p, "Radial Bias", 1.0, "Outermost over innermost element thickness (geometric grading; 1 = uniform)");
+  setPositive(p, "Arc Bias", 1.0, "Last over first element angle along the arc (geometric grading; 1 = uniform)");
+}
+
+void addBlockName(ParameterList& p, const std::string& setNames) {
+  p.set("Block Name", std::string("block_1"), "Element block name; node/side sets: " + setNames + " (node set 'all' too)");
+}
+
+AnnulusSectorSpec annulusSectorSpec(const ParameterList& list) {
+  AnnulusSectorSpec s;
+  s.innerRadius = list.get<double>("Inner Radius");
+  s.thickness = list.get<double>("Thickness");
+  s.startAngleDeg = list.get<double>("Start Angle");
+  s.endAngleDeg = list.get<double>("End Angle");
+  s.elementsThroughThickness = list.get<int>("Elements Through Thickness");
+  s.elementsAroundArc = list.get<int>("Elements Around Arc");
+  s.radialBias = list.get<double>("Radial Bias");
+  s.arcBias = list.get<double>("Arc Bias");
+  s.blockName = list.get<std::string>("Block Name");
+  return s;
+}
+
+RCP<ParameterList> annulusSectorParameters() {
+  auto p = rcp(new ParameterList("Annulus Sector"));
+  addAnnulusSectorParameters(*p);
+  addBlockName(*p, "inner, outer, start, end");
+  return p;
+}
+
+Mesh createAnnulusSector(const ParameterList& list, const std::string& where, const std::string&) {
+  const AnnulusSectorSpec s = annulusSectorSpec(list);
+  return generate(where, [&] { return generateAnnulusSector(s); });
+}
+
+RCP<ParameterList> hollowCylinderSectorParameters() {
+  auto p = rcp(new ParameterList("Hollow Cylinder Sector"));
+  addAnnulusSectorParameters(*p);
+  p->set("Z Origin", 0.0, "z of the back face");
+  setPositive(*p, "Length Z", 10.0, "Length along the axis (z)");
+  setPositiveInt(*p, "Elements Z", 1, "Layers of elements along the axis");
+  setPositive(*p, "Bias Z", 1.0, "Last over first layer thickness along z (geometric grading; 1 = uniform)");
+  addBlockName(*p, "inner, outer, start, end, back (z = Z Origin), front (z = Z Origin + Length Z)");
+  return p;
+}
+
+Mesh createHollowCylinderSector(const ParameterList& list, const std::string& where, const std::string&) {
+  HollowCylinderSectorSpec s;
+  s.section = annulusSectorSpec(list);
+  s.z0 = list.get<double>("Z Origin");
+  s.length = list.get<double>("Length Z");
+  s.layers = list.get<int>("Elements Z");
+  s.axialBias = list.get<double>("Bias Z");
+  return generate(where, [&] { return generateHollowCylinderSector(s); });
+}
+
+// ---- Box (Hex8) ----
+
+RCP<ParameterList> boxParameters() {
+  auto p = rcp(new ParameterList("Box"));
+  p->set("X Origin", 0.0, "x of the corner with the smallest coordinates");
+  p->set("Y Origin", 0.0, "y of that corner");
+  p->set("Z Origin", 0.0, "z of that corner");
+  setPositive(*p, "Length X", 1.0, "Size along x");
+  setPositive(*p, "Length Y", 1.0, "Size along y");
+  setPositive(*p, "Length Z", 1.0, "Size along z");
+  setPositiveInt(*p, "Elements X", 1, "Elements along x");
+  setPositiveInt(*p, "Elements Y", 1, "Elements along y");
+  setPositiveInt(*p, "Elements Z", 1, "Elements along z");
+  setPositive(*p, "Bias X", 1.0, "Last over first element size along x (geometric grading; 1 = uniform)");
+  setPositive(*p, "Bias Y", 1.0, "Last over first element size along y (geometric grading; 1 = uniform)");
+  setPositive(*p, "Bias Z", 1.0, "Last over first element size along z (geometric grading; 1 = uniform)");
+  p->set("Block Name", std::string("block_1"),
+         "Element block name; node/side sets: left, right (x), bottom, top (y), back, front (z) (node set 'all' too)");
+  return p;
+}
+
+Mesh createBox(const ParameterList& list, const std::string& where, const std::string&) {
+  BoxSpec s;
+  s.x0 = list.get<double>("X Origin");
+  s.y0 = list.get<double>("Y Origin");
+  s.z0 = list.get<double>("Z Origin");
+  s.lx = list.get<double>("Length X");
+  s.ly = list.get<double>("Length Y");
+  s.lz = list.get<double>("Length Z");
+  s.nx = list.get<int>("Elements X");
+  s.ny = list.get<int>("Elements Y");
+  s.nz = list.get<int>("Elements Z");
+  s.biasX = list.get<double>("Bias X");
+  s.biasY = list.get<double>("Bias Y");
+  s.biasZ = list.get<double>("Bias Z");
+  s.blockName = list.get<std::string>("Block Name");
+  return generate(where, [&] { return generateBox(s); });
+}
+
+// ---- Sphere Octant (Hex8) ----
+
+RCP<ParameterList> sphereOctantParameters() {
+  auto p = rcp(new ParameterList("Sphere Octant"));
+  setPositive(*p, "Radius", 50.0, "Sphere radius");
+  p->set("X Center", 0.0, "x of the sphere's centre");
+  p->set("Y Center", 0.0, "y of the sphere's centre");
+  p->set("Z Center", 0.0, "z of the sphere's centre");
+  setChoice(*p, "Pole Direction", "-z", {"-z", "+z", "-x", "+x", "-y", "+y"},
+            "Direction from the centre to the pole (the contact point): the octant lies on that side of the "
+            "equator plane and on the + side of the two symmetry planes");
+  setPositiveInt(*p, "Elements Along Edge", 4, "Elements along each edge of the inner cube and of each surface patch");
+  setPositiveInt(*p, "Elements Through Shell", 4, "Element layers between the inner cube and the sphere");
+  setPositive(*p, "Inner Cube Fraction", 0.5, "Edge of the inner cube over the radius (< 1/sqrt(3))");
+  setPositive(*p, "Pole Bias", 1.0,
+              "Element size far from the pole over that at the pole, along the pole patch's edges (> 1 refines "
+              "near the pole; 1 = equiangular)");
+  setPositive(*p, "Radial Bias", 1.0,
+              "Outermost over innermost shell layer thickness (< 1 refines towards the surface; 1 = uniform)");
+  p->set("Block Name", std::string("block_1"),
+         "Element block name; node/side sets: surface, equator, symmetry_<axis> for the two other axes (node "
+         "sets 'pole' and 'all' too)");
+  return p;
+}
+
+Mesh createSphereOctant(const ParameterList& list, const std::string& where, const std::string&) {
+  SphereOctantSpec s;
+  s.radius = list.get<double>("Radius");
+  s.center[0] = list.get<double>("X Center");
+  s.center[1] = list.get<double>("Y Center");
+  s.center[2] = list.get<double>("Z Center");
+  s.poleDirection = list.get<std::string>("Pole Direction");
+  s.elementsAlongEdge = list.get<int>("Elements Along Edge");
+  s.elementsThroughShell = list.get<int>("Elements Through Shell");
+  s.innerCubeFraction = list.get<double>("Inner Cube Fraction");
+  s.poleBias = list.get<double>("Pole Bias");
+  s.radialBias = list.get<double>("Radial Bias");
+  s.blockName = list.get<std::string>("Block Name");
+  return generate(where, [&] { return generateSphereOctant(s); });
+}
+
+// ---- Mesh files ----
+
+RCP<ParameterList> fileParameters(const std::string& name, const std::string& what) {
+  auto p = rcp(new ParameterList(name));
+  p->set("File Name", std::string(""), what + " (relative to the deck's directory); required");
+  return p;
+}
+
+// The file named by "File Name", relative to the deck's directory, which must exist.
+std::string meshFile(const ParameterList& list, const std::string& where, const std::string& directory,
+                     const std::string& what) {
+  std::string file = list.get<std::string>("File Name");
+  requireInput(!file.empty(), where + "/File Name: required (" + what + ")");
+  if (file.front() != '/' && !directory.empty()) file = directory + "/" + file;
+  requireInput(std::ifstream(file).good(), where + "/File Name: mesh file '" + file + "' does not exist");
+  return file;
+}
+
+RCP<ParameterList> exodusFileParameters() { return fileParameters("Exodus File", "Exodus II mesh file"); }
+
+Mesh createExodusFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+  return readExodusMesh(meshFile(list, where, directory, "an Exodus II mesh file"));
+}
+
+RCP<ParameterList> gmshFileParameters() { return fileParameters("Gmsh File", "Gmsh mesh file (.msh)"); }
+
+Mesh createGmshFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+  return readGmshMesh(meshFile(list, where, directory, "a Gmsh .msh file"));
+}
+
+// "Mesh File": the reader chosen by the file's extension.
+const struct {
+  const char* extension;
+  Mesh (*read)(const std::string&);
+} kReaders[] = {{".msh", &readGmshMesh}, {".exo", &readExodusMesh}, {".e", &readExodusMesh},
+                {".g", &readExodusMesh},  {".gen", &readExodusMesh}, {".ex2", &readExodusMesh}};
+
+RCP<ParameterList> meshFileParameters() {
+  return fileParameters("Mesh File", "Mesh file: .msh (Gmsh) or .exo, .e, .g, .gen, .ex2 (Exodus II)");
+}
+
+Mesh createMeshFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+  const std::string file = meshFile(list, where, directory, "a .msh or Exodus II mesh file");
+  std::string known;
+  for (const auto& r : kReaders) {
+    const std::string ext = r.extension;
+    if (file.size() > ext.size() && file.compare(file.size() - ext.size(), ext.size(), ext) == 0) return r.read(file);
+    known += (known.empty() ? "" : ", ") + ext;
+  }
+  throw InputError(where + "/File Name: '" + file + "' has none of the extensions " + known +
+                   " (or choose the reader with Type = Exodus File or Gmsh File)");
+}
+
+// ---- The registry ----
+
+struct MeshSourceEntry {
+  const char* name;
+  const char* description;
+  RCP<ParameterList> (*validParameters)();
+  Mesh (*create)(const ParameterList&, const std::string& where, const std::string& directory);
+};
+
+const std::array<MeshSourceEntry, 8> kRegistry = {{
+    {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters, &createRectangle},
+    {"Annulus Sector",
+     "A ring segment of QUAD4 (2D) centred at the origin, graded through the wall and along the arc",
+     &annulusSectorParameters, &createAnnulusSector},
+    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &boxParameters, &createBox},
+    {"Hollow Cylinder Sector",
+     "The Annulus Sector extruded along z into layers of HEX8 (3D); its first layer of nodes is the Annulus "
+     "Sector's (same numbers, same x and y), so one layer with u_z = 0 reproduces a plane-strain 2D run",
+     &hollowCylinderSectorParameters, &createHollowCylinderSector},
+    {"Sphere Octant",
+     "One eighth of a ball on HEX8 (3D) without degenerate elements (an inner cube and three shells reaching "
+     "the sphere, as a cube-sphere), for Hertz contact at its pole",
+     &sphereOctantParameters, &createSphereOctant},
+    {"Exodus File",
+     "An Exodus II mesh: QUAD4 or HEX8 element blocks, node sets and side sets with their names",
+     &exodusFileParameters, &createExodusFile},
+    {"Gmsh File",
+     "A Gmsh mesh (.msh): physical volumes (2D: surfaces) become HEX8 (QUAD4) element blocks, physical groups "
+     "one dimension lower side sets and node sets, physical points and curves node sets",
+     &gmshFileParameters, &createGmshFile},
+    {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension", &meshFileParameters,
+     &createMeshFile},
+}};
+
+const MeshSourceEntry& lookup(const std::string& type, const std::string& where = "") {
+  for (const auto& e : kRegistry)
+    if (type == e.name) return e;
+  std::string known;
+  for (const auto& e : kRegistry) known += (known.empty() ? "" : ", ") + std::string(e.name);
+  throw InputError((where.empty() ? "" : where + "/") + "Type: unknown mesh type '" + type + "' (known: " + known + ")");
+}
+
+}  // namespace
+
+std::vector<std::string> MeshFactory::names() {
+  std::vector<std::string> result;
+  for (const auto& e : kRegistry) result.emplace_back(e.name);
+  return result;
+}
+
+std::string MeshFactory::description(const std::string& type) { return lookup(type).description; }
+
+RCP<const ParameterList> MeshFactory::validParameters(const std::string& type) { return lookup(type).validParameters(); }
+
+Mesh MeshFactory::create(const std::string& type, const ParameterList& params, const std::string& where,
+                         const std::string& directory) {
+  return lookup(type, where).create(params, where, directory);
+}
+
+}  // namespace contessa::mesh

@@ -1,0 +1,35 @@
+#pragma once
+// Mesh sources by name ("Problem/Mesh/Type"): the inline generators and the mesh file readers, one
+// registry row each (MeshFactory.cpp) with the deck parameters it takes, their docs and defaults,
+// and the function that builds the mesh. The deck validates a Mesh list against validParameters
+// before create; the deck reference is generated from the same lists. Adding a mesh source = one
+// function that builds a Mesh + one row.
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "mesh/Mesh.hpp"
+
+namespace contessa::mesh {
+
+class MeshFactory {
+ public:
+  /// Registered types, e.g. "Rectangle", "Box", "Exodus File".
+  static std::vector<std::string> names();
+
+  /// What the type builds or reads, and the sets it defines (one paragraph, for the deck reference).
+  static std::string description(const std::string& type);
+
+  /// The type's parameters with docs and defaults, without "Type" itself. Throws InputError listing
+  /// the known names for an unknown type.
+  static Teuchos::RCP<const Teuchos::ParameterList> validParameters(const std::string& type);
+
+  /// Builds the mesh from `params` (validated against validParameters(type)). `where` is the deck
+  /// path of the list: a generator's InputError becomes "<where>/<parameter>: ...", a reader's names
+  /// the file. Relative file names are taken from `directory` (the deck's). The mesh is validated.
+  static Mesh create(const std::string& type, const Teuchos::ParameterList& params, const std::string& where,
+                     const std::string& directory);
+};
+
+}  // namespace contessa::mesh

@@ -1,0 +1,113 @@
+// What a results file holds besides the mesh and the fields: line blocks (rigid surfaces) with their
+// own nodes and no element variables, QA and information records, and the flush after every step.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+
+#include "io/ExodusResults.hpp"
+#include "io/ExodusWriter.hpp"
+#include "io/OutputWriteError.hpp"
+#include "mesh/Generators.hpp"
+
+using namespace contessa;
+using contessa::io::ExodusFields;
+using contessa::io::ExodusLineBlock;
+using contessa::io::ExodusRecords;
+using contessa::io::ExodusResults;
+using contessa::io::ExodusWriter;
+
+namespace {
+
+std::string tempPath(const std::string& stem) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "contessa_" + info->name() + "_" + stem + "_" + std::to_string(getpid()) + ".exo";
+}
+
+}  // namespace
+
+TEST(ExodusRecords, LongLinesAreSplitIntoEightyCharacterRecords) {
+  const std::string line(200, 'a');
+  const auto records = io::infoRecords({"short", "", line, std::string(80, 'b')});
+  ASSERT_EQ(records.size(), 6u);
+  EXPECT_EQ(records[0], "short");
+  EXPECT_EQ(records[1], "");
+  // 200 characters: 79 + "\", 79 + "\", the last 42.
+  EXPECT_EQ(records[2], std::string(79, 'a') + "\\");
+  EXPECT_EQ(records[3], std::string(79, 'a') + "\\");
+  EXPECT_EQ(records[4], std::string(42, 'a'));
+  EXPECT_EQ(records[5], std::string(80, 'b'));  // exactly 80 fits
+  for (const auto& r : records) EXPECT_LE(r.size(), 80u);
+  // Joined back, each line is whole again.
+  std::string joined;
+  for (int k = 2; k <= 4; ++k) joined += records[k].back() == '\\' ? records[k].substr(0, 79) : records[k];
+  EXPECT_EQ(joined, line);
+}
+
+TEST(ExodusRecords, LineBlocksRecordsAndGlobalsRoundTrip) {
+  mesh::RectangleSpec spec;
+  spec.nx = 2;
+  spec.ny = 1;
+  spec.blockName = "body";
+  const mesh::Mesh mesh = mesh::generateRectangle(spec);  // 6 nodes, 2 elements
+  const std::string path = tempPath("records");
+  ExodusFields fields;
+  fields.nodal = {"displ_x", "displ_y"};
+  fields.element = {"von_mises"};
+  fields.global = {"load_factor", "reaction_left_x", "contact_force_plate_y"};
+  ExodusRecords records;
+  records.title = "records test";
+  records.qa.push_back({"contessa", "1.2.3 a-very-long-git-description-that-is-cut", "2024/01/02", "03:04:05"});
+  records.info = {"first line", std::string(100, 'x')};
+  const std::vector<ExodusLineBlock> lines = {{"plate", {-1.0, 2.0, 0.0, 2.0, 3.0, 2.0}}};  // 3 points, 2 segments
+  {
+    ExodusWriter writer(path, mesh, fields, records, lines);
+    EXPECT_EQ(writer.numNodes(), 9);
+    for (int step = 0; step < 2; ++step) {
+      std::vector<std::vector<double>> nodal(2, std::vector<double>(9, 0.0));
+      for (int n = 0; n < 9; ++n) nodal[1][n] = -0.5 * step * (n >= 6 ? 1.0 : 0.1 * n);
+      writer.writeStep(0.5 * step, nodal, {{10.0 + step, 20.0 + step}}, {0.5 * step, -3.0 * step, 7.0 * step});
+    }
+    // Every step is on disk when writeStep returns: the number of steps a reader finds is known
+    // before the writer closes the file (checked across processes by tests/regression/output).
+    EXPECT_EQ(writer.stepsWritten(), 2);
+  }
+  const ExodusResults results(path);
+  EXPECT_EQ(results.numSteps(), 2);
+  EXPECT_EQ(results.numNodes(), 9);
+  EXPECT_EQ(results.blockNames(), (std::vector<std::string>{"body", "plate"}));
+  EXPECT_EQ(results.blockTypes(), (std::vector<std::string>{"QUAD4", "BAR2"}));
+  // The element variable lives on the mesh block only.
+  EXPECT_EQ(results.element("von_mises", 1), (std::vector<double>{11.0, 21.0}));
+  const auto uy = results.nodal("displ_y", 1);
+  ASSERT_EQ(uy.size(), 9u);
+  for (int n = 6; n < 9; ++n) EXPECT_EQ(uy[n], -0.5);
+  EXPECT_EQ(results.global("reaction_left_x", 1), -3.0);
+  EXPECT_EQ(results.global("contact_force_plate_y", 1), 7.0);
+  const auto qa = results.qaRecords();
+  ASSERT_EQ(qa.size(), 1u);
+  EXPECT_EQ(qa[0][0], "contessa");
+  EXPECT_EQ(qa[0][1], std::string("1.2.3 a-very-long-git-description-that-is-cut").substr(0, 32));
+  EXPECT_EQ(qa[0][2], "2024/01/02");
+  EXPECT_EQ(qa[0][3], "03:04:05");
+  const auto info = results.infoRecords();
+  ASSERT_EQ(info.size(), 3u);
+  EXPECT_EQ(info[0], "first line");
+  EXPECT_EQ(info[1], std::string(79, 'x') + "\\");
+  EXPECT_EQ(info[2], std::string(21, 'x'));
+  std::remove(path.c_str());
+}
+
+TEST(ExodusWriter, PathThatIsADirectoryNamesTheSystemReason) {
+  const mesh::Mesh mesh = mesh::generateRectangle({});
+  const std::string path = ::testing::TempDir();  // a directory
+  try {
+    ExodusWriter writer(path, mesh, {});
+    FAIL() << "no exception";
+  } catch (const io::OutputWriteError& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot create " + path + ": Is a directory");
+    EXPECT_EQ(e.reason(), "Is a directory");
+  }
+}

@@ -1,0 +1,307 @@
+// Reading Gmsh meshes (readGmshMesh, and the "Gmsh File" / "Mesh File" types of MeshFactory): the
+// committed Gmsh-made mesh gmsh/two_blocks.msh (from two_blocks.geo), small hand-written MSH 2.2
+// files for 2D meshes and for what must be refused, and the Exodus round trip of 3D meshes with
+// their side sets and node sets.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <string>
+
+#include "common/Error.hpp"
+#include "io/ExodusWriter.hpp"
+#include "mesh/CellGeometry.hpp"
+#include "mesh/ExodusMeshReader.hpp"
+#include "mesh/Generators.hpp"
+#include "mesh/GmshMeshReader.hpp"
+#include "mesh/MeshFactory.hpp"
+
+using namespace contessa;
+using namespace contessa::mesh;
+
+namespace {
+
+const std::string kTwoBlocks = std::string(CONTESSA_TEST_MESHES) + "/two_blocks.msh";
+
+std::string tempPath(const std::string& stem, const std::string& extension) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "contessa_" + info->name() + "_" + stem + "_" + std::to_string(getpid()) + extension;
+}
+
+std::string messageOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<no InputError>";
+}
+
+// A file in Gmsh's MSH 2.2 ASCII format: physical names ("dim tag \"name\"" lines), nodes ("tag x y z"),
+// elements ("tag type 2 physical elementary node tags...").
+std::string writeMsh(const std::string& stem, const std::vector<std::string>& names, const std::vector<std::string>& nodes,
+                     const std::vector<std::string>& elements) {
+  const std::string path = tempPath(stem, ".msh");
+  std::ofstream out(path);
+  out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n" << names.size() << "\n";
+  for (const auto& n : names) out << n << "\n";
+  out << "$EndPhysicalNames\n$Nodes\n" << nodes.size() << "\n";
+  for (const auto& n : nodes) out << n << "\n";
+  out << "$EndNodes\n$Elements\n" << elements.size() << "\n";
+  for (const auto& e : elements) out << e << "\n";
+  out << "$EndElements\n";
+  return path;
+}
+
+// The unit cube's 8 corners as Gmsh nodes 1..8 (Exodus / Gmsh hexahedron order), z offset by `z`.
+std::vector<std::string> cubeNodes() {
+  return {"1 0 0 0", "2 1 0 0", "3 1 1 0", "4 0 1 0", "5 0 0 1", "6 1 0 1", "7 1 1 1", "8 0 1 1"};
+}
+
+using Vec = std::array<double, 3>;
+
+// Unit outward normal of side `side` of `element` (from the side's node order).
+Vec sideNormal(const Mesh& m, GlobalIndex element, int side) {
+  const auto loc = m.locate(element);
+  const auto& b = m.blocks[loc.block];
+  const auto local = sideNodes(b.cellType, side);
+  auto p = [&](int a) {
+    const GlobalIndex n = b.connectivity[8 * loc.local + local[a]];
+    return Vec{m.coordinates[3 * n], m.coordinates[3 * n + 1], m.coordinates[3 * n + 2]};
+  };
+  const Vec d1{p(2)[0] - p(0)[0], p(2)[1] - p(0)[1], p(2)[2] - p(0)[2]};
+  const Vec d2{p(3)[0] - p(1)[0], p(3)[1] - p(1)[1], p(3)[2] - p(1)[2]};
+  Vec n{d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+  const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (double& c : n) c /= length;
+  return n;
+}
+
+void expectSameMesh(const Mesh& a, const Mesh& b) {
+  EXPECT_EQ(a.dimension, b.dimension);
+  EXPECT_EQ(a.coordinates, b.coordinates);
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (size_t k = 0; k < a.blocks.size(); ++k) {
+    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
+    EXPECT_EQ(a.blocks[k].cellType, b.blocks[k].cellType);
+    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements);
+    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity);
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (size_t k = 0; k < a.nodeSets.size(); ++k) {
+    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
+    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes) << a.nodeSets[k].name;
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (size_t k = 0; k < a.sideSets.size(); ++k) {
+    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
+    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements) << a.sideSets[k].name;
+    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides) << a.sideSets[k].name;
+  }
+}
+
+}  // namespace
+
+TEST(GmshMeshReader, GmshMadeMeshBlocksSetsAndOrientation) {
+  const Mesh m = readGmshMesh(kTwoBlocks);  // validated: positive Jacobians, sides on the boundary
+  EXPECT_EQ(m.dimension, 3);
+  EXPECT_EQ(m.numNodes(), 5 * 3 * 3);
+  ASSERT_EQ(m.blocks.size(), 2u);
+  EXPECT_EQ(m.blocks[0].name, "steel");
+  EXPECT_EQ(m.blocks[1].name, "rubber");
+  double volume = 0;
+  for (const auto& b : m.blocks) {
+    EXPECT_EQ(b.cellType, CellType::Hex8);
+    EXPECT_EQ(b.numElements(), 8);
+    for (size_t e = 0; e < b.elements.size(); ++e) {
+      std::vector<double> x;
+      double centroidX = 0;
+      for (int a = 0; a < 8; ++a)
+        for (int i = 0; i < 3; ++i) {
+          x.push_back(m.coordinates[3 * b.connectivity[8 * e + a] + i]);
+          if (i == 0) centroidX += x.back() / 8;
+        }
+      EXPECT_NEAR(cellMeasure(CellType::Hex8, x.data()), 0.125, 1e-12);
+      volume += cellMeasure(CellType::Hex8, x.data());
+      EXPECT_EQ(centroidX < 1, b.name == "steel");  // the physical volumes are where the .geo put them
+    }
+  }
+  EXPECT_NEAR(volume, 2, 1e-12);
+
+  // Physical surfaces: side sets with outward sides, and node sets of the same name.
+  const struct {
+    const char* name;
+    size_t sides, nodes;
+    Vec normal;
+  } surfaces[] = {{"left", 4, 9, {-1, 0, 0}}, {"right", 4, 9, {1, 0, 0}}, {"top", 8, 15, {0, 1, 0}}, {"surface_7", 8, 15, {0, 0, 1}}};
+  for (const auto& s : surfaces) {
+    const auto& set = m.sideSet(s.name);
+    ASSERT_EQ(set.elements.size(), s.sides) << s.name;
+    for (size_t k = 0; k < set.elements.size(); ++k) {
+      const Vec n = sideNormal(m, set.elements[k], set.sides[k]);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(n[i], s.normal[i], 1e-12) << s.name;
+    }
+    EXPECT_EQ(m.nodeSet(s.name).nodes.size(), s.nodes) << s.name;
+  }
+  for (GlobalIndex e : m.sideSet("left").elements) EXPECT_EQ(m.blocks[m.locate(e).block].name, "steel");
+  // Physical curve and point: node sets.
+  const auto& edge = m.nodeSet("bottom_back_edge").nodes;
+  ASSERT_EQ(edge.size(), 5u);
+  for (GlobalIndex n : edge) {
+    EXPECT_EQ(m.coordinates[3 * n + 1], 0.0);
+    EXPECT_EQ(m.coordinates[3 * n + 2], 0.0);
+  }
+  ASSERT_EQ(m.nodeSet("origin").nodes.size(), 1u);
+  const GlobalIndex origin = m.nodeSet("origin").nodes[0];
+  EXPECT_EQ(m.coordinates[3 * origin] + m.coordinates[3 * origin + 1] + m.coordinates[3 * origin + 2], 0.0);
+}
+
+TEST(GmshMeshReader, TwoDimensionalQuadMesh) {
+  // Two quads [0,2]×[0,1] in the plane z = 0, a physical line on x = 2, a physical point; node 7 is
+  // in no element (Gmsh keeps geometry points) and is dropped.
+  const std::string path = writeMsh(
+      "quads", {"2 1 \"plate\"", "1 2 \"right\"", "0 3 \"corner\""},
+      {"1 0 0 0", "2 1 0 0", "3 2 0 0", "4 0 1 0", "5 1 1 0", "6 2 1 0", "7 5 5 0"},
+      {"1 3 2 1 1 1 2 5 4", "2 3 2 1 1 2 3 6 5", "3 1 2 2 2 3 6", "4 15 2 3 3 1"});
+  const Mesh m = readGmshMesh(path);
+  EXPECT_EQ(m.dimension, 2);
+  EXPECT_EQ(m.numNodes(), 6);
+  ASSERT_EQ(m.blocks.size(), 1u);
+  EXPECT_EQ(m.blocks[0].name, "plate");
+  EXPECT_EQ(m.blocks[0].cellType, CellType::Quad4);
+  EXPECT_EQ(m.blocks[0].connectivity, (std::vector<GlobalIndex>{0, 1, 4, 3, 1, 2, 5, 4}));
+  // The line 3–6 is side 1 (nodes 1, 2) of the second quad.
+  EXPECT_EQ(m.sideSet("right").elements, (std::vector<GlobalIndex>{1}));
+  EXPECT_EQ(m.sideSet("right").sides, (std::vector<int>{1}));
+  EXPECT_EQ(m.nodeSet("right").nodes, (std::vector<GlobalIndex>{2, 5}));
+  EXPECT_EQ(m.nodeSet("corner").nodes, (std::vector<GlobalIndex>{0}));
+  std::remove(path.c_str());
+}
+
+TEST(GmshMeshReader, RefusesWhatContessaCannotUse) {
+  auto tet = writeMsh("tet", {"3 1 \"x\""}, {"1 0 0 0", "2 1 0 0", "3 0 1 0", "4 0 0 1"}, {"1 4 2 1 1 1 2 3 4"});
+  EXPECT_EQ(messageOf([&] { readGmshMesh(tet); }),
+            tet + ": element type 'tetrahedron 4' in physical group 'x' is not supported (Contessa reads 4-node "
+                  "quadrilaterals and 8-node hexahedra)");
+  std::remove(tet.c_str());
+
+  std::vector<std::string> nodes27;
+  std::string hex27 = "1 12 2 1 1";
+  for (int k = 0, tag = 1; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i, ++tag) {
+        nodes27.push_back(std::to_string(tag) + " " + std::to_string(i) + " " + std::to_string(j) + " " + std::to_string(k));
+        hex27 += " " + std::to_string(tag);
+      }
+  auto quadratic = writeMsh("hex27", {"3 1 \"body\""}, nodes27, {hex27});
+  EXPECT_EQ(messageOf([&] { readGmshMesh(quadratic); }),
+            quadratic + ": element type 'hexahedron 27' in physical group 'body' is not supported (Contessa reads "
+                        "4-node quadrilaterals and 8-node hexahedra)");
+  std::remove(quadratic.c_str());
+
+  // Triangles on the boundary of a hexahedron mesh are not sides Contessa can use either.
+  auto triangles = writeMsh("tri", {"3 1 \"body\"", "2 2 \"bottom\""}, cubeNodes(),
+                            {"1 5 2 1 1 1 2 3 4 5 6 7 8", "2 2 2 2 2 1 2 3"});
+  EXPECT_EQ(messageOf([&] { readGmshMesh(triangles); }),
+            triangles + ": element type 'triangle 3' in physical group 'bottom' is not supported (Contessa reads "
+                        "4-node quadrilaterals and 8-node hexahedra)");
+  std::remove(triangles.c_str());
+
+  // A physical surface that is not a face of the hexahedron (a diagonal plane).
+  auto diagonal = writeMsh("diagonal", {"3 1 \"body\"", "2 2 \"cut\""}, cubeNodes(),
+                           {"1 5 2 1 1 1 2 3 4 5 6 7 8", "2 3 2 2 2 1 2 7 8"});
+  EXPECT_EQ(messageOf([&] { readGmshMesh(diagonal); }),
+            diagonal + ": physical group 'cut' holds a face (nodes 1, ...) that is not a side of any element of the blocks");
+  std::remove(diagonal.c_str());
+
+  // Mesh::validate applies: a hexahedron listed upside down is inverted.
+  auto inverted = writeMsh("inverted", {"3 1 \"body\""}, cubeNodes(), {"1 5 2 1 1 5 6 7 8 1 2 3 4"});
+  EXPECT_NE(messageOf([&] { readGmshMesh(inverted); }).find(inverted + ": element 1 of block 'body' is inverted"),
+            std::string::npos);
+  std::remove(inverted.c_str());
+
+  // No physical volume or surface: no blocks to make.
+  auto unnamed = writeMsh("nophysical", {"0 1 \"p\""}, cubeNodes(), {"1 15 2 1 1 1"});
+  EXPECT_EQ(messageOf([&] { readGmshMesh(unnamed); }).rfind(unnamed + ": no physical surface or volume", 0), 0u);
+  std::remove(unnamed.c_str());
+
+  // A 2D mesh off the plane z = 0.
+  auto tilted = writeMsh("tilted", {"2 1 \"plate\""}, {"1 0 0 0", "2 1 0 0", "3 1 1 1", "4 0 1 1"}, {"1 3 2 1 1 1 2 3 4"});
+  EXPECT_EQ(messageOf([&] { readGmshMesh(tilted); }),
+            tilted + ": node 3 has z = 1.000000; a 2D mesh must lie in the plane z = 0");
+  std::remove(tilted.c_str());
+}
+
+TEST(GmshMeshReader, UnreadableFilesInOneLine) {
+  const std::string missing = "/nonexistent/dir/mesh.msh";
+  EXPECT_EQ(messageOf([&] { readGmshMesh(missing); }), missing + ": the mesh file does not exist");
+  const std::string garbage = tempPath("garbage", ".msh");
+  std::ofstream(garbage) << "this is not a mesh\n";
+  const std::string message = messageOf([&] { readGmshMesh(garbage); });
+  EXPECT_EQ(message.rfind(garbage + ": not a readable Gmsh file (", 0), 0u) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  std::remove(garbage.c_str());
+  const std::string empty = tempPath("empty", ".msh");
+  std::ofstream{empty};
+  EXPECT_EQ(messageOf([&] { readGmshMesh(empty); }), empty + ": not a readable Gmsh file (it is empty)");
+  std::remove(empty.c_str());
+  EXPECT_EQ(messageOf([&] { readGmshMesh(::testing::TempDir()); }),
+            ::testing::TempDir() + ": not a readable Gmsh file (it is not a regular file)");
+  const std::string geo = std::string(CONTESSA_TEST_MESHES) + "/two_blocks.geo";  // Gmsh would run the script
+  EXPECT_EQ(messageOf([&] { readGmshMesh(geo); }), geo + ": not a Gmsh mesh file (expected the extension .msh)");
+}
+
+TEST(MeshFactory, ReadersByTypeAndByExtension) {
+  Teuchos::ParameterList list;
+  list.set("File Name", std::string("two_blocks.msh"));
+  const Mesh byType = MeshFactory::create("Gmsh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES);
+  const Mesh byExtension = MeshFactory::create("Mesh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES);
+  expectSameMesh(byType, byExtension);
+  EXPECT_EQ(byType.numElements(), 16);
+
+  const std::string exodus = tempPath("box", ".exo");
+  BoxSpec box;
+  box.nx = 2;
+  const Mesh written = generateBox(box);
+  io::ExodusWriter(exodus, written, {}, "box");
+  list.set("File Name", exodus);
+  expectSameMesh(MeshFactory::create("Mesh File", list, "Problem/Mesh", ""), written);
+  std::remove(exodus.c_str());
+
+  list.set("File Name", std::string("two_blocks.geo"));
+  EXPECT_EQ(messageOf([&] { MeshFactory::create("Mesh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES); }),
+            "Problem/Mesh/File Name: '" + std::string(CONTESSA_TEST_MESHES) +
+                "/two_blocks.geo' has none of the extensions .msh, .exo, .e, .g, .gen, .ex2 (or choose the reader "
+                "with Type = Exodus File or Gmsh File)");
+  list.set("File Name", std::string(""));
+  EXPECT_EQ(messageOf([&] { MeshFactory::create("Gmsh File", list, "Problem/Mesh", ""); }),
+            "Problem/Mesh/File Name: required (a Gmsh .msh file)");
+  EXPECT_EQ(messageOf([&] { MeshFactory::validParameters("Cube"); }),
+            "Type: unknown mesh type 'Cube' (known: Rectangle, Annulus Sector, Box, Hollow Cylinder Sector, Sphere "
+            "Octant, Exodus File, Gmsh File, Mesh File)");
+}
+
+TEST(ExodusRoundTrip, GeneratedHexMeshesKeepTheirSideSetsAndNodeSets) {
+  HollowCylinderSectorSpec tube;
+  tube.section.elementsThroughThickness = 2;
+  tube.section.elementsAroundArc = 5;
+  tube.layers = 3;
+  SphereOctantSpec sphere;
+  sphere.elementsAlongEdge = 3;
+  sphere.elementsThroughShell = 2;
+  BoxSpec box;
+  box.nx = 3, box.ny = 2, box.nz = 2;
+  box.biasZ = 2;
+  for (const Mesh& mesh : {generateBox(box), generateHollowCylinderSector(tube), generateSphereOctant(sphere),
+                           readGmshMesh(kTwoBlocks)}) {
+    const std::string path = tempPath("hex", ".exo");
+    io::ExodusWriter(path, mesh, {}, "round trip");
+    expectSameMesh(readExodusMesh(path), mesh);
+    std::remove(path.c_str());
+  }
+}
