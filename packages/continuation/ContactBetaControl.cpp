@@ -191,7 +191,8 @@ BetaResult ContactBetaControl::betaFor(const std::vector<SlaveNodeIncrement>& no
 }
 
 double ContactBetaControl::newtonGrowth() const {
-  // Placeholder, decided in §5.1: grow as the last increment's Newton iterations allow.
+  // §11.5: an increment that converged in fewer iterations than the target grows the next step by
+  // their ratio (as LOCA's Adaptive control does), one that took more shrinks it.
   return static_cast<double>(settings_.targetNewtonIterations) / std::max(1, lastNewtonIterations_);
 }
 

@@ -15,7 +15,7 @@ namespace contessa::continuation {
 /// How the step grows while at most N_c events lie ahead (β has no event to aim at).
 enum class QuietGrowth {
   Cap,     ///< β = Max Growth Factor (the paper: "β > 1 grows the step when the user's step is too small")
-  Newton,  ///< by the Newton iterations of the last increment (docs/theory-load-stepping.md §5.1)
+  Newton,  ///< by the Newton iterations of the last increment (docs/theory-load-stepping.md §11.5)
 };
 /// Deck names, in the order of the enum: "Max Growth Factor", "Newton Iterations".
 const std::vector<std::string>& quietGrowthNames();
@@ -56,7 +56,9 @@ class ContactBetaControl {
   /// against end), `newtonIterations` its Newton iterations. Learns c, then plans the next increment.
   AttemptPlan afterConvergedIncrement(double lambda, const std::vector<SlaveNodeIncrement>& increment,
                                       int newtonIterations);
-  /// The last attempt was stopped by checkFirstIterate: eq. (10), Δt_cor = β Δt, unchecked (I_cor = 1).
+  /// The last attempt was stopped for a β correction (a first-iterate restart or a converged-state
+  /// re-solve): eq. (10), Δt_cor = β Δt. Unchecked (I_cor = 1), except a first-iterate restart with β far
+  /// from 1, which is checked again at its own first iterate (§11.3).
   AttemptPlan afterBetaRestart();
   /// The last attempt's Newton solve failed: cut back; β may not grow this attempt.
   AttemptPlan afterFailedAttempt(double lambda);
