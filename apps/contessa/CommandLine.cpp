@@ -5,7 +5,7 @@
 namespace contessa::app {
 
 std::string usage() {
-  return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet]\n"
+  return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet] [--timers]\n"
          "       contessa --deck-reference     print the deck reference (Markdown)\n"
          "       contessa --help\n"
          "\n"
@@ -13,6 +13,7 @@ std::string usage() {
          "DIR/<deck name>.exo (Exodus II) and DIR/<deck name>.history.csv (DIR defaults to '.').\n"
          "--set overrides a deck value: PATH names it with '/' between sublists, e.g.\n"
          "  --set \"Piro/LOCA/Step Size/Initial Step Size=0.05\"\n"
+         "--timers prints a table of wall time per phase at the end (maximum over the ranks).\n"
          "Exit status: 0 the run reached its final load (and its regression checks passed);\n"
          "1 the run stopped early; 2 bad input; 3 a regression check of the deck failed.\n";
 }
@@ -28,6 +29,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
     if (arg == "--help" || arg == "-h") cl.help = true;
     else if (arg == "--deck-reference") cl.deckReference = true;
     else if (arg == "--quiet") cl.quiet = true;
+    else if (arg == "--timers") cl.timers = true;  // switched on in main, before MPI_Init
     else if (arg == "--output-dir") cl.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0) cl.outputDirectory = arg.substr(13);
     else if (arg == "--set") cl.overrides.push_back(value(arg));

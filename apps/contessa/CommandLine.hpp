@@ -8,7 +8,7 @@ struct CommandLine {
   std::string deck;
   std::string outputDirectory = ".";
   std::vector<std::string> overrides;
-  bool help = false, deckReference = false, quiet = false;
+  bool help = false, deckReference = false, quiet = false, timers = false;
 };
 
 /// Parses argv; throws InputError with a one-line message on a malformed command line.

@@ -6,8 +6,10 @@
 #include <filesystem>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 
 #include "common/Error.hpp"
+#include "common/PhaseTimers.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
@@ -96,6 +98,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
                 static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
 
   // 3. Continuation in the load factor.
+  timers::switchTo(timers::Phase::Other);
   const solvers::RunSummary summary = piro.get<std::string>("Solver Type") == "NOX"
                                           ? solvers::solveStatic(model, piro, results)
                                           : solvers::ContinuationDriver(model, piro, results).run();
@@ -107,6 +110,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
     std::fflush(stdout);
   }
+  timers::printTable(*Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm(), stdout);
   if (!summary.finished) {
     if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
     return 1;

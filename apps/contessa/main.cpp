@@ -7,11 +7,15 @@
 
 #include "CommandLine.hpp"
 #include "DeckReference.hpp"
+#include "ProcessEnvironment.hpp"
 #include "Run.hpp"
 #include "common/Error.hpp"
+#include "common/PhaseTimers.hpp"
 
 int main(int argc, char** argv) {
+  contessa::app::prepareProcess(argc, argv);  // before MPI_Init: fast MPI start, BLAS threads, --timers
   Tpetra::ScopeGuard scope(&argc, &argv);
+  contessa::timers::switchTo(contessa::timers::Phase::Setup);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   try {

@@ -4,12 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_DetachedVectorView.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "common/Error.hpp"
+#include "common/PhaseTimers.hpp"
 
 namespace contessa::model {
 
@@ -225,6 +227,10 @@ RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> ContactMechanicsModel::ge
 
 bool ContactMechanicsModel::assembleInternal(const Vector& x, double lambda, Vector* force, CrsMatrix* stiffness,
                                              Vector* dForcedLambda, bool updateTrial) const {
+  using timers::Phase;
+  // An evaluation that leaves the trial state alone is the reactions' second element loop.
+  const auto phase = [&](Phase p) { return updateTrial ? p : Phase::Reactions; };
+  timers::Scope assemblyScope(phase(Phase::Assembly));
   overlapX_->doImport(x, *importer_, Tpetra::INSERT);
   auto u = overlapX_->getData(0);
   overlapForce_->putScalar(0.0);
@@ -237,8 +243,11 @@ bool ContactMechanicsModel::assembleInternal(const Vector& x, double lambda, Vec
   }
   std::vector<LO> cols;
   std::vector<double> rowValues;
+  std::optional<timers::Scope> elementScope(std::in_place,
+                                            phase(stiffness != nullptr ? Phase::ElementJacobian : Phase::ElementResidual));
   const auto status = solids_->assemble(
       u.getRawPtr(), stiffness != nullptr, [&](const int* dofs, int n, const double* fe, const double* ke) {
+        timers::Scope sinkScope(phase(Phase::Assembly));
         for (int i = 0; i < n; ++i) fo[dofs[i]] += fe[i];
         if (ke == nullptr) return;
         cols.assign(dofs, dofs + n);
@@ -247,7 +256,9 @@ bool ContactMechanicsModel::assembleInternal(const Vector& x, double lambda, Vec
                                              Teuchos::ArrayView<const double>(ke + i * n, n));
       });
 
+  elementScope.reset();
   // Contact: each slave node's owner adds its node-to-segment element; rigid masters have no DOFs.
+  std::optional<timers::Scope> contactScope(std::in_place, phase(Phase::Contact));
   const auto& X = problem_.mesh.coordinates;
   const auto position = [&](GlobalIndex node) {
     contact::Vector<2> p;
@@ -276,6 +287,7 @@ bool ContactMechanicsModel::assembleInternal(const Vector& x, double lambda, Vec
                          }
                        });
   }
+  contactScope.reset();
   fo = Teuchos::null;
   dl = Teuchos::null;
   if (force != nullptr) {
@@ -333,6 +345,7 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
       for (auto& v : fv) v = std::numeric_limits<double>::quiet_NaN();
   }
   if (!W.is_null()) {
+    timers::Scope dirichletScope(timers::Phase::Assembly);
     // Prescribed rows become identity rows.
     for (const LO r : prescribedRows_) {
       std::size_t n = W->getNumEntriesInLocalRow(r);
@@ -501,6 +514,7 @@ RCP<MultiVector> ContactMechanicsModel::elementStresses(const Vector& x) const {
 }
 
 std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, double loadFactor) const {
+  timers::Scope scope(timers::Phase::Reactions);
   Vector fint(ownedMap_);
   assembleInternal(x, loadFactor, &fint, nullptr, nullptr, false);
   fint.update(-loadFactor, *externalForce_, 1.0);

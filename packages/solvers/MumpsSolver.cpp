@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_MultiVectorStdOps.hpp>
 
+#include "common/PhaseTimers.hpp"
 #include "model/TpetraTypes.hpp"
 
 namespace contessa::solvers {
@@ -63,6 +65,7 @@ class MumpsContext {
 
   // Factorizes A (owned rows on each rank). Returns false when MUMPS reports an error (e.g. singular).
   bool factorize(const CrsMatrix& A) {
+    std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
     const auto rowMap = A.getRowMap();
     const auto colMap = A.getColMap();
     const GO n = static_cast<GO>(A.getGlobalNumRows());
@@ -90,7 +93,9 @@ class MumpsContext {
     id_.jcn_loc = cols_.data();
     id_.a_loc = values_.data();
     n_ = n;
+    inputScope.reset();
     if (patternChanged) {
+      timers::Scope scope(timers::Phase::MumpsAnalysis);
       id_.job = 1;
       dmumps_c(&id_);
       if (id_.infog[0] < 0) return false;
@@ -100,6 +105,7 @@ class MumpsContext {
     }
     // Penalty contact makes pivoting unpredictable: on a workspace shortfall (INFOG(1) = -8/-9),
     // relax the memory estimate and try again.
+    timers::Scope scope(timers::Phase::MumpsFactorization);
     for (int attempt = 0; attempt < 4; ++attempt) {
       id_.job = 2;
       dmumps_c(&id_);
@@ -185,6 +191,7 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
       status.message = "MUMPS factorization failed (singular or invalid matrix)";
       return status;
     }
+    timers::Scope scope(timers::Phase::MumpsSolve);
     auto b = Extract::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
     auto x = Extract::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
     MultiVector host(hostMap_, 1);
