@@ -16,6 +16,7 @@
 
 #include "common/PhaseTimers.hpp"
 #include "model/TpetraTypes.hpp"
+#include "solvers/MumpsInput.hpp"
 
 namespace contessa::solvers {
 
@@ -66,42 +67,22 @@ class MumpsContext {
   // Factorizes A (owned rows on each rank). Returns false when MUMPS reports an error (e.g. singular).
   bool factorize(const CrsMatrix& A) {
     std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
-    const auto rowMap = A.getRowMap();
-    const auto colMap = A.getColMap();
-    const GO n = static_cast<GO>(A.getGlobalNumRows());
-    rows_.clear();
-    cols_.clear();
-    values_.clear();
-    const std::size_t numRows = A.getNodeNumRows();
-    for (std::size_t r = 0; r < numRows; ++r) {
-      typename CrsMatrix::local_inds_host_view_type inds;
-      typename CrsMatrix::values_host_view_type vals;
-      A.getLocalRowView(static_cast<LO>(r), inds, vals);
-      const GO gr = rowMap->getGlobalElement(static_cast<LO>(r));
-      for (std::size_t k = 0; k < inds.extent(0); ++k) {
-        rows_.push_back(static_cast<MUMPS_INT>(gr + 1));
-        cols_.push_back(static_cast<MUMPS_INT>(colMap->getGlobalElement(inds(k)) + 1));
-        values_.push_back(vals(k));
-      }
-    }
-    const bool samePattern = analysed_ && n == n_ && rows_ == analysedRows_ && cols_ == analysedCols_;
-    int patternChangedLocal = samePattern ? 0 : 1, patternChanged = 0;
-    MPI_Allreduce(&patternChangedLocal, &patternChanged, 1, MPI_INT, MPI_MAX, comm_);
-    id_.n = static_cast<MUMPS_INT>(n);
-    id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
-    id_.irn_loc = rows_.data();
-    id_.jcn_loc = cols_.data();
-    id_.a_loc = values_.data();
-    n_ = n;
+    const bool newPattern = input_.update(A, comm_);
+    id_.n = input_.order();
+    id_.nnz_loc = input_.numEntries();
+    id_.irn_loc = input_.rows();
+    id_.jcn_loc = input_.columns();
+    id_.a_loc = input_.values();
+    n_ = input_.order();
     inputScope.reset();
-    if (patternChanged) {
+    if (newPattern) {  // the analysis (ordering, symbolic factorisation) is done once per pattern
       timers::Scope scope(timers::Phase::MumpsAnalysis);
       id_.job = 1;
       dmumps_c(&id_);
-      if (id_.infog[0] < 0) return false;
-      analysed_ = true;
-      analysedRows_ = rows_;
-      analysedCols_ = cols_;
+      if (id_.infog[0] < 0) {
+        input_.forgetPattern();
+        return false;
+      }
     }
     // Penalty contact makes pivoting unpredictable: on a workspace shortfall (INFOG(1) = -8/-9),
     // relax the memory estimate and try again.
@@ -130,10 +111,8 @@ class MumpsContext {
  private:
   MPI_Comm comm_;
   DMUMPS_STRUC_C id_{};
-  bool analysed_ = false;
   GO n_ = 0;
-  std::vector<MUMPS_INT> rows_, cols_, analysedRows_, analysedCols_;
-  std::vector<double> values_;
+  MumpsDistributedInput input_;
 };
 
 class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
