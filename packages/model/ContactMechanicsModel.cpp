@@ -298,8 +298,9 @@ bool ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withSt
   return status == mechanics::ElementStatus::Ok;
 }
 
-void ContactMechanicsModel::evaluatePass(const Vector& x, double lambda) const {
-  passOk_ = assemble(x, lambda, true, true, *passForce_, *passDfdLambda_);
+void ContactMechanicsModel::evaluatePass(const Vector& x, double lambda, bool withStiffness) const {
+  passOk_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+  passHasStiffness_ = withStiffness;
   passX_->assign(x);
   passLambda_ = lambda;
   passFrozen_ = newContactsFrozen_;
@@ -342,7 +343,12 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
   RCP<MultiVector> dfdpTpetra = dfdp.is_null() ? Teuchos::null : Extract::getTpetraMultiVector(dfdp);
   bool ok = true;
   if (!f.is_null() || !W.is_null() || !dfdp.is_null()) {
-    if (!latestPassIsAt(*x, lambda, passServesEvaluations_)) evaluatePass(*x, lambda);
+    // The tangent only when it is asked for: computing it with every residual (Newton asks for the
+    // Jacobian at the point of its last residual) was measured no faster, as the element kernels
+    // warm-start their local solve exactly there, and wastes it at every converged iterate.
+    const bool needStiffness = !W.is_null();
+    if (!latestPassIsAt(*x, lambda, passServesEvaluations_ && (passHasStiffness_ || !needStiffness)))
+      evaluatePass(*x, lambda, needStiffness);
     ok = passOk_;
   }
 

@@ -97,7 +97,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   bool assemble(const Vector& x, double lambda, bool withStiffness, bool updateTrial, Vector& force,
                 Vector& dForcedLambda) const;
   /// The pass every evaluation request is served from: residual, Jacobian and ∂f/∂λ at (x, λ).
-  void evaluatePass(const Vector& x, double lambda) const;
+  void evaluatePass(const Vector& x, double lambda, bool withStiffness) const;
   /// Whether the latest pass was made at exactly this x, λ and contact freeze, and `valid` still holds
   /// (agreed by every rank).
   bool latestPassIsAt(const Vector& x, double lambda, bool valid) const;
@@ -123,12 +123,12 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> xSpace_, pSpace_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
-  // The latest evaluation pass. Newton asks for the residual at x, then for the Jacobian at the same
-  // x: one element pass computes both (and ∂f/∂λ), so the second request costs a copy. At a converged
-  // increment the same pass gives the reactions (no second element loop for the output).
+  // The latest evaluation pass: residual forces, ∂f/∂λ and (when asked for) the stiffness at one
+  // (x, λ). A later request at the same point is served from it; at a converged increment it gives
+  // the reactions (no second element loop for the output).
   mutable Teuchos::RCP<Vector> passX_, passForce_, passDfdLambda_;  ///< owned; force = f_int + contact
   mutable double passLambda_ = 0;
-  mutable bool passFrozen_ = false, passOk_ = false;
+  mutable bool passFrozen_ = false, passOk_ = false, passHasStiffness_ = false;
   mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
   mutable bool passServesReactions_ = false;    ///< until the state is rolled back
   mutable int jacobianEvaluations_ = 0;
