@@ -245,6 +245,7 @@ bool ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withSt
   auto fo = overlapForce_->getDataNonConst(0);
   auto dl = overlapDfdLambda_->getDataNonConst(0);
   if (withStiffness) scatter_->beginPass();
+  ++elementPasses_;
   std::optional<timers::Scope> elementScope(std::in_place,
                                             phase(withStiffness ? Phase::ElementJacobian : Phase::ElementResidual));
   const auto status = solids_->assemble(u.getRawPtr(), withStiffness,

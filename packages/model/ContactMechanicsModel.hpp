@@ -79,6 +79,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
 
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const { return jacobianEvaluations_; }
+  /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
+  int elementPasses() const { return elementPasses_; }
   /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
   double lastLoadFactor() const { return lastLoadFactor_; }
   int dimension() const { return dim_; }
@@ -131,7 +133,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   mutable bool passFrozen_ = false, passOk_ = false, passHasStiffness_ = false;
   mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
   mutable bool passServesReactions_ = false;    ///< until the state is rolled back
-  mutable int jacobianEvaluations_ = 0;
+  mutable int jacobianEvaluations_ = 0, elementPasses_ = 0;
   mutable double lastLoadFactor_ = 0;
   mutable bool newContactsFrozen_ = false;
 };
