@@ -1,22 +1,30 @@
 #include "CommandLine.hpp"
 
 #include "common/Error.hpp"
+#include "common/Version.hpp"
 
 namespace contessa::app {
 
 std::string usage() {
   return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet] [--timers]\n"
          "       contessa --deck-reference     print the deck reference (Markdown)\n"
-         "       contessa --help\n"
+         "       contessa --version            print the version and the git description of the build\n"
+         "       contessa --help               print this text\n"
+         "       contessa --kokkos-help        print Kokkos' options (--kokkos-... options go to Kokkos)\n"
          "\n"
          "Runs the finite element model described by the XML deck DECK.xml and writes\n"
          "DIR/<deck name>.exo (Exodus II) and DIR/<deck name>.history.csv (DIR defaults to '.').\n"
-         "--set overrides a deck value: PATH names it with '/' between sublists, e.g.\n"
+         "--set overrides a deck value: PATH names it with '/' between sublists; an array is\n"
+         "written {a, b, ...} (quote the whole argument), e.g.\n"
          "  --set \"Piro/LOCA/Step Size/Initial Step Size=0.05\"\n"
+         "  --set \"Problem/Contact/plate/Rigid Surface/Motion={0.0, -75.2}\"\n"
          "--timers prints a table of wall time per phase at the end (maximum over the ranks).\n"
          "Exit status: 0 the run reached its final load (and its regression checks passed);\n"
-         "1 the run stopped early; 2 bad input; 3 a regression check of the deck failed.\n";
+         "1 the run stopped early or failed; 2 bad input; 3 a regression check of the deck failed.\n"
+         "Every error is one line on stderr: contessa: error: ...\n";
 }
+
+std::string versionLine() { return std::string("contessa ") + kVersion + " (" + kGitDescription + ")"; }
 
 CommandLine parseCommandLine(int argc, char** argv) {
   CommandLine cl;
@@ -27,6 +35,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
       return std::string(argv[++i]);
     };
     if (arg == "--help" || arg == "-h") cl.help = true;
+    else if (arg == "--version") cl.version = true;
     else if (arg == "--deck-reference") cl.deckReference = true;
     else if (arg == "--quiet") cl.quiet = true;
     else if (arg == "--timers") cl.timers = true;  // switched on in main, before MPI_Init
@@ -34,13 +43,17 @@ CommandLine parseCommandLine(int argc, char** argv) {
     else if (arg.rfind("--output-dir=", 0) == 0) cl.outputDirectory = arg.substr(13);
     else if (arg == "--set") cl.overrides.push_back(value(arg));
     else if (arg.rfind("--set=", 0) == 0) cl.overrides.push_back(arg.substr(6));
-    else if (!arg.empty() && arg[0] == '-') throw InputError(arg + ": unknown option (see contessa --help)");
+    else if (arg.rfind("--kokkos-", 0) == 0) {
+      cl.kokkosOptions.push_back(arg);
+      if (arg == "--kokkos-help") cl.kokkosHelp = true;
+    } else if (!arg.empty() && arg[0] == '-') throw InputError(arg + ": unknown option (see contessa --help)");
     else {
       requireInput(cl.deck.empty(), arg + ": only one deck per run (already given: " + cl.deck + ")");
       cl.deck = arg;
     }
   }
-  requireInput(cl.help || cl.deckReference || !cl.deck.empty(), "no deck given (usage: contessa DECK.xml; see --help)");
+  requireInput(cl.help || cl.version || cl.kokkosHelp || cl.deckReference || !cl.deck.empty(),
+               "no deck given (usage: contessa DECK.xml; see --help)");
   return cl;
 }
 

@@ -8,11 +8,15 @@ struct CommandLine {
   std::string deck;
   std::string outputDirectory = ".";
   std::vector<std::string> overrides;
-  bool help = false, deckReference = false, quiet = false, timers = false;
+  std::vector<std::string> kokkosOptions;  ///< --kokkos-* options, passed on to Kokkos as written
+  bool help = false, version = false, kokkosHelp = false, deckReference = false, quiet = false, timers = false;
 };
 
-/// Parses argv; throws InputError with a one-line message on a malformed command line.
+/// Parses argv without starting MPI or Kokkos (so that --help is Contessa's own); throws InputError
+/// with a one-line message on a malformed command line.
 CommandLine parseCommandLine(int argc, char** argv);
 std::string usage();
+/// "contessa <version> (<git description>)".
+std::string versionLine();
 
 }  // namespace contessa::app

@@ -80,8 +80,11 @@ std::string deckReference() {
   md << "### `Piro/Stratimikos` additions\n\n"
         "Stratimikos validates this list itself (see the Stratimikos documentation). Contessa registers the\n"
         "linear solver `MUMPS` (the default: a parallel direct solver, the same answer on any number of ranks)\n"
-        "and the preconditioner `Ifpack2` for `Belos`. `Amesos2` (KLU2) is refused on more than one rank, and\n"
-        "its `Tacho` always, because they give wrong answers or crash in this Trilinos build.\n\n"
+        "and the preconditioner `Ifpack2` for `Belos`. `Linear Solver Type` is one of `MUMPS`, `Amesos2`,\n"
+        "`Belos` and `Preconditioner Type` one of `None` (the default), `Ifpack2`: Stratimikos' Epetra solvers\n"
+        "(`Amesos`, `AztecOO`, `ML`, `Ifpack`) cannot take Contessa's Tpetra matrices. `Amesos2` (KLU2) is\n"
+        "refused on more than one rank, and its `Tacho` always, because they give wrong answers or crash in\n"
+        "this Trilinos build.\n\n"
         "#### `Piro/Stratimikos/Linear Solver Types/MUMPS`\n\n";
   describe(md, *solvers::MumpsLinearOpWithSolveFactory().getValidParameters(), "Piro/Stratimikos/Linear Solver Types/MUMPS", 5);
   return md.str();

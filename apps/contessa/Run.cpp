@@ -8,6 +8,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 
+#include "Failure.hpp"
 #include "common/Error.hpp"
 #include "common/PhaseTimers.hpp"
 #include "deck/DeckReader.hpp"
@@ -65,25 +66,33 @@ int checkRegression(const deck::ProblemDefinition& problem, const output::Result
 
 int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
   const bool root = comm->getRank() == 0;
-  // 1. The whole deck is validated before anything runs.
-  auto deckList = deck::readDeck(cl.deck);
-  deck::applyOverrides(*deckList, cl.overrides);
-  Teuchos::ParameterList validTop("Contessa deck");
-  validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
-  validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
-  deck::validateAndSetDefaults(*deckList, validTop, "", {"Problem", "Piro"});
-  requireInput(deckList->isSublist("Problem") && deckList->sublist("Problem").isSublist("Mesh"),
-               "Problem/Mesh: required (the deck has no mesh)");
+  // 1. The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
+  //    validates it and reads the mesh, and a failure on any rank (a file only some ranks can read)
+  //    stops every rank with one message (agreeOnInput).
+  const std::string deckText = shareDeckText(*comm, cl.deck);
+  Teuchos::RCP<Teuchos::ParameterList> deckList;
+  deck::ProblemDefinition problem;
+  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
+  agreeOnInput(*comm, [&] {
+    deckList = deck::parseDeck(deckText, cl.deck);
+    deck::applyOverrides(*deckList, cl.overrides);
+    Teuchos::ParameterList validTop("Contessa deck");
+    validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
+    validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
+    deck::validateAndSetDefaults(*deckList, validTop, "", {"Problem", "Piro"});
+    requireInput(deckList->isSublist("Problem") && deckList->sublist("Problem").isSublist("Mesh"),
+                 "Problem/Mesh: required (the deck has no mesh)");
 
-  const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
-  deck::ProblemDefinition problem = deck::buildProblem(deckList->sublist("Problem"), deckDirectory);
+    const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
+    problem = deck::buildProblem(deckList->sublist("Problem"), deckDirectory);
+    solvers::validatePiro(deckList->sublist("Piro"), comm->getSize());
+    linearSolver = solvers::createLinearSolverFactory(deckList->sublist("Piro").sublist("Stratimikos"));
+
+    std::error_code ec;
+    fs::create_directories(cl.outputDirectory, ec);
+    requireInput(fs::is_directory(cl.outputDirectory), "--output-dir " + cl.outputDirectory + ": cannot create the directory");
+  });
   auto& piro = deckList->sublist("Piro");
-  solvers::validatePiro(piro, comm->getSize());
-  auto linearSolver = solvers::createLinearSolverFactory(piro.sublist("Stratimikos"));
-
-  std::error_code ec;
-  fs::create_directories(cl.outputDirectory, ec);
-  requireInput(fs::is_directory(cl.outputDirectory), "--output-dir " + cl.outputDirectory + ": cannot create the directory");
   const std::string name = fs::path(cl.deck).stem().string();
 
   // 2. Partition, model, output.

@@ -54,7 +54,8 @@ int BoundingBoxTree<Dim>::build(int begin, int end, int level) {
 }
 
 template <int Dim>
-void BoundingBoxTree<Dim>::query(const Vector<Dim>& point, std::vector<int>& hits, std::size_t* visitedNodes) const {
+template <class Accepts>
+void BoundingBoxTree<Dim>::search(const Accepts& accepts, std::vector<int>& hits, std::size_t* visitedNodes) const {
   if (nodes_.empty()) return;
   const std::size_t first = hits.size();
   // Depth-first with an explicit stack; the tree is balanced, so depth_ + 1 entries suffice.
@@ -65,11 +66,11 @@ void BoundingBoxTree<Dim>::query(const Vector<Dim>& point, std::vector<int>& hit
   while (top > 0) {
     const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
     ++visited;
-    if (!node.box.contains(point)) continue;
+    if (!accepts(node.box)) continue;
     if (node.left < 0) {
       for (int k = node.begin; k < node.end; ++k) {
         const int item = order_[static_cast<std::size_t>(k)];
-        if (boxes_[static_cast<std::size_t>(item)].contains(point)) hits.push_back(item);
+        if (accepts(boxes_[static_cast<std::size_t>(item)])) hits.push_back(item);
       }
     } else {
       stack[top++] = node.right;
@@ -78,6 +79,16 @@ void BoundingBoxTree<Dim>::query(const Vector<Dim>& point, std::vector<int>& hit
   }
   std::sort(hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end());
   if (visitedNodes != nullptr) *visitedNodes += visited;
+}
+
+template <int Dim>
+void BoundingBoxTree<Dim>::query(const Vector<Dim>& point, std::vector<int>& hits, std::size_t* visitedNodes) const {
+  search([&](const BoundingBox<Dim>& box) { return box.contains(point); }, hits, visitedNodes);
+}
+
+template <int Dim>
+void BoundingBoxTree<Dim>::queryBox(const BoundingBox<Dim>& box, std::vector<int>& hits, std::size_t* visitedNodes) const {
+  search([&](const BoundingBox<Dim>& b) { return b.intersects(box); }, hits, visitedNodes);
 }
 
 template <int Dim>

@@ -40,6 +40,12 @@ struct BoundingBox {
       if (point[d] < lower[d] || point[d] > upper[d]) return false;
     return true;
   }
+  /// The two closed boxes share at least one point.
+  bool intersects(const BoundingBox& box) const {
+    for (int d = 0; d < Dim; ++d)
+      if (box.upper[d] < lower[d] || box.lower[d] > upper[d]) return false;
+    return true;
+  }
   Vector<Dim> center() const { return scaled(0.5, add(lower, upper)); }
 
  private:
@@ -75,6 +81,10 @@ class BoundingBoxTree {
   /// Candidates of every point.
   CandidateLists query(const std::vector<Vector<Dim>>& points, std::size_t* visitedNodes = nullptr) const;
 
+  /// Appends the indices of the boxes that intersect `box` to `hits`, sorted ascending (swept boxes of
+  /// the tunnelling check: a node's path against the facets' motion).
+  void queryBox(const BoundingBox<Dim>& box, std::vector<int>& hits, std::size_t* visitedNodes = nullptr) const;
+
   std::size_t numBoxes() const { return boxes_.size(); }
   std::size_t numTreeNodes() const { return nodes_.size(); }
   int depth() const { return depth_; }
@@ -89,6 +99,9 @@ class BoundingBoxTree {
   };
 
   int build(int begin, int end, int level);
+  /// Depth-first search for the boxes a predicate accepts (on tree nodes and on items alike).
+  template <class Accepts>
+  void search(const Accepts& accepts, std::vector<int>& hits, std::size_t* visitedNodes) const;
 
   std::vector<BoundingBox<Dim>> boxes_;
   std::vector<Vector<Dim>> centers_;

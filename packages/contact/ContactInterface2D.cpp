@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
 #include "contact/HistoryTransfer2D.hpp"
+#include "contact/SweptCrossing.hpp"
 
 namespace contessa::contact {
 
@@ -17,9 +19,13 @@ ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<
       evaluatesSlave_(std::move(evaluatesSlave)),
       element_(spec_.law),
       history_(spec_.slaveNodes.size()),
+      damping_(spec_.slaveNodes.size()),
+      lastSlave_(spec_.slaveNodes.size()),
       trialOutput_(spec_.slaveNodes.size()),
       committedOutput_(spec_.slaveNodes.size()) {
   spec_.law.validate();
+  if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size())
+    throw std::logic_error("ContactInterface2D '" + spec_.name + "': one facet length per slave node expected");
   for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
   committedOutput_ = trialOutput_;
 }
@@ -75,6 +81,7 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     if (!evaluatesSlave_[k]) continue;
     const GlobalIndex node = spec_.slaveNodes[k];
     const Vector<2> xs = position(node);
+    if (updateTrial) lastSlave_[k] = xs;
     hits.clear();
     tree.query(xs, hits);
     candidates.clear();
@@ -97,7 +104,15 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
       NodeToSegmentGeometry2D geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
-      const NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed);
+      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
+      // tangential stiffness (SlipReversalDamping); the residual is the same either way.
+      const double facetLength = spec_.slaveFacetLengths[k];
+      NodeToSegmentResult2D r = element_.evaluate(geometry, selection.segment, committed, facetLength);
+      if (updateTrial) {
+        damping_.observe(k, history_.trial(k), r.trial);
+        const SlipTangent tangent = damping_.tangent(k);
+        if (tangent.secant) r = element_.evaluate(geometry, selection.segment, committed, facetLength, tangent);
+      }
       trial = r.trial;
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
@@ -139,7 +154,55 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
   if (updateTrial) {
     trialForce_ = force;
     lastSegments_ = segments;
+    if (committedSlave_.empty()) committedSlave_ = lastSlave_;
   }
+}
+
+std::vector<TunnellingNode> ContactInterface2D::tunnellingNodes() const {
+  std::vector<TunnellingNode> out;
+  if (lastSegments_.empty() || committedSlave_.empty() || committedMaster_.size() != lastSegments_.size()) return out;
+  // Swept boxes: each segment's box over both states, a hair larger so touching counts.
+  double longest = 0;
+  for (const auto& m : lastSegments_) longest = std::max(longest, norm(subtract(m.x[1], m.x[0])));
+  const double margin = 1e-9 * longest;
+  std::vector<BoundingBox<2>> boxes(lastSegments_.size());
+  for (std::size_t s = 0; s < lastSegments_.size(); ++s) {
+    for (int a = 0; a < 2; ++a) {
+      boxes[s].include(committedMaster_[s].x[a]);
+      boxes[s].include(lastSegments_[s].x[a]);
+    }
+    boxes[s].enlarge(margin);
+  }
+  const BoundingBoxTree<2> tree(boxes);
+  std::vector<int> hits;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    // In contact now (g_N ≤ 0 on the selected segment): penalty penetration, not tunnelling.
+    if (!evaluatesSlave_[k] || !(trialOutput_[k].gap > 0.0)) continue;
+    // A node in contact at the commit starts from its contact point on the master: its penalty
+    // penetration there is not a crossing.
+    Vector<2> start = committedSlave_[k];
+    const auto& committed = history_.committed(k);
+    if (committed.isInContact() && committed.segment >= 0 &&
+        committed.segment < static_cast<int>(committedMaster_.size())) {
+      const auto h = Line2Facet::shapeFunctions(committed.xi);
+      const auto& m = committedMaster_[committed.segment].x;
+      for (int c = 0; c < 2; ++c) start[c] = h[0] * m[0][c] + h[1] * m[1][c];
+    }
+    const Vector<2>& end = lastSlave_[k];
+    BoundingBox<2> path;
+    path.include(start);
+    path.include(end);
+    hits.clear();
+    tree.queryBox(path, hits);
+    for (int s : hits) {
+      const SweptCrossing crossing =
+          sweptCrossing<Line2Facet>(start, end, committedMaster_[s].x, lastSegments_[s].x);
+      if (!crossing.crossed) continue;
+      out.push_back({k, spec_.slaveNodes[k], s, crossing.time});
+      break;
+    }
+  }
+  return out;
 }
 
 std::vector<SlaveGapChange> ContactInterface2D::gapChanges() const {
@@ -174,14 +237,19 @@ void ContactInterface2D::commit() {
     if (status == ContactStatus::Slip) ++counts.slip;
   }
   history_.commit();
+  damping_.reset();
   committedOutput_ = trialOutput_;
   committedForce_ = trialForce_;
   committedCounts_ = counts;
-  if (!lastSegments_.empty()) committedMaster_ = lastSegments_;
+  if (!lastSegments_.empty()) {
+    committedMaster_ = lastSegments_;
+    committedSlave_ = lastSlave_;
+  }
 }
 
 void ContactInterface2D::rollback() {
   history_.rollback();
+  damping_.reset();
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
 }

@@ -13,6 +13,7 @@
 #include "contact/ContactLawParameters.hpp"
 #include "contact/NodeToSegmentContact2D.hpp"
 #include "contact/SegmentSelector2D.hpp"
+#include "contact/SlipReversalDamping.hpp"
 
 namespace contessa::contact {
 
@@ -30,6 +31,7 @@ struct ContactInterfaceSpec2D {
   std::string name;
   std::vector<GlobalIndex> slaveNodes;  ///< mesh nodes, sorted
   std::vector<double> slaveAreas;       ///< tributary length of each slave node (reference), unit thickness
+  std::vector<double> slaveFacetLengths;  ///< mean length of the slave sides at each node (slip tolerance's L_k)
   /// Deformable master: mesh node pairs, ordered so the master body's outward normal is on the right.
   std::vector<std::array<GlobalIndex, 2>> masterSegments;
   bool rigidMaster = false;
@@ -54,6 +56,14 @@ struct SlaveGapChange {
 
 struct ContactCounts {
   int active = 0, newlyActive = 0, stick = 0, slip = 0;
+};
+
+/// A slave node that passed through the master surface in the current increment (tunnelling).
+struct TunnellingNode {
+  std::size_t slave = 0;   ///< index into ContactInterfaceSpec2D::slaveNodes
+  GlobalIndex node = -1;   ///< its mesh node
+  int segment = -1;        ///< the master segment it went through
+  double time = 0;         ///< where along the increment, 0 (committed) … 1 (trial)
 };
 
 class ContactInterface2D {
@@ -83,6 +93,14 @@ class ContactInterface2D {
   /// first Newton iterate then shows where the body goes without new contacts (eq. 11 of Contact Beta).
   void setNewContactsFrozen(bool frozen) { frozen_ = frozen; }
 
+  /// Slave nodes of this rank that crossed a master segment, from its front to its back, between the
+  /// last commit and the latest trial evaluation and are not in contact now (no master in reach, or a
+  /// positive gap on another segment): the penalty never saw them (theory-contact.md §12). A node in
+  /// contact now is ordinary penalty penetration, whatever it crossed. Each node's straight path is
+  /// tested against each segment's straight motion (SweptCrossing) among the candidates of a tree of
+  /// swept boxes, so the check costs O((n + m) log m).
+  std::vector<TunnellingNode> tunnellingNodes() const;
+
   /// The increment converged: trial → committed (and the master positions the history refers to).
   void commit();
   /// The increment is abandoned: back to the committed state.
@@ -105,8 +123,11 @@ class ContactInterface2D {
   NodeToSegmentContact2D element_;
   SegmentSelector2D selector_;
   ContactHistoryStore<1> history_;
+  SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates
   std::vector<MasterSegment2D> committedMaster_;  ///< master positions of the committed configuration
   std::vector<MasterSegment2D> lastSegments_;     ///< master positions of the latest trial evaluation
+  std::vector<Vector<2>> committedSlave_;         ///< slave positions of the committed configuration
+  std::vector<Vector<2>> lastSlave_;              ///< slave positions of the latest trial evaluation
   std::vector<SlaveNodeState> trialOutput_, committedOutput_;
   Vector<2> trialForce_{}, committedForce_{};
   ContactCounts committedCounts_;

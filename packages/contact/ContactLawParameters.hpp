@@ -6,12 +6,23 @@
 
 namespace contessa::contact {
 
+/// ε_N, ε_T, μ of eq. (16)–(23) and the elastic-slip tolerance that ties the stick penalty to the
+/// normal pressure (docs/theory-contact.md §5):
+///
+///   Slip tolerance s = 0:  ε_T = tangentialPenalty, the paper's constant stick penalty, eq. (17);
+///   Slip tolerance s > 0:  ε_T = μ|t_N| / (s L_k), capped by tangentialPenalty when that is > 0,
+///
+/// where L_k is the mean length of the slave sides at the node. A node then sticks while its elastic slip
+/// is below s L_k, whatever its pressure, instead of below μ|t_N|/ε_T, which vanishes with the pressure.
+/// The deck's default is s = 0.005 (ProblemDefinition); this struct's default 0 is the paper's law.
 struct ContactLawParameters {
   double normalPenalty = 0.0;        ///< ε_N, eq. (16)
-  double tangentialPenalty = 0.0;    ///< ε_T, eq. (17), (20); unused when μ = 0
+  double tangentialPenalty = 0.0;    ///< ε_T of eq. (17) (s = 0), or its upper bound (s > 0; 0 = none)
   double frictionCoefficient = 0.0;  ///< μ, eq. (18)–(19); 0 selects the frictionless path
+  double slipTolerance = 0.0;        ///< s: allowable elastic slip over the slave facet length; 0 = constant ε_T
 
   bool isFrictionless() const { return frictionCoefficient == 0.0; }
+  bool hasSlipTolerance() const { return slipTolerance > 0.0; }
 
   /// Throws InputError naming the offending parameter.
   void validate() const {
@@ -19,8 +30,12 @@ struct ContactLawParameters {
                  "contact: the normal penalty epsilon_N must be > 0, got " + std::to_string(normalPenalty));
     requireInput(frictionCoefficient >= 0.0,
                  "contact: the friction coefficient mu must be >= 0, got " + std::to_string(frictionCoefficient));
-    requireInput(isFrictionless() || tangentialPenalty > 0.0,
-                 "contact: the tangential penalty epsilon_T must be > 0 when mu > 0, got " +
+    requireInput(tangentialPenalty >= 0.0,
+                 "contact: the tangential penalty epsilon_T must be >= 0, got " + std::to_string(tangentialPenalty));
+    requireInput(slipTolerance >= 0.0,
+                 "contact: the slip tolerance must be >= 0, got " + std::to_string(slipTolerance));
+    requireInput(isFrictionless() || hasSlipTolerance() || tangentialPenalty > 0.0,
+                 "contact: the tangential penalty epsilon_T must be > 0 when mu > 0 and the slip tolerance is 0, got " +
                      std::to_string(tangentialPenalty));
   }
 };

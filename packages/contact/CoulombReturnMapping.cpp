@@ -3,17 +3,22 @@
 #include "common/Error.hpp"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace contessa::contact {
 
 template <int NXi>
-CoulombReturnMapping<NXi>::CoulombReturnMapping(double tangentialPenalty, double frictionCoefficient)
-    : tangentialPenalty_(tangentialPenalty), frictionCoefficient_(frictionCoefficient) {
+CoulombReturnMapping<NXi>::CoulombReturnMapping(double tangentialPenalty, double frictionCoefficient,
+                                                double slipTolerance)
+    : tangentialPenalty_(tangentialPenalty), frictionCoefficient_(frictionCoefficient), slipTolerance_(slipTolerance) {
   requireInput(frictionCoefficient >= 0.0,
                "contact: the friction coefficient mu must be >= 0, got " + std::to_string(frictionCoefficient));
-  requireInput(frictionCoefficient == 0.0 || tangentialPenalty > 0.0,
-               "contact: the tangential penalty epsilon_T must be > 0 when mu > 0, got " +
+  requireInput(tangentialPenalty >= 0.0,
+               "contact: the tangential penalty epsilon_T must be >= 0, got " + std::to_string(tangentialPenalty));
+  requireInput(slipTolerance >= 0.0, "contact: the slip tolerance must be >= 0, got " + std::to_string(slipTolerance));
+  requireInput(frictionCoefficient == 0.0 || slipTolerance > 0.0 || tangentialPenalty > 0.0,
+               "contact: the tangential penalty epsilon_T must be > 0 when mu > 0 and the slip tolerance is 0, got " +
                    std::to_string(tangentialPenalty));
 }
 
@@ -21,20 +26,40 @@ template <int NXi>
 ReturnMappingResult<NXi> CoulombReturnMapping<NXi>::map(const ReturnMappingInput<NXi>& in) const {
   ReturnMappingResult<NXi> out;
   const double mu = frictionCoefficient_;
-  const double epsT = tangentialPenalty_;
   if (mu == 0.0) {  // frictionless path: free sliding, no tangential traction, no tangential stiffness
     out.status = ContactStatus::Slip;
     return out;
   }
   const Matrix<NXi, NXi>& a = in.metric;
   const Matrix<NXi, NXi> aInv = inverse(a);
+  const double limit = mu * std::abs(in.normalTraction);
+  // ∂|t_N|/∂t_N = −1 for t_N < 0 (compression)
+  const double dAbsNormal = in.normalTraction > 0.0 ? 1.0 : -1.0;
+
+  // ε_T of eq. (17)/(20): constant, or tied to the pressure by the elastic-slip tolerance s, so that the
+  // stick radius μ|t_N|/ε_T is s L_k and does not shrink to nothing on a nearly unloaded node.
+  double epsT = tangentialPenalty_;
+  double dEpsT = 0.0;  // ∂ε_T/∂t_N
+  if (slipTolerance_ > 0.0) {
+    if (!(in.facetLength > 0.0))
+      throw std::logic_error("CoulombReturnMapping: a slip tolerance needs the slave facet length L_k > 0");
+    const double elasticSlip = slipTolerance_ * in.facetLength;  // s L_k
+    const double pressurePenalty = limit / elasticSlip;
+    if (tangentialPenalty_ == 0.0 || pressurePenalty < tangentialPenalty_) {  // the cap ε_T,max is not active
+      epsT = pressurePenalty;
+      dEpsT = mu * dAbsNormal / elasticSlip;
+    }
+  }
+  out.tangentialPenalty = epsT;
+  out.dTangentialPenalty_dNormalTraction = dEpsT;
+  const Vector<NXi> slipCovariant = multiply(a, in.slipIncrement);  // ā_αβ Δξ^β
+  const Vector<NXi> dTrial_dNormal = scaled(dEpsT, slipCovariant);   // ∂t^trial_α/∂t_N
 
   // eq. (20): stick predictor t^trial_α = t_α,n + ε_T ā_αβ Δξ^β
-  out.trialTraction = add(in.committedTraction, scaled(epsT, multiply(a, in.slipIncrement)));
+  out.trialTraction = add(in.committedTraction, scaled(epsT, slipCovariant));
   // eq. (19): ‖t‖ = √(t_α ā^αβ t_β); eq. (21): f^trial = ‖t^trial‖ − μ|t_N|
   const Vector<NXi> trialContravariant = multiply(aInv, out.trialTraction);
   out.trialNorm = std::sqrt(dot(out.trialTraction, trialContravariant));
-  const double limit = mu * std::abs(in.normalTraction);
   out.trialIndicator = out.trialNorm - limit;
   if (out.trialNorm > 0.0) out.trialDirection = scaled(1.0 / out.trialNorm, out.trialTraction);  // eq. (23)
 
@@ -47,6 +72,7 @@ ReturnMappingResult<NXi> CoulombReturnMapping<NXi>::map(const ReturnMappingInput
     for (int alpha = 0; alpha < NXi; ++alpha)
       for (int gamma = 0; gamma < NXi; ++gamma)  // ∂t^trial_α/∂ā_βγ = ε_T δ_αβ Δξ^γ
         out.dTraction_dMetric[alpha](alpha, gamma) = epsT * in.slipIncrement[gamma];
+    out.dTraction_dNormalTraction = dTrial_dNormal;  // ā_αβ Δξ^β ∂ε_T/∂t_N (0 for a constant ε_T)
     return out;
   }
 
@@ -68,9 +94,10 @@ ReturnMappingResult<NXi> CoulombReturnMapping<NXi>::map(const ReturnMappingInput
       for (int gamma = 0; gamma < NXi; ++gamma)
         out.dTraction_dMetric[alpha](beta, gamma) = out.dTraction_dTrial(alpha, beta) * epsT * in.slipIncrement[gamma] +
                                                     0.5 * limit * out.trialDirection[alpha] * nUp[beta] * nUp[gamma];
-  // ∂(μ|t_N|)/∂t_N = −μ for t_N < 0 (compression)
-  const double dLimit = in.normalTraction > 0.0 ? mu : -mu;
-  out.dTraction_dNormalTraction = scaled(dLimit, out.trialDirection);
+  // ∂t_α/∂t_N: through the Coulomb limit μ|t_N| along n^trial, and through ε_T(t_N) in t^trial (eq. 27;
+  // zero with one surface coordinate, where δ − n_1 n^1 = 0)
+  out.dTraction_dNormalTraction =
+      add(scaled(mu * dAbsNormal, out.trialDirection), multiply(out.dTraction_dTrial, dTrial_dNormal));
   return out;
 }
 

@@ -10,8 +10,12 @@
 //   shapeFunctions(ξ)          -> H_i
 //   shapeDerivatives(ξ)        -> H_i,α           (row i, column α)
 //   shapeSecondDerivatives(ξ)  -> H_i,αβ          (one kSurfaceDim² matrix per node)
+//   areaNormal(ā_1[, ā_2])     -> the normal of eq. (5) before normalisation (its length is the Jacobian)
 //   unitNormal(ā_1[, ā_2])     -> n̄, eq. (5), oriented out of the master body (see each facet)
 //   contains(ξ, tol)           -> ξ inside the parent domain, enlarged by tol
+//   flatPieces()               -> the facet as kSpaceDim-node simplices (node indices, oriented like n̄):
+//                                 the segment itself, two triangles of a 4-node face. Geometry that needs
+//                                 a flat facet (the swept crossing test, SweptCrossing.hpp) works on these.
 #include "contact/SmallMatrix.hpp"
 
 #include <cmath>
@@ -46,12 +50,18 @@ struct Line2Facet {
     return {};
   }
 
+  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return {a[0][1], -a[0][0]}; }
+
   static Point unitNormal(const std::array<Point, kSurfaceDim>& a) {
-    const double length = norm(a[0]);
-    return {a[0][1] / length, -a[0][0] / length};
+    const Point n = areaNormal(a);
+    const double length = norm(n);
+    return {n[0] / length, n[1] / length};
   }
 
   static bool contains(const SurfaceCoords& xi, double tolerance) { return std::abs(xi[0]) <= 1.0 + tolerance; }
+
+  static constexpr int kPieces = 1;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1}}}; }
 
   static SurfaceCoords center() { return {0.0}; }
 };
@@ -97,8 +107,10 @@ struct Quad4Facet {
     return d;
   }
 
+  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return cross(a[0], a[1]); }
+
   static Point unitNormal(const std::array<Point, kSurfaceDim>& a) {
-    const Point n = cross(a[0], a[1]);
+    const Point n = areaNormal(a);
     return scaled(1.0 / norm(n), n);
   }
 
@@ -107,6 +119,10 @@ struct Quad4Facet {
   }
 
   static SurfaceCoords center() { return {0.0, 0.0}; }
+
+  /// Two triangles split along the diagonal node 0 – node 2, each counter-clockwise seen from outside.
+  static constexpr int kPieces = 2;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1, 2}, {0, 2, 3}}}; }
 };
 
 }  // namespace contessa::contact

@@ -1,5 +1,6 @@
 #include "contact/NodeToSegmentContact2D.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -34,12 +35,13 @@ NodeToSegmentContact2D::NodeToSegmentContact2D(const ContactLawParameters& param
     : parameters_(parameters),
       terms_(terms),
       normalLaw_(parameters.normalPenalty),
-      returnMapping_(parameters.tangentialPenalty, parameters.frictionCoefficient) {
+      returnMapping_(parameters.tangentialPenalty, parameters.frictionCoefficient, parameters.slipTolerance) {
   parameters_.validate();
 }
 
 NodeToSegmentResult2D NodeToSegmentContact2D::evaluate(const NodeToSegmentGeometry2D& x, int segment,
-                                                       const ContactHistory<1>& committed) const {
+                                                       const ContactHistory<1>& committed, double facetLength,
+                                                       SlipTangent slipTangent) const {
   if (committed.isInContact() && committed.segment != segment)
     throw std::logic_error("NodeToSegmentContact2D: committed history is on segment " +
                            std::to_string(committed.segment) + ", not on segment " + std::to_string(segment) +
@@ -91,10 +93,13 @@ NodeToSegmentResult2D NodeToSegmentContact2D::evaluate(const NodeToSegmentGeomet
     in.slipIncrement = {p.xi[0] - committed.xi[0]};  // Δξ_{n+1}, eq. (20)
     in.metric = p.metric;
     in.normalTraction = tN;
+    in.facetLength = facetLength;
     out.friction = returnMapping_.map(in);  // eq. (20)–(23)
     out.status = out.friction.status;
     tT = out.friction.traction[0];
     dT_dXi = out.friction.dTraction_dSlipIncrement(0, 0);
+    if (out.status == ContactStatus::Slip && slipTangent.secant)  // a node in a slip cycle: its secant
+      dT_dXi = std::min(slipTangent.stiffness, out.friction.tangentialPenalty * a11);
     dT_dMetric = out.friction.dTraction_dMetric[0](0, 0);
     dT_dNormal = out.friction.dTraction_dNormalTraction[0];
     // eq. (7), backward Euler: g_T,n+1 = g_T,n + √(Δξ ā_11 Δξ); committed only at commit().
@@ -114,6 +119,8 @@ NodeToSegmentResult2D NodeToSegmentContact2D::evaluate(const NodeToSegmentGeomet
   // Linearised tangential traction with ∂ξ̄/∂u ≈ D^1 and a fixed metric:
   //   dt_T1 ≈ ∂t/∂Δξ D^1·δu + ∂t/∂t_N ε_N N·δu.
   // Stick, ∂t/∂Δξ = ε_T ā_11, ∂t/∂t_N = 0:     K = ε_T ā_11 D^1 D^1ᵀ                        eq. (25)
+  //   (with a slip tolerance, ε_T = μ|t_N|/(s L_k) and ∂t/∂t_N = ā_11 Δξ ∂ε_T/∂t_N = −μ ā_11 Δξ/(s L_k):
+  //    the term ∂t/∂t_N ε_N D^1 Nᵀ below then also acts in stick, and is non-symmetric)
   // Slip,  ∂t/∂Δξ = eq. (27)·ε_T ā_11 (= 0 when there is one ξ: δ − n_T1 n_T^1 = 0),
   //        ∂t/∂t_N = −μ n^trial_T1:            K = −μ ε_N n^trial_T1 D^1 Nᵀ + (eq. 27 term)   eq. (26)
   // eq. (26) is printed with the penetration counted positive; with g_N < 0 (eq. 6) the first slip

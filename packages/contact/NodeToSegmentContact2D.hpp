@@ -20,6 +20,19 @@ struct NodeToSegmentGeometry2D {
 /// PaperMainTerms keeps only eq. (24)–(26), for comparison and verification.
 enum class TangentTerms { Consistent, PaperMainTerms };
 
+/// The tangential stiffness ∂t_T1/∂ξ̄ of a slipping node in the tangent. Consistent: eq. (27), zero along the
+/// slip with one surface coordinate. Secant: a given stiffness instead, for a node whose slip direction
+/// flips between Newton iterates (SlipReversalDamping): the secant of t_T1 between the two states of the
+/// cycle, so the step lands between them, in the stick range, instead of jumping across it. The residual,
+/// hence the converged answer, is the same either way.
+struct SlipTangent {
+  bool secant = false;
+  double stiffness = 0.0;  ///< ∂t_T1/∂ξ̄ used when `secant` (at most the stick stiffness ε_T ā_11)
+
+  static SlipTangent consistent() { return {}; }
+  static SlipTangent secantOf(double stiffness) { return {true, stiffness}; }
+};
+
 struct NodeToSegmentResult2D {
   static constexpr int kDofs = 6;
 
@@ -60,8 +73,10 @@ class NodeToSegmentContact2D {
                                   TangentTerms terms = TangentTerms::Consistent);
 
   /// Residual, tangent and trial history for the current positions `x` on master segment `segment`.
-  NodeToSegmentResult2D evaluate(const NodeToSegmentGeometry2D& x, int segment,
-                                 const ContactHistory<1>& committed) const;
+  /// `facetLength` is L_k, the mean length of the slave sides at the node (reference configuration): the
+  /// length the slip tolerance refers to (ε_T = μ|t_N|/(s L_k), ContactLawParameters); unused when s = 0.
+  NodeToSegmentResult2D evaluate(const NodeToSegmentGeometry2D& x, int segment, const ContactHistory<1>& committed,
+                                 double facetLength = 0.0, SlipTangent slipTangent = SlipTangent::consistent()) const;
 
   const ContactLawParameters& parameters() const { return parameters_; }
 

@@ -1,18 +1,21 @@
 #include "deck/DeckReader.hpp"
 
+#include <algorithm>
 #include <cerrno>
-#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
-
-#include <Teuchos_FileInputSource.hpp>
-#include <Teuchos_XMLObject.hpp>
-#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <map>
 
 #include "common/Error.hpp"
 #include "deck/ParameterValidation.hpp"
+#include "deck/XmlDocument.hpp"
 
 namespace contessa::deck {
 namespace {
+
+// A deck is a few kilobytes; anything this large is another kind of file given by mistake.
+constexpr std::size_t kMaxDeckBytes = 64u << 20;
 
 std::vector<std::string> splitPath(const std::string& path) {
   std::vector<std::string> parts;
@@ -26,107 +29,121 @@ std::vector<std::string> splitPath(const std::string& path) {
   return parts;
 }
 
-bool parseBool(const std::string& text, bool& value) {
-  if (text == "true" || text == "True" || text == "TRUE" || text == "1") { value = true; return true; }
-  if (text == "false" || text == "False" || text == "FALSE" || text == "0") { value = false; return true; }
-  return false;
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
 }
 
-bool parseInt(const std::string& text, int& value) {
-  errno = 0;
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || v < INT32_MIN || v > INT32_MAX) return false;
-  value = static_cast<int>(v);
-  return true;
-}
+// The XML tree of a deck turned into a ParameterList, with the line of each element for messages.
+// Teuchos' own reader would accept attributes it ignores, types a deck cannot mean (float), numbers
+// it reads by prefix ("1e-2x" as 0.01, "0x10" as 0) and the last of two equal names.
+class DeckBuilder {
+ public:
+  explicit DeckBuilder(std::string file) : file_(std::move(file)) {}
 
-bool parseDouble(const std::string& text, double& value) {
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return !text.empty() && *end == '\0' && errno == 0;
-}
-
-bool setTypedImpl(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
-              const std::string& text) {
-  if (typed.isType<std::string>()) { list.set(name, text); return true; }
-  if (typed.isType<double>()) { double v; if (!parseDouble(text, v)) return false; list.set(name, v); return true; }
-  if (typed.isType<int>()) { int v; if (!parseInt(text, v)) return false; list.set(name, v); return true; }
-  if (typed.isType<bool>()) { bool v; if (!parseBool(text, v)) return false; list.set(name, v); return true; }
-  return false;
-}
-
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\n\r");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t\n\r") - first + 1);
-}
-
-// Teuchos reads numbers with a stream and keeps whatever prefix parses ("abc" → 0, "1e-2x" → 0.01):
-// every numeric and boolean value of the deck is checked here first, so a typo is an error.
-void checkValueTexts(const Teuchos::XMLObject& node, const std::string& where, const std::string& path) {
-  if (node.getTag() == "ParameterList") {
-    const std::string name = node.hasAttribute("name") ? node.getAttribute("name") : "";
-    for (int i = 0; i < node.numChildren(); ++i) checkValueTexts(node.getChild(i), joinPath(where, name), path);
-    return;
-  }
-  if (node.getTag() != "Parameter" || !node.hasAttribute("type") || !node.hasAttribute("value")) return;
-  const std::string type = node.getAttribute("type");
-  const std::string name = node.hasAttribute("name") ? node.getAttribute("name") : "?";
-  const std::string paramPath = joinPath(where, name);
-  std::vector<std::string> items;
-  std::string text = node.getAttribute("value");
-  std::string element = type;
-  if (type.rfind("Array(", 0) == 0) {
-    element = type.substr(6, type.size() - 7);
-    text = trimmed(text);
-    requireInput(text.size() >= 2 && text.front() == '{' && text.back() == '}',
-                 path + ": " + paramPath + ": expected an array {a, b, ...}, got '" + text + "'");
-    std::string inner = text.substr(1, text.size() - 2);
-    std::size_t start = 0;
-    while (!trimmed(inner).empty()) {
-      const auto comma = inner.find(',', start);
-      items.push_back(trimmed(inner.substr(start, comma - start)));
-      if (comma == std::string::npos) break;
-      start = comma + 1;
+  void fill(const XmlElement& list, const std::string& path, Teuchos::ParameterList& out) const {
+    checkAttributes(list, {"name"}, "name");
+    if (list.textLine > 0)
+      fail(list.textLine, "text inside " + list.describe() + " (values go in <Parameter name=\"...\" type=\"...\" value=\"...\"/>)");
+    std::map<std::string, int> seen;  // name → line, in this list
+    for (const auto& child : list.children) {
+      const bool isList = child.tag == "ParameterList";
+      if (!isList && child.tag != "Parameter")
+        fail(child.line, "unknown element <" + child.tag + "> in " + where(path) +
+                             " (a ParameterList holds <Parameter> and <ParameterList> elements)");
+      if (!isList) checkAttributes(child, {"name", "type", "value"}, "name, type, value");
+      const std::string* name = child.attribute("name");
+      if (name == nullptr || name->empty())
+        fail(child.line, "<" + child.tag + "> without a name in " + where(path) + " (expected name=\"...\")");
+      const std::string childPath = joinPath(path, *name);
+      if (const auto [it, inserted] = seen.emplace(*name, child.line); !inserted)
+        fail(child.line, childPath + ": given twice in one list (lines " + std::to_string(it->second) + " and " +
+                             std::to_string(child.line) + "); keep one");
+      if (isList) fill(child, childPath, out.sublist(*name));
+      else parameter(child, childPath, *name, out);
     }
-  } else {
-    items.push_back(trimmed(text));
   }
-  for (const auto& item : items) {
-    bool ok = true;
-    if (element == "double") { double v; ok = parseDouble(item, v); }
-    else if (element == "int") { int v; ok = parseInt(item, v); }
-    else if (element == "bool") { bool v; ok = parseBool(item, v); }
-    requireInput(ok, path + ": " + paramPath + ": '" + item + "' is not a valid " + element);
+
+ private:
+  std::string file_;
+
+  [[noreturn]] void fail(int line, const std::string& what) const {
+    throw InputError(file_ + ":" + std::to_string(line) + ": " + what);
   }
-}
+  static std::string where(const std::string& path) { return path.empty() ? "the top-level list" : path; }
+
+  void checkAttributes(const XmlElement& e, const std::vector<std::string>& allowed, const std::string& expected) const {
+    for (const auto& [key, value] : e.attributes) {
+      // id, isUsed, isDefault and docString are written by Teuchos' own XML writer; they carry nothing here.
+      bool known = key == "id" || key == "isUsed" || key == "isDefault" || key == "docString";
+      for (const auto& a : allowed) known = known || key == a;
+      if (!known) fail(e.line, "unknown attribute '" + key + "' in " + e.describe() + " (expected " + expected + ")");
+    }
+  }
+
+  void parameter(const XmlElement& p, const std::string& path, const std::string& name, Teuchos::ParameterList& out) const {
+    if (!p.children.empty() || p.textLine > 0)
+      fail(p.line, path + ": a Parameter holds no text or elements; give the value as value=\"...\" and end the tag with '/>'");
+    const std::string* type = p.attribute("type");
+    const std::string* value = p.attribute("value");
+    if (type == nullptr) fail(p.line, path + ": <Parameter> without a type (e.g. type=\"double\")");
+    if (value == nullptr) fail(p.line, path + ": <Parameter> without a value (expected value=\"...\")");
+    const auto& types = deckTypes();
+    if (std::find(types.begin(), types.end(), *type) == types.end())
+      fail(p.line, path + ": unknown type '" + *type + "' (expected one of: " + joinNames(types) + ")");
+    ParsedValue parsed = parseValue(*type, *value);
+    if (parsed.problem != ValueProblem::None) fail(p.line, path + ": " + parsed.message);
+    out.setEntry(name, parsed.entry);
+  }
+};
 
 }  // namespace
 
-bool setTypedFromText(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
-                      const std::string& text) {
-  return setTypedImpl(list, name, typed, text);
+std::string readDeckText(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto status = fs::status(path, ec);
+  requireInput(fs::exists(status), path + ": cannot open deck file (no such file)");
+  requireInput(!fs::is_directory(status), path + ": is a directory, not a deck file");
+  std::ifstream in(path, std::ios::binary);
+  requireInput(in.is_open(), path + ": cannot open deck file (" + std::strerror(errno) + ")");
+  std::string text;
+  char buffer[65536];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    requireInput(text.size() <= kMaxDeckBytes, path + ": larger than " + std::to_string(kMaxDeckBytes >> 20) +
+                                                    " MB, not a deck (a mesh or results file?)");
+  }
+  requireInput(!in.bad(), path + ": cannot read the deck file");
+  return text;
 }
 
-Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) {
-  std::ifstream probe(path);
-  requireInput(probe.good(), path + ": cannot open deck file");
-  try {
-    const auto root = Teuchos::FileInputSource(path).getObject();
-    for (int i = 0; i < root.numChildren(); ++i) checkValueTexts(root.getChild(i), "", path);
-    return Teuchos::getParametersFromXmlFile(path);
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {
-    std::string msg = e.what();
-    // Teuchos' messages run over several lines; keep the gist on one.
-    for (auto& c : msg)
-      if (c == '\n') c = ' ';
-    if (msg.size() > 300) msg = msg.substr(0, 300) + "...";
-    throw InputError(path + ": not a valid XML parameter list (" + msg + ")");
+Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& file) {
+  const XmlElement root = parseXml(text, file);
+  if (root.tag != "ParameterList")
+    throw InputError(file + ":" + std::to_string(root.line) + ": the root element must be <ParameterList>, not <" +
+                     root.tag + ">");
+  const std::string* name = root.attribute("name");
+  auto deck = Teuchos::rcp(new Teuchos::ParameterList(name != nullptr && !name->empty() ? *name : "ANONYMOUS"));
+  DeckBuilder(file).fill(root, "", *deck);
+  return deck;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) { return parseDeck(readDeckText(path), path); }
+
+ParsedValue setTypedFromText(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
+                             const std::string& text) {
+  const std::string type = deckTypeOf(typed);
+  if (type.empty()) {
+    ParsedValue refused;
+    refused.problem = ValueProblem::Malformed;
+    refused.message = "a " + std::string(typed.getAny(false).typeName()) + " cannot be read from text";
+    return refused;
   }
+  ParsedValue parsed = parseValue(type, text, true);
+  if (parsed.problem == ValueProblem::None) list.setEntry(name, parsed.entry);
+  return parsed;
 }
 
 std::set<std::string> applyOverrides(Teuchos::ParameterList& deck, const std::vector<std::string>& overrides) {
@@ -151,8 +168,8 @@ std::set<std::string> applyOverrides(Teuchos::ParameterList& deck, const std::ve
     requireInput(!list->isSublist(name), "--set " + item + ": '" + path + "' is a sublist, not a parameter");
     if (list->isParameter(name)) {
       const Teuchos::ParameterEntry typed = list->getEntry(name);
-      requireInput(setTypedFromText(*list, name, typed, value),
-                   "--set " + item + ": '" + value + "' is not a valid " + typed.getAny(false).typeName());
+      const ParsedValue parsed = setTypedFromText(*list, name, typed, value);
+      requireInput(parsed.problem == ValueProblem::None, "--set " + item + ": " + parsed.message);
     } else {
       list->set(name, value);
     }

@@ -7,20 +7,33 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "deck/ValueText.hpp"
+
 namespace contessa::deck {
 
-/// Reads an XML deck; InputError naming the file when it is missing or not a valid XML ParameterList.
+/// The content of the deck file `path`, read once (a named pipe can be read only once). InputError
+/// naming the file when it does not exist, is a directory or cannot be read.
+std::string readDeckText(const std::string& path);
+
+/// The deck `text` as a ParameterList; `file` names the deck in messages ("FILE:LINE: what"). Refuses
+/// malformed XML, elements and attributes a deck does not have, a missing name, type or value, types
+/// other than deckTypes(), a parameter or sublist given twice in one list, and values that do not read
+/// as their type (numbers must be finite).
+Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& file);
+
+/// parseDeck(readDeckText(path), path).
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);
 
-/// Applies overrides "A/B/C=VALUE": an existing parameter keeps its type (VALUE must parse as
-/// that type); a new one is stored as a string and typed by validation (validateAndSetDefaults).
-/// Returns the paths that were set. InputError on a malformed override or a path through a
-/// parameter that is not a sublist.
+/// Applies overrides "A/B/C=VALUE": an existing parameter keeps its type (VALUE must read as that
+/// type; an array is "{a, b}" or "a, b"); a new one is stored as a string and typed by validation
+/// (validateAndSetDefaults). Returns the paths that were set. InputError on a malformed override or a
+/// path through a parameter that is not a sublist.
 std::set<std::string> applyOverrides(Teuchos::ParameterList& deck, const std::vector<std::string>& overrides);
 
-/// Stores `text` into list[name] with the type of `typed` (string, double, int, bool); false when
-/// the text does not parse as that type.
-bool setTypedFromText(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
-                      const std::string& text);
+/// Stores `text` into list[name] with the type of `typed` (any deck type, see ValueText.hpp; array
+/// braces optional). Returns the outcome: on failure nothing is stored and the message says why the
+/// text does not read as that type (e.g. "'inf' is not a finite number").
+ParsedValue setTypedFromText(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
+                             const std::string& text);
 
 }  // namespace contessa::deck

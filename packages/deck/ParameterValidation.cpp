@@ -1,11 +1,13 @@
 #include "deck/ParameterValidation.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "common/Error.hpp"
+#include "common/ErrorText.hpp"
 #include "deck/DeckReader.hpp"
 
 namespace contessa::deck {
@@ -35,6 +37,8 @@ std::string valueText(const Teuchos::ParameterEntry& entry) {
 }
 
 std::string formatNumber(double v) {
+  if (v >= std::numeric_limits<double>::max()) return "inf";  // a bound that means "none"
+  if (v <= -std::numeric_limits<double>::max()) return "-inf";
   std::ostringstream os;
   os << v;
   return os.str();
@@ -73,9 +77,21 @@ void checkRange(const std::string& path, const Teuchos::ParameterEntry& entry) {
   try {
     validator->validate(entry, path, "");
   } catch (const std::exception& e) {
-    std::string msg = e.what();
-    msg = msg.substr(0, msg.find('\n'));
-    throw InputError(path + ": " + msg);
+    throw InputError(path + ": " + plainMessage(e));
+  }
+}
+
+// No infinite or NaN number gets past validation, whichever way it entered the list (the text of a deck
+// or of --set is refused earlier, with the text as written).
+void requireFinite(const std::string& path, const Teuchos::ParameterEntry& entry) {
+  if (entry.isType<double>()) {
+    const double v = Teuchos::getValue<double>(entry);
+    requireInput(std::isfinite(v), path + ": expected a finite number, got " + formatNumber(v));
+  } else if (entry.isType<Teuchos::Array<double>>()) {
+    const auto& values = Teuchos::getValue<Teuchos::Array<double>>(entry);
+    for (Teuchos::Array<double>::size_type i = 0; i < values.size(); ++i)
+      requireInput(std::isfinite(values[i]), path + ": expected finite numbers, got " + formatNumber(values[i]) +
+                                                 " (element " + std::to_string(i + 1) + ")");
   }
 }
 
@@ -118,12 +134,17 @@ void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::Paramet
       // --set stores new values as text, typed here.
       if (expectedType == typeid(double) && given.isType<int>()) {
         deck.set(name, static_cast<double>(Teuchos::getValue<int>(given)));
-      } else if (!(given.isType<std::string>() &&
-                   setTypedFromText(deck, name, *expected, Teuchos::getValue<std::string>(given)))) {
-        throw InputError(where + ": expected type " + typeName(*expected) + ", got " + typeName(given) + " '" +
-                         valueText(given) + "'");
+      } else {
+        const ParsedValue typed = given.isType<std::string>()
+                                      ? setTypedFromText(deck, name, *expected, Teuchos::getValue<std::string>(given))
+                                      : ParsedValue{ValueProblem::Malformed, "", {}};
+        if (typed.problem == ValueProblem::Malformed)
+          throw InputError(where + ": expected type " + typeName(*expected) + ", got " + typeName(given) + " '" +
+                           valueText(given) + "'");
+        requireInput(typed.problem == ValueProblem::None, where + ": " + typed.message);
       }
     }
+    requireFinite(where, deck.getEntry(name));
     Teuchos::ParameterEntry& checked = deck.getEntry(name);
     checked.setValidator(expected->validator());
     checkRange(where, checked);

@@ -136,11 +136,13 @@ void requireNodeSet(const mesh::Mesh& mesh, const std::string& name, const std::
   throw InputError(where + ": node set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
 }
 
-// Nodes of a side set with their tributary lengths (half of each adjacent side), and its sides as
-// node pairs in element order: counter-clockwise elements make the outward normal point to the right.
+// Nodes of a side set with their tributary lengths (half of each adjacent side) and facet lengths (mean
+// length of the adjacent sides: the length the slip tolerance refers to), and its sides as node pairs in
+// element order: counter-clockwise elements make the outward normal point to the right.
 struct SideSetGeometry {
   std::vector<GlobalIndex> nodes;
   std::vector<double> areas;
+  std::vector<double> facetLengths;
   std::vector<std::array<GlobalIndex, 2>> segments;
 };
 
@@ -148,6 +150,7 @@ SideSetGeometry sideSetGeometry(const mesh::Mesh& mesh, const mesh::SideSet& set
   requireInput(mesh.dimension == 2, where + ": contact is implemented in 2D (node-to-segment) only so far");
   SideSetGeometry g;
   std::map<GlobalIndex, double> area;
+  std::map<GlobalIndex, int> sides;
   for (std::size_t i = 0; i < set.elements.size(); ++i) {
     const auto loc = mesh.locate(set.elements[i]);
     const auto& block = mesh.blocks[loc.block];
@@ -159,11 +162,14 @@ SideSetGeometry sideSetGeometry(const mesh::Mesh& mesh, const mesh::SideSet& set
                                       mesh.coordinates[2 * b + 1] - mesh.coordinates[2 * a + 1]);
     area[a] += 0.5 * length;
     area[b] += 0.5 * length;
+    ++sides[a];
+    ++sides[b];
     g.segments.push_back({a, b});
   }
   for (const auto& [node, tributary] : area) {
     g.nodes.push_back(node);
     g.areas.push_back(tributary);
+    g.facetLengths.push_back(2.0 * tributary / sides[node]);  // mean of the adjacent sides
   }
   return g;
 }
@@ -183,9 +189,10 @@ std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& l
   spec.law.normalPenalty = list.get<double>("Normal Penalty");
   spec.law.tangentialPenalty = list.get<double>("Tangential Penalty");
   spec.law.frictionCoefficient = list.get<double>("Friction Coefficient");
+  spec.law.slipTolerance = list.get<double>("Slip Tolerance");
   requireInput(spec.law.normalPenalty > 0, where + "/Normal Penalty: required; expected a value > 0");
-  requireInput(spec.law.frictionCoefficient == 0 || spec.law.tangentialPenalty > 0,
-               where + "/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0");
+  requireInput(spec.law.frictionCoefficient == 0 || spec.law.slipTolerance > 0 || spec.law.tangentialPenalty > 0,
+               where + "/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0 and Slip Tolerance = 0");
 
   const std::string slaveSet = list.get<std::string>("Slave Side Set");
   const std::string masterSet = list.get<std::string>("Master Side Set");
@@ -200,6 +207,7 @@ std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& l
   const auto slave = sideSetGeometry(mesh, mesh.sideSet(slaveSet), where + "/Slave Side Set");
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
+  spec.slaveFacetLengths = slave.facetLengths;
   if (rigid) {
     requireInput(points.size() >= 4 && points.size() % 2 == 0,
                  where + "/Rigid Surface/Points: expected x0, y0, x1, y1, ... (at least two points)");
@@ -223,6 +231,7 @@ std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& l
   swapped.name = name + " (second pass)";
   swapped.slaveNodes = master.nodes;
   swapped.slaveAreas = master.areas;
+  swapped.slaveFacetLengths = master.facetLengths;
   swapped.masterSegments = slave.segments;
   return {spec, swapped};
 }
@@ -305,8 +314,16 @@ RCP<const ParameterList> contactValidParameters() {
             "x0, y0, x1, y1, ...: the rigid body lies to the left of the direction of traversal");
   rigid.set("Motion", Teuchos::Array<double>(), "Displacement of the rigid surface at load factor 1 (x, y)");
   setNonNegative(*p, "Normal Penalty", 0.0, "Normal penalty ε_N (pressure per unit penetration), eq. (16); required");
-  setNonNegative(*p, "Tangential Penalty", 0.0, "Tangential penalty ε_T, eq. (17); required when Friction Coefficient > 0");
+  setNonNegative(*p, "Tangential Penalty", 0.0,
+                 "Tangential (stick) penalty ε_T, eq. (17): with Slip Tolerance = 0 the constant ε_T (required when "
+                 "Friction Coefficient > 0); with Slip Tolerance > 0 an upper bound of ε_T = μ|t_N|/(Slip Tolerance × "
+                 "facet length) (0 = no bound)");
   setNonNegative(*p, "Friction Coefficient", 0.0, "Coulomb coefficient μ, eq. (18); 0 = frictionless");
+  setBounded(*p, "Slip Tolerance", 0.005, 0.0, 1.0,
+             "Allowable elastic slip while sticking, as a fraction of the slave facet length L (mean length of the "
+             "slave sides at the node): "
+             "the stick penalty is ε_T = μ|t_N|/(Slip Tolerance × L), so nearly unloaded nodes keep a finite stick "
+             "range (as Abaqus' SLIP TOLERANCE); 0 = the paper's constant Tangential Penalty");
   p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
   return p;
 }

@@ -1,29 +1,91 @@
 #pragma once
-// Standard (displacement-only) total-Lagrangian solid kernel over any isoparametric reference
-// element: f_int = Σ_gp Bᵀ P w j, K = Σ_gp Bᵀ A B w j. Quad4 is this with the bilinear quadrilateral;
-// Hex8 will be this with a trilinear hexahedron. evaluate() returns InadmissibleDeformation when the
-// material rejects F at a Gauss point or when the reference element itself has j ≤ 0 (clockwise
-// node order or a degenerate element).
+// Standard (displacement-only) total-Lagrangian solid kernel over a reference element Shape
+// (ReferenceElement.hpp): f_int = Σ_gp Bᵀ P w j, K = Σ_gp Bᵀ A B w j. "Q4" is this with the bilinear
+// quadrilateral; a Hex8 is this with a trilinear hexahedron. Fixed-size arithmetic throughout, the
+// reference gradients precomputed per element, one material call per evaluation for all points.
+// evaluate() returns InadmissibleDeformation when the material rejects F at a Gauss point or when the
+// reference element itself has j ≤ 0 (clockwise node order or a degenerate element).
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <utility>
+
 #include "mechanics/Element.hpp"
-#include "mechanics/ReferenceElement.hpp"
+#include "mechanics/SolidOperators.hpp"
 
 namespace contessa::mechanics {
 
-class DisplacementElement : public ElementKernel {
+template <class Shape>
+class DisplacementElement final : public ElementKernel {
  public:
-  int dimension() const override { return reference_.dimension(); }
-  int numNodes() const override { return reference_.numNodes(); }
+  static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints, ND = D * N;
+  using Geometry = ReferenceGeometry<Shape>;
+  using GeometrySet = ElementGeometrySet<Geometry>;
 
-  ElementStatus evaluate(const double* X, const double* u, double* internal, const Material& material,
-                         double* internalForce, double* stiffness) const override;
-  ElementStatus averageCauchyStress(const double* X, const double* u, const double* internal,
-                                    const Material& material, Tensor2& sigma) const override;
+  explicit DisplacementElement(std::string name) : name_(std::move(name)) {}
+  std::string name() const override { return name_; }
+  int dimension() const override { return D; }
+  int numNodes() const override { return N; }
 
- protected:
-  explicit DisplacementElement(const ReferenceElement& reference) : reference_(reference) {}
+  std::unique_ptr<ElementGeometry> referenceGeometry(int count, const double* X) const override {
+    auto set = std::make_unique<GeometrySet>(count);
+    for (int e = 0; e < count; ++e) set->setValid(e, computeReferenceGeometry<Shape>(X + ND * e, set->record(e)));
+    return set;
+  }
+
+  using ElementKernel::averageCauchyStress;
+  using ElementKernel::evaluate;
+
+  ElementStatus evaluate(const ElementGeometry& geometry, int element, const double* u, double* /*state*/,
+                         const Material& material, double* internalForce, double* stiffness) const override {
+    const auto& set = static_cast<const GeometrySet&>(geometry);
+    if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
+    const Geometry& g = set[element];
+    std::array<Matrix<D>, Q> F, P;
+    std::array<Tangent<D>, Q> A;
+    // F = I + GRAD u; for small-strain laws the same F gives ε = sym GRAD u, i.e. linear elasticity.
+    for (int q = 0; q < Q; ++q) F[q] = deformationGradient(g, q, u);
+    if (!material.firstPiolaKirchhoffAtPoints(Q, F.data(), P.data(), stiffness ? A.data() : nullptr))
+      return ElementStatus::InadmissibleDeformation;
+    if (internalForce) {
+      std::fill(internalForce, internalForce + ND, 0.0);
+      for (int q = 0; q < Q; ++q) addDivergence<D, N>(g.dNdX[q].data(), P[q], g.weightedVolume[q], internalForce);
+    }
+    if (stiffness) {
+      std::fill(stiffness, stiffness + ND * ND, 0.0);
+      for (int q = 0; q < Q; ++q)
+        addTangent<D, N, N>(g.dNdX[q].data(), g.dNdX[q].data(), A[q], g.weightedVolume[q], stiffness, ND);
+    }
+    return ElementStatus::Ok;
+  }
+
+  ElementStatus averageCauchyStress(const ElementGeometry& geometry, int element, const double* u,
+                                    const double* /*internal*/, const Material& material,
+                                    Tensor2& sigma) const override {
+    const auto& set = static_cast<const GeometrySet&>(geometry);
+    if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
+    const Geometry& g = set[element];
+    sigma = Tensor2{};
+    Tensor2 s{};
+    for (int q = 0; q < Q; ++q) {
+      // Output only: the 3 × 3 path of the law (plane strain: F_33 = 1), which gives σ_zz too.
+      if (!material.cauchyStress(embedIn3D<D>(deformationGradient(g, q, u), 1.0), s))
+        return ElementStatus::InadmissibleDeformation;
+      sigma = add(sigma, s);
+    }
+    sigma = scaled(1.0 / Q, sigma);
+    return ElementStatus::Ok;
+  }
 
  private:
-  const ReferenceElement& reference_;  ///< a shared immutable instance (static lifetime)
+  static Matrix<D> deformationGradient(const Geometry& g, int q, const double* u) {
+    Matrix<D> H{};
+    addGradient<D, N>(g.dNdX[q].data(), u, H);
+    for (int i = 0; i < D; ++i) H[D * i + i] += 1.0;
+    return H;
+  }
+
+  std::string name_;
 };
 
 }  // namespace contessa::mechanics

@@ -1,7 +1,9 @@
 #pragma once
-// A solid element kernel: local internal force and tangent only (the model assembles). Kernels are
-// stateless; per-element internal variables (the enhanced-strain parameters α) live in the model
-// with a committed and a trial copy.
+// A solid element kernel: local internal force and tangent only (the model assembles). Kernels hold
+// no per-element data themselves: what depends only on the reference configuration is computed once
+// per element into an ElementGeometry (referenceGeometry), and what changes with the solution (the
+// enhanced-strain parameters α and the data that warm-start their local solve) is the element's
+// state, kept by the model in a committed and a trial copy.
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +15,15 @@ namespace contessa::mechanics {
 
 enum class ElementStatus { Ok, InadmissibleDeformation, InternalSolveFailed };
 
+/// Reference geometry of a set of elements of one kernel (shape-function gradients ∂N/∂X and
+/// integration weights × det J at every integration point, and what else the kernel precomputes).
+/// Opaque: only the kernel that made it reads it.
+class ElementGeometry {
+ public:
+  virtual ~ElementGeometry() = default;
+  virtual int size() const = 0;  ///< number of elements
+};
+
 class ElementKernel {
  public:
   virtual ~ElementKernel() = default;
@@ -22,19 +33,39 @@ class ElementKernel {
   int numDofs() const { return dimension() * numNodes(); }
   /// Internal (condensed) variables per element, e.g. 4 enhanced-strain parameters.
   virtual int numInternalVariables() const { return 0; }
+  /// Values of the element state: the internal variables first, then what the kernel keeps to
+  /// start its next local solve closer to the solution (the enhanced element's warm start). Held by
+  /// the model like the internal variables (trial and committed copies); all zero initially.
+  virtual int numStateValues() const { return numInternalVariables(); }
+
+  /// Reference geometry of `count` elements with reference coordinates X (count × numNodes ×
+  /// dimension, node-major). An element with det ∂X/∂ξ ≤ 0 at an integration point (clockwise nodes
+  /// or degenerate) is kept and reports InadmissibleDeformation whenever it is evaluated.
+  virtual std::unique_ptr<ElementGeometry> referenceGeometry(int count, const double* X) const = 0;
 
   /// Internal force f_int = ∫ Bᵀ P dV (size numDofs, node-major: u_x0 u_y0 u_x1 ...) and, when
-  /// `stiffness` is not null, the consistent tangent ∂f_int/∂u (numDofs², row-major).
-  /// X: reference coordinates (numNodes × dimension), u: displacements (same layout).
-  /// internal: in = starting guess, out = converged internal variables (may be null when none).
-  /// Plane strain, unit thickness.
-  virtual ElementStatus evaluate(const double* X, const double* u, double* internal,
-                                 const Material& material, double* internalForce,
-                                 double* stiffness) const = 0;
+  /// `stiffness` is not null, the consistent tangent ∂f_int/∂u (numDofs², row-major), of element
+  /// `element` of `geometry` at displacements u (numNodes × dimension). `internalForce` may be null.
+  /// state (numStateValues, may be null when numInternalVariables() is 0): in = the last state, out =
+  /// updated (left unchanged on failure). Plane strain, unit thickness in 2D.
+  virtual ElementStatus evaluate(const ElementGeometry& geometry, int element, const double* u, double* state,
+                                 const Material& material, double* internalForce, double* stiffness) const = 0;
 
-  /// Cauchy stress averaged over the integration points (3 × 3; plane strain includes σ_zz).
-  virtual ElementStatus averageCauchyStress(const double* X, const double* u, const double* internal,
-                                            const Material& material, Tensor2& sigma) const = 0;
+  /// Cauchy stress averaged over the integration points (3 × 3; plane strain includes σ_zz) with the
+  /// internal variables `internal` (the first numInternalVariables() values of a state; null: solved
+  /// for at u from zero).
+  virtual ElementStatus averageCauchyStress(const ElementGeometry& geometry, int element, const double* u,
+                                            const double* internal, const Material& material,
+                                            Tensor2& sigma) const = 0;
+
+  /// One element given by its reference coordinates X (numNodes × dimension): its geometry is
+  /// computed on the spot (tests and tools; the model precomputes it). `internal`: the internal
+  /// variables only (in = starting guess, null = 0; out = converged values, unchanged on failure);
+  /// no warm start beyond that.
+  ElementStatus evaluate(const double* X, const double* u, double* internal, const Material& material,
+                         double* internalForce, double* stiffness) const;
+  ElementStatus averageCauchyStress(const double* X, const double* u, const double* internal,
+                                    const Material& material, Tensor2& sigma) const;
 };
 
 /// Creates element kernels by the deck's "Element" name: "Q4" (bilinear, 2 × 2 Gauss) and

@@ -1,36 +1,281 @@
 #pragma once
-// Enhanced assumed strain solid kernel (Simo & Armero 1992, IJNME 33:1413) over any isoparametric
-// reference element: F = I + GRAD u + H̃(α), with the element parameters α condensed out at every
-// evaluate() by a local Newton solve of R_α(u, α) = 0. Quad4Enhanced is this with the bilinear
-// quadrilateral (4 modes); Hex8 will give 9 modes with no change here.
+// Enhanced assumed strain solid kernel (Simo & Armero 1992, IJNME 33:1413) over a reference element
+// Shape and its enhanced modes Modes (EnhancedStrain.hpp): F = I + GRAD u + H̃(α), with the element
+// parameters α condensed out at every evaluation by a local Newton solve of R_α(u, α) = 0. "Q4
+// Enhanced" is this with the bilinear quadrilateral and its 4 Wilson-bubble modes; a Hex8 with 9
+// modes is the same template with other traits.
+//
+// Lean by construction (docs/theory-solids.md §4): sizes are compile-time constants; per element,
+// ∂N/∂X, the mode gradients g_β, w j and the tolerance scales are precomputed (Geometry); the modes
+// are handled as D extra "nodes", so R_u, R_α and all four tangent blocks come from the same two
+// operators; one material call per local iteration evaluates every Gauss point; the local solve
+// starts from the last converged α moved along dα/du (the warm start, state layout below).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "mechanics/DenseSolve.hpp"
 #include "mechanics/Element.hpp"
-#include "mechanics/ReferenceElement.hpp"
+#include "mechanics/EnhancedStrain.hpp"
+#include "mechanics/SolidOperators.hpp"
 
 namespace contessa::mechanics {
 
-class EnhancedStrainElement : public ElementKernel {
+template <class Shape, class Modes>
+class EnhancedStrainElement final : public ElementKernel {
  public:
-  int dimension() const override { return reference_.dimension(); }
-  int numNodes() const override { return reference_.numNodes(); }
-  int numInternalVariables() const override { return dimension() * dimension(); }
-
-  /// `internal` (α): in = starting guess (null = 0), out = converged α (left unchanged on failure).
-  /// f_int = R_u(u, α*) and K = K_uu − K_uα K_αα⁻¹ K_αu at the converged α*, which is the exact
-  /// derivative of u ↦ R_u(u, α*(u)) because R_α(u, α*(u)) = 0. Returns InternalSolveFailed when
-  /// the local Newton does not converge in kMaxLocalIterations or K_αα is singular.
-  ElementStatus evaluate(const double* X, const double* u, double* internal, const Material& material,
-                         double* internalForce, double* stiffness) const override;
-  /// Uses `internal` as the converged α (null: solves for it from 0).
-  ElementStatus averageCauchyStress(const double* X, const double* u, const double* internal,
-                                    const Material& material, Tensor2& sigma) const override;
-
+  static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
+  static constexpr int M = Modes::kPseudoNodes;  ///< mode "nodes", D parameters each
+  static constexpr int ND = D * N, NA = D * M, NE = ND + NA, G = N + M;
+  /// State: α (NA values, α_(β,i) at D·β + i), then the displacements u_α at which α was converged
+  /// (ND), then dα/du = −K_αα⁻¹ K_αu from the last tangent evaluation (NA × ND, row-major).
+  static constexpr int kStateAlpha = 0, kStateDisplacement = NA, kStateSensitivity = NA + ND;
+  static constexpr int kStateSize = NA + ND + NA * ND;
   static constexpr int kMaxLocalIterations = 25;
 
- protected:
-  explicit EnhancedStrainElement(const ReferenceElement& reference) : reference_(reference) {}
+  /// What an evaluation needs from the reference configuration, computed once per element.
+  struct Geometry {
+    std::array<std::array<double, G * D>, Q> gradients{};  ///< ∂N_a/∂X_J (a < N), then g_β,J
+    std::array<double, Q> weightedVolume{};                ///< w j
+    std::array<double, Q> modeNormSum{};                   ///< Σ_m ‖G_m‖ (Frobenius) over the NA modes
+    double length = 0.0;                                   ///< V^(1/D): α has units of length
+  };
+  using GeometrySet = ElementGeometrySet<Geometry>;
+
+  explicit EnhancedStrainElement(std::string name) : name_(std::move(name)) {}
+  std::string name() const override { return name_; }
+  int dimension() const override { return D; }
+  int numNodes() const override { return N; }
+  int numInternalVariables() const override { return NA; }
+  int numStateValues() const override { return kStateSize; }
+
+  std::unique_ptr<ElementGeometry> referenceGeometry(int count, const double* X) const override {
+    auto set = std::make_unique<GeometrySet>(count);
+    for (int e = 0; e < count; ++e) set->setValid(e, computeGeometry(X + ND * e, set->record(e)));
+    return set;
+  }
+
+  using ElementKernel::averageCauchyStress;
+  using ElementKernel::evaluate;
+
+  /// f_int = R_u(u, α*) and K = K_uu − K_uα K_αα⁻¹ K_αu at the converged α*, which is the exact
+  /// derivative of u ↦ R_u(u, α*(u)) because R_α(u, α*(u)) = 0. The local Newton starts from the
+  /// state's α + dα/du (u − u_α) (a first-order prediction; from the state's α itself if that start
+  /// fails). Returns InternalSolveFailed when the local Newton does not converge in
+  /// kMaxLocalIterations or K_αα is singular.
+  ElementStatus evaluate(const ElementGeometry& geometry, int element, const double* u, double* state,
+                         const Material& material, double* internalForce, double* stiffness) const override {
+    const auto& set = static_cast<const GeometrySet&>(geometry);
+    if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
+    const Geometry& g = set[element];
+    std::array<Matrix<D>, Q> Fc;  // I + GRAD u, fixed during the local solve
+    for (int q = 0; q < Q; ++q) Fc[q] = compatibleGradient(g, q, u);
+
+    Alpha alpha{}, shift{};
+    if (state) {
+      std::copy(state + kStateAlpha, state + kStateAlpha + NA, alpha.begin());
+      // Warm start: α moves with u like dα/du (from the last tangent), so predict it to first order.
+      // Exactly α when u has not changed since α was converged (a Jacobian after its residual).
+      const double* uAlpha = state + kStateDisplacement;
+      const double* dAlphadU = state + kStateSensitivity;
+      for (int c = 0; c < ND; ++c) {
+        const double du = u[c] - uAlpha[c];
+        if (du == 0.0) continue;
+        for (int m = 0; m < NA; ++m) shift[m] += dAlphadU[m * ND + c] * du;
+      }
+    }
+    PointStates s;
+    Alpha solution = alpha;
+    for (int m = 0; m < NA; ++m) solution[m] += shift[m];
+    ElementStatus status = solveLocal(g, Fc, material, solution, s);
+    if (status != ElementStatus::Ok && shift != Alpha{}) {
+      // The prediction overshot (an inadmissible start or no convergence): start where we would
+      // without it.
+      solution = alpha;
+      status = solveLocal(g, Fc, material, solution, s);
+    }
+    if (status != ElementStatus::Ok) return status;
+
+    if (internalForce) {
+      std::fill(internalForce, internalForce + ND, 0.0);
+      for (int q = 0; q < Q; ++q)
+        addDivergence<D, N>(g.gradients[q].data(), s.P[q], g.weightedVolume[q], internalForce);
+    }
+    std::array<double, NA * ND> W{};  // K_αα⁻¹ K_αu
+    if (stiffness) {
+      // All four blocks at α* at once: nodes and modes are one list of gradients.
+      std::array<double, NE * NE> Ke{};
+      for (int q = 0; q < Q; ++q)
+        addTangent<D, G, G>(g.gradients[q].data(), g.gradients[q].data(), s.A[q], g.weightedVolume[q], Ke.data(), NE);
+      // Static condensation: K = K_uu − K_uα W with K_αα W = K_αu.
+      std::array<double, NA * NA> Kaa;
+      for (int m = 0; m < NA; ++m) {
+        for (int n = 0; n < NA; ++n) Kaa[m * NA + n] = Ke[(ND + m) * NE + ND + n];
+        for (int c = 0; c < ND; ++c) W[m * ND + c] = Ke[(ND + m) * NE + c];
+      }
+      if (!solveDenseInPlace<NA, ND>(Kaa.data(), W.data())) return ElementStatus::InternalSolveFailed;
+      for (int r = 0; r < ND; ++r)
+        for (int c = 0; c < ND; ++c) {
+          double sum = 0.0;
+          for (int m = 0; m < NA; ++m) sum += Ke[r * NE + ND + m] * W[m * ND + c];
+          stiffness[r * ND + c] = Ke[r * NE + c] - sum;
+        }
+    }
+    if (state) {
+      std::copy(solution.begin(), solution.end(), state + kStateAlpha);
+      std::copy(u, u + ND, state + kStateDisplacement);
+      if (stiffness)
+        for (int k = 0; k < NA * ND; ++k) state[kStateSensitivity + k] = -W[k];  // dα/du = −K_αα⁻¹ K_αu
+    }
+    return ElementStatus::Ok;
+  }
+
+  ElementStatus averageCauchyStress(const ElementGeometry& geometry, int element, const double* u,
+                                    const double* internal, const Material& material,
+                                    Tensor2& sigma) const override {
+    const auto& set = static_cast<const GeometrySet&>(geometry);
+    if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
+    const Geometry& g = set[element];
+    Alpha alpha{};
+    if (internal) {
+      std::copy(internal, internal + NA, alpha.begin());
+    } else {
+      std::array<double, kStateSize> state{};
+      const ElementStatus status = evaluate(geometry, element, u, state.data(), material, nullptr, nullptr);
+      if (status != ElementStatus::Ok) return status;
+      std::copy(state.begin() + kStateAlpha, state.begin() + kStateAlpha + NA, alpha.begin());
+    }
+    sigma = Tensor2{};
+    Tensor2 s{};
+    for (int q = 0; q < Q; ++q) {
+      // Output only: the 3 × 3 path of the law (plane strain: F_33 = 1), which gives σ_zz too.
+      if (!material.cauchyStress(embedIn3D<D>(enhancedGradient(g, q, compatibleGradient(g, q, u), alpha), 1.0), s))
+        return ElementStatus::InadmissibleDeformation;
+      sigma = add(sigma, s);
+    }
+    sigma = scaled(1.0 / Q, sigma);
+    return ElementStatus::Ok;
+  }
 
  private:
-  const ReferenceElement& reference_;  ///< a shared immutable instance (static lifetime)
+  using Alpha = std::array<double, NA>;
+  /// F, P and A at every integration point for the current α.
+  struct PointStates {
+    std::array<Matrix<D>, Q> F, P;
+    std::array<Tangent<D>, Q> A;
+  };
+
+  // Local Newton stopping rules. R_α is converged when ‖R_α‖ ≤ kResidualTolerance · s, where
+  // s = Σ_gp ‖P‖ Σ_m ‖G_m‖ w j bounds the size of the terms summed into R_α (so the test is
+  // independent of units and of the load level). The condensed tangent is exact only at R_α = 0, and
+  // an α error δα shows up as K_uα δα in f_int, hence the tight value: Newton converges
+  // quadratically, so it costs at most one extra iteration. Two fallbacks end the iteration at the
+  // round-off floor: a Newton step negligible against the element size, or a residual that is small
+  // and no longer decreasing (quadratic convergence would have reduced it by orders of magnitude).
+  static constexpr double kResidualTolerance = 1e-13;
+  static constexpr double kStagnationTolerance = 1e-9;
+  static constexpr double kStepTolerance = 1e-14;
+
+  static bool computeGeometry(const double* X, Geometry& g) {
+    ReferenceGeometry<Shape> reference;
+    if (!computeReferenceGeometry<Shape>(X, reference)) return false;
+    const double centre[D] = {};
+    const Matrix<D> J0 = parentJacobian<Shape>(centre, X);
+    const double j0 = determinantOf<D>(J0);
+    if (!(j0 > 0.0)) return false;
+    const Matrix<D> J0inv = inverseOf<D>(J0, j0);
+    const auto rule = Shape::quadrature();
+    double volume = 0.0;
+    for (int q = 0; q < Q; ++q) {
+      std::copy(reference.dNdX[q].begin(), reference.dNdX[q].end(), g.gradients[q].begin());
+      double* modes = g.gradients[q].data() + ND;
+      Modes::gradients(rule[q].xi.data(), j0 / reference.detJ[q], J0inv, modes);
+      // Each of the NA modes G_m, m = (β, i), has the single non-zero row g_β: ‖G_m‖ = |g_β|.
+      double sum = 0.0;
+      for (int beta = 0; beta < M; ++beta) {
+        double n2 = 0.0;
+        for (int J = 0; J < D; ++J) n2 += modes[D * beta + J] * modes[D * beta + J];
+        sum += D * std::sqrt(n2);
+      }
+      g.modeNormSum[q] = sum;
+      g.weightedVolume[q] = reference.weightedVolume[q];
+      volume += g.weightedVolume[q];
+    }
+    g.length = std::pow(volume, 1.0 / D);
+    return true;
+  }
+
+  static Matrix<D> compatibleGradient(const Geometry& g, int q, const double* u) {
+    Matrix<D> H{};
+    addGradient<D, N>(g.gradients[q].data(), u, H);
+    for (int i = 0; i < D; ++i) H[D * i + i] += 1.0;
+    return H;
+  }
+
+  /// F = (I + GRAD u) + H̃(α).
+  static Matrix<D> enhancedGradient(const Geometry& g, int q, const Matrix<D>& compatible, const Alpha& alpha) {
+    Matrix<D> H{};
+    addGradient<D, M>(g.gradients[q].data() + ND, alpha.data(), H);
+    for (int n = 0; n < D * D; ++n) H[n] += compatible[n];
+    return H;
+  }
+
+  template <int n>
+  static double norm(const double* v) {
+    double s = 0.0;
+    for (int k = 0; k < n; ++k) s += v[k] * v[k];
+    return std::sqrt(s);
+  }
+
+  /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F,
+  /// P, A there.
+  ElementStatus solveLocal(const Geometry& g, const std::array<Matrix<D>, Q>& Fc, const Material& material,
+                           Alpha& alpha, PointStates& s) const {
+    Alpha step{};
+    double previousNorm = HUGE_VAL;
+    for (int iter = 0; iter < kMaxLocalIterations; ++iter) {
+      for (int q = 0; q < Q; ++q) s.F[q] = enhancedGradient(g, q, Fc[q], alpha);
+      if (!material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), s.A.data())) {
+        // Inadmissible at the starting guess: the deformation (or the start) is bad. After a Newton
+        // step: the step overshot, so halve it and try again.
+        if (iter == 0) return ElementStatus::InadmissibleDeformation;
+        for (int m = 0; m < NA; ++m) {
+          step[m] *= 0.5;
+          alpha[m] -= step[m];
+        }
+        continue;
+      }
+      Alpha R{};
+      double scale = 0.0;
+      for (int q = 0; q < Q; ++q) {
+        addDivergence<D, M>(g.gradients[q].data() + ND, s.P[q], g.weightedVolume[q], R.data());
+        scale += normOf<D>(s.P[q]) * g.modeNormSum[q] * g.weightedVolume[q];
+      }
+      const double rNorm = norm<NA>(R.data());
+      if (!std::isfinite(rNorm)) return ElementStatus::InternalSolveFailed;
+      if (rNorm <= kResidualTolerance * scale ||
+          (rNorm <= kStagnationTolerance * scale && rNorm > 0.5 * previousNorm))
+        return ElementStatus::Ok;
+      // Newton step K_αα Δα = −R_α.
+      std::array<double, NA * NA> Kaa{};
+      for (int q = 0; q < Q; ++q) {
+        const double* modes = g.gradients[q].data() + ND;
+        addTangent<D, M, M>(modes, modes, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
+      }
+      for (int m = 0; m < NA; ++m) step[m] = -R[m];
+      if (!solveDenseInPlace<NA, 1>(Kaa.data(), step.data())) return ElementStatus::InternalSolveFailed;
+      // The current α is already exact to round-off; F, P, A in s belong to it.
+      if (norm<NA>(step.data()) <= kStepTolerance * (norm<NA>(alpha.data()) + g.length)) return ElementStatus::Ok;
+      for (int m = 0; m < NA; ++m) alpha[m] += step[m];
+      previousNorm = rNorm;
+    }
+    return ElementStatus::InternalSolveFailed;
+  }
+
+  std::string name_;
 };
 
 }  // namespace contessa::mechanics

@@ -9,7 +9,7 @@
 
 namespace contessa::mechanics {
 
-class LinearElastic final : public Material {
+class LinearElastic final : public MaterialLaw<LinearElastic> {
  public:
   static constexpr const char* kModelName = "Linear Elastic";
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -18,11 +18,15 @@ class LinearElastic final : public Material {
   explicit LinearElastic(const LameConstants& lame) : lame_(lame) {}
   const LameConstants& lame() const { return lame_; }
 
-  bool firstPiolaKirchhoff(const Tensor2& F, Tensor2& P, Tensor4* A) const override;
+  /// P(F) and A = ∂P/∂F (when not null) in D dimensions (D = 2: plane strain, in-plane blocks).
+  template <int D>
+  bool stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* A) const;
   bool isSmallStrain() const override { return true; }
 
  private:
   LameConstants lame_;
 };
+
+extern template class MaterialLaw<LinearElastic>;
 
 }  // namespace contessa::mechanics

@@ -10,7 +10,7 @@
 
 namespace contessa::mechanics {
 
-class NeoHookean final : public Material {
+class NeoHookean final : public MaterialLaw<NeoHookean> {
  public:
   static constexpr const char* kModelName = "Neo-Hookean";
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -19,10 +19,14 @@ class NeoHookean final : public Material {
   explicit NeoHookean(const LameConstants& lame) : lame_(lame) {}
   const LameConstants& lame() const { return lame_; }
 
-  bool firstPiolaKirchhoff(const Tensor2& F, Tensor2& P, Tensor4* A) const override;
+  /// P(F) and A = ∂P/∂F (when not null) in D dimensions (D = 2: plane strain, in-plane blocks).
+  template <int D>
+  bool stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* A) const;
 
  private:
   LameConstants lame_;
 };
+
+extern template class MaterialLaw<NeoHookean>;
 
 }  // namespace contessa::mechanics

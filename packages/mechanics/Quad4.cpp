@@ -1,8 +1,12 @@
 #include "mechanics/Quad4.hpp"
 
+#include "mechanics/DisplacementElement.hpp"
+#include "mechanics/EnhancedStrain.hpp"
+#include "mechanics/EnhancedStrainElement.hpp"
+
 namespace contessa::mechanics {
 
-void BilinearQuadrilateral::shapeGradients(const double* xi, double* dNdxi) const {
+void BilinearQuadrilateral::shapeGradients(const double* xi, double* dNdxi) {
   static const double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
   static const double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
   for (int a = 0; a < 4; ++a) {
@@ -11,13 +15,12 @@ void BilinearQuadrilateral::shapeGradients(const double* xi, double* dNdxi) cons
   }
 }
 
-const BilinearQuadrilateral& bilinearQuadrilateral() {
-  static const BilinearQuadrilateral instance;
-  return instance;
+std::unique_ptr<ElementKernel> makeQuad4(const std::string& name) {
+  return std::make_unique<DisplacementElement<BilinearQuadrilateral>>(name);
 }
 
-Quad4::Quad4() : DisplacementElement(bilinearQuadrilateral()) {}
-
-std::string Quad4::name() const { return kName; }
+std::unique_ptr<ElementKernel> makeQuad4Enhanced(const std::string& name) {
+  return std::make_unique<EnhancedStrainElement<BilinearQuadrilateral, WilsonBubbleModes<2>>>(name);
+}
 
 }  // namespace contessa::mechanics

@@ -1,34 +1,27 @@
 #pragma once
-// "Q4": bilinear 4-node quadrilateral, total-Lagrangian, full 2 × 2 Gauss integration, plane strain.
-// Locks in bending (parasitic shear) and near incompressibility; see Quad4Enhanced.
+// The 4-node quadrilateral: its reference element (BilinearQuadrilateral) and the two kernels built on
+// it, "Q4" (DisplacementElement: full 2 × 2 Gauss, locks in bending and near incompressibility) and
+// "Q4 Enhanced" (EnhancedStrainElement with the 4 Simo–Armero modes: exact for pure bending of
+// rectangles, free of volumetric locking in the small-strain limit). Plane strain.
+#include <array>
+#include <memory>
 #include <string>
 
-#include "mechanics/DisplacementElement.hpp"
+#include "mechanics/Element.hpp"
 #include "mechanics/ReferenceElement.hpp"
 
 namespace contessa::mechanics {
 
 /// Bilinear 4-node quadrilateral, nodes counter-clockwise at (ξ, η) = (−1,−1), (1,−1), (1,1), (−1,1);
-/// N_a = ¼ (1 + ξ_a ξ)(1 + η_a η), 2 × 2 Gauss. One shared instance: bilinearQuadrilateral().
-class BilinearQuadrilateral final : public ReferenceElement {
- public:
-  BilinearQuadrilateral() : rule_(gaussLegendreRule(2, 2)) {}
-  int dimension() const override { return 2; }
-  int numNodes() const override { return 4; }
-  void shapeGradients(const double* xi, double* dNdxi) const override;
-  const std::vector<QuadraturePoint>& quadrature() const override { return rule_; }
-
- private:
-  std::vector<QuadraturePoint> rule_;
+/// N_a = ¼ (1 + ξ_a ξ)(1 + η_a η), 2 × 2 Gauss.
+struct BilinearQuadrilateral {
+  static constexpr int kDimension = 2, kNodes = 4, kPoints = 4;
+  static std::array<QuadraturePoint<2>, kPoints> quadrature() { return gaussLegendreRule<2, 2>(); }
+  static void shapeGradients(const double* xi, double* dNdxi);
 };
 
-const BilinearQuadrilateral& bilinearQuadrilateral();
-
-class Quad4 final : public DisplacementElement {
- public:
-  static constexpr const char* kName = "Q4";
-  Quad4();
-  std::string name() const override;
-};
+/// The kernels, under the name the registry (ElementFactory.cpp) gives them.
+std::unique_ptr<ElementKernel> makeQuad4(const std::string& name);
+std::unique_ptr<ElementKernel> makeQuad4Enhanced(const std::string& name);
 
 }  // namespace contessa::mechanics

@@ -1,34 +1,50 @@
 #pragma once
-// Isoparametric reference elements: shape-function gradients on the parent domain [−1, 1]^d and
-// their Gauss rule. The solid kernels (DisplacementElement, EnhancedStrainElement) only see this
-// interface, so a trilinear Hex8 is one more ReferenceElement (next to BilinearQuadrilateral in
-// Quad4.hpp), not a new kernel.
+// Isoparametric reference elements as compile-time traits. The solid kernels (DisplacementElement,
+// EnhancedStrainElement) are templates on one, so their arithmetic has fixed sizes. A shape provides
+//
+//   static constexpr int kDimension, kNodes, kPoints;        // D, nodes, integration points
+//   static std::array<QuadraturePoint<kDimension>, kPoints> quadrature();
+//   static void shapeGradients(const double* xi, double* dNdxi);  // ∂N_a/∂ξ_β at kDimension·a + β
+//
+// BilinearQuadrilateral (Quad4.hpp) is one; a trilinear hexahedron (2 × 2 × 2 Gauss) is another, with
+// no change to the kernels. Shapes and rules are only used when an element's reference geometry is
+// computed (once per element, SolidOperators.hpp), never in the residual or Jacobian loops.
 #include <array>
-#include <vector>
+#include <cmath>
 
 namespace contessa::mechanics {
 
-inline constexpr int kMaxDimension = 3;
-inline constexpr int kMaxNodes = 8;  ///< Hex8
-
+template <int D>
 struct QuadraturePoint {
-  std::array<double, 3> xi{};  ///< parent coordinates (unused entries 0)
+  std::array<double, D> xi{};  ///< parent coordinates
   double weight = 0.0;
 };
 
-/// Tensor-product Gauss–Legendre rule on [−1, 1]^dimension, n = 1, 2 or 3 points per direction
-/// (exact for polynomials of degree 2n − 1 in each coordinate).
-std::vector<QuadraturePoint> gaussLegendreRule(int dimension, int pointsPerDirection);
+inline constexpr int integerPower(int base, int exponent) {
+  return exponent == 0 ? 1 : base * integerPower(base, exponent - 1);
+}
 
-class ReferenceElement {
- public:
-  virtual ~ReferenceElement() = default;
-  virtual int dimension() const = 0;
-  virtual int numNodes() const = 0;
-  /// ∂N_a/∂ξ_β at index dimension()·a + β.
-  virtual void shapeGradients(const double* xi, double* dNdxi) const = 0;
-  /// The full integration rule of the element.
-  virtual const std::vector<QuadraturePoint>& quadrature() const = 0;
-};
+/// Tensor-product Gauss–Legendre rule on [−1, 1]^D with n = 1, 2 or 3 points per direction (exact
+/// for polynomials of degree 2n − 1 in each coordinate); ξ varies fastest, then η, then ζ.
+template <int D, int n>
+std::array<QuadraturePoint<D>, integerPower(n, D)> gaussLegendreRule() {
+  static_assert(D >= 1 && D <= 3 && n >= 1 && n <= 3);
+  const double points[3][3] = {{0.0, 0.0, 0.0},
+                               {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0), 0.0},
+                               {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}};
+  const double weights[3][3] = {{2.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0}};
+  std::array<QuadraturePoint<D>, integerPower(n, D)> rule{};
+  for (int q = 0; q < integerPower(n, D); ++q) {
+    int rest = q;
+    rule[q].weight = 1.0;
+    for (int d = 0; d < D; ++d) {
+      const int k = rest % n;
+      rest /= n;
+      rule[q].xi[d] = points[n - 1][k];
+      rule[q].weight *= weights[n - 1][k];
+    }
+  }
+  return rule;
+}
 
 }  // namespace contessa::mechanics

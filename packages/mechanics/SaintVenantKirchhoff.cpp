@@ -12,30 +12,51 @@ std::unique_ptr<Material> SaintVenantKirchhoff::create(const Teuchos::ParameterL
   return std::make_unique<SaintVenantKirchhoff>(readLameConstants(params, where));
 }
 
-bool SaintVenantKirchhoff::firstPiolaKirchhoff(const Tensor2& F, Tensor2& P, Tensor4* A) const {
+template <int D>
+bool SaintVenantKirchhoff::stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* A) const {
   // The energy stays finite through inversion, but an inverted F is not a deformation: reject it
   // like every finite-strain law so the solver cuts back instead of converging to it.
-  if (!(determinant(F) > 0.0)) return false;
+  if (!(determinantOf<D>(F) > 0.0)) return false;
   const double lambda = lame_.lambda, mu = lame_.mu;
-  const Tensor2 I = identity2();
-  const Tensor2 C = multiply(transpose(F), F);
-  Tensor2 E{}, S{};
-  for (int n = 0; n < 9; ++n) E[n] = 0.5 * (C[n] - I[n]);
-  const double trE = trace(E);
-  for (int n = 0; n < 9; ++n) S[n] = lambda * trE * I[n] + 2.0 * mu * E[n];
-  P = multiply(F, S);
+  // E = ½ (FᵀF − I), S = λ tr(E) I + 2μ E, P = F S. In plane strain E_33 = 0, so tr E and the
+  // in-plane S, P are those of the in-plane block.
+  Matrix<D> E{}, S{};
+  for (int I = 0; I < D; ++I)
+    for (int J = 0; J < D; ++J) {
+      double C = 0.0;
+      for (int k = 0; k < D; ++k) C += F[D * k + I] * F[D * k + J];
+      E[D * I + J] = 0.5 * (C - (I == J ? 1.0 : 0.0));
+    }
+  double trE = 0.0;
+  for (int I = 0; I < D; ++I) trE += E[D * I + I];
+  for (int n = 0; n < D * D; ++n) S[n] = 2.0 * mu * E[n];
+  for (int I = 0; I < D; ++I) S[D * I + I] += lambda * trE;
+  for (int i = 0; i < D; ++i)
+    for (int J = 0; J < D; ++J) {
+      double s = 0.0;
+      for (int K = 0; K < D; ++K) s += F[D * i + K] * S[D * K + J];
+      P[D * i + J] = s;
+    }
   if (A) {
     // A_iJkL = δ_ik S_JL + F_iM ℂ_MJNL F_kN, ℂ_MJNL = λ δ_MJ δ_NL + μ (δ_MN δ_JL + δ_ML δ_JN),
     // i.e. the geometric term plus λ F_iJ F_kL + μ ((F Fᵀ)_ik δ_JL + F_iL F_kJ).
-    const Tensor2 b = multiply(F, transpose(F));
-    for (int i = 0; i < 3; ++i)
-      for (int J = 0; J < 3; ++J)
-        for (int k = 0; k < 3; ++k)
-          for (int L = 0; L < 3; ++L)
-            (*A)[idx4(i, J, k, L)] = I[idx2(i, k)] * S[idx2(J, L)] + lambda * F[idx2(i, J)] * F[idx2(k, L)] +
-                                     mu * (b[idx2(i, k)] * I[idx2(J, L)] + F[idx2(i, L)] * F[idx2(k, J)]);
+    Matrix<D> b{};
+    for (int i = 0; i < D; ++i)
+      for (int k = 0; k < D; ++k)
+        for (int M = 0; M < D; ++M) b[D * i + k] += F[D * i + M] * F[D * k + M];
+    for (int i = 0; i < D; ++i)
+      for (int J = 0; J < D; ++J)
+        for (int k = 0; k < D; ++k)
+          for (int L = 0; L < D; ++L)
+            (*A)[((D * i + J) * D + k) * D + L] =
+                (i == k ? S[D * J + L] : 0.0) + lambda * F[D * i + J] * F[D * k + L] +
+                mu * ((J == L ? b[D * i + k] : 0.0) + F[D * i + L] * F[D * k + J]);
   }
   return true;
 }
+
+template bool SaintVenantKirchhoff::stress<2>(const Matrix<2>&, Matrix<2>&, Tangent<2>*) const;
+template bool SaintVenantKirchhoff::stress<3>(const Matrix<3>&, Matrix<3>&, Tangent<3>*) const;
+template class MaterialLaw<SaintVenantKirchhoff>;
 
 }  // namespace contessa::mechanics

@@ -10,7 +10,7 @@
 
 namespace contessa::mechanics {
 
-class SaintVenantKirchhoff final : public Material {
+class SaintVenantKirchhoff final : public MaterialLaw<SaintVenantKirchhoff> {
  public:
   static constexpr const char* kModelName = "Saint Venant-Kirchhoff";
   static Teuchos::RCP<const Teuchos::ParameterList> validParameters();
@@ -19,10 +19,14 @@ class SaintVenantKirchhoff final : public Material {
   explicit SaintVenantKirchhoff(const LameConstants& lame) : lame_(lame) {}
   const LameConstants& lame() const { return lame_; }
 
-  bool firstPiolaKirchhoff(const Tensor2& F, Tensor2& P, Tensor4* A) const override;
+  /// P(F) and A = ∂P/∂F (when not null) in D dimensions (D = 2: plane strain, in-plane blocks).
+  template <int D>
+  bool stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* A) const;
 
  private:
   LameConstants lame_;
 };
+
+extern template class MaterialLaw<SaintVenantKirchhoff>;
 
 }  // namespace contessa::mechanics

@@ -1,38 +1,151 @@
 #pragma once
-// Total-Lagrangian "B" operators, written for any dimension and node count (Quad4 now, Hex8 later).
-// Tensors stay 3 × 3: in 2D the indices J, L of ∂N/∂X run over the first two components only, and
-// the padding (F_33 = 1, F_3J = F_i3 = 0) is what makes the 3D material code plane strain.
+// Total-Lagrangian operators of the solid kernels, with sizes fixed at compile time (dimension D and
+// number of gradient vectors), and the reference geometry each element computes once.
+//
+// The operators work on lists of reference gradients g_a (D components each): the shape-function
+// gradients ∂N_a/∂X of the nodes, and for the enhanced element also the gradients of its enhanced
+// modes, which enter every formula exactly like D extra nodes (EnhancedStrain.hpp). In 2D (plane
+// strain) all indices run over the two in-plane components only.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
-#include "mechanics/ReferenceElement.hpp"
+#include "mechanics/Element.hpp"
 #include "mechanics/Tensor.hpp"
 
 namespace contessa::mechanics {
 
-/// Reference geometry at one integration point.
-struct PointGeometry {
-  std::array<double, kMaxNodes * kMaxDimension> dNdX{};  ///< ∂N_a/∂X_J at index dimension·a + J
-  double detJ = 0.0;                                      ///< j = det ∂X/∂ξ
-  double weightedVolume = 0.0;                            ///< w · j (unit thickness in 2D)
+/// H_iJ += Σ_a v_ai g_aJ over `Count` gradients g (Count × D, row a) and vectors v (Count × D):
+/// the displacement gradient GRAD u for nodal displacements v and g = ∂N/∂X.
+template <int D, int Count>
+inline void addGradient(const double* g, const double* v, Matrix<D>& H) {
+  for (int a = 0; a < Count; ++a)
+    for (int i = 0; i < D; ++i)
+      for (int J = 0; J < D; ++J) H[D * i + J] += v[D * a + i] * g[D * a + J];
+}
+
+/// r_ai += P_iJ g_aJ · wj for a < Count: the discrete ∫ Bᵀ P dV (wj = integration weight × det J).
+template <int D, int Count>
+inline void addDivergence(const double* g, const Matrix<D>& P, double wj, double* r) {
+  for (int a = 0; a < Count; ++a)
+    for (int i = 0; i < D; ++i) {
+      double s = 0.0;
+      for (int J = 0; J < D; ++J) s += P[D * i + J] * g[D * a + J];
+      r[D * a + i] += s * wj;
+    }
+}
+
+/// K_(ai),(bk) += g_aJ A_iJkL h_bL · wj for a < Rows, b < Cols, into K with leading dimension `ld`
+/// (row D·a + i, column D·b + k). With g = h = ∂N/∂X this is K_uu, material and geometric stiffness
+/// together since A = ∂P/∂F. No symmetry of A is assumed. K must not overlap g, h or A (it never
+/// does: K is the caller's output block), which lets the compiler keep the row sums in registers.
+template <int D, int Rows, int Cols>
+inline void addTangent(const double* g, const double* h, const Tangent<D>& A, double wj, double* __restrict K, int ld) {
+  // A · wj with its last two indices swapped, At[i][J][L][k], so that every loop below runs over
+  // contiguous k (the two components of a row entry pair in 2D) and vectorises without shuffles.
+  double At[D][D][D][D];
+  for (int i = 0; i < D; ++i)
+    for (int J = 0; J < D; ++J)
+      for (int k = 0; k < D; ++k)
+        for (int L = 0; L < D; ++L) At[i][J][L][k] = A[((D * i + J) * D + k) * D + L] * wj;
+  for (int a = 0; a < Rows; ++a)
+    for (int i = 0; i < D; ++i) {
+      // Row (a, i): first contract g_a into A, then sweep the columns. (Sums start from their first
+      // term rather than from 0.0, which the compiler may not do for us: x + 0.0 is not x for
+      // x = −0.0.)
+      double AN[D][D];  // Σ_J g_aJ A_iJkL · wj, indexed [L][k]
+      for (int L = 0; L < D; ++L)
+        for (int k = 0; k < D; ++k) {
+          double s = g[D * a] * At[i][0][L][k];
+          for (int J = 1; J < D; ++J) s += g[D * a + J] * At[i][J][L][k];
+          AN[L][k] = s;
+        }
+      double* row = K + static_cast<std::size_t>(D * a + i) * ld;
+      for (int b = 0; b < Cols; ++b)
+        for (int k = 0; k < D; ++k) {
+          double s = AN[0][k] * h[D * b];
+          for (int L = 1; L < D; ++L) s += AN[L][k] * h[D * b + L];
+          row[D * b + k] += s;
+        }
+    }
+}
+
+/// Frobenius norm of a D × D matrix.
+template <int D>
+inline double normOf(const Matrix<D>& a) {
+  double s = 0.0;
+  for (double v : a) s += v * v;
+  return std::sqrt(s);
+}
+
+/// Parent Jacobian J_Jβ = ∂X_J/∂ξ_β = Σ_a X_aJ ∂N_a/∂ξ_β at ξ. X: Shape::kNodes × D, node-major.
+template <class Shape>
+Matrix<Shape::kDimension> parentJacobian(const double* xi, const double* X) {
+  constexpr int D = Shape::kDimension, N = Shape::kNodes;
+  std::array<double, N * D> dNdxi{};
+  Shape::shapeGradients(xi, dNdxi.data());
+  Matrix<D> J{};
+  for (int Jr = 0; Jr < D; ++Jr)
+    for (int b = 0; b < D; ++b) {
+      double s = 0.0;
+      for (int a = 0; a < N; ++a) s += X[D * a + Jr] * dNdxi[D * a + b];
+      J[D * Jr + b] = s;
+    }
+  return J;
+}
+
+/// Reference geometry of one element at its integration points: what every residual and Jacobian
+/// needs from X, computed once (ElementKernel::referenceGeometry).
+template <class Shape>
+struct ReferenceGeometry {
+  static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
+  std::array<std::array<double, N * D>, Q> dNdX{};  ///< ∂N_a/∂X_J at D·a + J
+  std::array<double, Q> detJ{};                     ///< j = det ∂X/∂ξ
+  std::array<double, Q> weightedVolume{};           ///< w · j (unit thickness in 2D)
 };
 
-/// Parent Jacobian J_Jβ = ∂X_J/∂ξ_β at ξ, padded to 3 × 3 with ones on the unused diagonal so that
-/// det and inverse are those of the dim × dim block. X: numNodes × dimension, node-major.
-Tensor2 parentJacobian(const ReferenceElement& ref, const double* xi, const double* X);
+/// ∂N_a/∂X_J = ∂N_a/∂ξ_β (J⁻¹)_βJ, j and w j at every integration point. False when some j ≤ 0
+/// (nodes not counter-clockwise, or a degenerate element): the reference configuration cannot be
+/// integrated.
+template <class Shape>
+bool computeReferenceGeometry(const double* X, ReferenceGeometry<Shape>& g) {
+  constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
+  const auto rule = Shape::quadrature();
+  for (int q = 0; q < Q; ++q) {
+    const Matrix<D> J = parentJacobian<Shape>(rule[q].xi.data(), X);
+    g.detJ[q] = determinantOf<D>(J);
+    if (!(g.detJ[q] > 0.0)) return false;
+    g.weightedVolume[q] = rule[q].weight * g.detJ[q];
+    const Matrix<D> Jinv = inverseOf<D>(J, g.detJ[q]);
+    std::array<double, N * D> dNdxi{};
+    Shape::shapeGradients(rule[q].xi.data(), dNdxi.data());
+    for (int a = 0; a < N; ++a)
+      for (int Jc = 0; Jc < D; ++Jc) {
+        double s = 0.0;
+        for (int b = 0; b < D; ++b) s += dNdxi[D * a + b] * Jinv[D * b + Jc];
+        g.dNdX[q][D * a + Jc] = s;
+      }
+  }
+  return true;
+}
 
-/// Geometry at every quadrature point of `ref`. False when some j ≤ 0 (nodes not counter-clockwise
-/// or a degenerate element): the reference configuration cannot be integrated.
-bool referenceGeometry(const ReferenceElement& ref, const double* X, std::vector<PointGeometry>& points);
+/// The reference geometry of a set of elements, as one kernel computed it (PerElement is the
+/// kernel's own record). Elements whose geometry cannot be integrated are kept, marked invalid:
+/// evaluating them reports InadmissibleDeformation.
+template <class PerElement>
+class ElementGeometrySet final : public ElementGeometry {
+ public:
+  explicit ElementGeometrySet(int count) : elements_(count), valid_(count, 0) {}
+  int size() const override { return static_cast<int>(elements_.size()); }
+  bool valid(int e) const { return valid_[e] != 0; }
+  const PerElement& operator[](int e) const { return elements_[e]; }
+  PerElement& record(int e) { return elements_[e]; }
+  void setValid(int e, bool v) { valid_[e] = v ? 1 : 0; }
 
-/// GRAD u_iJ = Σ_a u_ai ∂N_a/∂X_J (3 × 3, zero padding).
-Tensor2 displacementGradient(int dimension, int numNodes, const PointGeometry& g, const double* u);
-
-/// f_ai += P_iJ ∂N_a/∂X_J · w j   (the discrete ∫ Bᵀ P dV).
-void addInternalForce(int dimension, int numNodes, const PointGeometry& g, const Tensor2& P, double* f);
-
-/// K_ai,bk += ∂N_a/∂X_J A_iJkL ∂N_b/∂X_L · w j  (material and geometric stiffness together, since
-/// A = ∂P/∂F); K is numDofs × numDofs row-major.
-void addMaterialStiffness(int dimension, int numNodes, const PointGeometry& g, const Tensor4& A, double* K);
+ private:
+  std::vector<PerElement> elements_;
+  std::vector<char> valid_;
+};
 
 }  // namespace contessa::mechanics

@@ -1,27 +1,15 @@
-// Small 3 × 3 tensor algebra (see Tensor.hpp). Written out by hand: these run at every
-// integration point, and the compiler unrolls the fixed-size loops.
+// Small 3 × 3 tensor algebra (see Tensor.hpp) for the 3D material interface and output stresses.
 #include "mechanics/Tensor.hpp"
 
 #include <cmath>
 
 namespace contessa::mechanics {
 
-Tensor2 identity2() { return {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}; }
+Tensor2 identity2() { return identityMatrix<3>(); }
 
-double determinant(const Tensor2& a) {
-  return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-         a[2] * (a[3] * a[7] - a[4] * a[6]);
-}
+double determinant(const Tensor2& a) { return determinantOf<3>(a); }
 
-Tensor2 inverse(const Tensor2& a) {
-  // Adjugate over determinant (cofactor transpose).
-  const double inv = 1.0 / determinant(a);
-  return {(a[4] * a[8] - a[5] * a[7]) * inv, (a[2] * a[7] - a[1] * a[8]) * inv,
-          (a[1] * a[5] - a[2] * a[4]) * inv, (a[5] * a[6] - a[3] * a[8]) * inv,
-          (a[0] * a[8] - a[2] * a[6]) * inv, (a[2] * a[3] - a[0] * a[5]) * inv,
-          (a[3] * a[7] - a[4] * a[6]) * inv, (a[1] * a[6] - a[0] * a[7]) * inv,
-          (a[0] * a[4] - a[1] * a[3]) * inv};
-}
+Tensor2 inverse(const Tensor2& a) { return inverseOf<3>(a, determinant(a)); }
 
 Tensor2 transpose(const Tensor2& a) { return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]}; }
 

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <new>
 #include <vector>
 
 #include "common/Error.hpp"
 #include "mesh/ExodusFile.hpp"
+#include "mesh/ExodusProbe.hpp"
+#include "mesh/MemoryEstimate.hpp"
 
 namespace contessa::mesh {
 
@@ -23,6 +26,16 @@ class Reader {
     check(ex_get_init_ext(id(), &init), "the header");
     requireInput(init.num_dim == 2 || init.num_dim == 3,
                  path() + ": unsupported mesh dimension " + std::to_string(init.num_dim) + " (supported: 2, 3)");
+    requireInput(init.num_nodes >= 0 && init.num_elem >= 0,
+                 path() + ": not a readable Exodus file (its header gives " + std::to_string(init.num_nodes) +
+                     " nodes and " + std::to_string(init.num_elem) + " elements)");
+    // Before anything is allocated: a file's header can promise more than the machine holds.
+    MeshSize size;
+    size.nodes = static_cast<double>(init.num_nodes);
+    size.elements = static_cast<double>(init.num_elem);
+    size.dimension = static_cast<int>(init.num_dim);
+    size.nodesPerElement = size.dimension == 2 ? 4 : 8;
+    requireRunFits(size, path(), "use a coarser mesh or a machine with more memory");
     // Names longer than the library's default of 32 characters would be truncated otherwise.
     const int64_t nameLength = std::max<int64_t>(32, ex_inquire_int(id(), EX_INQ_DB_MAX_USED_NAME_LENGTH));
     check(ex_set_max_name_length(id(), static_cast<int>(nameLength)), "the name length");
@@ -41,11 +54,16 @@ class Reader {
 
  private:
   static int open(const std::string& path) {
+    // Diagnosed first: ex_open prints "does not support netcdf-4" to stderr for any HDF5 file
+    // netCDF cannot open (a truncated one) and reports only "failed to open".
+    const std::string problem = exodusFileProblem(path);
+    requireInput(problem.empty(), path + ": not a readable Exodus file (" + problem + ")");
+    ex_opts(EX_DEFAULT);  // errors come back through ex_get_err, not printed by the library
     int cpuWordSize = 8, ioWordSize = 0;
     float version = 0;
     // 64-bit integers through the API accept any file, whatever integer size it stores.
     const int id = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize, &version);
-    requireInput(id >= 0, path + ": cannot open Exodus file");
+    requireInput(id >= 0, path + ": not a readable Exodus file (" + ExodusFile::lastError() + ")");
     return id;
   }
 
@@ -56,7 +74,8 @@ class Reader {
     // Negative is an error; positive is a warning (e.g. an optional entity is absent).
     if (status < 0) {
       const std::string detail = ExodusFile::lastError();
-      throw InputError(path() + ": cannot read " + what + (detail.empty() ? "" : " (" + detail + ")"));
+      throw InputError(path() + ": not a readable Exodus file (cannot read " + what +
+                       (detail.empty() ? "" : ": " + detail) + ")");
     }
   }
 
@@ -178,6 +197,14 @@ class Reader {
 
 }  // namespace
 
-Mesh readExodusMesh(const std::string& path) { return Reader(path).read(); }
+Mesh readExodusMesh(const std::string& path) {
+  try {
+    return Reader(path).read();
+  } catch (const std::bad_alloc&) {
+    // The estimate passed, yet an allocation failed: a set larger than the header's counts, or
+    // other processes took the memory meanwhile.
+    throw InputError(path + ": not enough memory to read this mesh");
+  }
+}
 
 }  // namespace contessa::mesh

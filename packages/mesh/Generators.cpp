@@ -1,10 +1,12 @@
 #include "mesh/Generators.hpp"
 
 #include <cmath>
+#include <new>
 #include <sstream>
 #include <vector>
 
 #include "common/Error.hpp"
+#include "mesh/MemoryEstimate.hpp"
 
 namespace contessa::mesh {
 
@@ -33,6 +35,30 @@ void requirePositiveCount(int value, const char* parameter) {
 void requireBias(double value, const char* parameter) {
   requireInput(std::isfinite(value) && value > 0,
                std::string(parameter) + ": expected a value > 0, got " + format(value));
+}
+
+// Before anything is allocated: an n0 × n1 grid's counts must be indexable and its run must fit in
+// memory (requireRunFits; the generators run on every rank, which it needs). Returns what the
+// generator must say if an allocation fails all the same.
+std::string requireGridFits(int n0, int n1, const std::string& name0, const std::string& name1) {
+  MeshSize size;
+  size.nodes = (n0 + 1.0) * (n1 + 1.0);
+  size.elements = static_cast<double>(n0) * n1;
+  size.dimension = 2;
+  size.nodesPerElement = 4;
+  const std::string what = name0 + " = " + std::to_string(n0) + ", " + name1 + " = " + std::to_string(n1);
+  const std::string advice = "reduce " + name0 + " or " + name1;
+  requireRunFits(size, what, advice);
+  return what + ": not enough memory for " + formatCount(size.elements) + " elements; " + advice;
+}
+
+template <class Generate>
+Mesh guardAllocation(const std::string& outOfMemoryMessage, Generate&& generate) {
+  try {
+    return generate();
+  } catch (const std::bad_alloc&) {
+    throw InputError(outOfMemoryMessage);
+  }
 }
 
 // n+1 node positions from start to start + length (exactly, at both ends) with element sizes in a
@@ -136,18 +162,8 @@ class StructuredGrid {
   int n0_, n1_;
 };
 
-}  // namespace
-
-Mesh generateRectangle(const RectangleSpec& spec) {
-  requireFinite(spec.x0, "X0");
-  requireFinite(spec.y0, "Y0");
-  requirePositive(spec.lx, "Length X");
-  requirePositive(spec.ly, "Length Y");
-  requirePositiveCount(spec.nx, "Elements X");
-  requirePositiveCount(spec.ny, "Elements Y");
-  requireBias(spec.biasX, "Bias X");
-  requireBias(spec.biasY, "Bias Y");
-
+// The allocating part of the generators, once their specs are checked and known to fit.
+Mesh buildRectangle(const RectangleSpec& spec) {
   // Positions are computed per node (not by summing steps), and the last one is set to x0 + lx.
   const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
   const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
@@ -168,22 +184,7 @@ Mesh generateRectangle(const RectangleSpec& spec) {
   return mesh;
 }
 
-Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
-  requirePositive(spec.innerRadius, "Inner Radius");
-  requirePositive(spec.thickness, "Thickness");
-  requireFinite(spec.startAngleDeg, "Start Angle");
-  requireFinite(spec.endAngleDeg, "End Angle");
-  requireInput(spec.endAngleDeg > spec.startAngleDeg, "End Angle: expected an angle greater than Start Angle (" +
-                                                          format(spec.startAngleDeg) + "), got " +
-                                                          format(spec.endAngleDeg));
-  requireInput(spec.endAngleDeg - spec.startAngleDeg <= 360,
-               "End Angle: expected at most 360 degrees beyond Start Angle (" + format(spec.startAngleDeg) +
-                   "), got " + format(spec.endAngleDeg));
-  requirePositiveCount(spec.elementsThroughThickness, "Elements Through Thickness");
-  requirePositiveCount(spec.elementsAroundArc, "Elements Around Arc");
-  requireBias(spec.radialBias, "Radial Bias");
-  requireBias(spec.arcBias, "Arc Bias");
-
+Mesh buildAnnulusSector(const AnnulusSectorSpec& spec) {
   const int nr = spec.elementsThroughThickness;
   const int nt = spec.elementsAroundArc;
   // Angles are graded in degrees, so the last one is exactly endAngleDeg before conversion.
@@ -213,6 +214,41 @@ Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
   grid.addSets(mesh, names);
   mesh.validate("annulus sector mesh");
   return mesh;
+}
+
+}  // namespace
+
+Mesh generateRectangle(const RectangleSpec& spec) {
+  requireFinite(spec.x0, "X0");
+  requireFinite(spec.y0, "Y0");
+  requirePositive(spec.lx, "Length X");
+  requirePositive(spec.ly, "Length Y");
+  requirePositiveCount(spec.nx, "Elements X");
+  requirePositiveCount(spec.ny, "Elements Y");
+  requireBias(spec.biasX, "Bias X");
+  requireBias(spec.biasY, "Bias Y");
+  const std::string outOfMemory = requireGridFits(spec.nx, spec.ny, "Elements X", "Elements Y");
+  return guardAllocation(outOfMemory, [&spec] { return buildRectangle(spec); });
+}
+
+Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
+  requirePositive(spec.innerRadius, "Inner Radius");
+  requirePositive(spec.thickness, "Thickness");
+  requireFinite(spec.startAngleDeg, "Start Angle");
+  requireFinite(spec.endAngleDeg, "End Angle");
+  requireInput(spec.endAngleDeg > spec.startAngleDeg, "End Angle: expected an angle greater than Start Angle (" +
+                                                          format(spec.startAngleDeg) + "), got " +
+                                                          format(spec.endAngleDeg));
+  requireInput(spec.endAngleDeg - spec.startAngleDeg <= 360,
+               "End Angle: expected at most 360 degrees beyond Start Angle (" + format(spec.startAngleDeg) +
+                   "), got " + format(spec.endAngleDeg));
+  requirePositiveCount(spec.elementsThroughThickness, "Elements Through Thickness");
+  requirePositiveCount(spec.elementsAroundArc, "Elements Around Arc");
+  requireBias(spec.radialBias, "Radial Bias");
+  requireBias(spec.arcBias, "Arc Bias");
+  const std::string outOfMemory = requireGridFits(spec.elementsThroughThickness, spec.elementsAroundArc,
+                                                  "Elements Through Thickness", "Elements Around Arc");
+  return guardAllocation(outOfMemory, [&spec] { return buildAnnulusSector(spec); });
 }
 
 }  // namespace contessa::mesh

@@ -33,8 +33,6 @@ const char* exodusCellName(CellType type) {
 
 namespace {
 
-int numSides(CellType type) { return type == CellType::Quad4 ? 4 : 6; }
-
 // Side tables from the Exodus II manual (its side k+1 is side k here). The node order matters:
 // it keeps the element on the left of a 2D side and makes 3D sides counter-clockwise seen from
 // outside, so normals computed from the order point outwards.
@@ -68,17 +66,15 @@ const Entity& lookup(const std::vector<Entity>& entities, const std::string& nam
                    knownNames(entities) + ")");
 }
 
-template <class Entity>
-void requireUniqueNames(const std::vector<Entity>& entities, const char* kind, const std::string& source) {
-  std::vector<std::string> names;
-  for (const auto& e : entities) names.push_back(e.name);
-  std::sort(names.begin(), names.end());
-  auto dup = std::adjacent_find(names.begin(), names.end());
-  requireInput(dup == names.end(), source + ": " + kind + " name '" + (dup == names.end() ? "" : *dup) +
-                                       "' is used more than once");
-}
-
 }  // namespace
+
+int numSides(CellType type) {
+  switch (type) {
+    case CellType::Quad4: return 4;
+    case CellType::Hex8: return 6;
+  }
+  throw std::logic_error("numSides: unknown cell type");
+}
 
 std::vector<int> sideNodes(CellType type, int side) {
   if (side < 0 || side >= numSides(type))
@@ -121,67 +117,6 @@ Mesh::ElementLocation Mesh::locate(GlobalIndex element) const {
     if (it != ids.end()) return {b, static_cast<GlobalIndex>(it - ids.begin())};
   }
   throw std::out_of_range("Mesh::locate: element " + std::to_string(element) + " is in no block");
-}
-
-void Mesh::validate(const std::string& source) const {
-  const std::string where = source + ": ";
-  requireInput(dimension == 2 || dimension == 3,
-               where + "mesh dimension must be 2 or 3, got " + std::to_string(dimension));
-  requireInput(coordinates.size() % static_cast<size_t>(dimension) == 0,
-               where + "coordinate array length " + std::to_string(coordinates.size()) +
-                   " is not a multiple of the dimension " + std::to_string(dimension));
-  const GlobalIndex nNodes = numNodes();
-  const GlobalIndex nElements = numElements();
-
-  // Every element id 0..numElements-1 must appear in exactly one block: the partition and the
-  // results writer index global arrays by it.
-  std::vector<int> blockOf(static_cast<size_t>(nElements), -1);
-  for (int bi = 0; bi < static_cast<int>(blocks.size()); ++bi) {
-    const auto& b = blocks[bi];
-    const std::string blk = where + "element block '" + b.name + "': ";
-    requireInput(cellDimension(b.cellType) == dimension,
-                 blk + exodusCellName(b.cellType) + " cells in a " + std::to_string(dimension) + "D mesh");
-    const size_t npe = static_cast<size_t>(nodesPerCell(b.cellType));
-    requireInput(b.connectivity.size() == b.elements.size() * npe,
-                 blk + "connectivity has " + std::to_string(b.connectivity.size()) + " entries, expected " +
-                     std::to_string(b.elements.size() * npe));
-    for (GlobalIndex e : b.elements) {
-      requireInput(e >= 0 && e < nElements, blk + "element id " + std::to_string(e) + " is outside [0, " +
-                                                std::to_string(nElements) + ")");
-      requireInput(blockOf[e] < 0, blk + "element id " + std::to_string(e) + " appears more than once");
-      blockOf[e] = bi;
-    }
-    for (GlobalIndex n : b.connectivity)
-      requireInput(n >= 0 && n < nNodes,
-                   blk + "node id " + std::to_string(n) + " is outside [0, " + std::to_string(nNodes) + ")");
-  }
-  for (const auto& s : nodeSets) {
-    for (GlobalIndex n : s.nodes)
-      requireInput(n >= 0 && n < nNodes, where + "node set '" + s.name + "': node id " + std::to_string(n) +
-                                             " is outside [0, " + std::to_string(nNodes) + ")");
-    requireInput(std::is_sorted(s.nodes.begin(), s.nodes.end()) &&
-                     std::adjacent_find(s.nodes.begin(), s.nodes.end()) == s.nodes.end(),
-                 where + "node set '" + s.name + "' is not sorted and unique");
-  }
-  for (const auto& s : sideSets) {
-    const std::string set = where + "side set '" + s.name + "': ";
-    requireInput(s.elements.size() == s.sides.size(), set + std::to_string(s.elements.size()) +
-                                                          " elements but " + std::to_string(s.sides.size()) +
-                                                          " sides");
-    for (size_t k = 0; k < s.elements.size(); ++k) {
-      const GlobalIndex e = s.elements[k];
-      requireInput(e >= 0 && e < nElements, set + "element id " + std::to_string(e) + " is outside [0, " +
-                                                std::to_string(nElements) + ")");
-      const CellType type = blocks[blockOf[e]].cellType;
-      requireInput(s.sides[k] >= 0 && s.sides[k] < numSides(type),
-                   set + "side " + std::to_string(s.sides[k]) + " of element " + std::to_string(e) +
-                       " does not exist on " + exodusCellName(type) + " (0-based sides 0.." +
-                       std::to_string(numSides(type) - 1) + ")");
-    }
-  }
-  requireUniqueNames(blocks, "element block", source);
-  requireUniqueNames(nodeSets, "node set", source);
-  requireUniqueNames(sideSets, "side set", source);
 }
 
 }  // namespace contessa::mesh

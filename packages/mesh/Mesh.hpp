@@ -16,6 +16,9 @@ int nodesPerCell(CellType type);
 int cellDimension(CellType type);
 const char* exodusCellName(CellType type);
 
+/// Number of sides of a cell type (Quad4: 4 edges, Hex8: 6 faces).
+int numSides(CellType type);
+
 /// Local node numbers (0-based, Exodus order) of side `side` (0-based; Exodus side number − 1).
 std::vector<int> sideNodes(CellType type, int side);
 
@@ -61,7 +64,20 @@ class Mesh {
   struct ElementLocation { int block; GlobalIndex local; };
   ElementLocation locate(GlobalIndex element) const;
 
-  /// Checks internal consistency (ids in range, sizes match); throws InputError with `source` named.
+  /// Checks that the mesh can be computed on (MeshValidation.cpp); throws InputError whose one-line
+  /// message starts with `source` (a file name, or the deck path of a generator) and names the
+  /// offending entity. Numbers in messages count from 1, as in Exodus files. In order:
+  /// - structure: dimension 2 or 3, array sizes, every element id in exactly one block, cell types
+  ///   of the mesh dimension;
+  /// - coordinates: every node's coordinates finite;
+  /// - elements: connectivity in range, no node twice in an element, and a positive Jacobian at
+  ///   every corner (cornerJacobians): inverted (clockwise), tangled (self-intersecting or
+  ///   non-convex) and degenerate (zero area or volume, collinear edges) elements are refused;
+  /// - node sets: node ids in range, sorted and unique;
+  /// - side sets: element ids and side numbers in range, and every side on the boundary (a side
+  ///   shared by two elements is inside the mesh);
+  /// - names of blocks, node sets and side sets unique.
+  /// Cost O(n log n) in the mesh size: 0.06 s for 10^6 Quad4, 0.15 s for 10^6 Hex8 (bench/mesh_check_bench).
   void validate(const std::string& source) const;
 };
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/Error.hpp"
+#include "mesh/MemoryEstimate.hpp"
 
 namespace contessa::mesh {
 
@@ -21,6 +22,17 @@ Mesh mergeMeshes(const std::vector<std::pair<std::string, Mesh>>& parts) {
                      "D but mesh part '" + parts[0].first + "' is " + std::to_string(parts[0].second.dimension) +
                      "D");
   }
+
+  // Each part passed its own check; the merged copy and the run on it need the sum.
+  MeshSize total;
+  total.dimension = parts[0].second.dimension;
+  total.nodesPerElement = total.dimension == 2 ? 4 : 8;
+  for (const auto& part : parts) {
+    total.nodes += static_cast<double>(part.second.numNodes());
+    total.elements += static_cast<double>(part.second.numElements());
+  }
+  requireRunFits(total, "mesh merge: the " + std::to_string(parts.size()) + " mesh parts together",
+                 "use fewer elements in the parts");
 
   Mesh merged;
   merged.dimension = parts[0].second.dimension;

@@ -12,6 +12,7 @@
 
 #include "common/Error.hpp"
 #include "common/PhaseTimers.hpp"
+#include "model/FreeMotion.hpp"
 
 namespace contessa::model {
 
@@ -232,8 +233,8 @@ RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> ContactMechanicsModel::ge
   return solverFactory_;
 }
 
-bool ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withStiffness, bool updateTrial,
-                                     Vector& force, Vector& dForcedLambda) const {
+SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withStiffness,
+                                                       bool updateTrial, Vector& force, Vector& dForcedLambda) const {
   using timers::Phase;
   // A pass that leaves the trial state alone is the reactions' own element loop.
   const auto phase = [&](Phase p) { return updateTrial ? p : Phase::Reactions; };
@@ -296,11 +297,11 @@ bool ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withSt
   force.doExport(*overlapForce_, *exporter_, Tpetra::ADD);
   dForcedLambda.putScalar(0.0);
   dForcedLambda.doExport(*overlapDfdLambda_, *exporter_, Tpetra::ADD);
-  return status == mechanics::ElementStatus::Ok;
+  return status;
 }
 
 void ContactMechanicsModel::evaluatePass(const Vector& x, double lambda, bool withStiffness) const {
-  passOk_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+  passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
   passHasStiffness_ = withStiffness;
   passX_->assign(x);
   passLambda_ = lambda;
@@ -342,7 +343,7 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
   }
 
   RCP<MultiVector> dfdpTpetra = dfdp.is_null() ? Teuchos::null : Extract::getTpetraMultiVector(dfdp);
-  bool ok = true;
+  SolidAssembler::Status status;
   if (!f.is_null() || !W.is_null() || !dfdp.is_null()) {
     // The tangent only when it is asked for: computing it with every residual (Newton asks for the
     // Jacobian at the point of its last residual) was measured no faster, as the element kernels
@@ -350,8 +351,10 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
     const bool needStiffness = !W.is_null();
     if (!latestPassIsAt(*x, lambda, passServesEvaluations_ && (passHasStiffness_ || !needStiffness)))
       evaluatePass(*x, lambda, needStiffness);
-    ok = passOk_;
+    status = passStatus_;
   }
+  const bool ok = status.ok();
+  if (!f.is_null()) lastElementStatus_ = status;
 
   if (!f.is_null()) {
     // Free rows: f_int − λ f_ext (eq. of equilibrium); prescribed rows: u − λ ū.
@@ -395,6 +398,52 @@ void ContactMechanicsModel::rollbackState() {
   for (auto& c : contacts_) c.rollback();
   passServesEvaluations_ = false;
   passServesReactions_ = false;
+}
+
+std::string ContactMechanicsModel::inadmissibleElement() const {
+  // The lowest failed element id over all ranks, then its status from the rank that holds it.
+  const long long none = std::numeric_limits<long long>::max();
+  const long long local = lastElementStatus_.ok() ? none : lastElementStatus_.element;
+  long long element = none;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &element);
+  if (element == none) return "";
+  int localCode = local == element ? static_cast<int>(lastElementStatus_.status) : 0, code = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &localCode, &code);
+  const std::string block = problem_.blocks[problem_.mesh.locate(element).block].block;
+  // Element numbers are Exodus ids (1-based), as in the output file.
+  const std::string which = "element " + std::to_string(element + 1) + " of block '" + block + "'";
+  switch (static_cast<mechanics::ElementStatus>(code)) {
+    case mechanics::ElementStatus::InadmissibleDeformation:
+      return which + " is inverted or degenerate (det F <= 0)";
+    case mechanics::ElementStatus::InternalSolveFailed:
+      return "the enhanced-strain solve of " + which + " failed";
+    default:
+      return which + " could not be evaluated";
+  }
+}
+
+std::string ContactMechanicsModel::contactTunnelling() const {
+  // The lowest (interface, node) over all ranks names the case; the count says how many there are.
+  const long long none = std::numeric_limits<long long>::max();
+  const long long numNodes = problem_.mesh.numNodes();
+  long long local = none, first = none;
+  int localCount = 0, count = 0;
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const auto nodes = contacts_[i].tunnellingNodes();
+    localCount += static_cast<int>(nodes.size());
+    for (const auto& t : nodes) local = std::min(local, static_cast<long long>(i) * numNodes + t.node);
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &localCount, &count);
+  if (count == 0) return "";
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &first);
+  const auto& interface = contacts_[first / numNodes].spec();
+  // Node numbers are Exodus ids (1-based), as in the output file.
+  return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.name + "'" +
+         (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + " passed through the master surface";
+}
+
+std::string ContactMechanicsModel::describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const {
+  return model::describeFreeMotion(problem_.mesh, nullSpace);
 }
 
 std::vector<std::string> ContactMechanicsModel::contactFieldNames() {

@@ -77,6 +77,21 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   /// are summed under the interface name), summed over ranks.
   std::vector<std::pair<std::string, std::array<double, 2>>> contactForces() const;
 
+  // Why a solve failed or must not be accepted, in words for the one-line stop message. Collective:
+  // every rank calls them at the same point and gets the same text.
+  /// The lowest-numbered element (over all ranks) whose evaluation failed at the latest residual
+  /// evaluation — the reason the residual was set to NaN — e.g. "element 17 of block 'tube' is inverted
+  /// or degenerate (det F <= 0)"; empty when every element was admissible.
+  std::string inadmissibleElement() const;
+  /// Slave nodes that passed through their master surface between the last commit and the latest
+  /// evaluation and are not in contact now (ContactInterface2D::tunnellingNodes, every interface and
+  /// rank), e.g. "slave node 41 of interface 'plate' (and 28 more) passed through the master surface";
+  /// empty when none did.
+  std::string contactTunnelling() const;
+  /// The null space of a singular Jacobian (vectors over all DOFs in global numbering, the same on every
+  /// rank) in words: which blocks are free to move, and how (FreeMotion.hpp).
+  std::string describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const;
+
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const { return jacobianEvaluations_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
@@ -95,9 +110,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   void buildBoundaryConditions();
   /// One assembly pass at owned x and load factor λ: internal and contact forces and their ∂/∂λ,
   /// exported to owned rows, before boundary conditions; with `withStiffness`, the stiffness into
-  /// scatter_. `updateTrial` stores the trial state. Returns false when an element failed.
-  bool assemble(const Vector& x, double lambda, bool withStiffness, bool updateTrial, Vector& force,
-                Vector& dForcedLambda) const;
+  /// scatter_. `updateTrial` stores the trial state. Returns the first element that failed, if any.
+  SolidAssembler::Status assemble(const Vector& x, double lambda, bool withStiffness, bool updateTrial,
+                                  Vector& force, Vector& dForcedLambda) const;
   /// The pass every evaluation request is served from: residual, Jacobian and ∂f/∂λ at (x, λ).
   void evaluatePass(const Vector& x, double lambda, bool withStiffness) const;
   /// Whether the latest pass was made at exactly this x, λ and contact freeze, and `valid` still holds
@@ -130,12 +145,14 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   // the reactions (no second element loop for the output).
   mutable Teuchos::RCP<Vector> passX_, passForce_, passDfdLambda_;  ///< owned; force = f_int + contact
   mutable double passLambda_ = 0;
-  mutable bool passFrozen_ = false, passOk_ = false, passHasStiffness_ = false;
+  mutable bool passFrozen_ = false, passHasStiffness_ = false;
+  mutable SolidAssembler::Status passStatus_;
   mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
   mutable bool passServesReactions_ = false;    ///< until the state is rolled back
   mutable int jacobianEvaluations_ = 0, elementPasses_ = 0;
   mutable double lastLoadFactor_ = 0;
   mutable bool newContactsFrozen_ = false;
+  mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank
 };
 
 }  // namespace contessa::model

@@ -1,5 +1,7 @@
 #include "model/SolidAssembler.hpp"
 
+#include <map>
+
 namespace contessa::model {
 
 SolidAssembler::SolidAssembler(const deck::ProblemDefinition& problem, std::vector<GlobalIndex> elements,
@@ -7,47 +9,62 @@ SolidAssembler::SolidAssembler(const deck::ProblemDefinition& problem, std::vect
     : elements_(std::move(elements)) {
   const mesh::Mesh& mesh = problem.mesh;
   const int dim = mesh.dimension;
-  std::size_t internalSize = 0;
+  std::map<int, int> setOfBlock;           // mesh block → index into sets_
+  std::vector<std::vector<double>> setX;   // reference coordinates of each set's elements
+  std::size_t stateSize = 0;
   data_.reserve(elements_.size());
   for (GlobalIndex e : elements_) {
     const auto loc = mesh.locate(e);
     const mesh::ElementBlock& block = mesh.blocks[loc.block];
     const deck::BlockPhysics& physics = problem.blocks[loc.block];
+    const auto [it, added] = setOfBlock.emplace(static_cast<int>(loc.block), static_cast<int>(sets_.size()));
+    if (added) {
+      sets_.push_back({&physics, nullptr});
+      setX.emplace_back();
+    }
     const int nn = mesh::nodesPerCell(block.cellType);
     ElementData d;
-    d.physics = &physics;
-    d.X.resize(nn * dim);
-    d.dofs.resize(nn * dim);
+    d.set = it->second;
+    d.indexInSet = static_cast<int>(setX[d.set].size() / (nn * dim));
+    d.numDofs = nn * dim;
+    d.dofOffset = dofs_.size();
+    d.stateOffset = stateSize;
     for (int a = 0; a < nn; ++a) {
       const GlobalIndex node = block.connectivity[loc.local * nn + a];
       for (int c = 0; c < dim; ++c) {
-        d.X[a * dim + c] = mesh.coordinates[node * dim + c];
-        d.dofs[a * dim + c] = localDof(node * dim + c);
+        setX[d.set].push_back(mesh.coordinates[node * dim + c]);
+        dofs_.push_back(localDof(node * dim + c));
       }
     }
-    d.internalOffset = internalSize;
-    internalSize += physics.element->numInternalVariables();
-    maxDofs_ = std::max(maxDofs_, nn * dim);
-    data_.push_back(std::move(d));
+    stateSize += physics.element->numStateValues();
+    maxDofs_ = std::max(maxDofs_, d.numDofs);
+    data_.push_back(d);
   }
-  trial_.assign(internalSize, 0.0);
+  for (std::size_t s = 0; s < sets_.size(); ++s) {
+    const auto& element = *sets_[s].physics->element;
+    const int count = static_cast<int>(setX[s].size() / element.numDofs());
+    sets_[s].geometry = element.referenceGeometry(count, setX[s].data());
+  }
+  trial_.assign(stateSize, 0.0);
   committed_ = trial_;
 }
 
-mechanics::ElementStatus SolidAssembler::assemble(const double* u, bool withStiffness, const Sink& sink) {
+SolidAssembler::Status SolidAssembler::assemble(const double* u, bool withStiffness, const Sink& sink) {
   std::vector<double> ue(maxDofs_), fe(maxDofs_), ke(withStiffness ? maxDofs_ * maxDofs_ : 0);
-  mechanics::ElementStatus status = mechanics::ElementStatus::Ok;
-  for (auto& d : data_) {
-    const int n = static_cast<int>(d.dofs.size());
-    for (int i = 0; i < n; ++i) ue[i] = u[d.dofs[i]];
-    double* internal = trial_.empty() ? nullptr : trial_.data() + d.internalOffset;
-    const auto s = d.physics->element->evaluate(d.X.data(), ue.data(), internal, *d.physics->material, fe.data(),
-                                                withStiffness ? ke.data() : nullptr);
+  Status status;
+  for (std::size_t k = 0; k < data_.size(); ++k) {
+    const auto& d = data_[k];
+    const ElementSet& set = sets_[d.set];
+    const int* dofs = dofs_.data() + d.dofOffset;
+    for (int i = 0; i < d.numDofs; ++i) ue[i] = u[dofs[i]];
+    const auto s = set.physics->element->evaluate(*set.geometry, d.indexInSet, ue.data(), trial_.data() + d.stateOffset,
+                                                  *set.physics->material, fe.data(),
+                                                  withStiffness ? ke.data() : nullptr);
     if (s != mechanics::ElementStatus::Ok) {
-      if (status == mechanics::ElementStatus::Ok) status = s;
+      if (status.ok()) status = {s, elements_[k]};
       continue;
     }
-    sink(d.dofs.data(), n, fe.data(), withStiffness ? ke.data() : nullptr);
+    sink(dofs, d.numDofs, fe.data(), withStiffness ? ke.data() : nullptr);
   }
   return status;
 }
@@ -57,11 +74,14 @@ std::vector<mechanics::Tensor2> SolidAssembler::elementStresses(const double* u)
   std::vector<double> ue(maxDofs_);
   for (std::size_t k = 0; k < data_.size(); ++k) {
     const auto& d = data_[k];
-    for (std::size_t i = 0; i < d.dofs.size(); ++i) ue[i] = u[d.dofs[i]];
-    const double* internal = committed_.empty() ? nullptr : committed_.data() + d.internalOffset;
+    const ElementSet& set = sets_[d.set];
+    const int* dofs = dofs_.data() + d.dofOffset;
+    for (int i = 0; i < d.numDofs; ++i) ue[i] = u[dofs[i]];
+    // The committed internal variables: the first values of the element's committed state.
     mechanics::Tensor2 sigma{};
-    if (d.physics->element->averageCauchyStress(d.X.data(), ue.data(), internal, *d.physics->material, sigma) !=
-        mechanics::ElementStatus::Ok)
+    if (set.physics->element->averageCauchyStress(*set.geometry, d.indexInSet, ue.data(),
+                                                  committed_.data() + d.stateOffset, *set.physics->material,
+                                                  sigma) != mechanics::ElementStatus::Ok)
       sigma.fill(std::numeric_limits<double>::quiet_NaN());
     out[k] = sigma;
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "deck/ProblemDefinition.hpp"
@@ -26,30 +27,46 @@ class SolidAssembler {
   /// requested, stiffness (row-major).
   using Sink = std::function<void(const int* dofs, int numDofs, const double* force, const double* stiffness)>;
 
+  /// The first element whose evaluation failed (the caller marks the evaluation failed), if any.
+  struct Status {
+    mechanics::ElementStatus status = mechanics::ElementStatus::Ok;
+    GlobalIndex element = -1;  ///< global id of that element
+    bool ok() const { return status == mechanics::ElementStatus::Ok; }
+  };
+
   /// Assembles every element at the overlapped displacement `u`. Updates the trial internal variables.
-  /// Returns the first non-Ok element status (the caller marks the evaluation failed).
-  mechanics::ElementStatus assemble(const double* u, bool withStiffness, const Sink& sink);
+  Status assemble(const double* u, bool withStiffness, const Sink& sink);
 
   /// Average Cauchy stress of each element (3 × 3), in the order of `elements()`.
   std::vector<mechanics::Tensor2> elementStresses(const double* u) const;
 
-  /// Internal variables: the trial copy becomes the committed one after a converged increment, and is
-  /// reset to it when an increment is abandoned.
+  /// Element states (internal variables and what warm-starts their local solves): the trial copy
+  /// becomes the committed one after a converged increment, and is reset to it when an increment is
+  /// abandoned.
   void commit() { committed_ = trial_; }
   void rollback() { trial_ = committed_; }
 
   const std::vector<GlobalIndex>& elements() const { return elements_; }
 
  private:
-  struct ElementData {
+  /// The elements of one mesh block on this rank: one kernel and material; the reference geometry of
+  /// all of them computed once, here (shape-function gradients, weights × det J, ...).
+  struct ElementSet {
     const deck::BlockPhysics* physics;
-    std::vector<double> X;      // reference coordinates
-    std::vector<int> dofs;      // overlapped local DOF indices
-    std::size_t internalOffset; // into trial_/committed_
+    std::unique_ptr<mechanics::ElementGeometry> geometry;
+  };
+  struct ElementData {
+    int set;                  // index into sets_
+    int indexInSet;           // the element's index in its set's geometry
+    int numDofs;
+    std::size_t dofOffset;    // into dofs_
+    std::size_t stateOffset;  // into trial_/committed_
   };
   std::vector<GlobalIndex> elements_;
+  std::vector<ElementSet> sets_;
   std::vector<ElementData> data_;
-  std::vector<double> trial_, committed_;
+  std::vector<int> dofs_;                // overlapped local DOF indices of all elements, concatenated
+  std::vector<double> trial_, committed_;  // element states (internal variables and warm-start data)
   int maxDofs_ = 0;
 };
 

@@ -12,14 +12,12 @@
 #include <LOCA_Thyra_SaveDataStrategy.H>
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_LineSearchBased.H>
-#include <NOX_StatusTest_Combo.H>
-#include <NOX_StatusTest_FiniteValue.H>
-#include <NOX_StatusTest_MaxIters.H>
 #include <NOX_Thyra_Vector.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "solvers/ContactBetaStepSize.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/NewtonStatusTests.hpp"
 #include "solvers/StepSizeFactory.hpp"
 
 namespace contessa::solvers {
@@ -84,18 +82,31 @@ class ResidualTest : public NOX::StatusTest::Generic {
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
-// Newton statistics of the current solve, read when the increment ends. (NOX also calls
-// runPostIterate when the initial guess already converges, so iterations are read from the solver.)
+// Newton statistics of the current solve, read when the increment ends, and why it failed when it did.
+// (NOX also calls runPostIterate when the initial guess already converges, so iterations are read from
+// the solver.) runPostSolve runs on every rank after every solve, so the diagnosis may communicate.
 class NewtonCounter : public NOX::Observer {
  public:
-  void runPreSolve(const NOX::Solver::Generic&) override { iterations = 0; }
+  NewtonCounter(NewtonStatusTests& tests, const std::ostringstream& noxOutput) : tests_(tests), noxOutput_(noxOutput) {}
+  void runPreSolve(const NOX::Solver::Generic&) override {
+    iterations = 0;
+    tests_.startSolve();
+    outputAtStart_ = noxOutput_.str().size();
+  }
   void runPostSolve(const NOX::Solver::Generic& solver) override {
     iterations = solver.getNumIterations();
     total += iterations;
     residualNorm = solver.getSolutionGroup().getNormF();
+    failure = tests_.diagnose(solver, noxOutput_.str().substr(outputAtStart_));
   }
   int iterations = 0, total = 0;
   double residualNorm = 0;
+  SolveFailure failure;  ///< of the latest solve (kind None when it converged)
+
+ private:
+  NewtonStatusTests& tests_;
+  const std::ostringstream& noxOutput_;
+  std::size_t outputAtStart_ = 0;
 };
 
 // LOCA tells the group about every step: commit or roll back the model state, report to the observer.
@@ -120,6 +131,10 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
       ++attempts_;
       IncrementReport r = report(model_.lastLoadFactor());
       r.dlambda = r.lambda - lastLambda_;
+      lastFailure = newton_.failure;
+      lastFailedTarget = r.lambda;
+      lastAttemptFailed = true;
+      r.failure = lastFailure.reason;
       r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested;
       if (r.betaRestart) r.beta = contactBeta_->beta;
       observer_.attemptFailed(r);
@@ -133,6 +148,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     auto tpetraX = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>::getConstTpetraVector(
         Teuchos::rcpFromRef(tx.getThyraVector()));
     if (first_) model_.commitState();
+    lastAttemptFailed = false;
     IncrementReport r = report(lambda);
     r.dlambda = first_ ? 0.0 : lambda - lastLambda_;
     observer_.incrementConverged(*tpetraX, r);
@@ -145,6 +161,10 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
 
   int increments = 0, failedAttempts = 0;
   double lastLambda() const { return lastLambda_; }
+  bool initialStateSolved() const { return !first_; }
+  bool lastAttemptFailed = false;  ///< the latest attempt failed (no converged increment since)
+  SolveFailure lastFailure;        ///< why it failed
+  double lastFailedTarget = 0;     ///< the load factor it aimed at
 
  private:
   IncrementReport report(double lambda) const {
@@ -171,7 +191,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
 
 // The parameter list LOCA and NOX read, made from the validated deck list.
 RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, const RCP<NOX::Observer>& observer,
-                                           const RCP<std::ostream>& errors) {
+                                           const RCP<std::ostringstream>& errors) {
   auto top = rcp(new Teuchos::ParameterList("Contessa solver"));
   const auto& deckNox = piro.sublist("NOX");
   auto& nox = top->sublist("NOX");
@@ -183,8 +203,10 @@ RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, c
                               details ? NOX::Utils::Error | NOX::Utils::Warning | NOX::Utils::OuterIteration |
                                             NOX::Utils::StepperIteration
                                       : static_cast<int>(NOX::Utils::Error));
-  // NOX/LOCA errors are collected and reported in Contessa's one-line message, not spread on stderr.
-  nox.sublist("Printing").set("Error Stream", errors);
+  // NOX/LOCA errors, and the exceptions NOX catches during a solve, are collected for Contessa's
+  // one-line message, not spread on stderr and stdout.
+  nox.sublist("Printing").set("Error Stream", Teuchos::rcp_implicit_cast<std::ostream>(errors));
+  if (!details) nox.sublist("Printing").set("Output Stream", Teuchos::rcp_implicit_cast<std::ostream>(errors));
   nox.sublist("Solver Options").set("Observer", observer);
   // An exception in an evaluation fails the solve (and the increment is cut back), not the run.
   nox.set("Catch Throws During Solve", true);
@@ -201,6 +223,62 @@ RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, c
   return top;
 }
 
+// Everything the stop message needs to know about how the continuation ended.
+struct StopCause {
+  bool initialStateSolved = true;
+  double initialLambda = 0, lambda = 0;  ///< where it started, the last converged load factor
+  int increments = 0;
+  bool maxStepsReached = false;
+  int maxSteps = 0;
+  double minStep = 0;
+  bool lastAttemptFailed = false;
+  SolveFailure failure;       ///< why the last attempt failed
+  double failedTarget = 0;    ///< the load factor it aimed at
+  bool contactBetaBelowMinimum = false;
+  int contactsPerStep = 0;
+  std::string locaErrors;
+};
+
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  text.erase(0, text.find_first_not_of(" \t"));
+  text.erase(text.find_last_not_of(" \t") + 1);
+  return text;
+}
+
+// The one-line reason a continuation stopped: where, why it could not go on, and the real reason of the
+// last failed attempt (not only "maximum number of steps").
+std::string stopMessage(const StopCause& c) {
+  const std::string reason =
+      c.failure.reason.empty() ? std::string("the continuation rejected the step (no Newton failure)") : c.failure.reason;
+  if (!c.initialStateSolved)
+    return "the initial state at load factor " + loadFactorText(c.initialLambda) + " could not be solved: " + reason;
+  std::string out = "continuation stopped at load factor " + loadFactorText(c.lambda);
+  const std::string attempt = "the attempt from load factor " + loadFactorText(c.lambda) + " to " +
+                              loadFactorText(c.failedTarget) + " failed: " + reason;
+  if (c.maxStepsReached) {
+    if (c.lastAttemptFailed) return out + " (Max Steps = " + std::to_string(c.maxSteps) + " used up): " + attempt;
+    return out + " (Max Steps = " + std::to_string(c.maxSteps) + " used up while the run was still making progress: " +
+           std::to_string(c.increments) + " increments converged); raise Piro/LOCA/Stepper/Max Steps";
+  }
+  if (c.contactBetaBelowMinimum)
+    return out + " (Contact Beta asked for a step below Min Step Size = " + shortNumber(c.minStep) + " to let only " +
+           std::to_string(c.contactsPerStep) + " contacts close per increment)";
+  if (c.lastAttemptFailed)
+    return out + " (the step cannot be cut below Min Step Size = " + shortNumber(c.minStep) + "): " + attempt;
+  std::string loca = oneLine(c.locaErrors);
+  if (loca.size() > 300) loca = "..." + loca.substr(loca.size() - 300);
+  return out + (loca.empty() ? std::string(" (LOCA gave no reason)") : " (LOCA: " + loca + ")");
+}
+
+// LOCA itself threw (outside a Newton solve, e.g. in the tangent predictor): the linear solver's failure
+// when there was one, else the exception's text.
+std::string solverErrorMessage(const NewtonStatusTests& tests, double lambda, const std::string& what) {
+  const SolveFailure linear = tests.linearSolverFailure();
+  return "continuation stopped at load factor " + loadFactorText(lambda) + ": " +
+         (linear.kind != SolveFailure::Kind::None ? linear.reason : "solver error: " + oneLine(what));
+}
+
 }  // namespace
 
 ContinuationDriver::ContinuationDriver(const RCP<model::ContactMechanicsModel>& model,
@@ -208,13 +286,27 @@ ContinuationDriver::ContinuationDriver(const RCP<model::ContactMechanicsModel>& 
     : model_(model), piro_(piro), observer_(observer) {}
 
 RunSummary ContinuationDriver::run() {
-  auto newton = rcp(new NewtonCounter());
-  auto errors = rcp(new std::ostringstream());
-  auto params = locaParameters(piro_, newton, errors);
   const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
   const bool contactBeta = stepSize.get<std::string>("Method") == "Contact Beta";
   ContactBetaState betaState = contactBetaState(stepSize);
   betaState.finalLoadFactor = piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value");
+
+  const auto& tests = piro_.sublist("NOX").sublist("Status Tests");
+  const auto* model = model_.get();
+  // The Contact Beta check may recompute the residual before the residual test reads it.
+  NewtonStatusTests newtonTests(
+      *model_,
+      rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"), tests.get<double>("Relative Residual Tolerance"),
+                           tests.get<double>("Update Tolerance"), [model] { return !model->newContactsFrozen(); },
+                           [&betaState] { return !betaState.justUnfrozen; })),
+      tests.get<int>("Maximum Iterations"),
+      contactBeta && betaState.mode == ContactBetaState::Mode::Restart
+          ? Teuchos::RCP<NOX::StatusTest::Generic>(rcp(new ContactBetaRestartTest(*model_, betaState)))
+          : Teuchos::null);
+
+  auto errors = rcp(new std::ostringstream());
+  auto newton = rcp(new NewtonCounter(newtonTests, *errors));
+  auto params = locaParameters(piro_, newton, errors);
   auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*model_, betaState)));
 
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
@@ -226,42 +318,35 @@ RunSummary ContinuationDriver::run() {
   auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr, lambda0));
   group->setSaveDataStrategy(bookkeeper);
 
-  const auto& tests = piro_.sublist("NOX").sublist("Status Tests");
-  auto combo = rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
-  // Order matters: the Contact Beta check may recompute the residual before the residual test reads it.
-  combo->addStatusTest(rcp(new NOX::StatusTest::FiniteValue()));
-  if (contactBeta && betaState.mode == ContactBetaState::Mode::Restart)
-    combo->addStatusTest(rcp(new ContactBetaRestartTest(*model_, betaState)));
-  const auto* model = model_.get();
-  combo->addStatusTest(rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"),
-                                            tests.get<double>("Relative Residual Tolerance"),
-                                            tests.get<double>("Update Tolerance"),
-                                            [model] { return !model->newContactsFrozen(); },
-                                            [&betaState] { return !betaState.justUnfrozen; })));
-  combo->addStatusTest(rcp(new NOX::StatusTest::MaxIters(tests.get<int>("Maximum Iterations"))));
-
   RunSummary summary;
   const long solvesBefore = mumpsCounters().solves;
   const int jacobiansBefore = model_->jacobianEvaluations();
   try {
-    LOCA::Stepper stepper(globalData, group, combo, params);
+    LOCA::Stepper stepper(globalData, group, newtonTests.test(), params);
     const auto status = stepper.run();
     summary.finished = status == LOCA::Abstract::Iterator::Finished;
     if (!summary.finished) {
-      std::string why = errors->str();
-      std::replace(why.begin(), why.end(), '\n', ' ');
-      why.erase(0, why.find_first_not_of(" \t"));
-      why.erase(why.find_last_not_of(" \t") + 1);
-      summary.message = "continuation stopped at load factor " + std::to_string(bookkeeper->lastLambda()) + " (" +
-                        (!why.empty()                ? "LOCA: " + why
-                         : betaState.hitMinimumStep ? std::string("the step size fell below Min Step Size")
-                                                    : std::string("maximum number of steps reached")) +
-                        ")";
+      StopCause cause;
+      cause.initialStateSolved = bookkeeper->initialStateSolved();
+      cause.initialLambda = lambda0;
+      cause.lambda = bookkeeper->lastLambda();
+      cause.increments = bookkeeper->increments;
+      cause.maxSteps = piro_.sublist("LOCA").sublist("Stepper").get<int>("Max Steps");
+      cause.maxStepsReached = bookkeeper->increments + bookkeeper->failedAttempts >= cause.maxSteps;
+      cause.minStep = stepSize.get<double>("Min Step Size");
+      cause.lastAttemptFailed = bookkeeper->lastAttemptFailed;
+      // The initial solve is no step of LOCA's: its failure is the latest solve's.
+      cause.failure = cause.initialStateSolved ? bookkeeper->lastFailure : newton->failure;
+      cause.failedTarget = bookkeeper->lastFailedTarget;
+      cause.contactBetaBelowMinimum = betaState.hitMinimumStep && !bookkeeper->lastAttemptFailed;
+      cause.contactsPerStep = betaState.options.contactsPerStep;
+      cause.locaErrors = errors->str();
+      summary.message = stopMessage(cause);
     }
   } catch (const std::exception& e) {
-    summary.message = std::string("solver error: ") + e.what();
+    summary.message = solverErrorMessage(newtonTests, bookkeeper->lastLambda(), e.what());
   } catch (const char* e) {
-    summary.message = std::string("solver error: ") + e;
+    summary.message = solverErrorMessage(newtonTests, bookkeeper->lastLambda(), e);
   }
   summary.increments = bookkeeper->increments;
   summary.failedAttempts = bookkeeper->failedAttempts;

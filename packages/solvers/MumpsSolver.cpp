@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -33,13 +34,19 @@ MumpsCounters& mumpsCounters() {
 
 namespace {
 
-// MUMPS' control arrays are documented 1-based: ICNTL(k) is icntl[k-1].
+// MUMPS' control arrays are documented 1-based: ICNTL(k) is icntl[k-1] (likewise CNTL, INFOG).
 constexpr int icntl(int k) { return k - 1; }
+constexpr int cntl(int k) { return k - 1; }
+constexpr int infog(int k) { return k - 1; }
+
+constexpr int kDescribedNullVectors = 12;
 
 // One MUMPS instance bound to a matrix pattern: analysis once per pattern, factorization per matrix.
 class MumpsContext {
  public:
-  MumpsContext(MPI_Comm comm, int memoryRelaxation, int ordering, bool verbose) : comm_(comm) {
+  MumpsContext(MPI_Comm comm, int memoryRelaxation, int ordering, double nullPivotThreshold, bool verbose,
+               std::shared_ptr<MumpsFailures> failures)
+      : comm_(comm), failures_(std::move(failures)) {
     id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
     id_.par = 1;  // the host takes part in the factorization
     id_.sym = 0;  // general unsymmetric (the slip tangent of eq. (26) is non-symmetric)
@@ -57,6 +64,14 @@ class MumpsContext {
     id_.icntl[icntl(21)] = 0;   // centralised solution on the host
     id_.icntl[icntl(7)] = ordering;
     id_.icntl[icntl(14)] = memoryRelaxation;
+    // A singular stiffness (a rigid-body mode: too few supports) must stop the solve, not return one of
+    // infinitely many solutions: null pivot detection, a pivot row being null when its infinity norm is
+    // below CNTL(3) · ||A_pre|| (A_pre the scaled, permuted matrix). The root node is factorised
+    // sequentially (ICNTL(13) = 1), since ScaLAPACK there would factorise tiny pivots instead of
+    // detecting them, differently on different rank counts.
+    id_.icntl[icntl(24)] = 1;
+    id_.icntl[icntl(13)] = 1;
+    id_.cntl[cntl(3)] = nullPivotThreshold;
   }
   ~MumpsContext() {
     id_.job = -2;
@@ -95,7 +110,15 @@ class MumpsContext {
       id_.icntl[icntl(14)] *= 2;
     }
     ++mumpsCounters().factorizations;
-    return id_.infog[0] >= 0;
+    const int nullPivots = id_.infog[0] >= 0 ? id_.infog[infog(28)] : 0;
+    if (id_.infog[0] >= 0 && nullPivots == 0) return true;
+    // INFOG(1) and INFOG(28) are global: every rank takes this branch.
+    MumpsFailures& f = *failures_;
+    ++f.count;
+    f.info = id_.infog[0];
+    f.nullPivots = nullPivots;
+    f.nullSpace = nullPivots > 0 ? nullSpace(nullPivots) : std::vector<std::vector<double>>{};
+    return false;
   }
 
   // Solves in place: `rhs` holds the right-hand side on the host on entry, the solution on exit.
@@ -109,8 +132,33 @@ class MumpsContext {
     return id_.infog[0] >= 0;
   }
 
+  // The first vectors of the null space basis of the last factorization (ICNTL(25) = i), on every rank.
+  // At most kDescribedNullVectors: enough for every rigid-body mode of a 3D body, and bounded memory
+  // when a broken mesh has thousands of null pivots.
+  std::vector<std::vector<double>> nullSpace(int count) {
+    int rank = 0;
+    MPI_Comm_rank(comm_, &rank);
+    std::vector<std::vector<double>> basis;
+    for (int i = 1; i <= std::min(count, kDescribedNullVectors); ++i) {
+      std::vector<double> v(rank == 0 ? static_cast<std::size_t>(n_) : 0);
+      id_.job = 3;
+      id_.icntl[icntl(25)] = i;
+      id_.nrhs = 1;
+      id_.lrhs = static_cast<MUMPS_INT>(n_);
+      id_.rhs = v.empty() ? nullptr : v.data();
+      dmumps_c(&id_);
+      id_.icntl[icntl(25)] = 0;
+      if (id_.infog[0] < 0) break;  // global: every rank stops here
+      v.resize(static_cast<std::size_t>(n_));
+      MPI_Bcast(v.data(), static_cast<int>(v.size()), MPI_DOUBLE, 0, comm_);
+      basis.push_back(std::move(v));
+    }
+    return basis;
+  }
+
  private:
   MPI_Comm comm_;
+  std::shared_ptr<MumpsFailures> failures_;
   DMUMPS_STRUC_C id_{};
   GO n_ = 0;
   MumpsDistributedInput input_;
@@ -119,13 +167,14 @@ class MumpsContext {
 class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
  public:
   void initialize(const RCP<const Thyra::LinearOpSourceBase<double>>& src, int memoryRelaxation, int ordering,
-                  bool verbose) {
+                  double nullPivotThreshold, bool verbose, const std::shared_ptr<MumpsFailures>& failures) {
     src_ = src;
     op_ = src->getOp();
     auto A = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(op_), true);
     if (context_ == nullptr) {
       auto mpiComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(A->getComm(), true);
-      context_ = std::make_shared<MumpsContext>((*mpiComm->getRawMpiComm())(), memoryRelaxation, ordering, verbose);
+      context_ = std::make_shared<MumpsContext>((*mpiComm->getRawMpiComm())(), memoryRelaxation, ordering,
+                                                nullPivotThreshold, verbose, failures);
       const GO n = static_cast<GO>(A->getGlobalNumRows());
       TEUCHOS_TEST_FOR_EXCEPTION(A->getRowMap()->getMaxAllGlobalIndex() != n - 1 || A->getRowMap()->getMinAllGlobalIndex() != 0,
                                  std::logic_error, "MUMPS solver: row ids must be 0 .. n-1");
@@ -167,10 +216,10 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
                                        const Teuchos::Ptr<const Thyra::SolveCriteria<double>>) const override {
     Thyra::SolveStatus<double> status;
     status.solveStatus = Thyra::SOLVE_STATUS_UNCONVERGED;
-    if (!factorized_) {
-      status.message = "MUMPS factorization failed (singular or invalid matrix)";
-      return status;
-    }
+    // No solution exists (or infinitely many): throw, so that no caller can use a direction that was
+    // never computed (NOX "rescues" unconverged solves, and a zero update would pass its update test).
+    // NOX catches it and fails the solve; the failure is in MumpsFailures for the message.
+    if (!factorized_) throw std::runtime_error("MUMPS: the factorization failed (singular matrix, or a MUMPS error)");
     timers::Scope scope(timers::Phase::MumpsSolve);
     auto b = Extract::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
     auto x = Extract::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
@@ -237,7 +286,8 @@ void MumpsLinearOpWithSolveFactory::initializeOp(const RCP<const Thyra::LinearOp
   const std::string ordering = params->get<std::string>("Ordering");
   const int orderingCode = mumpsOrderings().at(ordering);
   dynamic_cast<MumpsLinearOpWithSolve&>(*op).initialize(fwdOpSrc, params->get<int>("Memory Relaxation Percent"),
-                                                        orderingCode, params->get<bool>("Verbose"));
+                                                        orderingCode, params->get<double>("Null Pivot Threshold"),
+                                                        params->get<bool>("Verbose"), failures_);
 }
 
 void MumpsLinearOpWithSolveFactory::uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
@@ -279,6 +329,14 @@ RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParamet
         "neither and would silently use PORD",
         names(), valid.get());
     valid->set("Memory Relaxation Percent", 50, "Extra workspace over MUMPS' estimate, percent (ICNTL(14)); doubled on a shortfall");
+    // Measured (docs/user-guide.md, Linear solver): the null pivot of a missing support is below 1e-15 on
+    // the test decks; pivots of every regression deck, penalty contact included, stay above 1e-3; a
+    // cantilever 1000 times longer than thick is flagged from 1e-6.
+    valid->set("Null Pivot Threshold", 1e-11,
+               "A pivot row is null (the matrix singular: a rigid-body mode) when its infinity norm is below this "
+               "times that of the scaled matrix (CNTL(3), in (0, 1)); the solve then fails and names the free "
+               "direction",
+               rcp(new Teuchos::EnhancedNumberValidator<double>(std::numeric_limits<double>::min(), 1.0)));
     valid->set("Verbose", false, "Print MUMPS' own diagnostics");
   }
   return valid;

@@ -3,9 +3,22 @@
 // right-hand side). Amesos2 in this Trilinos build has only KLU2 (wrong answers on more than one
 // rank) and Tacho (crashes), so this is the solver that gives the same answer on 1 and N ranks.
 // Registered with Stratimikos under "Linear Solver Type" = "MUMPS".
+#include <memory>
+#include <vector>
+
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
 namespace contessa::solvers {
+
+/// What the failed factorizations of one factory found, the same on every rank (for the stop message).
+struct MumpsFailures {
+  long count = 0;        ///< failed factorizations so far
+  int info = 0;          ///< INFOG(1) of the last one (e.g. −10: numerically singular; 0 with null pivots)
+  int nullPivots = 0;    ///< INFOG(28) of the last one: the rank deficiency MUMPS detected
+  /// The last one's null space basis (its first INFOG(28) vectors, at most 12, over all DOFs in global
+  /// numbering): the directions in which the structure can move without resistance.
+  std::vector<std::vector<double>> nullSpace;
+};
 
 class MumpsLinearOpWithSolveFactory : public Thyra::LinearOpWithSolveFactoryBase<double> {
  public:
@@ -28,8 +41,12 @@ class MumpsLinearOpWithSolveFactory : public Thyra::LinearOpWithSolveFactoryBase
   Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
   std::string description() const override { return "MUMPS direct solver"; }
 
+  /// Failed factorizations of the operators this factory initialised (shared by all of them).
+  const MumpsFailures& failures() const { return *failures_; }
+
  private:
   Teuchos::RCP<Teuchos::ParameterList> params_;
+  std::shared_ptr<MumpsFailures> failures_ = std::make_shared<MumpsFailures>();
 };
 
 /// Number of MUMPS factorizations and solves so far on this process (for the run statistics).

@@ -10,7 +10,21 @@ using Teuchos::ParameterList;
 using Teuchos::RCP;
 using Teuchos::rcp;
 
+namespace {
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::string> stepSizeMethods() { return {"Constant", "Adaptive", "Contact Beta"}; }
+
+std::vector<std::string> linearSolverTypes() { return {"MUMPS", "Amesos2", "Belos"}; }
+
+std::vector<std::string> preconditionerTypes() { return {"None", "Ifpack2"}; }
 
 RCP<const ParameterList> piroValidParameters() {
   auto piro = rcp(new ParameterList("Piro"));
@@ -65,7 +79,7 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setBounded(step, "Next Contact Fraction", 0.9, 0.0, 0.999,
                    "Contact Beta: β between β^{N_c} (0 = eq. 13 as printed) and β^{N_c+1} (closing N_c nodes, not N_c + 1)");
 
-  piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' added by Contessa)");
+  piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' added by Contessa; see below)");
   return piro;
 }
 
@@ -79,9 +93,19 @@ void validatePiro(ParameterList& piro, int numRanks) {
   requireInput(stepper.get<double>("Max Value") > stepper.get<double>("Initial Value"),
                "Piro/LOCA/Stepper/Max Value: expected a value greater than Initial Value");
 
-  // Stratimikos checks its own names; two solvers of this Trilinos build are refused here.
+  // Stratimikos checks its own names, but it also offers its Epetra solvers (Amesos, AztecOO; the
+  // preconditioners ML and Ifpack), which cannot take Contessa's Tpetra matrices and fail only at the
+  // first solve: the two choices are checked here. Stratimikos' default preconditioner is Ifpack, so
+  // Contessa's default is None. Two solvers of this Trilinos build are refused as well.
   auto& strat = piro.sublist("Stratimikos");
   if (!strat.isParameter("Linear Solver Type")) strat.set("Linear Solver Type", std::string("MUMPS"));
+  if (!strat.isParameter("Preconditioner Type")) strat.set("Preconditioner Type", std::string("None"));
+  for (const auto& [name, allowed] : {std::make_pair("Linear Solver Type", linearSolverTypes()),
+                                      std::make_pair("Preconditioner Type", preconditionerTypes())}) {
+    const std::string where = std::string("Piro/Stratimikos/") + name;
+    requireInput(strat.isType<std::string>(name), where + ": expected a string, one of " + joinNames(allowed));
+    deck::requireOneOf(where, strat.get<std::string>(name), allowed);
+  }
   const std::string type = strat.get<std::string>("Linear Solver Type");
   if (type == "Amesos2") {
     std::string solver = "KLU2";
@@ -89,6 +113,7 @@ void validatePiro(ParameterList& piro, int numRanks) {
       solver = strat.sublist("Linear Solver Types").sublist("Amesos2").get<std::string>("Solver Type", "KLU2");
     requireInput(solver != "Tacho" && solver != "tacho",
                  "Piro/Stratimikos/Linear Solver Types/Amesos2/Solver Type: Tacho crashes in this Trilinos build; use MUMPS");
+    deck::requireOneOf("Piro/Stratimikos/Linear Solver Types/Amesos2/Solver Type", solver, {"KLU2"});
     requireInput(numRanks == 1,
                  "Piro/Stratimikos/Linear Solver Type: Amesos2 (" + solver + ") gives wrong solutions on more than one MPI "
                  "rank in this Trilinos build; use MUMPS or Belos");

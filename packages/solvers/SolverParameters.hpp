@@ -13,6 +13,11 @@ namespace contessa::solvers {
 /// Step-size strategies known to LOCA or registered by Contessa's LOCA factory.
 std::vector<std::string> stepSizeMethods();
 
+/// Stratimikos' linear solvers and preconditioners that work on Contessa's Tpetra matrices (MUMPS is
+/// registered by Contessa; Stratimikos' Epetra solvers are left out).
+std::vector<std::string> linearSolverTypes();
+std::vector<std::string> preconditionerTypes();
+
 /// The valid "Piro" list without the Stratimikos part (Stratimikos validates its own sublist).
 Teuchos::RCP<const Teuchos::ParameterList> piroValidParameters();
 

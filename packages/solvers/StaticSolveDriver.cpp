@@ -1,39 +1,38 @@
 #include "solvers/StaticSolveDriver.hpp"
 
 #include <chrono>
+#include <sstream>
 
+#include <NOX_Observer.hpp>
+#include <NOX_StatusTest_NormF.H>
 #include <NOX_Utils.H>
 #include <Piro_NOXSolver.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/NewtonStatusTests.hpp"
 
 namespace contessa::solvers {
 
 using Teuchos::RCP;
 using Teuchos::rcp;
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>;
 
 namespace {
 
-// Piro builds NOX's status tests from the NOX factory's parameter format: translate the deck's. The
-// factory's NormF is absolute (a relative one needs a group), so a single solve uses the absolute
-// residual tolerance and the iteration limit; the update test belongs to the continuation driver.
-void addStatusTests(Teuchos::ParameterList& nox, const Teuchos::ParameterList& deckTests) {
-  auto& tests = nox.sublist("Status Tests");
-  tests.set("Test Type", "Combo");
-  tests.set("Combo Type", "OR");
-  int n = 0;
-  auto& finite = tests.sublist("Test " + std::to_string(n++));
-  finite.set("Test Type", "FiniteValue");
-  auto& absolute = tests.sublist("Test " + std::to_string(n++));
-  absolute.set("Test Type", "NormF");
-  absolute.set("Tolerance", deckTests.get<double>("Absolute Residual Tolerance"));
-  auto& maxIters = tests.sublist("Test " + std::to_string(n++));
-  maxIters.set("Test Type", "MaxIters");
-  maxIters.set("Maximum Iterations", deckTests.get<int>("Maximum Iterations"));
-  tests.set("Number of Tests", n);
-}
+// Why the solve failed, read when it ends (on every rank: the diagnosis may communicate).
+class SolveObserver : public NOX::Observer {
+ public:
+  SolveObserver(NewtonStatusTests& tests, const std::ostringstream& noxOutput) : tests_(tests), noxOutput_(noxOutput) {}
+  void runPreSolve(const NOX::Solver::Generic&) override { tests_.startSolve(); }
+  void runPostSolve(const NOX::Solver::Generic& solver) override { failure = tests_.diagnose(solver, noxOutput_.str()); }
+  SolveFailure failure;
+
+ private:
+  NewtonStatusTests& tests_;
+  const std::ostringstream& noxOutput_;
+};
 
 }  // namespace
 
@@ -41,6 +40,18 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
                        IncrementObserver& observer) {
   const auto start = std::chrono::steady_clock::now();
   const auto& deckNox = piro.sublist("NOX");
+  const auto& deckTests = deckNox.sublist("Status Tests");
+  // The convergence test of a single solve is the absolute residual tolerance (a relative one has no
+  // increment start to refer to; the update test belongs to the continuation driver), within the same
+  // tests as the continuation: finite residual, no tunnelling, the iteration limit.
+  // The unscaled 2-norm, as NOX's status-test factory builds NormF from a parameter list.
+  NewtonStatusTests tests(*model,
+                          rcp(new NOX::StatusTest::NormF(deckTests.get<double>("Absolute Residual Tolerance"),
+                                                         NOX::Abstract::Vector::TwoNorm, NOX::StatusTest::NormF::Unscaled)),
+                          deckTests.get<int>("Maximum Iterations"));
+  auto noxOutput = rcp(new std::ostringstream());
+  auto solveObserver = rcp(new SolveObserver(tests, *noxOutput));
+
   auto appParams = rcp(new Teuchos::ParameterList("Piro"));
   appParams->set("Exit on Failed NOX Solve", true);
   auto& nox = appParams->sublist("NOX");
@@ -49,16 +60,35 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
                                              ? deckNox.sublist("Direction").get<std::string>("Method")
                                              : std::string("Newton"));
   nox.sublist("Line Search").set("Method", deckNox.sublist("Line Search").get<std::string>("Method"));
-  nox.sublist("Printing").set("Output Information", deckNox.sublist("Printing").get<bool>("Newton Details")
-                                                        ? NOX::Utils::Error | NOX::Utils::OuterIteration
-                                                        : static_cast<int>(NOX::Utils::Error));
-  addStatusTests(nox, deckNox.sublist("Status Tests"));
+  const bool details = deckNox.sublist("Printing").get<bool>("Newton Details");
+  nox.sublist("Printing").set("Output Information", details ? NOX::Utils::Error | NOX::Utils::OuterIteration
+                                                            : static_cast<int>(NOX::Utils::Error));
+  // NOX's errors and the exceptions it catches go into the one-line message, not onto stderr/stdout.
+  nox.sublist("Printing").set("Error Stream", Teuchos::rcp_implicit_cast<std::ostream>(noxOutput));
+  if (!details) nox.sublist("Printing").set("Output Stream", Teuchos::rcp_implicit_cast<std::ostream>(noxOutput));
+  nox.set("Catch Throws During Solve", true);
+  nox.sublist("Solver Options").set("Observer", Teuchos::rcp_implicit_cast<NOX::Observer>(solveObserver));
+  auto& statusTests = nox.sublist("Status Tests");
+  statusTests.set("Test Type", "User Defined");
+  statusTests.set("User Status Test", tests.test());
 
-  // The initial state, as a continuation run reports it.
+  // The initial state, as a continuation run reports and commits it: the reference of the contact
+  // history and of the tunnelling check (the solve goes from here to load factor 1 in one step).
   auto x0 = model->getNominalValues().get_x();
+  {
+    auto in = model->createInArgs();
+    in.set_x(x0);
+    auto p0 = Thyra::createMember(model->get_p_space(0));
+    Thyra::set_ele(0, 0.0, p0.ptr());
+    in.set_p(0, p0);
+    auto out = model->createOutArgs();
+    auto f0 = Thyra::createMember(model->get_f_space());
+    out.set_f(f0);
+    model->evalModel(in, out);
+    model->commitState();
+  }
   IncrementReport initial;
-  observer.incrementConverged(*Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>::getConstTpetraVector(x0),
-                              initial);
+  observer.incrementConverged(*Extract::getConstTpetraVector(x0), initial);
 
   RunSummary summary;
   const long solvesBefore = mumpsCounters().solves;
@@ -82,16 +112,23 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
     r.newtonIterations = results.get<int>("Nonlinear Iterations", 0);
     r.residualNorm = results.get<double>("2-Norm of Residual", 0.0);
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    observer.incrementConverged(*Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>::getConstTpetraVector(x), r);
+    observer.incrementConverged(*Extract::getConstTpetraVector(x), r);
     summary.finished = true;
     summary.increments = 1;
     summary.newtonIterations = r.newtonIterations;
     summary.finalLambda = 1.0;
   } catch (const std::exception& e) {
-    std::string msg = e.what();
-    for (auto& c : msg)
-      if (c == '\n') c = ' ';
-    summary.message = "the NOX solve at load factor 1 did not converge (" + msg.substr(0, 200) + ")";
+    // Piro throws when the solve fails: say why in plain words (its exception text is Piro's own).
+    SolveFailure failure = solveObserver->failure;
+    if (failure.kind == SolveFailure::Kind::None) failure = tests.linearSolverFailure();
+    std::string reason = failure.reason;
+    if (reason.empty()) {
+      reason = e.what();
+      for (auto& c : reason)
+        if (c == '\n') c = ' ';
+      reason = "solver error: " + reason.substr(0, 300);
+    }
+    summary.message = "the Newton solve from load factor 0 to 1 (Piro/Solver Type = NOX) failed: " + reason;
     summary.failedAttempts = 1;
   }
   summary.linearSolves = static_cast<int>(mumpsCounters().solves - solvesBefore);

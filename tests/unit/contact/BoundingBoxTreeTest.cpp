@@ -134,3 +134,30 @@ TEST(BoundingBoxTree, ScalesAsNLogNOnA100kNodeSurface) {
     EXPECT_EQ(fromTree, bruteForce<2>(boxes, slaves[i])) << "slave " << i;
   }
 }
+
+// Box queries (the swept boxes of the tunnelling check) return exactly the boxes that intersect.
+TEST(BoundingBoxTree, BoxQueryMatchesBruteForce) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 100.0), size(0.0, 3.0);
+  std::vector<cc::BoundingBox<2>> boxes(2000);
+  for (auto& b : boxes) {
+    const Vector<2> p{u(rng), u(rng)};
+    b.include(p);
+    b.include({p[0] + size(rng), p[1] + size(rng)});
+  }
+  const cc::BoundingBoxTree<2> tree(boxes);
+  std::size_t total = 0;
+  for (int q = 0; q < 500; ++q) {
+    cc::BoundingBox<2> query;
+    const Vector<2> p{u(rng), u(rng)};
+    query.include(p);
+    query.include({p[0] + 2 * size(rng), p[1] + 2 * size(rng)});
+    std::vector<int> hits, expected;
+    tree.queryBox(query, hits);
+    for (std::size_t b = 0; b < boxes.size(); ++b)
+      if (boxes[b].intersects(query)) expected.push_back(static_cast<int>(b));
+    ASSERT_EQ(hits, expected) << "query " << q;
+    total += hits.size();
+  }
+  EXPECT_GT(total, 500u);  // the queries do find boxes
+}

@@ -4,6 +4,7 @@
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/HistoryTransfer2D.hpp"
 #include "contact/PenaltyNormalLaw.hpp"
+#include "contact/SlipReversalDamping.hpp"
 
 #include <gtest/gtest.h>
 
@@ -48,10 +49,15 @@ TEST(ContactLawParameters, ValidationNamesTheParameter) {
   EXPECT_THROW((cc::ContactLawParameters{1e3, 1.0, -0.1}.validate()), contessa::InputError);
   try {
     cc::ContactLawParameters{1e3, 0.0, 0.3}.validate();
-    FAIL() << "mu > 0 with epsilon_T = 0 must be rejected";
+    FAIL() << "mu > 0 with epsilon_T = 0 and no slip tolerance must be rejected";
   } catch (const contessa::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("epsilon_T"), std::string::npos);
   }
+  // With a slip tolerance ε_T comes from the pressure; the Tangential Penalty is an optional bound.
+  EXPECT_NO_THROW((cc::ContactLawParameters{1e3, 0.0, 0.3, 0.005}.validate()));
+  EXPECT_THROW((cc::ContactLawParameters{1e3, 0.0, 0.3, -0.005}.validate()), contessa::InputError);
+  EXPECT_THROW((cc::ContactLawParameters{1e3, -1.0, 0.3, 0.005}.validate()), contessa::InputError);
+  EXPECT_THROW(cc::CoulombReturnMapping<1>(0.0, 0.3, 0.0), contessa::InputError);
 }
 
 TEST(CoulombReturnMapping, SticksBelowTheCoulombLimit) {
@@ -131,13 +137,16 @@ TEST(CoulombReturnMapping, FrictionlessHasNoTangentialTraction) {
   EXPECT_EQ(r.dTraction_dMetric[0](0, 0), 0.0);
 }
 
-// The partial derivatives the element tangent is built from, against central differences.
+// The partial derivatives the element tangent is built from, against central differences. `scale` is
+// the size of the derivatives (the tolerance is 1e-6 (|value| + scale)); the t_N step is 1e-6 of |t_N|
+// at small pressures, so it never crosses t_N = 0.
 template <int NXi>
 void checkDerivatives(const cc::CoulombReturnMapping<NXi>& map, const cc::ReturnMappingInput<NXi>& in,
-                      ContactStatus expected) {
+                      ContactStatus expected, double scale = 1.0) {
   const auto r = map.map(in);
   ASSERT_EQ(r.status, expected);
   const double h = 1e-6;
+  const double hN = 1e-6 * std::min(1.0, std::abs(in.normalTraction));
   for (int beta = 0; beta < NXi; ++beta) {
     auto plus = in;
     auto minus = in;
@@ -146,7 +155,7 @@ void checkDerivatives(const cc::CoulombReturnMapping<NXi>& map, const cc::Return
     const auto tp = map.map(plus).traction;
     const auto tm = map.map(minus).traction;
     for (int alpha = 0; alpha < NXi; ++alpha)
-      EXPECT_NEAR(r.dTraction_dSlipIncrement(alpha, beta), (tp[alpha] - tm[alpha]) / (2 * h), 1e-6 * (1 + std::abs(r.dTraction_dSlipIncrement(alpha, beta))));
+      EXPECT_NEAR(r.dTraction_dSlipIncrement(alpha, beta), (tp[alpha] - tm[alpha]) / (2 * h), 1e-6 * (scale + std::abs(r.dTraction_dSlipIncrement(alpha, beta))));
     for (int gamma = 0; gamma < NXi; ++gamma) {
       auto mp = in;
       auto mm = in;
@@ -155,17 +164,18 @@ void checkDerivatives(const cc::CoulombReturnMapping<NXi>& map, const cc::Return
       const auto sp = map.map(mp).traction;
       const auto sm = map.map(mm).traction;
       for (int alpha = 0; alpha < NXi; ++alpha)
-        EXPECT_NEAR(r.dTraction_dMetric[alpha](beta, gamma), (sp[alpha] - sm[alpha]) / (2 * h), 1e-6 * (1 + std::abs(r.dTraction_dMetric[alpha](beta, gamma))));
+        EXPECT_NEAR(r.dTraction_dMetric[alpha](beta, gamma), (sp[alpha] - sm[alpha]) / (2 * h), 1e-6 * (scale + std::abs(r.dTraction_dMetric[alpha](beta, gamma))));
     }
   }
   auto np = in;
   auto nm = in;
-  np.normalTraction += h;
-  nm.normalTraction -= h;
+  np.normalTraction += hN;
+  nm.normalTraction -= hN;
   const auto up = map.map(np).traction;
   const auto um = map.map(nm).traction;
   for (int alpha = 0; alpha < NXi; ++alpha)
-    EXPECT_NEAR(r.dTraction_dNormalTraction[alpha], (up[alpha] - um[alpha]) / (2 * h), 1e-6);
+    EXPECT_NEAR(r.dTraction_dNormalTraction[alpha], (up[alpha] - um[alpha]) / (2 * hN),
+                1e-6 * (1.0 + std::abs(r.dTraction_dNormalTraction[alpha])));
 }
 
 TEST(CoulombReturnMapping, LinearisationMatchesFiniteDifferences) {
@@ -185,6 +195,98 @@ TEST(CoulombReturnMapping, LinearisationMatchesFiniteDifferences) {
   checkDerivatives<2>(map2, in, ContactStatus::Stick);
   in.slipIncrement = {0.3, -0.2};
   checkDerivatives<2>(map2, in, ContactStatus::Slip);
+}
+
+// ---- Slip tolerance: ε_T = μ|t_N|/(s L), capped by the Tangential Penalty ----------------------------
+
+namespace {
+
+cc::ReturnMappingInput<1> input1L(double committed, double slip, double a11, double tN, double facetLength) {
+  auto in = input1(committed, slip, a11, tN);
+  in.facetLength = facetLength;
+  return in;
+}
+
+}  // namespace
+
+TEST(CoulombReturnMapping, SlipToleranceKeepsTheStickRangeWhateverThePressure) {
+  // s = 0.005, L = 2: a node sticks while its elastic slip is below s L = 0.01, at any pressure.
+  // ā_11 = 4 (‖ā_1‖ = 2): a physical slip d is Δξ = d/2, and ‖t^trial‖ = ε_T d from t_n = 0.
+  const cc::CoulombReturnMapping<1> map(0.0, 0.3, 0.005);
+  for (double tN : {-100.0, -1.0, -1e-6, -1e-11}) {
+    SCOPED_TRACE(tN);
+    const auto inside = map.map(input1L(0.0, 0.99 * 0.01 / 2.0, 4.0, tN, 2.0));
+    EXPECT_EQ(inside.status, ContactStatus::Stick);
+    EXPECT_NEAR(inside.tangentialPenalty, 0.3 * std::abs(tN) / 0.01, 1e-12 * 0.3 * std::abs(tN) / 0.01);
+    EXPECT_NEAR(inside.trialNorm, 0.99 * 0.3 * std::abs(tN), 1e-12 * std::abs(tN));  // 99 % of the cone
+    const auto outside = map.map(input1L(0.0, -1.01 * 0.01 / 2.0, 4.0, tN, 2.0));
+    EXPECT_EQ(outside.status, ContactStatus::Slip);
+    EXPECT_NEAR(outside.traction[0] / 2.0, -0.3 * std::abs(tN), 1e-12 * std::abs(tN));  // eq. (22b), backwards
+  }
+  // The paper's constant ε_T (s = 0): the stick range μ|t_N|/ε_T vanishes with the pressure.
+  const cc::CoulombReturnMapping<1> constant(1e9, 0.3);
+  EXPECT_EQ(constant.map(input1L(0.0, 1e-9, 4.0, -0.1, 2.0)).status, ContactStatus::Slip);
+  EXPECT_EQ(map.map(input1L(0.0, 1e-9, 4.0, -0.1, 2.0)).status, ContactStatus::Stick);
+}
+
+TEST(CoulombReturnMapping, TangentialPenaltyCapsThePressurePenalty) {
+  // μ|t_N|/(s L) = 0.3·100/0.01 = 3000 above the cap 1000: ε_T = 1000, independent of t_N.
+  const cc::CoulombReturnMapping<1> capped(1000.0, 0.3, 0.005);
+  const auto high = capped.map(input1L(0.0, 1e-4, 4.0, -100.0, 2.0));
+  EXPECT_EQ(high.tangentialPenalty, 1000.0);
+  EXPECT_EQ(high.dTangentialPenalty_dNormalTraction, 0.0);
+  EXPECT_DOUBLE_EQ(high.traction[0], 1000.0 * 4.0 * 1e-4);  // eq. (20)
+  // 0.3·1/0.01 = 30 below the cap: tied to the pressure, ∂ε_T/∂t_N = −μ/(s L).
+  const auto low = capped.map(input1L(0.0, 1e-4, 4.0, -1.0, 2.0));
+  EXPECT_DOUBLE_EQ(low.tangentialPenalty, 30.0);
+  EXPECT_DOUBLE_EQ(low.dTangentialPenalty_dNormalTraction, -0.3 / 0.01);
+  // A slip tolerance needs the facet length.
+  EXPECT_THROW(capped.map(input1(0.0, 1e-4, 4.0, -1.0)), std::logic_error);
+}
+
+TEST(CoulombReturnMapping, SlipToleranceLinearisationMatchesFiniteDifferences) {
+  // ∂t/∂t_N now has the stick term ā Δξ ∂ε_T/∂t_N; checked in stick and slip, at a normal and at a very
+  // small pressure (where the paper's constant ε_T leaves no stick range), with and without the cap.
+  for (double pressure : {50.0, 1e-6}) {
+    SCOPED_TRACE(pressure);
+    const double limit = 0.3 * pressure;  // μ|t_N|
+    const double sL = 0.005 * 2.0;
+    for (double cap : {0.0, 0.5 * limit / sL}) {
+      SCOPED_TRACE(cap);
+      const cc::CoulombReturnMapping<1> map1(cap, 0.3, 0.005);
+      // ‖ā_1‖ = 1.58: stick with a committed traction at 20 % of the cone and 30 % of s L more slip
+      // (50 % with the cap halving ε_T), slip with 3 s L.
+      const double a11 = 2.5, length = std::sqrt(a11);
+      auto stick = input1L(0.2 * limit * length, 0.3 * sL / length, a11, -pressure, 2.0);
+      checkDerivatives<1>(map1, stick, ContactStatus::Stick, limit);
+      auto slip = input1L(0.2 * limit * length, -3.0 * sL / length, a11, -pressure, 2.0);
+      checkDerivatives<1>(map1, slip, ContactStatus::Slip, limit);
+      // The normal derivative is of size μ ā Δξ/(s L) ~ 1: compare it relatively as well.
+      const auto r = map1.map(stick);
+      auto plus = stick, minus = stick;
+      const double h = 1e-3 * pressure;
+      plus.normalTraction += h;
+      minus.normalTraction -= h;
+      const double fd = (map1.map(plus).traction[0] - map1.map(minus).traction[0]) / (2 * h);
+      EXPECT_NEAR(r.dTraction_dNormalTraction[0], fd, 1e-7 * std::max(1.0, std::abs(fd)));
+      if (cap == 0.0) {
+        EXPECT_NE(r.dTraction_dNormalTraction[0], 0.0);
+      }
+    }
+    // Two surface coordinates (3D faces): slip has ∂t/∂t_N through ε_T in t^trial and eq. (27) too.
+    const cc::CoulombReturnMapping<2> map2(0.0, 0.3, 0.005);
+    cc::ReturnMappingInput<2> in;
+    in.metric(0, 0) = 2.0;
+    in.metric(0, 1) = in.metric(1, 0) = 0.4;
+    in.metric(1, 1) = 1.2;
+    in.normalTraction = -pressure;
+    in.facetLength = 2.0;
+    in.committedTraction = {0.1 * limit, -0.05 * limit};
+    in.slipIncrement = {0.1 * sL, -0.2 * sL};
+    checkDerivatives<2>(map2, in, ContactStatus::Stick, limit);
+    in.slipIncrement = {3.0 * sL, -2.0 * sL};
+    checkDerivatives<2>(map2, in, ContactStatus::Slip, limit);
+  }
 }
 
 TEST(ContactHistoryStore, RollbackRestoresTheCommittedStateExactly) {
@@ -239,4 +341,50 @@ TEST(HistoryTransfer2D, UnrollsTheContactPointAcrossTheSharedVertex) {
   const auto back = cc::transferHistory2D(moved, second, first);
   EXPECT_NEAR(back.xi[0], 0.5, 1e-14);
   EXPECT_NEAR(back.tangentialTraction[0], 3.0, 1e-14);
+}
+
+// ---- Slip reversal damping (tangent only) ------------------------------------------------------------
+
+TEST(SlipReversalDamping, GivesANodeWhoseSlipDirectionReversesTheSecantStiffness) {
+  auto state = [](ContactStatus status, double xi, double traction) {
+    cc::ContactHistory<1> h;
+    h.segment = 2;
+    h.status = status;
+    h.xi = {xi};
+    h.tangentialTraction = {traction};
+    return h;
+  };
+  cc::SlipReversalDamping damping(3);
+  EXPECT_FALSE(damping.tangent(1).secant);
+  const auto forward = state(ContactStatus::Slip, 0.10, 0.3), backward = state(ContactStatus::Slip, 0.04, -0.3);
+  // Slip forwards, then forwards again: no reversal, consistent tangent.
+  EXPECT_FALSE(damping.observe(1, forward, state(ContactStatus::Slip, 0.12, 0.31)));
+  EXPECT_FALSE(damping.tangent(1).secant);
+  // Forwards, then backwards: the secant Δt/Δξ = (−0.3 − 0.3)/(0.04 − 0.10) = 10 between the two states.
+  EXPECT_TRUE(damping.observe(1, forward, backward));
+  ASSERT_TRUE(damping.tangent(1).secant);
+  EXPECT_NEAR(damping.tangent(1).stiffness, 10.0, 1e-12);
+  EXPECT_FALSE(damping.tangent(0).secant);  // other nodes untouched
+  // The same iterate evaluated again (residual and Jacobian in two calls) changes nothing.
+  EXPECT_FALSE(damping.observe(1, backward, backward));
+  EXPECT_TRUE(damping.tangent(1).secant);
+  // Slipping the same way for kReleaseIterates iterates: it really slips, consistent tangent again.
+  const auto further = state(ContactStatus::Slip, 0.03, -0.3), furthest = state(ContactStatus::Slip, 0.02, -0.3);
+  EXPECT_FALSE(damping.observe(1, backward, further));
+  EXPECT_TRUE(damping.tangent(1).secant);
+  EXPECT_FALSE(damping.observe(1, further, furthest));
+  EXPECT_FALSE(damping.tangent(1).secant);
+  // A node that sticks after its reversal takes its consistent (stick) tangent at once.
+  EXPECT_TRUE(damping.observe(0, forward, backward));
+  EXPECT_FALSE(damping.observe(0, backward, state(ContactStatus::Stick, 0.07, 0.1)));
+  EXPECT_FALSE(damping.tangent(0).secant);
+  // A reversal counts only on the same segment (another segment has its own orientation).
+  auto elsewhere = backward;
+  elsewhere.segment = 3;
+  EXPECT_FALSE(damping.observe(2, forward, elsewhere));
+  EXPECT_TRUE(damping.observe(2, backward, forward));
+  EXPECT_EQ(damping.reversals(), 3);
+  damping.reset();  // commit or rollback of the increment
+  EXPECT_FALSE(damping.tangent(2).secant);
+  EXPECT_EQ(damping.reversals(), 0);
 }

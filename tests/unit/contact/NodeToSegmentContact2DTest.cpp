@@ -27,7 +27,7 @@ Vec6 toDofs(const cc::NodeToSegmentGeometry2D& g) {
 
 /// Central differences of the residual: K_FD(:, j) = (r(x + h e_j) − r(x − h e_j)) / 2h.
 Mat6 finiteDifferenceTangent(const cc::NodeToSegmentContact2D& element, const cc::NodeToSegmentGeometry2D& g,
-                             const cc::ContactHistory<1>& committed, double h) {
+                             const cc::ContactHistory<1>& committed, double h, double facetLength = 0.0) {
   Mat6 k;
   const Vec6 x = toDofs(g);
   for (int j = 0; j < 6; ++j) {
@@ -35,8 +35,8 @@ Mat6 finiteDifferenceTangent(const cc::NodeToSegmentContact2D& element, const cc
     Vec6 minus = x;
     plus[j] += h;
     minus[j] -= h;
-    const Vec6 rp = element.evaluate(fromDofs(plus), committed.segment, committed).residual;
-    const Vec6 rm = element.evaluate(fromDofs(minus), committed.segment, committed).residual;
+    const Vec6 rp = element.evaluate(fromDofs(plus), committed.segment, committed, facetLength).residual;
+    const Vec6 rm = element.evaluate(fromDofs(minus), committed.segment, committed, facetLength).residual;
     for (int i = 0; i < 6; ++i) k(i, j) = (rp[i] - rm[i]) / (2.0 * h);
   }
   return k;
@@ -126,6 +126,115 @@ TEST(NodeToSegmentContact2D, ConsistentTangentMatchesCentralDifferences) {
     }
   }
   std::printf("[ FD       ] worst relative error %.2e\n", worst);
+}
+
+// With a slip tolerance ε_T = μ|t_N|/(s L) depends on g_N: the tangent gains ∂t_T/∂g_N = ā_11 Δξ ∂ε_T/∂t_N ε_N
+// in stick. Checked against central differences in stick and slip, at a normal penetration and at a
+// penetration of 1e-5 of the segment (a nearly unloaded node: p = 1e-2 with ε_N = 1e3), with and
+// without the cap. L = 4 and s = 1 for stick (s L = 4 exceeds every configuration's slip), s = 0.005 for slip.
+TEST(NodeToSegmentContact2D, SlipToleranceTangentMatchesCentralDifferences) {
+  struct ToleranceCase {
+    const char* name;
+    cc::ContactLawParameters parameters;
+    ContactStatus expected;
+  };
+  const ToleranceCase cases[] = {
+      {"stick", {1e3, 0.0, 0.3, 1.0}, ContactStatus::Stick},
+      {"stick_capped", {1e3, 1e-3, 0.3, 1.0}, ContactStatus::Stick},
+      {"slip", {1e3, 0.0, 0.3, 0.005}, ContactStatus::Slip},
+      {"slip_capped", {1e3, 300.0, 0.3, 0.005}, ContactStatus::Slip},
+  };
+  const double facetLength = 4.0;
+  double worst = 0.0;
+  for (const ToleranceCase& c : cases) {
+    const cc::NodeToSegmentContact2D element(c.parameters);
+    for (const double gapScale : {1.0, 2.5e-4}) {
+      for (const Configuration& conf : kConfigurations) {
+        SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
+        const double gap = conf.gap * gapScale;
+        const auto g = slaveAt(conf.x1, conf.x2, conf.xi, gap);
+        // Committed traction at 10 % of the cone, in the direction of the motion.
+        const double length = std::sqrt(cc::dot(cc::subtract(conf.x2, conf.x1), cc::subtract(conf.x2, conf.x1))) / 2.0;
+        const double tn = 0.1 * 0.3 * 1e3 * std::abs(gap) * length * (conf.xi > conf.xiN ? 1.0 : -1.0);
+        const auto committed = inContact(7, conf.xiN, tn, ContactStatus::Stick);
+        const auto r = element.evaluate(g, 7, committed, facetLength);
+        ASSERT_EQ(r.status, c.expected);
+        const double pressurePenalty = 0.3 * 1e3 * std::abs(gap) / (c.parameters.slipTolerance * facetLength);
+        const double cap = c.parameters.tangentialPenalty;
+        EXPECT_NEAR(r.friction.tangentialPenalty, cap > 0.0 ? std::min(cap, pressurePenalty) : pressurePenalty,
+                    1e-9 * pressurePenalty);
+        // h well below the penetration (the FD must not open the contact)
+        const double h = 1e-3 * std::min(1e-3, std::abs(gap));
+        const Mat6 fd = finiteDifferenceTangent(element, g, committed, h, facetLength);
+        const double error = relativeDifference(r.tangent, fd);
+        std::printf("[ FD       ] slip tolerance %-12s %-20s g_N = %.1e  ‖K − K_FD‖/‖K_FD‖ = %.2e\n", c.name,
+                    conf.name.c_str(), gap, error);
+        EXPECT_LT(error, kFdTolerance);
+        worst = std::max(worst, error);
+      }
+    }
+  }
+  std::printf("[ FD       ] slip tolerance: worst relative error %.2e\n", worst);
+  // The new stick term is there and matters: without ∂ε_T/∂t_N the tangent misses the FD derivative.
+  const cc::NodeToSegmentContact2D element({1e3, 0.0, 0.3, 1.0}, cc::TangentTerms::Consistent);
+  const Configuration& conf = kConfigurations[2];
+  const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+  const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
+  const auto r = element.evaluate(g, 7, committed, facetLength);
+  ASSERT_EQ(r.status, ContactStatus::Stick);
+  EXPECT_NE(r.friction.dTraction_dNormalTraction[0], 0.0);
+  EXPECT_GT(asymmetry(r.tangent), 1e-3);  // ∂t/∂t_N ε_N D^1 Nᵀ: non-symmetric even in stick
+}
+
+// The secant slip tangent (SlipReversalDamping) changes the tangent only: same residual and trial state,
+// and K_secant − K = k (∂ξ̄/∂u)(∂ξ̄/∂u)ᵀ with k the given ∂t_T1/∂ξ̄ (capped by the stick stiffness
+// ε_T ā_11): symmetric, rank one, positive semi-definite. A sticking node is unaffected.
+TEST(NodeToSegmentContact2D, SecantSlipTangentChangesOnlyTheTangent) {
+  const cc::NodeToSegmentContact2D element({1e3, 0.0, 0.3, 0.005});
+  const double facetLength = 4.0;
+  for (const Configuration& conf : kConfigurations) {
+    SCOPED_TRACE(conf.name);
+    const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+    const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Slip);
+    const auto consistent = element.evaluate(g, 7, committed, facetLength);
+    ASSERT_EQ(consistent.status, ContactStatus::Slip);
+    const double stick = consistent.friction.tangentialPenalty * consistent.projection.metric(0, 0);
+    for (double k : {0.25 * stick, 4.0 * stick}) {  // the second is capped at the stick stiffness
+      const auto secant = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(k));
+      for (int i = 0; i < 6; ++i) EXPECT_EQ(consistent.residual[i], secant.residual[i]);
+      EXPECT_EQ(consistent.trial, secant.trial);
+      Mat6 difference = secant.tangent;
+      cc::addScaled(difference, -1.0, consistent.tangent);
+      const double size = cc::frobeniusNorm(difference);
+      EXPECT_GT(size, 0.0);
+      EXPECT_LT(asymmetry(difference), 1e-12);
+      for (int i = 0; i < 6; ++i) {
+        EXPECT_GE(difference(i, i), -1e-12 * size);
+        for (int j = 0; j < 6; ++j)  // rank one: every 2 × 2 minor vanishes
+          EXPECT_NEAR(difference(i, i) * difference(j, j), difference(i, j) * difference(j, i), 1e-10 * size * size);
+      }
+      // Linear in k below the cap; the trace of k (∂ξ̄/∂u)(∂ξ̄/∂u)ᵀ is k ‖∂ξ̄/∂u‖².
+      double trace = 0.0;
+      for (int i = 0; i < 6; ++i) trace += difference(i, i);
+      if (k < stick) {
+        const auto half = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(0.5 * k));
+        double halfTrace = 0.0;
+        for (int i = 0; i < 6; ++i) halfTrace += half.tangent(i, i) - consistent.tangent(i, i);
+        EXPECT_NEAR(halfTrace, 0.5 * trace, 1e-10 * trace);
+      } else {
+        const auto atCap = element.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(stick));
+        EXPECT_EQ(relativeDifference(atCap.tangent, secant.tangent), 0.0);
+      }
+    }
+  }
+  const Configuration& conf = kConfigurations[0];
+  const cc::NodeToSegmentContact2D sticking({1e3, 0.0, 0.3, 1.0});
+  const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+  const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
+  const auto a = sticking.evaluate(g, 7, committed, facetLength);
+  const auto b = sticking.evaluate(g, 7, committed, facetLength, cc::SlipTangent::secantOf(1.0));
+  ASSERT_EQ(a.status, ContactStatus::Stick);
+  EXPECT_EQ(relativeDifference(a.tangent, b.tangent), 0.0);
 }
 
 TEST(NodeToSegmentContact2D, SlipTangentIsNonSymmetricLikeItsFiniteDifference) {

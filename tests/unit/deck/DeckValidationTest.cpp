@@ -215,6 +215,15 @@ TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   EXPECT_TRUE(def.contacts[0].rigidMaster);
   EXPECT_EQ(def.contacts[0].slaveNodes.size(), 3u);  // the top of a 2 × 1 mesh
   EXPECT_NEAR(def.contacts[0].slaveAreas[0] + def.contacts[0].slaveAreas[1] + def.contacts[0].slaveAreas[2], 2.0, 1e-14);
+  // Facet lengths of the slip tolerance: the mean of the adjacent sides, 1 at the ends as in the middle.
+  ASSERT_EQ(def.contacts[0].slaveFacetLengths.size(), 3u);
+  for (double length : def.contacts[0].slaveFacetLengths) EXPECT_NEAR(length, 1.0, 1e-14);
+  // Friction needs no Tangential Penalty with the default Slip Tolerance (ε_T = μ|t_N|/(0.005 L)).
+  p->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.2);
+  def = contessa::deck::buildProblem(*p, "");
+  EXPECT_EQ(def.contacts[0].law.slipTolerance, 0.005);
+  EXPECT_EQ(def.contacts[0].law.tangentialPenalty, 0.0);  // no upper bound
+  EXPECT_EQ(def.contacts[0].law.frictionCoefficient, 0.2);
   auto q = goodProblem();
   auto& c = q->sublist("Contact").sublist("self");
   c.set("Slave Side Set", std::string("top"));
@@ -242,8 +251,13 @@ TEST(ContactValidation, BadParametersAreNamed) {
        "Problem/Contact/plate/Rigid Surface/Motion: expected two values"},
       {[](ParameterList& c) { c.set("Normal Penalty", 0.0); }, "Problem/Contact/plate/Normal Penalty: required; expected a value > 0"},
       {[](ParameterList& c) { c.set("Normal Penalty", -1.0); }, "Problem/Contact/plate/Normal Penalty: expected a value in [0"},
-      {[](ParameterList& c) { c.set("Friction Coefficient", 0.3); },
-       "Problem/Contact/plate/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0"},
+      {[](ParameterList& c) {
+         c.set("Friction Coefficient", 0.3);
+         c.set("Slip Tolerance", 0.0);
+       },
+       "Problem/Contact/plate/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0 and Slip Tolerance = 0"},
+      {[](ParameterList& c) { c.set("Slip Tolerance", -0.1); }, "Problem/Contact/plate/Slip Tolerance: expected a value in [0, 1]"},
+      {[](ParameterList& c) { c.set("Slip Tolerance", 2.0); }, "Problem/Contact/plate/Slip Tolerance: expected a value in [0, 1]"},
       {[](ParameterList& c) { c.set("Friction Coefficient", -0.1); }, "Problem/Contact/plate/Friction Coefficient: expected a value in [0"},
       {[](ParameterList& c) { c.set("Tangential Penalty", -1.0); }, "Problem/Contact/plate/Tangential Penalty: expected a value in [0"},
       {[](ParameterList& c) { c.set("Two Pass", true); }, "Problem/Contact/plate/Two Pass: a rigid master has no slave side of its own"},
@@ -298,6 +312,32 @@ TEST(PiroValidation, Klu2IsRefusedOnSeveralRanks) {
   piro.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
   EXPECT_NO_THROW(contessa::solvers::validatePiro(piro, 1));
   expectPiroError(piro, 2, "gives wrong solutions on more than one MPI rank");
+}
+
+TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
+  // Stratimikos' Epetra solvers would fail at the first solve: they are refused with the allowed list.
+  const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
+      {{"Linear Solver Type", "Pardiso"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'Pardiso'"},
+      {{"Linear Solver Type", "AztecOO"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'AztecOO'"},
+      {{"Preconditioner Type", "ML"}, "Piro/Stratimikos/Preconditioner Type: expected one of None, Ifpack2; got 'ML'"},
+  };
+  for (const auto& [setting, expected] : cases) {
+    ParameterList piro("Piro");
+    piro.sublist("Stratimikos").set(setting.first, setting.second);
+    expectPiroError(piro, 1, expected);
+  }
+  ParameterList piro("Piro");
+  piro.sublist("Stratimikos").set("Linear Solver Type", 3);
+  expectPiroError(piro, 1, "Piro/Stratimikos/Linear Solver Type: expected a string, one of MUMPS, Amesos2, Belos");
+  ParameterList amesos2("Piro");
+  amesos2.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
+  amesos2.sublist("Stratimikos").sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", std::string("SuperLU"));
+  expectPiroError(amesos2, 1, "Piro/Stratimikos/Linear Solver Types/Amesos2/Solver Type: expected one of KLU2; got 'SuperLU'");
+  // Stratimikos' default preconditioner (Ifpack) is an Epetra one: Contessa's default is None.
+  ParameterList belos("Piro");
+  belos.sublist("Stratimikos").set("Linear Solver Type", std::string("Belos"));
+  contessa::solvers::validatePiro(belos, 2);
+  EXPECT_EQ(belos.sublist("Stratimikos").get<std::string>("Preconditioner Type"), "None");
 }
 
 TEST(PiroValidation, ContactBetaParameters) {

@@ -21,17 +21,6 @@ std::array<double, 8> deformation(double amplitude) {
   return u;
 }
 
-struct Case {
-  std::string element, material;
-};
-void PrintTo(const Case& c, std::ostream* os) { *os << c.element << " / " << c.material; }
-
-class ElementMaterial : public ::testing::TestWithParam<Case> {
- protected:
-  std::unique_ptr<ElementKernel> kernel = ElementFactory::create(GetParam().element, "Test/Element");
-  std::unique_ptr<Material> material = makeMaterial(GetParam().material, 100.0, 0.3);
-};
-
 TEST_P(ElementMaterial, StiffnessMatchesCentralDifferencesOfInternalForce) {
   const auto u = deformation(1.0);
   std::array<double, 4> alpha{};
@@ -82,20 +71,6 @@ TEST_P(ElementMaterial, NullInternalStartsFromZeroAndMatches) {
   ASSERT_EQ(kernel->averageCauchyStress(kX.data(), u.data(), alpha.data(), *material, s1), ElementStatus::Ok);
   ASSERT_EQ(kernel->averageCauchyStress(kX.data(), u.data(), nullptr, *material, s2), ElementStatus::Ok);
   EXPECT_LT(maxAbsDifference(s1, s2), 1e-12 * maxAbs(s1));
-}
-
-std::vector<Case> allCases() {
-  std::vector<Case> cases;
-  for (const auto& e : ElementFactory::names())
-    for (const auto& m : MaterialFactory::names()) cases.push_back({e, m});
-  return cases;
-}
-
-std::string caseName(const ::testing::TestParamInfo<Case>& info) {
-  std::string s = info.param.element + "_" + info.param.material;
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return s;
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElementsAllLaws, ElementMaterial, ::testing::ValuesIn(allCases()), caseName);

@@ -31,6 +31,34 @@ inline std::unique_ptr<Material> makeMaterial(const std::string& model, double E
   return MaterialFactory::create(p, "Test/Materials/m");
 }
 
+/// An element kernel and a material law by name: the parameter of the element tests.
+struct Case {
+  std::string element, material;
+};
+inline void PrintTo(const Case& c, std::ostream* os) { *os << c.element << " / " << c.material; }
+
+/// Every registered element with every registered law.
+inline std::vector<Case> allCases() {
+  std::vector<Case> cases;
+  for (const auto& e : ElementFactory::names())
+    for (const auto& m : MaterialFactory::names()) cases.push_back({e, m});
+  return cases;
+}
+
+inline std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+  std::string s = info.param.element + "_" + info.param.material;
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
+/// The kernel and the law of a Case (E = 100, ν = 0.3).
+class ElementMaterial : public ::testing::TestWithParam<Case> {
+ protected:
+  std::unique_ptr<ElementKernel> kernel = ElementFactory::create(GetParam().element, "Test/Element");
+  std::unique_ptr<Material> material = makeMaterial(GetParam().material, 100.0, 0.3);
+};
+
 inline double maxAbs(const double* v, std::size_t n) {
   double m = 0.0;
   for (std::size_t k = 0; k < n; ++k) m = std::max(m, std::fabs(v[k]));

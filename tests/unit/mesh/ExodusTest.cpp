@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
@@ -190,14 +191,16 @@ TEST(ExodusRoundTrip, TwoBlocksScatteredIdsLongNamesAndHexes) {
 
 TEST(ExodusMeshReader, MissingFileNamesThePath) {
   const std::string path = "/nonexistent/dir/mesh.exo";
-  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }), path + ": cannot open Exodus file");
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }), path + ": not a readable Exodus file (it does not exist)");
   EXPECT_EQ(messageOf([&] { ExodusResults results(path); }), path + ": cannot open Exodus file");
 }
 
 TEST(ExodusMeshReader, NotAnExodusFile) {
   const std::string path = tempPath("text");
   std::ofstream(path) << "not a mesh\n";
-  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }), path + ": cannot open Exodus file");
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }),
+            path + ": not a readable Exodus file (it is neither netCDF nor HDF5: Exodus II files start with "
+                   "'CDF' or '\\x89HDF')");
   std::remove(path.c_str());
 }
 
@@ -262,4 +265,80 @@ TEST(ExodusWriter, UnwritablePathThrowsNamingIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
+}
+
+namespace {
+
+// Copies the first `bytes` bytes of `from` to `to`: a file cut short by a full disk or a broken copy.
+void truncateCopy(const std::string& from, const std::string& to, std::uintmax_t bytes) {
+  std::ifstream in(from, std::ios::binary);
+  std::string data(bytes, '\0');
+  in.read(data.data(), static_cast<std::streamsize>(bytes));
+  std::ofstream(to, std::ios::binary).write(data.data(), in.gcount());
+}
+
+// The reader's message for `path`, asserting that nothing reached stderr (the Exodus and netCDF
+// libraries print their own diagnostics unless kept from it).
+std::string silentMessage(const std::string& path) {
+  ::testing::internal::CaptureStderr();
+  const std::string message = messageOf([&] { readExodusMesh(path); });
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << path;
+  return message;
+}
+
+}  // namespace
+
+TEST(ExodusMeshReader, DamagedFilesSayWhyInOneLine) {
+  namespace fs = std::filesystem;
+  const std::string good = tempPath("good");
+  { ExodusWriter writer(good, generateRectangle({0, 0, 2, 1, 4, 2, "block_1"}), {}); }
+  const auto size = fs::file_size(good);
+  const std::string prefix = ": not a readable Exodus file (";
+
+  const std::string empty = tempPath("empty");
+  std::ofstream(empty).close();
+  EXPECT_EQ(silentMessage(empty), empty + prefix + "it is empty)");
+
+  const std::string directory = tempPath("directory");
+  fs::create_directories(directory);
+  EXPECT_EQ(silentMessage(directory), directory + prefix + "it is a directory)");
+
+  const std::string random = tempPath("random");
+  std::ofstream(random, std::ios::binary) << std::string("\x13\x37\xbe\xef\x00\x01 random bytes", 19);
+  EXPECT_EQ(silentMessage(random),
+            random + prefix + "it is neither netCDF nor HDF5: Exodus II files start with 'CDF' or '\\x89HDF')");
+
+  // netCDF-4 (HDF5) cut in half: ex_open itself would print "does not support netcdf-4" here.
+  const std::string half = tempPath("half");
+  truncateCopy(good, half, size / 2);
+  EXPECT_EQ(silentMessage(half), half + prefix +
+                                     "it is an HDF5 file that netCDF cannot open, probably truncated or damaged: "
+                                     "NetCDF: HDF error)");
+
+  // A netCDF file of another kind.
+  const std::string other = tempPath("other");
+  int ncid = -1, dim = -1;
+  ASSERT_EQ(nc_create(other.c_str(), NC_CLOBBER | NC_NETCDF4, &ncid), NC_NOERR);
+  ASSERT_EQ(nc_def_dim(ncid, "time", 3, &dim), NC_NOERR);
+  ASSERT_EQ(nc_close(ncid), NC_NOERR);
+  EXPECT_EQ(silentMessage(other), other + prefix + "it is a netCDF file without Exodus' 'num_dim' dimension)");
+
+  // Classic format (what most mesh generators write) cut short: netCDF would read zeros silently.
+  const std::string classic = tempPath("classic"), classicCut = tempPath("classic_cut");
+  writeRawFile(classic, "quad", 4);
+  std::ifstream head(classic, std::ios::binary);
+  char signature[3] = {};
+  head.read(signature, 3);
+  ASSERT_EQ(std::string(signature, 3), "CDF");
+  EXPECT_NO_THROW(readExodusMesh(classic));
+  truncateCopy(classic, classicCut, fs::file_size(classic) - 40);
+  const std::string cut = silentMessage(classicCut);
+  EXPECT_EQ(cut.rfind(classicCut + prefix + "it is truncated: " + std::to_string(fs::file_size(classic) - 40) +
+                          " bytes, but its header describes ",
+                      0),
+            0u)
+      << cut;
+
+  for (const auto& path : {good, empty, random, half, other, classic, classicCut}) std::remove(path.c_str());
+  fs::remove_all(directory);
 }

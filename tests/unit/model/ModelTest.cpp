@@ -343,6 +343,7 @@ deck::ProblemDefinition makeContactProblem(double mu, bool deformableBase, bool 
     <ParameterList name="base"><Parameter name="Slave Side Set" type="string" value="TOPbottom"/>
       <Parameter name="Normal Penalty" type="double" value="1e4"/>
       <Parameter name="Tangential Penalty" type="double" value="1e4"/>
+      <Parameter name="Slip Tolerance" type="double" value="0"/>  <!-- the paper's constant ε_T -->
     </ParameterList>
   </ParameterList>
 </ParameterList>)XML";

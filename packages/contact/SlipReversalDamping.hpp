@@ -1,0 +1,76 @@
+#pragma once
+// Damping of two-state cycles in the slip direction during the Newton iterations of an increment.
+#include "contact/ContactHistory.hpp"
+#include "contact/NodeToSegmentContact2D.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace contessa::contact {
+
+/// A slipping node has no tangential stiffness along its slip (eq. 27 with one surface coordinate), so a
+/// Newton step can carry it across its whole stick range into slip the other way, and the next step back:
+/// the two-state cycle of nearly unloaded nodes (MOOSE's ping-pong, Code_Aster's "sliding forward/backward"
+/// cycle, docs/theory-contact.md §5). This class watches each slave node's trial state from iterate to
+/// iterate. When its slip direction reverses, the solution lies between the two states (in the stick range
+/// or at its edge), and the node's tangent takes the secant stiffness of t_T1 between them,
+/// Δt_T1/Δξ (SlipTangent::secantOf): regula falsi on the node's friction law, a step that lands between the
+/// two states instead of across them. A further reversal narrows the bracket. The secant ends when the node
+/// sticks (its consistent tangent is then the stick stiffness), or when it has slipped the same way for
+/// `kReleaseIterates` iterates (it really slips: the consistent tangent restores quadratic convergence).
+/// Only the tangent changes, never the residual: the converged answer is the same with or without it.
+///
+/// State per increment: reset when the increment is committed or abandoned. The same evaluation repeated at
+/// the same iterate (residual and Jacobian computed in separate calls) changes nothing.
+class SlipReversalDamping {
+ public:
+  static constexpr int kReleaseIterates = 2;
+
+  explicit SlipReversalDamping(std::size_t numNodes) : nodes_(numNodes) {}
+
+  /// The slip tangent to use for `node` at the next evaluation.
+  SlipTangent tangent(std::size_t node) const {
+    const NodeState& n = nodes_[node];
+    return n.secant > 0.0 ? SlipTangent::secantOf(n.secant) : SlipTangent::consistent();
+  }
+
+  /// Compares the node's new trial state with the one of the previous iterate (the committed state at the
+  /// first iterate of an increment). Returns true when the slip direction has just reversed.
+  bool observe(std::size_t node, const ContactHistory<1>& previous, const ContactHistory<1>& current) {
+    if (current == previous) return false;  // the same iterate evaluated again
+    NodeState& n = nodes_[node];
+    const bool bothSlip = previous.status == ContactStatus::Slip && current.status == ContactStatus::Slip &&
+                          previous.segment == current.segment;
+    const double dt = current.tangentialTraction[0] - previous.tangentialTraction[0];
+    const double dxi = current.xi[0] - previous.xi[0];
+    const bool reversed = bothSlip && previous.tangentialTraction[0] * current.tangentialTraction[0] < 0.0;
+    if (reversed && dt * dxi > 0.0) {
+      n.secant = dt / dxi;  // > 0: the traction follows the motion across the stick range
+      n.streak = 0;
+      ++reversals_;
+    } else if (current.status == ContactStatus::Slip && n.secant > 0.0 && ++n.streak >= kReleaseIterates) {
+      n.secant = 0.0;
+    } else if (current.status != ContactStatus::Slip) {
+      n.secant = 0.0;
+    }
+    return reversed;
+  }
+
+  /// Reversals seen since the last reset (diagnostics).
+  int reversals() const { return reversals_; }
+
+  void reset() {
+    nodes_.assign(nodes_.size(), NodeState{});
+    reversals_ = 0;
+  }
+
+ private:
+  struct NodeState {
+    double secant = 0.0;  ///< secant stiffness Δt_T1/Δξ of the last reversal; 0 = consistent tangent
+    int streak = 0;       ///< iterates slipping the same way since the last reversal
+  };
+  std::vector<NodeState> nodes_;
+  int reversals_ = 0;
+};
+
+}  // namespace contessa::contact

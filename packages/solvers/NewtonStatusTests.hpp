@@ -1,0 +1,92 @@
+#pragma once
+// The status tests of one Newton solve, and why a solve failed, in words. Both solve paths use them:
+// the continuation (ContinuationDriver, LOCA) and the single static solve (StaticSolveDriver, Piro).
+// The tests, a NOX Combo(OR) in this order:
+//   1. FiniteValue: a NaN or infinite ||f|| fails the solve (an inadmissible element sets f to NaN);
+//   2. optionally a test that may stop the solve first (Contact Beta's Restart test);
+//   3. the convergence test, whose converged state must also be acceptable: a state in which a slave
+//      node passed through its master surface (contact tunnelling) fails the solve instead;
+//   4. MaxIters.
+// When a solve fails, diagnose() names the reason for the one-line stop message: the test that failed,
+// the element that made the residual NaN, the linear solver's failure (a singular stiffness and its free
+// direction), the tunnelling node.
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <NOX_StatusTest_Combo.H>
+#include <NOX_StatusTest_FiniteValue.H>
+#include <NOX_StatusTest_MaxIters.H>
+
+#include "model/ContactMechanicsModel.hpp"
+
+namespace contessa::solvers {
+
+/// Why an attempt (one Newton solve) failed.
+struct SolveFailure {
+  enum class Kind {
+    None,                ///< it did not fail
+    NonFiniteResidual,   ///< f is NaN or infinite (an inadmissible element, or bad data)
+    ContactBetaRestart,  ///< stopped for a Contact Beta step correction (not a failure of Newton)
+    NewtonIterations,    ///< Maximum Iterations used up
+    LinearSolver,        ///< the Newton direction could not be computed (e.g. a singular stiffness)
+    Tunnelling,          ///< converged, but a slave node passed through its master surface
+    Other                ///< an exception or NOX error
+  };
+  Kind kind = Kind::None;
+  std::string reason;  ///< one line, e.g. "Newton did not converge in 20 iterations (last ||f|| = 3.2e-02)"
+};
+
+/// Converged only when `converged` says so AND the converged state is acceptable: `reject()` (called on
+/// every rank at the same iterate, so it may communicate) returns why not, or "" to accept. A rejected
+/// state fails the solve, so the continuation cuts the step back.
+class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
+ public:
+  AcceptedConvergenceTest(Teuchos::RCP<NOX::StatusTest::Generic> converged, std::function<std::string()> reject)
+      : converged_(std::move(converged)), reject_(std::move(reject)) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType type) override;
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& os, int indent) const override;
+  /// Why the last converged state was rejected ("" when it was not).
+  const std::string& rejection() const { return rejection_; }
+
+ private:
+  Teuchos::RCP<NOX::StatusTest::Generic> converged_;
+  std::function<std::string()> reject_;
+  std::string rejection_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+class NewtonStatusTests {
+ public:
+  /// `convergence` decides convergence; `beforeConvergence` (may be null) is checked before it.
+  NewtonStatusTests(const model::ContactMechanicsModel& model, Teuchos::RCP<NOX::StatusTest::Generic> convergence,
+                    int maxIterations, Teuchos::RCP<NOX::StatusTest::Generic> beforeConvergence = Teuchos::null);
+
+  Teuchos::RCP<NOX::StatusTest::Generic> test() const { return combo_; }
+
+  /// Call when a solve starts (remembers the linear solver's failure count).
+  void startSolve();
+  /// Why the solve that just ended failed; every rank calls it at the same point (it communicates).
+  /// `noxOutput`: what NOX printed (an exception it caught), for the reasons the tests do not know.
+  SolveFailure diagnose(const NOX::Solver::Generic& solver, const std::string& noxOutput) const;
+  /// The linear solver's failure since startSolve() (kind None if it did not fail): also for the solves
+  /// outside Newton, such as LOCA's tangent predictor. Every rank gets the same answer.
+  SolveFailure linearSolverFailure() const;
+
+ private:
+  const model::ContactMechanicsModel& model_;
+  Teuchos::RCP<NOX::StatusTest::FiniteValue> finite_;
+  Teuchos::RCP<NOX::StatusTest::Generic> before_;
+  Teuchos::RCP<AcceptedConvergenceTest> convergence_;
+  Teuchos::RCP<NOX::StatusTest::MaxIters> maxIters_;
+  Teuchos::RCP<NOX::StatusTest::Combo> combo_;
+  long linearFailuresAtStart_ = 0;
+};
+
+/// A number for messages: 3 significant digits, exponent when needed ("3.2e-02", "0.5").
+std::string shortNumber(double value);
+/// A load factor for messages: 6 significant digits ("0.106383").
+std::string loadFactorText(double lambda);
+
+}  // namespace contessa::solvers
