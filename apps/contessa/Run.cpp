@@ -14,6 +14,7 @@
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
+#include "mesh/MemoryEstimate.hpp"
 #include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "output/ResultsOutput.hpp"
@@ -70,6 +71,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   //    validates it and reads the mesh, and a failure on any rank (a file only some ranks can read)
   //    stops every rank with one message (agreeOnInput).
   const std::string deckText = shareDeckText(*comm, cl.deck);
+  mesh::agreeOnMachineMemory();
   Teuchos::RCP<Teuchos::ParameterList> deckList;
   deck::ProblemDefinition problem;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;

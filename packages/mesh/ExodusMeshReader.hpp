@@ -9,7 +9,7 @@ namespace contessa::mesh {
 /// entities become "block_<id>", "nodeset_<id>", "sideset_<id>"). Ids become 0-based. Throws
 /// InputError naming the file: "<path>: not a readable Exodus file (<why>)" for a missing, empty,
 /// truncated, non-Exodus file or a directory (exodusFileProblem), an unsupported element type, a
-/// mesh too large for the machine (requireRunFits, collective over MPI: call it on every rank), and
+/// mesh too large for the machine (requireRunFits), and
 /// every check of Mesh::validate. Prints nothing to stderr.
 Mesh readExodusMesh(const std::string& path);
 

@@ -38,7 +38,7 @@ void requireBias(double value, const char* parameter) {
 }
 
 // Before anything is allocated: an n0 × n1 grid's counts must be indexable and its run must fit in
-// memory (requireRunFits; the generators run on every rank, which it needs). Returns what the
+// memory (requireRunFits). Returns what the
 // generator must say if an allocation fails all the same.
 std::string requireGridFits(int n0, int n1, const std::string& name0, const std::string& name1) {
   MeshSize size;

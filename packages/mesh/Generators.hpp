@@ -1,8 +1,8 @@
 #pragma once
 // Inline mesh generators for decks ("Problem/Mesh/Type" = "Rectangle" or "Annulus Sector").
 // Before allocating, each generator estimates the memory of a run on its mesh and refuses one that
-// will not fit, naming its element-count parameters (requireRunFits: collective over MPI, so call
-// the generators on every rank). Their meshes pass Mesh::validate.
+// will not fit, naming its element-count parameters (requireRunFits). Their meshes pass
+// Mesh::validate.
 #include <string>
 
 #include "mesh/Mesh.hpp"

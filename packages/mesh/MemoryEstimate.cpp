@@ -143,29 +143,50 @@ std::optional<double> availableMemory(const std::string& procRoot, const std::st
   return meminfo ? meminfo : cgroup;
 }
 
-void requireRunFits(const MeshSize& size, const std::string& what, const std::string& advice) {
-  double available = availableMemory().value_or(-1);
-  int ranks = 1, ranksOnMachine = 1;
+namespace {
+// The machine facts every rank's size check uses, agreed once by agreeOnMachineMemory. Until then
+// (unit tests, tools without MPI) each process uses its own view: one rank, its own memory.
+struct MachineMemory {
+  bool agreed = false;
+  double available = -1;
+  int ranksOnMachine = 1;
+  int ranks = 1;
+};
+MachineMemory& machineMemory() {
+  static MachineMemory memory;
+  return memory;
+}
+}  // namespace
+
+void agreeOnMachineMemory() {
+  MachineMemory& memory = machineMemory();
+  memory.available = availableMemory().value_or(-1);
   int initialised = 0, finalised = 0;
   MPI_Initialized(&initialised);
   MPI_Finalized(&finalised);
   if (initialised && !finalised) {
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    MPI_Comm_size(MPI_COMM_WORLD, &memory.ranks);
     MPI_Comm machine;
     MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
-    MPI_Comm_size(machine, &ranksOnMachine);
+    MPI_Comm_size(machine, &memory.ranksOnMachine);
     MPI_Comm_free(&machine);
     // One answer for all ranks: the most crowded machine and the least memory decide. An unknown
     // amount (−1) anywhere switches the memory check off everywhere.
-    const double unknown = available < 0 ? 1 : 0;
-    double flags[2] = {available < 0 ? std::numeric_limits<double>::infinity() : available, unknown};
+    const double unknown = memory.available < 0 ? 1 : 0;
+    double flags[2] = {memory.available < 0 ? std::numeric_limits<double>::infinity() : memory.available, unknown};
     double agreed[2];
     MPI_Allreduce(&flags[0], &agreed[0], 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
     MPI_Allreduce(&flags[1], &agreed[1], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-    available = agreed[1] > 0 ? -1 : agreed[0];
-    MPI_Allreduce(MPI_IN_PLACE, &ranksOnMachine, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    memory.available = agreed[1] > 0 ? -1 : agreed[0];
+    MPI_Allreduce(MPI_IN_PLACE, &memory.ranksOnMachine, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   }
-  const std::string problem = runSizeProblem(size, available, ranksOnMachine, ranks);
+  memory.agreed = true;
+}
+
+void requireRunFits(const MeshSize& size, const std::string& what, const std::string& advice) {
+  const MachineMemory& agreed = machineMemory();
+  const double available = agreed.agreed ? agreed.available : availableMemory().value_or(-1);
+  const std::string problem = runSizeProblem(size, available, agreed.ranksOnMachine, agreed.ranks);
   requireInput(problem.empty(), what + ": " + problem + "; " + advice);
 }
 

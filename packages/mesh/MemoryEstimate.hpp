@@ -54,10 +54,15 @@ std::string runSizeProblem(const MeshSize& size, double availableBytes, int rank
 std::optional<double> availableMemory(const std::string& procRoot = "/proc",
                                       const std::string& cgroupRoot = "/sys/fs/cgroup");
 
-/// Throws InputError "<what>: <runSizeProblem>; <advice>" when a run of `size` will not fit.
-/// Collective over MPI_COMM_WORLD once MPI is initialised (every rank calls it with the same size):
-/// the ranks agree on the smallest available memory and the most ranks sharing one machine, so
-/// they all refuse or all go on.
+/// The ranks agree, once, on the memory the size checks assume: the smallest available memory of
+/// any rank and the most ranks sharing one machine. Collective over MPI_COMM_WORLD; the program calls
+/// it at start-up, before anything that one rank alone may refuse, so that requireRunFits needs no
+/// collective call and a rank that fails early (a missing file) cannot leave another waiting in it.
+void agreeOnMachineMemory();
+
+/// Throws InputError "<what>: <runSizeProblem>; <advice>" when a run of `size` will not fit, with the
+/// figures agreed by agreeOnMachineMemory (this process's own view, one rank, when it was not called).
+/// No collective call: ranks that check the same size reach the same answer.
 void requireRunFits(const MeshSize& size, const std::string& what, const std::string& advice);
 
 /// "1.5 GiB": binary units, three significant digits.

@@ -23,7 +23,7 @@ namespace contessa::mesh {
 ///   by the final validate as an InputError.
 ///
 /// The result passes Mesh::validate("merged mesh"). An empty part list is an InputError, and so is
-/// a merged mesh whose run would not fit in memory (requireRunFits: call on every MPI rank).
+/// a merged mesh whose run would not fit in memory (requireRunFits).
 Mesh mergeMeshes(const std::vector<std::pair<std::string, Mesh>>& parts);
 
 /// Returns `mesh` with every node moved by `offset` (one finite component per dimension; InputError

@@ -1,7 +1,7 @@
 #pragma once
 // The continuum part of the residual and tangent: loops over the elements this rank assembles and
 // hands each element's force and stiffness to a sink. Knows elements, materials and the mesh; knows
-// nothing of Tpetra or the solvers (keeps heavy headers out, STYLE.md §12).
+// nothing of Tpetra or the solvers (keeps heavy headers out, docs/style.md §12).
 #include <algorithm>
 #include <functional>
 #include <limits>
