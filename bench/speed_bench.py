@@ -340,6 +340,8 @@ def main():
     p.add_argument("--ranks", type=int, nargs="+", default=[1, 2], help="rank counts of the refined runs (default 1 2)")
     p.add_argument("--no-calculix", action="store_true")
     p.add_argument("--ccx-repeat", type=int, default=1, help="CalculiX runs (default 1)")
+    p.add_argument("--parts", nargs="+", choices=["phases", "refine", "calculix"], default=["phases", "refine", "calculix"],
+                   help="which tables (default all; CalculiX compares with the phases' fixed run)")
     p.add_argument("--quick", action="store_true", help="--repeat 1 --refine 2 --ranks 1 (about 20 s)")
     p.add_argument("--work", help="keep the runs' outputs here (default: a temporary directory, removed)")
     p.add_argument("--timeout", type=float, default=1800.0)
@@ -353,10 +355,12 @@ def main():
     print(f"Speed benchmark: {a.contessa} on {platform.node()}, {os.cpu_count()} cores, "
           f"load average {os.getloadavg()[0]:.1f} at the start.\n")
     try:
-        fixed = phase_tables(a, work)["fixed"]
-        if a.refine or len(a.ranks) > 1 or a.ranks != [1]:
+        if "phases" in a.parts or "calculix" in a.parts:
+            fixed = phase_tables(a, work)["fixed"]
+        if "refine" in a.parts:
             refinement(a, work)
-        calculix(a, work, fixed)
+        if "calculix" in a.parts:
+            calculix(a, work, fixed)
     finally:
         if not a.work:
             shutil.rmtree(work, ignore_errors=True)
