@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   trilinos-all-dev libptscotch-dev
-  libexodusii-dev libmetis-dev libmumps-dev libgmsh-dev
+  libexodusii-dev libmetis-dev libmumps-dev libgmsh-dev libopenblas-dev
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev
   netcdf-bin python3-netcdf4 python3-matplotlib python3-numpy
   libgtest-dev googletest

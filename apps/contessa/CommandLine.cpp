@@ -6,7 +6,7 @@
 namespace contessa::app {
 
 std::string usage() {
-  return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet]\n"
+  return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet] [--timers]\n"
          "       contessa --deck-reference     print the deck reference (Markdown)\n"
          "       contessa --version            print the version and the git description of the build\n"
          "       contessa --help               print this text\n"
@@ -18,6 +18,7 @@ std::string usage() {
          "written {a, b, ...} (quote the whole argument), e.g.\n"
          "  --set \"Piro/LOCA/Step Size/Initial Step Size=0.05\"\n"
          "  --set \"Problem/Contact/plate/Rigid Surface/Motion={0.0, -75.2}\"\n"
+         "--timers prints a table of wall time per phase at the end (maximum over the ranks).\n"
          "Exit status: 0 the run reached its final load (and its regression checks passed);\n"
          "1 the run stopped early or failed; 2 bad input; 3 a regression check of the deck failed.\n"
          "Every error is one line on stderr: contessa: error: ...\n";
@@ -37,6 +38,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
     else if (arg == "--version") cl.version = true;
     else if (arg == "--deck-reference") cl.deckReference = true;
     else if (arg == "--quiet") cl.quiet = true;
+    else if (arg == "--timers") cl.timers = true;  // switched on in main, before MPI_Init
     else if (arg == "--output-dir") cl.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0) cl.outputDirectory = arg.substr(13);
     else if (arg == "--set") cl.overrides.push_back(value(arg));

@@ -9,7 +9,7 @@ struct CommandLine {
   std::string outputDirectory = ".";
   std::vector<std::string> overrides;
   std::vector<std::string> kokkosOptions;  ///< --kokkos-* options, passed on to Kokkos as written
-  bool help = false, version = false, kokkosHelp = false, deckReference = false, quiet = false;
+  bool help = false, version = false, kokkosHelp = false, deckReference = false, quiet = false, timers = false;
 };
 
 /// Parses argv without starting MPI or Kokkos (so that --help is Contessa's own); throws InputError

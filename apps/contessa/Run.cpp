@@ -7,9 +7,11 @@
 #include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 
 #include "Failure.hpp"
 #include "common/Error.hpp"
+#include "common/PhaseTimers.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
@@ -129,6 +131,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // An output error ends the run on every rank (ResultsOutput agrees on it): the drivers report it as
   // a stopped run, or it reaches here from the initial state. Its own message is the one to show; it
   // is thrown on every rank alike, so FailureReporter prints it once (exit status 1).
+  timers::switchTo(timers::Phase::Other);
   solvers::RunSummary summary;
   try {
     summary = piro.get<std::string>("Solver Type") == "NOX" ? solvers::solveStatic(model, piro, results)
@@ -145,6 +148,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
     std::fflush(stdout);
   }
+  timers::printTable(*Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm(), stdout);
   if (!summary.finished) {
     if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
     return 1;

@@ -8,11 +8,14 @@
 #include "CommandLine.hpp"
 #include "DeckReference.hpp"
 #include "Failure.hpp"
+#include "ProcessEnvironment.hpp"
 #include "Run.hpp"
 #include "common/Error.hpp"
+#include "common/PhaseTimers.hpp"
 
 int main(int argc, char** argv) {
   using namespace contessa;
+  app::prepareProcess(argc, argv);  // before MPI_Init: fast MPI start, BLAS threads, --timers
   // Contessa's options are read before Kokkos starts: Kokkos::initialize prints a page of its own for
   // --help, so it is given only the --kokkos-* options (--kokkos-help shows that page).
   app::CommandLine cl;
@@ -28,6 +31,7 @@ int main(int argc, char** argv) {
   kokkosArgs.push_back(nullptr);
   char** kokkosArgv = kokkosArgs.data();
   Tpetra::ScopeGuard scope(&kokkosArgc, &kokkosArgv);
+  timers::switchTo(timers::Phase::Setup);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
 

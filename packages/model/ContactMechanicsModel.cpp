@@ -4,12 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_DetachedVectorView.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "common/Error.hpp"
+#include "common/PhaseTimers.hpp"
 #include "model/FreeMotion.hpp"
 
 namespace contessa::model {
@@ -89,8 +91,10 @@ void ContactMechanicsModel::buildGraph() {
   // through the exporter and is never rebuilt while the pairing stays the same.
   const LO numOverlap = static_cast<LO>(overlapMap_->getNodeNumElements());
   std::vector<std::vector<LO>> rows(numOverlap);
+  std::vector<std::vector<int>> elementDofs;
   solids_->assemble(std::vector<double>(numOverlap, 0.0).data(), false,
                     [&](const int* dofs, int n, const double*, const double*) {
+                      elementDofs.emplace_back(dofs, dofs + n);
                       for (int i = 0; i < n; ++i)
                         for (int j = 0; j < n; ++j) rows[dofs[i]].push_back(dofs[j]);
                     });
@@ -147,9 +151,14 @@ void ContactMechanicsModel::buildGraph() {
   auto ownedGraph = rcp(new CrsGraph(ownedMap_, Teuchos::ArrayView<const std::size_t>(perRow)));
   ownedGraph->doExport(*overlapGraph, *exporter_, Tpetra::INSERT);
   ownedGraph->fillComplete(ownedMap_, ownedMap_);
-  overlapGraph_ = overlapGraph;
   ownedGraph_ = ownedGraph;
-  overlapMatrix_ = rcp(new CrsMatrix(overlapGraph_));
+  // Where each element's stiffness goes in the Jacobian's values, once (the element loop visits the
+  // elements in the same order at every pass).
+  scatter_ = std::make_unique<StiffnessScatter>(ownedGraph_, overlapMap_, rows);
+  for (const auto& dofs : elementDofs) scatter_->addElement(dofs.data(), static_cast<int>(dofs.size()));
+  passX_ = rcp(new Vector(ownedMap_));
+  passForce_ = rcp(new Vector(ownedMap_));
+  passDfdLambda_ = rcp(new Vector(ownedMap_));
 }
 
 void ContactMechanicsModel::buildBoundaryConditions() {
@@ -224,77 +233,96 @@ RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> ContactMechanicsModel::ge
   return solverFactory_;
 }
 
-SolidAssembler::Status ContactMechanicsModel::assembleInternal(const Vector& x, double lambda, Vector* force,
-                                                               CrsMatrix* stiffness, Vector* dForcedLambda,
-                                                               bool updateTrial) const {
+SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withStiffness,
+                                                       bool updateTrial, Vector& force, Vector& dForcedLambda) const {
+  using timers::Phase;
+  // A pass that leaves the trial state alone is the reactions' own element loop.
+  const auto phase = [&](Phase p) { return updateTrial ? p : Phase::Reactions; };
+  timers::Scope assemblyScope(phase(Phase::Assembly));
   overlapX_->doImport(x, *importer_, Tpetra::INSERT);
   auto u = overlapX_->getData(0);
   overlapForce_->putScalar(0.0);
   overlapDfdLambda_->putScalar(0.0);
   auto fo = overlapForce_->getDataNonConst(0);
   auto dl = overlapDfdLambda_->getDataNonConst(0);
-  if (stiffness != nullptr) {
-    overlapMatrix_->resumeFill();
-    overlapMatrix_->setAllToScalar(0.0);
-  }
-  std::vector<LO> cols;
-  std::vector<double> rowValues;
-  const auto status = solids_->assemble(
-      u.getRawPtr(), stiffness != nullptr, [&](const int* dofs, int n, const double* fe, const double* ke) {
-        for (int i = 0; i < n; ++i) fo[dofs[i]] += fe[i];
-        if (ke == nullptr) return;
-        cols.assign(dofs, dofs + n);
-        for (int i = 0; i < n; ++i)
-          overlapMatrix_->sumIntoLocalValues(dofs[i], Teuchos::ArrayView<const LO>(cols),
-                                             Teuchos::ArrayView<const double>(ke + i * n, n));
-      });
+  if (withStiffness) scatter_->beginPass();
+  ++elementPasses_;
+  std::optional<timers::Scope> elementScope(std::in_place,
+                                            phase(withStiffness ? Phase::ElementJacobian : Phase::ElementResidual));
+  const auto status = solids_->assemble(u.getRawPtr(), withStiffness,
+                                        [&](const int* dofs, int n, const double* fe, const double* ke) {
+                                          for (int i = 0; i < n; ++i) fo[dofs[i]] += fe[i];
+                                          if (ke != nullptr) scatter_->addElementStiffness(dofs, n, ke);
+                                        });
+  elementScope.reset();
 
   // Contact: each slave node's owner adds its node-to-segment element; rigid masters have no DOFs.
+  std::optional<timers::Scope> contactScope(std::in_place, phase(Phase::Contact));
   const auto& X = problem_.mesh.coordinates;
   const auto position = [&](GlobalIndex node) {
     contact::Vector<2> p;
     for (int c = 0; c < 2; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
     return p;
   };
+  std::vector<LO> local;
+  std::vector<int> entry;
+  std::vector<double> block;
   for (auto& interface : contacts_) {
     interface.evaluate(position, lambda, updateTrial,
                        [&](const GlobalIndex* dofs, int n, const double* r, const double* k, const double* drdl) {
-                         std::vector<LO> local(n);
+                         // The DOFs that are unknowns (not those of a rigid master), in local numbering.
+                         local.clear();
+                         entry.clear();
                          for (int i = 0; i < n; ++i)
-                           local[i] = dofs[i] < 0 ? -1 : overlapMap_->getLocalElement(dofs[i]);
-                         cols.clear();
-                         for (int j = 0; j < n; ++j)
-                           if (local[j] >= 0) cols.push_back(local[j]);
-                         for (int i = 0; i < n; ++i) {
-                           if (local[i] < 0) continue;
-                           fo[local[i]] += r[i];
-                           dl[local[i]] += drdl[i];
-                           if (stiffness == nullptr) continue;
-                           rowValues.clear();
-                           for (int j = 0; j < n; ++j)
-                             if (local[j] >= 0) rowValues.push_back(k[i * n + j]);
-                           overlapMatrix_->sumIntoLocalValues(local[i], Teuchos::ArrayView<const LO>(cols),
-                                                              Teuchos::ArrayView<const double>(rowValues));
+                           if (dofs[i] >= 0) {
+                             local.push_back(overlapMap_->getLocalElement(dofs[i]));
+                             entry.push_back(i);
+                           }
+                         const int m = static_cast<int>(local.size());
+                         for (int a = 0; a < m; ++a) {
+                           fo[local[a]] += r[entry[a]];
+                           dl[local[a]] += drdl[entry[a]];
                          }
+                         if (!withStiffness) return;
+                         block.resize(static_cast<std::size_t>(m) * m);
+                         for (int a = 0; a < m; ++a)
+                           for (int b = 0; b < m; ++b) block[a * m + b] = k[entry[a] * n + entry[b]];
+                         scatter_->addStiffness(local.data(), m, block.data());
                        });
   }
+  contactScope.reset();
   fo = Teuchos::null;
   dl = Teuchos::null;
-  if (force != nullptr) {
-    force->putScalar(0.0);
-    force->doExport(*overlapForce_, *exporter_, Tpetra::ADD);
-  }
-  if (dForcedLambda != nullptr) {
-    dForcedLambda->putScalar(0.0);
-    dForcedLambda->doExport(*overlapDfdLambda_, *exporter_, Tpetra::ADD);
-  }
-  if (stiffness != nullptr) {
-    overlapMatrix_->fillComplete(ownedMap_, ownedMap_);
-    stiffness->resumeFill();
-    stiffness->setAllToScalar(0.0);
-    stiffness->doExport(*overlapMatrix_, *exporter_, Tpetra::ADD);
-  }
+  force.putScalar(0.0);
+  force.doExport(*overlapForce_, *exporter_, Tpetra::ADD);
+  dForcedLambda.putScalar(0.0);
+  dForcedLambda.doExport(*overlapDfdLambda_, *exporter_, Tpetra::ADD);
   return status;
+}
+
+void ContactMechanicsModel::evaluatePass(const Vector& x, double lambda, bool withStiffness) const {
+  passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+  passHasStiffness_ = withStiffness;
+  passX_->assign(x);
+  passLambda_ = lambda;
+  passFrozen_ = newContactsFrozen_;
+  passServesEvaluations_ = true;
+  passServesReactions_ = true;
+}
+
+bool ContactMechanicsModel::latestPassIsAt(const Vector& x, double lambda, bool valid) const {
+  int same = valid && lambda == passLambda_ && newContactsFrozen_ == passFrozen_ ? 1 : 0;
+  if (same) {
+    const auto a = x.getData(0);
+    const auto b = passX_->getData(0);
+    same = std::equal(a.begin(), a.end(), b.begin(), b.end()) ? 1 : 0;
+  }
+  if (comm_->getSize() > 1) {
+    int all = 0;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &same, &all);
+    same = all;
+  }
+  return same == 1;
 }
 
 void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, const MEB::OutArgs<double>& outArgs) const {
@@ -315,16 +343,22 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
   }
 
   RCP<MultiVector> dfdpTpetra = dfdp.is_null() ? Teuchos::null : Extract::getTpetraMultiVector(dfdp);
-  RCP<Vector> dContactdLambda = dfdp.is_null() ? Teuchos::null : rcp(new Vector(ownedMap_));
   SolidAssembler::Status status;
-  if (!f.is_null() || !W.is_null() || !dfdp.is_null())
-    status = assembleInternal(*x, lambda, f.get(), W.get(), dContactdLambda.get(), true);
+  if (!f.is_null() || !W.is_null() || !dfdp.is_null()) {
+    // The tangent only when it is asked for: computing it with every residual (Newton asks for the
+    // Jacobian at the point of its last residual) was measured no faster, as the element kernels
+    // warm-start their local solve exactly there, and wastes it at every converged iterate.
+    const bool needStiffness = !W.is_null();
+    if (!latestPassIsAt(*x, lambda, passServesEvaluations_ && (passHasStiffness_ || !needStiffness)))
+      evaluatePass(*x, lambda, needStiffness);
+    status = passStatus_;
+  }
   const bool ok = status.ok();
   if (!f.is_null()) lastElementStatus_ = status;
 
   if (!f.is_null()) {
     // Free rows: f_int − λ f_ext (eq. of equilibrium); prescribed rows: u − λ ū.
-    f->update(-lambda, *externalForce_, 1.0);
+    f->update(1.0, *passForce_, -lambda, *externalForce_, 0.0);
     auto fv = f->getDataNonConst(0);
     auto xv = x->getData(0);
     for (std::size_t k = 0; k < prescribedRows_.size(); ++k) {
@@ -337,22 +371,15 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
       for (auto& v : fv) v = std::numeric_limits<double>::quiet_NaN();
   }
   if (!W.is_null()) {
-    // Prescribed rows become identity rows.
-    for (const LO r : prescribedRows_) {
-      std::size_t n = W->getNumEntriesInLocalRow(r);
-      typename CrsMatrix::nonconst_local_inds_host_view_type cols("cols", n);
-      typename CrsMatrix::nonconst_values_host_view_type vals("vals", n);
-      W->getLocalRowCopy(r, cols, vals, n);
-      for (std::size_t j = 0; j < n; ++j) vals(j) = (cols(j) == W->getColMap()->getLocalElement(ownedMap_->getGlobalElement(r))) ? 1.0 : 0.0;
-      W->replaceLocalValues(r, cols, vals);
-    }
-    W->fillComplete(ownedMap_, ownedMap_);
+    // The stiffness of the pass, with the rows of other ranks added; prescribed rows become identity rows.
+    timers::Scope scope(timers::Phase::Assembly);
+    scatter_->copyTo(*W, prescribedRows_);
   }
   if (!dfdp.is_null()) {
     // ∂f/∂λ = ∂r_c/∂λ − f_ext on free rows (a rigid master moves with λ), −ū on prescribed rows.
     auto d = dfdpTpetra;
     d->putScalar(0.0);  // the caller's storage may hold anything, and 0·NaN is NaN
-    d->getVectorNonConst(0)->update(-1.0, *externalForce_, 1.0, *dContactdLambda, 1.0);
+    d->getVectorNonConst(0)->update(-1.0, *externalForce_, 1.0, *passDfdLambda_, 1.0);
     auto dv = d->getDataNonConst(0);
     for (std::size_t k = 0; k < prescribedRows_.size(); ++k) dv[prescribedRows_[k]] = -prescribedValues_[k];
   }
@@ -361,11 +388,16 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
 void ContactMechanicsModel::commitState() {
   solids_->commit();
   for (auto& c : contacts_) c.commit();
+  // The history the pass started from has changed: a new request recomputes. The forces of the
+  // pass are those of the converged state, which the reactions report.
+  passServesEvaluations_ = false;
 }
 
 void ContactMechanicsModel::rollbackState() {
   solids_->rollback();
   for (auto& c : contacts_) c.rollback();
+  passServesEvaluations_ = false;
+  passServesReactions_ = false;
 }
 
 std::string ContactMechanicsModel::inadmissibleElement() const {
@@ -572,8 +604,18 @@ RCP<MultiVector> ContactMechanicsModel::elementStresses(const Vector& x) const {
 }
 
 std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, double loadFactor) const {
+  timers::Scope scope(timers::Phase::Reactions);
+  // Σ (f_int + contact − λ f_ext): the converged residual before its Dirichlet rows, which the last
+  // Newton pass has just computed. Another state needs a pass of its own (leaving the trial state alone).
   Vector fint(ownedMap_);
-  assembleInternal(x, loadFactor, &fint, nullptr, nullptr, false);
+  if (latestPassIsAt(x, loadFactor, passServesReactions_)) {
+    fint.assign(*passForce_);
+  } else {
+    Vector dForcedLambda(ownedMap_);
+    assemble(x, loadFactor, false, false, fint, dForcedLambda);
+    passServesEvaluations_ = false;  // the element pass moved the trial internal variables
+    passServesReactions_ = false;
+  }
   fint.update(-loadFactor, *externalForce_, 1.0);
   auto fv = fint.getData(0);
   std::vector<NodeSetReaction> out;

@@ -14,6 +14,7 @@
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/Partition.hpp"
 #include "model/SolidAssembler.hpp"
+#include "model/StiffnessScatter.hpp"
 #include "model/TpetraTypes.hpp"
 
 namespace contessa::model {
@@ -96,6 +97,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
 
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const { return jacobianEvaluations_; }
+  /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
+  int elementPasses() const { return elementPasses_; }
   /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
   double lastLoadFactor() const { return lastLoadFactor_; }
   int dimension() const { return dim_; }
@@ -108,10 +111,16 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   void buildMaps(const mesh::Partition& partition);
   void buildGraph();
   void buildBoundaryConditions();
-  /// Internal and contact forces (and their stiffness and ∂/∂λ) at owned x and load factor λ,
-  /// exported to owned rows, before boundary conditions. `updateTrial` stores the trial state.
-  SolidAssembler::Status assembleInternal(const Vector& x, double lambda, Vector* force, CrsMatrix* stiffness,
-                                          Vector* dForcedLambda, bool updateTrial) const;
+  /// One assembly pass at owned x and load factor λ: internal and contact forces and their ∂/∂λ,
+  /// exported to owned rows, before boundary conditions; with `withStiffness`, the stiffness into
+  /// scatter_. `updateTrial` stores the trial state. Returns the first element that failed, if any.
+  SolidAssembler::Status assemble(const Vector& x, double lambda, bool withStiffness, bool updateTrial,
+                                  Vector& force, Vector& dForcedLambda) const;
+  /// The pass every evaluation request is served from: residual, Jacobian and ∂f/∂λ at (x, λ).
+  void evaluatePass(const Vector& x, double lambda, bool withStiffness) const;
+  /// Whether the latest pass was made at exactly this x, λ and contact freeze, and `valid` still holds
+  /// (agreed by every rank).
+  bool latestPassIsAt(const Vector& x, double lambda, bool valid) const;
 
   Teuchos::RCP<const Comm> comm_;
   const deck::ProblemDefinition& problem_;
@@ -119,8 +128,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   Teuchos::RCP<const Map> ownedMap_, overlapMap_, elementMap_, paramMap_;
   Teuchos::RCP<const Export> exporter_;
   Teuchos::RCP<const Import> importer_;
-  Teuchos::RCP<const CrsGraph> ownedGraph_, overlapGraph_;
-  Teuchos::RCP<CrsMatrix> overlapMatrix_;
+  Teuchos::RCP<const CrsGraph> ownedGraph_;
+  std::unique_ptr<StiffnessScatter> scatter_;
   Teuchos::RCP<Vector> overlapForce_;
   mutable Teuchos::RCP<Vector> overlapX_;
   Teuchos::RCP<Vector> externalForce_;       ///< f_ext at λ = 1 (owned)
@@ -134,7 +143,16 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> xSpace_, pSpace_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
-  mutable int jacobianEvaluations_ = 0;
+  // The latest evaluation pass: residual forces, ∂f/∂λ and (when asked for) the stiffness at one
+  // (x, λ). A later request at the same point is served from it; at a converged increment it gives
+  // the reactions (no second element loop for the output).
+  mutable Teuchos::RCP<Vector> passX_, passForce_, passDfdLambda_;  ///< owned; force = f_int + contact
+  mutable double passLambda_ = 0;
+  mutable bool passFrozen_ = false, passHasStiffness_ = false;
+  mutable SolidAssembler::Status passStatus_;
+  mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
+  mutable bool passServesReactions_ = false;    ///< until the state is rolled back
+  mutable int jacobianEvaluations_ = 0, elementPasses_ = 0;
   mutable double lastLoadFactor_ = 0;
   mutable bool newContactsFrozen_ = false;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank

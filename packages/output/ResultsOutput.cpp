@@ -12,6 +12,8 @@
 #include "common/Version.hpp"
 #include "io/OutputWriteError.hpp"
 
+#include "common/PhaseTimers.hpp"
+
 namespace contessa::output {
 
 using Teuchos::RCP;
@@ -154,6 +156,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
 }
 
 void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) {
+  timers::Scope timed(timers::Phase::Output);
   const int dim = problem_.mesh.dimension;
   // Collective part: every rank computes and sends.
   model::Vector allX(rootDofMap_);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -14,7 +16,9 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_MultiVectorStdOps.hpp>
 
+#include "common/PhaseTimers.hpp"
 #include "model/TpetraTypes.hpp"
+#include "solvers/MumpsInput.hpp"
 
 namespace contessa::solvers {
 
@@ -78,43 +82,27 @@ class MumpsContext {
 
   // Factorizes A (owned rows on each rank). Returns false when MUMPS reports an error (e.g. singular).
   bool factorize(const CrsMatrix& A) {
-    const auto rowMap = A.getRowMap();
-    const auto colMap = A.getColMap();
-    const GO n = static_cast<GO>(A.getGlobalNumRows());
-    rows_.clear();
-    cols_.clear();
-    values_.clear();
-    const std::size_t numRows = A.getNodeNumRows();
-    for (std::size_t r = 0; r < numRows; ++r) {
-      typename CrsMatrix::local_inds_host_view_type inds;
-      typename CrsMatrix::values_host_view_type vals;
-      A.getLocalRowView(static_cast<LO>(r), inds, vals);
-      const GO gr = rowMap->getGlobalElement(static_cast<LO>(r));
-      for (std::size_t k = 0; k < inds.extent(0); ++k) {
-        rows_.push_back(static_cast<MUMPS_INT>(gr + 1));
-        cols_.push_back(static_cast<MUMPS_INT>(colMap->getGlobalElement(inds(k)) + 1));
-        values_.push_back(vals(k));
-      }
-    }
-    const bool samePattern = analysed_ && n == n_ && rows_ == analysedRows_ && cols_ == analysedCols_;
-    int patternChangedLocal = samePattern ? 0 : 1, patternChanged = 0;
-    MPI_Allreduce(&patternChangedLocal, &patternChanged, 1, MPI_INT, MPI_MAX, comm_);
-    id_.n = static_cast<MUMPS_INT>(n);
-    id_.nnz_loc = static_cast<MUMPS_INT8>(rows_.size());
-    id_.irn_loc = rows_.data();
-    id_.jcn_loc = cols_.data();
-    id_.a_loc = values_.data();
-    n_ = n;
-    if (patternChanged) {
+    std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
+    const bool newPattern = input_.update(A, comm_);
+    id_.n = input_.order();
+    id_.nnz_loc = input_.numEntries();
+    id_.irn_loc = input_.rows();
+    id_.jcn_loc = input_.columns();
+    id_.a_loc = input_.values();
+    n_ = input_.order();
+    inputScope.reset();
+    if (newPattern) {  // the analysis (ordering, symbolic factorisation) is done once per pattern
+      timers::Scope scope(timers::Phase::MumpsAnalysis);
       id_.job = 1;
       dmumps_c(&id_);
-      if (id_.infog[0] < 0) return false;
-      analysed_ = true;
-      analysedRows_ = rows_;
-      analysedCols_ = cols_;
+      if (id_.infog[0] < 0) {
+        input_.forgetPattern();
+        return false;
+      }
     }
     // Penalty contact makes pivoting unpredictable: on a workspace shortfall (INFOG(1) = -8/-9),
     // relax the memory estimate and try again.
+    timers::Scope scope(timers::Phase::MumpsFactorization);
     for (int attempt = 0; attempt < 4; ++attempt) {
       id_.job = 2;
       dmumps_c(&id_);
@@ -172,10 +160,8 @@ class MumpsContext {
   MPI_Comm comm_;
   std::shared_ptr<MumpsFailures> failures_;
   DMUMPS_STRUC_C id_{};
-  bool analysed_ = false;
   GO n_ = 0;
-  std::vector<MUMPS_INT> rows_, cols_, analysedRows_, analysedCols_;
-  std::vector<double> values_;
+  MumpsDistributedInput input_;
 };
 
 class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
@@ -234,6 +220,7 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
     // never computed (NOX "rescues" unconverged solves, and a zero update would pass its update test).
     // NOX catches it and fails the solve; the failure is in MumpsFailures for the message.
     if (!factorized_) throw std::runtime_error("MUMPS: the factorization failed (singular matrix, or a MUMPS error)");
+    timers::Scope scope(timers::Phase::MumpsSolve);
     auto b = Extract::getConstTpetraMultiVector(Teuchos::rcpFromRef(B));
     auto x = Extract::getTpetraMultiVector(Teuchos::rcpFromPtr(X));
     MultiVector host(hostMap_, 1);
@@ -272,6 +259,14 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
 
 }  // namespace
 
+namespace {
+// The orderings every MUMPS build has (ICNTL(7) codes).
+const std::map<std::string, int>& mumpsOrderings() {
+  static const std::map<std::string, int> orderings = {{"Automatic", 7}, {"AMD", 0}, {"AMF", 2}, {"PORD", 4}, {"QAMD", 6}};
+  return orderings;
+}
+}  // namespace
+
 MumpsLinearOpWithSolveFactory::MumpsLinearOpWithSolveFactory() = default;
 
 bool MumpsLinearOpWithSolveFactory::isCompatible(const Thyra::LinearOpSourceBase<double>& fwdOpSrc) const {
@@ -289,7 +284,7 @@ void MumpsLinearOpWithSolveFactory::initializeOp(const RCP<const Thyra::LinearOp
   auto params = params_.is_null() ? Teuchos::rcp(new Teuchos::ParameterList(*getValidParameters())) : params_;
   params->validateParametersAndSetDefaults(*getValidParameters());
   const std::string ordering = params->get<std::string>("Ordering");
-  const int orderingCode = ordering == "METIS" ? 5 : ordering == "AMD" ? 0 : ordering == "SCOTCH" ? 3 : 7;
+  const int orderingCode = mumpsOrderings().at(ordering);
   dynamic_cast<MumpsLinearOpWithSolve&>(*op).initialize(fwdOpSrc, params->get<int>("Memory Relaxation Percent"),
                                                         orderingCode, params->get<double>("Null Pivot Threshold"),
                                                         params->get<bool>("Verbose"), failures_);
@@ -325,9 +320,14 @@ RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParamet
   static RCP<Teuchos::ParameterList> valid;
   if (valid.is_null()) {
     valid = rcp(new Teuchos::ParameterList("MUMPS"));
-    Teuchos::setStringToIntegralParameter<int>("Ordering", "Automatic", "Fill-reducing ordering (ICNTL(7))",
-                                               Teuchos::tuple<std::string>("Automatic", "METIS", "AMD", "SCOTCH"),
-                                               valid.get());
+    Teuchos::Array<std::string> names;
+    for (const auto& [name, code] : mumpsOrderings()) names.push_back(name);
+    Teuchos::setStringToIntegralParameter<int>(
+        "Ordering", "AMD",
+        "Fill-reducing ordering (ICNTL(7)). AMD: fewest operations on the 2D meshes measured (bench/README.md); "
+        "Automatic: MUMPS' choice (AMF or PORD here). METIS and SCOTCH are not offered: Debian's MUMPS has "
+        "neither and would silently use PORD",
+        names(), valid.get());
     valid->set("Memory Relaxation Percent", 50, "Extra workspace over MUMPS' estimate, percent (ICNTL(14)); doubled on a shortfall");
     // Measured (docs/user-guide.md, Linear solver): the null pivot of a missing support is below 1e-15 on
     // the test decks; pivots of every regression deck, penalty contact included, stay above 1e-3; a

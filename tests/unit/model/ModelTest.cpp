@@ -227,6 +227,63 @@ TEST_P(ModelTest, SameAnswerOnOneRankAndAllRanks) {
   EXPECT_NEAR(reactionsAll[0].force[0] + reactionsAll[1].force[0], 0.0, 1e-8);
 }
 
+// Reactions at a converged state come from the residual pass Newton has just made (no element loop of
+// their own), and equal those of a pass made for them.
+TEST_P(ModelTest, ReactionsComeFromTheLastResidualPass) {
+  auto comm = Tpetra::getDefaultComm();
+  const auto problem = makeProblem(GetParam());
+  auto m = makeModel(comm, problem);
+  RCP<Thyra::VectorBase<double>> x;
+  newtonResiduals(*m, x);
+  const auto tx = Extract::getConstTpetraVector(x);
+  evaluate(*m, *x, 1.0, false);  // the residual at the converged state, as Newton's last test
+  m->commitState();
+  const int passes = m->elementPasses();
+  const auto fromPass = m->reactions(*tx, 1.0);
+  EXPECT_EQ(m->elementPasses(), passes) << "the reactions made an element pass of their own";
+
+  // Another state in between: the reactions need (and make) a pass of their own, with the same answer.
+  evaluate(*m, *deformedState(*m, 0.01), 1.0, false);
+  const int before = m->elementPasses();
+  const auto ownPass = m->reactions(*tx, 1.0);
+  EXPECT_EQ(m->elementPasses(), before + 1);
+  ASSERT_EQ(ownPass.size(), fromPass.size());
+  for (std::size_t s = 0; s < fromPass.size(); ++s)
+    for (int c = 0; c < 2; ++c)
+      EXPECT_NEAR(ownPass[s].force[c], fromPass[s].force[c], 1e-10 * std::max(1.0, std::abs(fromPass[s].force[c])));
+
+  // After a rollback the pass no longer describes the state: a new one.
+  evaluate(*m, *x, 1.0, false);
+  m->rollbackState();
+  const int afterRollback = m->elementPasses();
+  m->reactions(*tx, 1.0);
+  EXPECT_EQ(m->elementPasses(), afterRollback + 1);
+}
+
+// A Jacobian asked for at the point of the last residual is the same as one asked for alone.
+TEST_P(ModelTest, JacobianAfterResidualEqualsJacobianAlone) {
+  auto comm = Tpetra::getDefaultComm();
+  const auto problem = makeProblem(GetParam());
+  auto m = makeModel(comm, problem);
+  auto x = deformedState(*m, 0.15);
+  evaluate(*m, *x, 0.7, false);
+  const auto afterResidual = evaluate(*m, *x, 0.7, true);
+  auto fresh = makeModel(comm, problem);
+  const auto alone = evaluate(*fresh, *x, 0.7, true);
+  auto a = Teuchos::rcp_dynamic_cast<const model::CrsMatrix>(Extract::getConstTpetraOperator(afterResidual.W), true);
+  auto b = Teuchos::rcp_dynamic_cast<const model::CrsMatrix>(Extract::getConstTpetraOperator(alone.W), true);
+  const auto va = a->getLocalMatrixHost().values;
+  const auto vb = b->getLocalMatrixHost().values;
+  ASSERT_EQ(va.extent(0), vb.extent(0));
+  double worst = 0, scale = 0;
+  for (std::size_t k = 0; k < va.extent(0); ++k) {
+    worst = std::max(worst, std::abs(va(k) - vb(k)));
+    scale = std::max(scale, std::abs(vb(k)));
+  }
+  EXPECT_LT(worst, 1e-12 * scale);
+  EXPECT_LT(Thyra::norm_inf(*afterResidual.f) - Thyra::norm_inf(*alone.f), 1e-12 * Thyra::norm_inf(*alone.f));
+}
+
 // ---- Contact in the model: the assembled tangent includes the contact element exactly. -------------
 
 // A 2 × 1 Neo-Hookean block on a rigid base (y = 0), its top pushed down and sideways: stick or slip
