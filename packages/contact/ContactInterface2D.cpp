@@ -99,11 +99,8 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     const bool frozenOpen =
         frozen_ && !history_.committed(k).isInContact() && !(committedOutput_[k].gap <= kTouchingGap);
     if (selection.kind != SelectionKind::None && !frozenOpen) {
-      // The history is kept on the segment the node projected on at the last commit; re-express it on
-      // the segment chosen now (committed coordinates, so it stays constant within the increment).
-      ContactHistory<1> committed = history_.committed(k);
-      if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
-        committed = transferHistory(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+      // The history is kept on the segment the node projected on at the last commit.
+      const ContactHistory<1> committed = committedHistoryOn(k, selection.segment);
       NodeToFacetGeometry<Line2Facet> geometry;
       geometry.slave = xs;
       geometry.master = segments[selection.segment].x;
@@ -229,6 +226,12 @@ SlaveNodeChange ContactInterface2D::changeOf(std::size_t k, double gap, const No
   return c;
 }
 
+ContactHistory<1> ContactInterface2D::committedHistoryOn(std::size_t k, int segment) const {
+  const ContactHistory<1>& committed = history_.committed(k);
+  if (!committed.isInContact() || committed.segment == segment || committed.segment < 0) return committed;
+  return transferHistory(committed, committedMaster_[committed.segment], committedMaster_[segment]);
+}
+
 SlaveNodeChange ContactInterface2D::unchanged(std::size_t k) const {
   SlaveNodeChange c;
   c.committedGap = c.trialGap = committedOutput_[k].gap;
@@ -258,9 +261,7 @@ std::vector<SlaveNodeChange> ContactInterface2D::changesAt(const NodePosition& p
       out.push_back(changeOf(k, std::numeric_limits<double>::infinity(), nullptr, history_.committed(k)));
       continue;
     }
-    ContactHistory<1> committed = history_.committed(k);
-    if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
-      committed = transferHistory(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+    const ContactHistory<1> committed = committedHistoryOn(k, selection.segment);
     NodeToFacetGeometry<Line2Facet> geometry;
     geometry.slave = xs;
     geometry.master = segments[selection.segment].x;

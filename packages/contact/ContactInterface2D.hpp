@@ -131,6 +131,9 @@ class ContactInterface2D {
   /// history on the evaluated segment), or null when it was not evaluated (no master, or frozen).
   SlaveNodeChange changeOf(std::size_t k, double gap, const NodeToFacetResult<Line2Facet>* result,
                            const ContactHistory<1>& committed) const;
+  /// The committed history of slave node k, re-expressed on master `segment` when it was kept on another
+  /// (committed coordinates, so it stays constant within the increment).
+  ContactHistory<1> committedHistoryOn(std::size_t k, int segment) const;
   /// Slave node k with nothing changed since the commit.
   SlaveNodeChange unchanged(std::size_t k) const;
   std::vector<SlaveNodeChange> owned(const std::vector<SlaveNodeChange>& all) const;
