@@ -1,22 +1,28 @@
 #!/usr/bin/python3
 """Step-size strategies on the paper's tube benchmark (inputs/tube_bending.xml, Vulovic et al. section 6).
 
-Runs build/bin/contessa on the tube deck with
+Runs build/bin/contessa on the frictionless tube deck with
   fixed                  Method=Constant (1.6 mm steps, the paper's 47 increments)
   LOCA Adaptive          Method=Adaptive, Initial Step Size 1.6 mm (1/47), Max Step Size 0.25,
                          default Aggressiveness: LOCA's convergence-based control, the baseline
   Contact Beta Restart   N_c = 1, 2, 4, 8 (the paper's Table 1: beta at the first Newton iteration, restart)
   Contact Beta Predictor N_c = 1, 2, 4, 8 (beta from the predicted state, no restart)
-and prints a Markdown table: increments, attempts, restarts/cut-backs, Newton iterations, linear solves,
-wall time, final plate force and its relative difference to the fixed-step run.
+  Contact Beta, cheapest N_c = 16, Max Corrections Per Increment = 0 (fewest Newton iterations)
+and on the frictional tube (the same deck with Friction Coefficient = 0.2 and nothing else changed) with
+fixed, LOCA Adaptive and Contact Beta Restart N_c = 1, 2, 4, 8. Prints one Markdown table per deck:
+increments, attempts, restarts/cut-backs, Newton iterations, linear solves, new events per increment
+(min / median / max of the history's new_events, the status changes Contact Beta counts: closures
+with the default Counted Events), wall time, final plate force and its relative difference to the
+fixed-step run.
 
-    /usr/bin/python3 bench/tube_bench.py [--repeat 3] [--quick] [--contessa PATH] [--work DIR]
+    /usr/bin/python3 bench/tube_bench.py [--repeat 3] [--quick] [--case frictionless|frictional|both]
+                                         [--contessa PATH] [--work DIR]
 
 Wall time is the median over --repeat runs of each variant, measured around the whole contessa process
 (time.perf_counter() around subprocess.run, so start-up, mesh generation and output are included);
 the repeats are interleaved (all variants once, then again) so that a change of machine load hits
 every variant alike. A run that does not reach the final load is reported as FAILED, not a crash.
-About 8 s per run on one core: the full table with --repeat 3 takes about 4 minutes, --quick 30 s.
+About 3-8 s per run on one core: both tables with --repeat 1 take about 2 minutes, --quick 30 s.
 """
 import argparse
 import csv
@@ -43,15 +49,23 @@ FINAL = re.compile(r"finished after (\d+) increments \((\d+) failed attempts\), 
                    r"(\d+) linear solves; load factor ([0-9.eE+-]+)")
 
 
-def variants(quick):
+FRICTION = ["Problem/Contact/plate/Friction Coefficient=0.2"]
+
+
+def variants(quick, frictional):
     v = [("fixed (Constant, 1.6 mm)", [STEP + "Method=Constant"]),
          ("LOCA Adaptive", [STEP + "Method=Adaptive", STEP + f"Initial Step Size={USER_STEP!r}",
                             STEP + "Max Step Size=0.25"])]
-    for mode in ("Restart", "Predictor"):
+    for mode in (("Restart",) if frictional else ("Restart", "Predictor")):
         for nc in ((2,) if quick else (1, 2, 4, 8)):
             v.append((f"Contact Beta {mode}, N_c = {nc}",
                       [STEP + "Method=Contact Beta", STEP + f"Mode={mode}", STEP + f"Contacts Per Step={nc}"]))
-    return v
+    if not frictional and not quick:
+        v.append(("Contact Beta Restart, N_c = 16, Max Corrections 0",
+                  [STEP + "Method=Contact Beta", STEP + "Contacts Per Step=16",
+                   STEP + "Max Corrections Per Increment=0"]))
+    extra = FRICTION if frictional else []
+    return [(label, extra + sets) for label, sets in v]
 
 
 def run_once(contessa, out_dir, sets, timeout):
@@ -82,10 +96,12 @@ def run_once(contessa, out_dir, sets, timeout):
         r.update(ok=False, reason=f"exit {done.returncode}, lambda {r.get('lambda', 0):.4g}: {last}")
         return r
     increments = int(rows[-1]["step"])
+    events = sorted(int(row["new_events"]) for row in rows[1:])
     attempts = sum(int(float(row["attempts"])) for row in rows[1:])
     r.update(ok=True, increments=increments, attempts=attempts, restarts=attempts - increments,
              failed=int(m.group(2)), newton=int(m.group(3)), solves=int(m.group(4)),
              force=-float(rows[-1]["contact_force_plate_y"]),
+             events=f"{events[0]} / {statistics.median(events):g} / {events[-1]}",
              checks_failed=done.returncode == 3)
     if int(m.group(1)) != increments:
         print(f"warning: {out_dir}: final line says {m.group(1)} increments, history {increments}", file=sys.stderr)
@@ -95,23 +111,8 @@ def run_once(contessa, out_dir, sets, timeout):
     return r
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--repeat", type=int, default=3, help="runs per variant; wall time is their median (default 3)")
-    p.add_argument("--quick", action="store_true", help="one run each, N_c = 2 only (4 variants)")
-    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    p.add_argument("--work", help="keep the runs' outputs here (default: a temporary directory, removed)")
-    p.add_argument("--timeout", type=float, default=600.0, help="seconds before a run counts as FAILED")
-    a = p.parse_args()
-    if a.quick:
-        a.repeat = 1
-    if a.repeat < 1:
-        p.error("--repeat must be >= 1")
-    if not os.access(a.contessa, os.X_OK):
-        sys.exit(f"tube_bench.py: {a.contessa} not found; build it with scripts/build.sh")
-
-    work = a.work or tempfile.mkdtemp(prefix="contessa_tube_bench_")
-    vs = variants(a.quick)
+def table(a, work, name, vs):
+    os.makedirs(work, exist_ok=True)
     results = {label: [] for label, _ in vs}
     t0 = time.perf_counter()
     for rep in range(a.repeat):
@@ -121,14 +122,13 @@ def main():
             state = f"{r['seconds']:.2f} s" if r["ok"] else "FAILED: " + r["reason"]
             print(f"[{rep + 1}/{a.repeat}] {label}: {state}", file=sys.stderr, flush=True)
     total = time.perf_counter() - t0
-    if not a.work:
-        shutil.rmtree(work, ignore_errors=True)
 
     fixed_runs = results[vs[0][0]]
     fixed_force = fixed_runs[0]["force"] if fixed_runs[0]["ok"] else None
 
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
-    print(f"Tube benchmark (inputs/tube_bending.xml, 1 rank, {platform.node()}, "
+    deck = "inputs/tube_bending.xml" + (" with Friction Coefficient=0.2" if name == "frictional" else "")
+    print(f"Tube benchmark, {name} ({deck}, 1 rank, {platform.node()}, "
           f"{os.cpu_count()} cores, load average {load:.2f} at the end).")
     print(f"Wall time: median of {a.repeat} run(s) per variant, time.perf_counter() around the whole "
           f"contessa process (subprocess.run); total {total:.0f} s.")
@@ -137,14 +137,14 @@ def main():
           "(they include the iterations of restarted attempts).")
     print()
     print("| variant | increments | attempts | restarts | Newton it. | linear solves | wall time [s] "
-          "| min–max [s] | plate force [N/mm] | rel. diff. to fixed |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+          "| min–max [s] | new events per increment: min / median / max | plate force [N/mm] | rel. diff. to fixed |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for label, _ in vs:
         runs = results[label]
         ok = [r for r in runs if r["ok"]]
         if len(ok) < len(runs):
             bad = next(r for r in runs if not r["ok"])
-            print(f"| {label} | FAILED | | | | | | | | {bad['reason']} |")
+            print(f"| {label} | FAILED | | | | | | | | | {bad['reason']} |")
             continue
         r = ok[0]
         if any((o["increments"], o["newton"], o["force"]) != (r["increments"], r["newton"], r["force"]) for o in ok):
@@ -160,7 +160,33 @@ def main():
             diff = f"{abs(r['force'] - fixed_force) / abs(fixed_force):.1e}"
         note = " (a deck check failed)" if r["checks_failed"] else ""
         print(f"| {label}{note} | {r['increments']} | {r['attempts']} | {r['restarts']} | {r['newton']} "
-              f"| {r['solves']} | {wall:.2f} | {spread} | {r['force']:.5f} | {diff} |")
+              f"| {r['solves']} | {wall:.2f} | {spread} | {r['events']} | {r['force']:.5f} | {diff} |")
+    print()
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--repeat", type=int, default=3, help="runs per variant; wall time is their median (default 3)")
+    p.add_argument("--quick", action="store_true", help="one run each, N_c = 2 only (4 variants)")
+    p.add_argument("--case", choices=("frictionless", "frictional", "both"), default="both")
+    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
+    p.add_argument("--work", help="keep the runs' outputs here (default: a temporary directory, removed)")
+    p.add_argument("--timeout", type=float, default=600.0, help="seconds before a run counts as FAILED")
+    a = p.parse_args()
+    if a.quick:
+        a.repeat = 1
+    if a.repeat < 1:
+        p.error("--repeat must be >= 1")
+    if not os.access(a.contessa, os.X_OK):
+        sys.exit(f"tube_bench.py: {a.contessa} not found; build it with scripts/build.sh")
+
+    work = a.work or tempfile.mkdtemp(prefix="contessa_tube_bench_")
+    cases = {"frictionless": False, "frictional": True}
+    chosen = list(cases) if a.case == "both" else [a.case]
+    for name in chosen:
+        table(a, os.path.join(work, name), name, variants(a.quick, cases[name]))
+    if not a.work:
+        shutil.rmtree(work, ignore_errors=True)
     return 0
 
 

@@ -22,7 +22,9 @@ ContactInterface2D::ContactInterface2D(ContactInterfaceSpec2D spec, std::vector<
       damping_(spec_.slaveNodes.size()),
       lastSlave_(spec_.slaveNodes.size()),
       trialOutput_(spec_.slaveNodes.size()),
-      committedOutput_(spec_.slaveNodes.size()) {
+      committedOutput_(spec_.slaveNodes.size()),
+      trialChanges_(spec_.slaveNodes.size()),
+      committedIncrement_(spec_.slaveNodes.size()) {
   spec_.law.validate();
   if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size())
     throw std::logic_error("ContactInterface2D '" + spec_.name + "': one facet length per slave node expected");
@@ -91,6 +93,7 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     SlaveNodeState out;
     out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
     ContactHistory<1> trial = history_.committed(k);
+    SlaveNodeChange change = changeOf(k, out.gap, nullptr, trial);
     // Frozen: nodes open at the commit carry no force — except nodes already touching (zero gap),
     // which close at once in any step and shape how their neighbours approach.
     const bool frozenOpen =
@@ -114,6 +117,7 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
         if (tangent.secant) r = element_.evaluate(geometry, selection.segment, committed, facetLength, tangent);
       }
       trial = r.trial;
+      change = changeOf(k, out.gap, &r, committed);
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
       if (r.status != ContactStatus::Open) {
@@ -149,6 +153,7 @@ void ContactInterface2D::evaluate(const NodePosition& position, double loadFacto
     if (updateTrial) {
       history_.setTrial(k, trial);
       trialOutput_[k] = out;
+      trialChanges_[k] = change;
     }
   }
   if (updateTrial) {
@@ -205,22 +210,62 @@ std::vector<TunnellingNode> ContactInterface2D::tunnellingNodes() const {
   return out;
 }
 
-std::vector<SlaveGapChange> ContactInterface2D::gapChanges() const {
-  std::vector<SlaveGapChange> out;
+SlaveNodeChange ContactInterface2D::changeOf(std::size_t k, double gap, const NodeToFacetResult<Line2Facet>* result,
+                                             const ContactHistory<1>& committed) const {
+  SlaveNodeChange c = unchanged(k);
+  c.trialGap = gap;
+  c.trialStatus = result != nullptr ? result->status : ContactStatus::Open;
+  const double mu = spec_.law.frictionCoefficient;
+  if (result == nullptr || mu == 0.0 || !committed.isInContact() || result->status == ContactStatus::Open) return c;
+  // Coulomb indicators (eq. 19, 21) in 2D: one covariant component t_T1, ‖t‖ = |t_T1| √ā^11.
+  const auto& friction = result->friction;
+  const double committedTraction = committed.tangentialTraction[0];
+  const double trialTraction = friction.trialTraction[0];
+  const double committedNorm = std::abs(committedTraction) * std::sqrt(result->projection.inverseMetric(0, 0));
+  const bool opposite = committedTraction * trialTraction < 0.0;  // driven the other way
+  c.committedIndicator = (opposite ? -committedNorm : committedNorm) - mu * committedOutput_[k].pressure;
+  c.trialIndicator = friction.trialIndicator;
+  c.slipReversed = opposite && committed.status == ContactStatus::Slip && result->status == ContactStatus::Slip;
+  return c;
+}
+
+SlaveNodeChange ContactInterface2D::unchanged(std::size_t k) const {
+  SlaveNodeChange c;
+  c.committedGap = c.trialGap = committedOutput_[k].gap;
+  c.committedStatus = c.trialStatus = history_.committed(k).status;
+  return c;
+}
+
+std::vector<SlaveNodeChange> ContactInterface2D::owned(const std::vector<SlaveNodeChange>& all) const {
+  std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
-    if (evaluatesSlave_[k])
-      out.push_back({committedOutput_[k].gap, trialOutput_[k].gap, history_.committed(k).isInContact()});
+    if (evaluatesSlave_[k]) out.push_back(all[k]);
   return out;
 }
 
-std::vector<SlaveGapChange> ContactInterface2D::gapChangesAt(const NodePosition& position, double loadFactor) const {
+std::vector<SlaveNodeChange> ContactInterface2D::trialChanges() const { return owned(trialChanges_); }
+
+std::vector<SlaveNodeChange> ContactInterface2D::committedIncrement() const { return owned(committedIncrement_); }
+
+std::vector<SlaveNodeChange> ContactInterface2D::changesAt(const NodePosition& position, double loadFactor) const {
   const auto segments = masterSegments(position, loadFactor);
-  std::vector<SlaveGapChange> out;
+  std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
-    const SegmentSelection selection = selector_.select(position(spec_.slaveNodes[k]), segments);
-    const double gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
-    out.push_back({committedOutput_[k].gap, gap, history_.committed(k).isInContact()});
+    const Vector<2> xs = position(spec_.slaveNodes[k]);
+    const SegmentSelection selection = selector_.select(xs, segments);
+    if (selection.kind == SelectionKind::None) {
+      out.push_back(changeOf(k, std::numeric_limits<double>::infinity(), nullptr, history_.committed(k)));
+      continue;
+    }
+    ContactHistory<1> committed = history_.committed(k);
+    if (committed.isInContact() && committed.segment != selection.segment && committed.segment >= 0)
+      committed = transferHistory(committed, committedMaster_[committed.segment], committedMaster_[selection.segment]);
+    NodeToFacetGeometry<Line2Facet> geometry;
+    geometry.slave = xs;
+    geometry.master = segments[selection.segment].x;
+    const NodeToFacetResult<Line2Facet> r = element_.evaluate(geometry, selection.segment, committed, spec_.slaveFacetLengths[k]);
+    out.push_back(changeOf(k, selection.gap, &r, committed));
   }
   return out;
 }
@@ -238,6 +283,7 @@ void ContactInterface2D::commit() {
   }
   history_.commit();
   damping_.reset();
+  committedIncrement_ = trialChanges_;
   committedOutput_ = trialOutput_;
   committedForce_ = trialForce_;
   committedCounts_ = counts;
@@ -245,6 +291,7 @@ void ContactInterface2D::commit() {
     committedMaster_ = lastSegments_;
     committedSlave_ = lastSlave_;
   }
+  for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
 }
 
 void ContactInterface2D::rollback() {
@@ -252,6 +299,7 @@ void ContactInterface2D::rollback() {
   damping_.reset();
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
+  for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
 }
 
 }  // namespace contessa::contact

@@ -6,6 +6,7 @@
 // receives into Tpetra entries.
 #include <array>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,11 +48,17 @@ struct SlaveNodeState {
   double slip = 0;      ///< accumulated slip g_T, eq. (7)
 };
 
-/// The gap of an owned slave node at the last commit and at the latest trial evaluation (for the
-/// load-step correction of eq. 11).
-struct SlaveGapChange {
-  double committedGap = 0, trialGap = 0;
-  bool inContactAtCommit = false;
+/// An owned slave node over the increment: the last commit against a trial state, for the load-step
+/// correction of eq. (11) and its events (continuation::SlaveNodeIncrement documents each field).
+struct SlaveNodeChange {
+  double committedGap = std::numeric_limits<double>::infinity();  ///< g_N at the commit; +∞: no master
+  double trialGap = std::numeric_limits<double>::infinity();
+  ContactStatus committedStatus = ContactStatus::Open, trialStatus = ContactStatus::Open;
+  /// Coulomb indicator f (eq. 19) of the committed tractions along the trial slip direction, and
+  /// f^trial (eq. 21); NaN unless in contact in both states with μ > 0.
+  double committedIndicator = std::numeric_limits<double>::quiet_NaN();
+  double trialIndicator = std::numeric_limits<double>::quiet_NaN();
+  bool slipReversed = false;  ///< slipping in both states, in opposite directions
 };
 
 struct ContactCounts {
@@ -83,11 +90,14 @@ class ContactInterface2D {
   /// `updateTrial`, stores the trial history (Newton iterations); without, leaves it alone (reactions).
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink);
 
-  /// Gaps of the owned slave nodes: committed and at the latest trial evaluation.
-  std::vector<SlaveGapChange> gapChanges() const;
-  /// Gaps of the owned slave nodes at the given positions and load factor, against the committed ones
-  /// (no element, no history: a look ahead at a predicted state).
-  std::vector<SlaveGapChange> gapChangesAt(const NodePosition& position, double loadFactor) const;
+  /// The owned slave nodes: the last commit against the latest trial evaluation.
+  std::vector<SlaveNodeChange> trialChanges() const;
+  /// The owned slave nodes at the given positions and load factor against the last commit (contact
+  /// evaluated with every node free to close, no force assembled, no history stored: a look ahead at a
+  /// predicted state).
+  std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const;
+  /// The owned slave nodes over the last converged increment: its start against its end.
+  std::vector<SlaveNodeChange> committedIncrement() const;
 
   /// While frozen, nodes open at the last commit carry no force (their gaps are still measured): the
   /// first Newton iterate then shows where the body goes without new contacts (eq. 11 of Contact Beta).
@@ -117,6 +127,13 @@ class ContactInterface2D {
 
  private:
   std::vector<MasterSegment2D> masterSegments(const NodePosition& position, double loadFactor) const;
+  /// Slave node k against its commit: `result` is its contact evaluation with `committed` (its committed
+  /// history on the evaluated segment), or null when it was not evaluated (no master, or frozen).
+  SlaveNodeChange changeOf(std::size_t k, double gap, const NodeToFacetResult<Line2Facet>* result,
+                           const ContactHistory<1>& committed) const;
+  /// Slave node k with nothing changed since the commit.
+  SlaveNodeChange unchanged(std::size_t k) const;
+  std::vector<SlaveNodeChange> owned(const std::vector<SlaveNodeChange>& all) const;
 
   ContactInterfaceSpec2D spec_;
   std::vector<char> evaluatesSlave_;
@@ -129,6 +146,7 @@ class ContactInterface2D {
   std::vector<Vector<2>> committedSlave_;         ///< slave positions of the committed configuration
   std::vector<Vector<2>> lastSlave_;              ///< slave positions of the latest trial evaluation
   std::vector<SlaveNodeState> trialOutput_, committedOutput_;
+  std::vector<SlaveNodeChange> trialChanges_, committedIncrement_;  ///< per slave node (owned ones set)
   Vector<2> trialForce_{}, committedForce_{};
   ContactCounts committedCounts_;
   bool frozen_ = false;

@@ -15,17 +15,35 @@ double closureFraction(const GapChange& change, double touchingGap) {
 }
 
 BetaResult computeBeta(const std::vector<GapChange>& changes, const BetaOptions& options) {
-  BetaResult result;
+  std::vector<double> fractions;
   for (const auto& c : changes) {
     const double b = closureFraction(c, options.touchingGap);
-    if (b >= 0) result.candidates.push_back(b);
+    if (b >= 0) fractions.push_back(b);
   }
+  return betaFromFractions(std::move(fractions), options);
+}
+
+BetaResult betaFromFractions(std::vector<double> fractions, const BetaOptions& options) {
+  BetaResult result;
+  result.candidates = std::move(fractions);
+  for (double& b : result.candidates) b *= options.eventRateScale;
   std::sort(result.candidates.begin(), result.candidates.end());  // eq. (12)
-  const std::size_t nc = static_cast<std::size_t>(std::max(1, options.contactsPerStep));
+  std::size_t nc = static_cast<std::size_t>(std::max(1, options.contactsPerStep));
+  if (options.nextContactFraction > 0) {  // unavoidable events beyond N_c: take them, and nothing more
+    const auto unavoidable = static_cast<std::size_t>(
+        std::upper_bound(result.candidates.begin(), result.candidates.end(), 0.0) - result.candidates.begin());
+    nc = std::max(nc, unavoidable);
+  }
   double beta = options.maxGrowth;
-  if (result.candidates.size() > nc)
-    beta = result.candidates[nc - 1] + options.nextContactFraction * (result.candidates[nc] - result.candidates[nc - 1]);
+  result.fewCandidates = result.candidates.size() <= nc;
+  if (!result.fewCandidates) {
+    const double below = result.candidates[nc - 1], above = result.candidates[nc];
+    beta = below + options.nextContactFraction * (above - below);
+    // Where the planned step (β = 1) falls between event N_c and event N_c + 1.
+    result.placement = above > below ? (1.0 - below) / (above - below) : (1.0 < below ? -1.0 : 2.0);
+  }
   result.beta = std::clamp(beta, options.maxShrink, options.maxGrowth);
+  result.fromEvents = !result.fewCandidates && result.beta == beta;
   result.predictedContacts = static_cast<int>(
       std::upper_bound(result.candidates.begin(), result.candidates.end(), result.beta) - result.candidates.begin());
   return result;

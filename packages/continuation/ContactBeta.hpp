@@ -2,6 +2,7 @@
 // The load-step correction of the reference paper (section 2.1, Table 1, after Chamoret et al. 2002):
 // choose the increment so that only N_c slave nodes come into contact in it. Pure arithmetic on the
 // gaps of the slave nodes: the continuation strategy (solvers/ContactBetaStepSize) supplies them.
+#include <limits>
 #include <vector>
 
 namespace contessa::continuation {
@@ -23,12 +24,20 @@ struct BetaOptions {
   /// Nodes open by less than this at the start count as touching: β^k = 0 (they take one of the N_c
   /// places, since they close in any step).
   double touchingGap = 1e-10;
+  /// c: the learned ratio of the actual to the predicted β^k (EventRateCorrection); every β^k is read as
+  /// c β^k before the choice. 1 = eq. (11) as it stands.
+  double eventRateScale = 1.0;
 };
 
 struct BetaResult {
   double beta = 1;                 ///< the correction factor of eq. (10), within [maxShrink, maxGrowth]
-  std::vector<double> candidates;  ///< β^k of eq. (11), sorted as in eq. (12)
-  int predictedContacts = 0;       ///< candidates with β^k ≤ β: nodes expected to close in βΔt
+  std::vector<double> candidates;  ///< β^k of eq. (11), sorted as in eq. (12), times eventRateScale
+  int predictedContacts = 0;       ///< candidates with β^k ≤ β: nodes expected to close (events) in βΔt
+  bool fewCandidates = false;      ///< at most N_c candidates: β is the growth cap, not an event's
+  bool fromEvents = false;         ///< β was set by the events' β^k, not by a bound
+  /// Where the planned step (β = 1) lies between β^{N_c} (0) and β^{N_c+1} (1): in [0, 1) it takes
+  /// exactly N_c events; < 0 fewer, ≥ 1 more. NaN with few candidates.
+  double placement = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// β^k = ^t g / (^t g − ^{t+Δt} g), eq. (11), for every node likely to come into contact: open at the
@@ -43,5 +52,11 @@ double closureFraction(const GapChange& change, double touchingGap);
 /// N_c + 1 does not; f = 0 is eq. (13) as printed. With exactly N_c candidates, or fewer, the step
 /// grows to the cap (the paper: "β > 1 grows the step when the user's step is too small").
 BetaResult computeBeta(const std::vector<GapChange>& changes, const BetaOptions& options);
+
+/// The same choice over given β^k (of any event kind, ContactEvents.hpp), each first multiplied by
+/// options.eventRateScale. Unavoidable events (β^k = 0) take places among the N_c; when there are more
+/// of them than N_c (and f > 0) the step is the one that adds no avoidable event to them:
+/// β = f β^{m+1} for m unavoidable events (f = 0 keeps eq. 13: β = 0, clamped to the shrink bound).
+BetaResult betaFromFractions(std::vector<double> fractions, const BetaOptions& options);
 
 }  // namespace contessa::continuation

@@ -472,13 +472,15 @@ RCP<MultiVector> ContactMechanicsModel::contactNodalFields() const {
 }
 
 namespace {
-// Every rank needs every slave's gap change to sort the β^k of eq. (12): gather them all.
-std::vector<contact::SlaveGapChange> gatherAll(const Comm& comm, const std::vector<contact::SlaveGapChange>& local) {
+// Every rank needs every slave node's change to sort the β^k of eq. (12): gather them all, as
+// continuation::SlaveNodeIncrement (7 numbers each), in rank order.
+std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const std::vector<contact::SlaveNodeChange>& local) {
+  constexpr int kFields = 7;
   std::vector<double> packed;
-  for (const auto& g : local) {
-    packed.push_back(g.committedGap);
-    packed.push_back(g.trialGap);
-    packed.push_back(g.inContactAtCommit ? 1.0 : 0.0);
+  for (const auto& c : local) {
+    packed.insert(packed.end(), {c.committedGap, c.trialGap, static_cast<double>(static_cast<int>(c.committedStatus)),
+                                 static_cast<double>(static_cast<int>(c.trialStatus)), c.committedIndicator,
+                                 c.trialIndicator, c.slipReversed ? 1.0 : 0.0});
   }
   const int size = comm.getSize();
   std::vector<int> counts(size), offsets(size + 1, 0);
@@ -490,22 +492,41 @@ std::vector<contact::SlaveGapChange> gatherAll(const Comm& comm, const std::vect
   std::vector<double> slice(offsets[size], 0.0);
   std::copy(packed.begin(), packed.end(), slice.begin() + offsets[comm.getRank()]);
   if (!all.empty()) Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(all.size()), slice.data(), all.data());
-  std::vector<contact::SlaveGapChange> out;
-  for (std::size_t i = 0; i + 2 < all.size(); i += 3) out.push_back({all[i], all[i + 1], all[i + 2] != 0.0});
+  std::vector<continuation::SlaveNodeIncrement> out;
+  for (std::size_t i = 0; i + kFields <= all.size(); i += kFields) {
+    continuation::SlaveNodeIncrement n;
+    n.committedGap = all[i];
+    n.trialGap = all[i + 1];
+    n.committedStatus = static_cast<continuation::NodeStatus>(static_cast<int>(all[i + 2]));
+    n.trialStatus = static_cast<continuation::NodeStatus>(static_cast<int>(all[i + 3]));
+    n.committedIndicator = all[i + 4];
+    n.trialIndicator = all[i + 5];
+    n.slipReversed = all[i + 6] != 0.0;
+    out.push_back(n);
+  }
   return out;
 }
 }  // namespace
 
-std::vector<contact::SlaveGapChange> ContactMechanicsModel::contactGapChanges() const {
-  std::vector<contact::SlaveGapChange> local;
+std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrement() const {
+  std::vector<contact::SlaveNodeChange> local;
   for (const auto& interface : contacts_) {
-    const auto g = interface.gapChanges();
-    local.insert(local.end(), g.begin(), g.end());
+    const auto c = interface.trialChanges();
+    local.insert(local.end(), c.begin(), c.end());
   }
   return gatherAll(*comm_, local);
 }
 
-std::vector<contact::SlaveGapChange> ContactMechanicsModel::contactGapChangesAt(const Vector& x, double loadFactor) const {
+std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::committedIncrement() const {
+  std::vector<contact::SlaveNodeChange> local;
+  for (const auto& interface : contacts_) {
+    const auto c = interface.committedIncrement();
+    local.insert(local.end(), c.begin(), c.end());
+  }
+  return gatherAll(*comm_, local);
+}
+
+std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrementAt(const Vector& x, double loadFactor) const {
   overlapX_->doImport(x, *importer_, Tpetra::INSERT);
   auto u = overlapX_->getData(0);
   const auto& X = problem_.mesh.coordinates;
@@ -514,10 +535,10 @@ std::vector<contact::SlaveGapChange> ContactMechanicsModel::contactGapChangesAt(
     for (int c = 0; c < 2; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
     return p;
   };
-  std::vector<contact::SlaveGapChange> local;
+  std::vector<contact::SlaveNodeChange> local;
   for (const auto& interface : contacts_) {
-    const auto g = interface.gapChangesAt(position, loadFactor);
-    local.insert(local.end(), g.begin(), g.end());
+    const auto c = interface.changesAt(position, loadFactor);
+    local.insert(local.end(), c.begin(), c.end());
   }
   return gatherAll(*comm_, local);
 }

@@ -10,6 +10,7 @@
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
 #include "contact/ContactInterface2D.hpp"
+#include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/Partition.hpp"
 #include "model/SolidAssembler.hpp"
@@ -25,7 +26,7 @@ struct NodeSetReaction {
   std::vector<double> force;  ///< one entry per component
 };
 
-class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> {
+class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>, public continuation::ContactEventSource {
  public:
   ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
                         const mesh::Partition& partition,
@@ -63,10 +64,12 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double> 
   static std::vector<std::string> contactFieldNames();
   /// Sums over all ranks and interfaces.
   contact::ContactCounts contactCounts() const;
-  /// Gaps of every slave node (all ranks, all interfaces) at the last commit and at the latest
-  /// evaluation — or, given x and λ, at that state — for the load-step correction of eq. (11).
-  std::vector<contact::SlaveGapChange> contactGapChanges() const;
-  std::vector<contact::SlaveGapChange> contactGapChangesAt(const Vector& x, double loadFactor) const;
+  /// Every slave node (all ranks, all interfaces, the same order on every rank) for Contact Beta
+  /// (continuation::ContactEventSource): the last commit against the latest evaluation, against the
+  /// state (x, λ), or over the last converged increment.
+  std::vector<continuation::SlaveNodeIncrement> trialIncrement() const override;
+  std::vector<continuation::SlaveNodeIncrement> trialIncrementAt(const Vector& x, double loadFactor) const;
+  std::vector<continuation::SlaveNodeIncrement> committedIncrement() const override;
   /// Contact Beta, Restart mode: nodes open at the last commit get no contact force while frozen.
   void setNewContactsFrozen(bool frozen) const {
     for (auto& c : contacts_) c.setNewContactsFrozen(frozen);

@@ -37,7 +37,7 @@ std::string columnName(std::string name) {
 }
 
 const std::vector<std::string> kGlobals = {"load_factor", "step_size", "beta", "active_contacts", "newton_iterations"};
-constexpr std::size_t kFixedColumns = 12;  // step .. wall_s; the reactions and contact forces follow
+constexpr std::size_t kFixedColumns = 13;  // step .. wall_s; the reactions and contact forces follow
 
 // Rank 0's message on every rank ("" when rank 0 succeeded): only rank 0 writes, so only it knows.
 std::string agree(const model::Comm& comm, std::string message) {
@@ -94,7 +94,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   nodeToRoot_ = rcp(new model::Import(model.ownedNodeMap(), rootNodeMap_));
 
   columns_ = {"step", "lambda", "dlambda", "beta", "attempts", "newton_iterations", "active_contacts",
-              "new_contacts", "stick", "slip", "residual_norm", "wall_s"};
+              "new_contacts", "new_events", "stick", "slip", "residual_norm", "wall_s"};
   const char* axes[] = {"x", "y", "z"};
   for (const auto& set : problem.reactionNodeSets)
     for (int c = 0; c < dim; ++c) columns_.push_back("reaction_" + set + "_" + axes[c]);
@@ -137,7 +137,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
                                                    runRecords(problem.title, run, comm->getSize()), lineBlocks);
       const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
-                                                       "new_contacts", "stick", "slip"};
+                                                       "new_contacts", "new_events", "stick", "slip"};
       history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
     } catch (const std::exception& e) {
       error = e.what();
@@ -175,7 +175,8 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
     std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
                                static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
                                static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
-                               static_cast<double>(counts.stick), static_cast<double>(counts.slip),
+                               static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
+                               static_cast<double>(counts.slip),
                                report.residualNorm, report.wallSeconds};
     for (const auto& r : reactions)
       for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);

@@ -1,6 +1,5 @@
 #include "solvers/ContactBetaStepSize.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include <LOCA_MultiContinuation_AbstractStrategy.H>
@@ -11,61 +10,44 @@
 
 namespace contessa::solvers {
 
-namespace {
+using continuation::ContactBetaSettings;
 
-std::vector<continuation::GapChange> toGapChanges(const std::vector<contact::SlaveGapChange>& gaps) {
-  std::vector<continuation::GapChange> out;
-  out.reserve(gaps.size());
-  for (const auto& g : gaps) out.push_back({g.committedGap, g.trialGap, g.inContactAtCommit});
-  return out;
-}
-
-}  // namespace
-
-continuation::BetaResult currentBeta(const ContactBetaState& state, const std::vector<contact::SlaveGapChange>& gaps) {
-  auto options = state.options;
-  if (state.afterFailure) options.maxGrowth = std::min(options.maxGrowth, 1.0);
-  if (state.stepSize > 0) {
-    // No growth past the step bound, nor past the final load (the stepper clips there anyway).
-    options.maxGrowth = std::min({options.maxGrowth, state.maxStep / state.stepSize,
-                                  std::max(1.0, (state.finalLoadFactor - state.startLoadFactor) / state.stepSize)});
-    options.maxShrink = std::max(options.maxShrink, state.minStep / state.stepSize);
-  }
-  return continuation::computeBeta(toGapChanges(gaps), options);
-}
-
-ContactBetaState contactBetaState(const Teuchos::ParameterList& p) {
-  ContactBetaState state;
-  state.mode = p.get<std::string>("Mode") == "Predictor" ? ContactBetaState::Mode::Predictor : ContactBetaState::Mode::Restart;
-  state.options.contactsPerStep = p.get<int>("Contacts Per Step");
-  state.options.maxGrowth = p.get<double>("Max Growth Factor");
-  state.options.maxShrink = p.get<double>("Max Shrink Factor");
-  state.restartTolerance = p.get<double>("Restart Tolerance");
-  state.options.nextContactFraction = p.get<double>("Next Contact Fraction");
-  return state;
+ContactBetaSettings contactBetaSettings(const Teuchos::ParameterList& p, double finalLoadFactor) {
+  ContactBetaSettings s;
+  s.mode = p.get<std::string>("Mode") == "Predictor" ? ContactBetaSettings::Mode::Predictor
+                                                      : ContactBetaSettings::Mode::Restart;
+  s.beta.contactsPerStep = p.get<int>("Contacts Per Step");
+  s.beta.maxGrowth = p.get<double>("Max Growth Factor");
+  s.beta.maxShrink = p.get<double>("Max Shrink Factor");
+  s.beta.nextContactFraction = p.get<double>("Next Contact Fraction");
+  s.counted = continuation::countedEventsByName(p.get<std::string>("Counted Events"));
+  s.learnEventRate = p.get<bool>("Learn Event Rate");
+  s.quietGrowth = continuation::quietGrowthByName(p.get<std::string>("Growth Without Events"));
+  s.targetNewtonIterations = p.get<int>("Target Newton Iterations");
+  s.maxCorrections = p.get<int>("Max Corrections Per Increment");
+  s.restartTolerance = p.get<double>("Restart Tolerance");
+  s.initialStep = p.get<double>("Initial Step Size");
+  s.minStep = p.get<double>("Min Step Size");
+  s.maxStep = p.get<double>("Max Step Size");
+  s.failedStepFactor = p.get<double>("Failed Step Reduction Factor");
+  s.finalLoadFactor = finalLoadFactor;
+  return s;
 }
 
 NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solver::Generic& solver,
                                                                 NOX::StatusTest::CheckType) {
   status_ = NOX::StatusTest::Unconverged;
-  state_.justUnfrozen = false;
+  control_.nextIterate();
   // Table 1: β is determined at the first iteration (i = 1) of an uncorrected attempt (I_cor = 0).
   // That iterate was computed with the contact set of time t (new contacts frozen), so a node about to
   // close shows the penetration it would reach without contact: ^{t+Δt} g_N of eq. (11).
-  if (!state_.checkThisAttempt || solver.getNumIterations() != 1) return status_;
-  state_.checkThisAttempt = false;
-  const auto result = currentBeta(state_, model_.contactGapChanges());
-  state_.predictedContacts = result.predictedContacts;
-  if (std::abs(result.beta - 1.0) > state_.restartTolerance) {
-    state_.beta = result.beta;
-    state_.restartRequested = true;
+  if (!control_.checkPending() || solver.getNumIterations() != 1) return status_;
+  if (control_.restartAtFirstIterate(model_.trialIncrement())) {
     status_ = NOX::StatusTest::Failed;  // LOCA restarts the increment; the strategy applies β
     return status_;
   }
   // The step stands (the measured β seeds the next increment's step): contact is enforced from here
   // on, and the residual of this iterate is recomputed with it before the convergence tests see it.
-  state_.carriedBeta = result.beta;
-  state_.justUnfrozen = true;
   model_.setNewContactsFrozen(false);
   auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
   const auto x = group.getX().clone(NOX::DeepCopy);
@@ -76,22 +58,14 @@ NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solve
 
 std::ostream& ContactBetaRestartTest::print(std::ostream& os, int indent) const {
   for (int i = 0; i < indent; ++i) os << ' ';
-  os << status_ << "Contact Beta restart: beta = " << state_.beta << " (" << state_.predictedContacts
-     << " nodes predicted to close, N_c = " << state_.options.contactsPerStep << ")\n";
+  os << status_ << "Contact Beta restart: beta = " << control_.beta() << " (" << control_.predictedEvents()
+     << " events predicted, N_c = " << control_.settings().beta.contactsPerStep << ")\n";
   return os;
 }
 
-ContactBetaStepSize::ContactBetaStepSize(const Teuchos::ParameterList& p, const model::ContactMechanicsModel& model,
-                                         ContactBetaState& state)
-    : model_(model),
-      state_(state),
-      initial_(p.get<double>("Initial Step Size")),
-      min_(p.get<double>("Min Step Size")),
-      max_(p.get<double>("Max Step Size")),
-      failedFactor_(p.get<double>("Failed Step Reduction Factor")) {}
-
-double ContactBetaStepSize::predictedBeta(LOCA::MultiContinuation::AbstractStrategy& curGroup,
-                                          const LOCA::MultiContinuation::ExtendedVector& predictor, double stepSize) {
+std::vector<continuation::SlaveNodeIncrement> ContactBetaStepSize::predictedNodes(
+    LOCA::MultiContinuation::AbstractStrategy& curGroup, const LOCA::MultiContinuation::ExtendedVector& predictor,
+    double stepSize) const {
   // LOCA's predictor is (dx/ds, dλ/ds); natural continuation steps in λ: x(λ + Δλ) ≈ x + Δλ dx/dλ.
   const double dlds = predictor.getScalar(0);
   const auto& current = dynamic_cast<const LOCA::MultiContinuation::ExtendedVector&>(curGroup.getX());
@@ -101,61 +75,29 @@ double ContactBetaStepSize::predictedBeta(LOCA::MultiContinuation::AbstractStrat
   const auto& thyra = dynamic_cast<const NOX::Thyra::Vector&>(*xPredicted);
   const auto x = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>::getConstTpetraVector(
       Teuchos::rcpFromRef(thyra.getThyraVector()));
-  const auto result = currentBeta(state_, model_.contactGapChangesAt(*x, lambda));
-  state_.predictedContacts = result.predictedContacts;
-  return result.beta;
+  return model_.trialIncrementAt(*x, lambda);
 }
 
 NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
     LOCA::MultiContinuation::AbstractStrategy& curGroup, const LOCA::MultiContinuation::ExtendedVector& predictor,
-    const NOX::Solver::Generic&, const LOCA::Abstract::Iterator::StepStatus& stepStatus,
+    const NOX::Solver::Generic& solver, const LOCA::Abstract::Iterator::StepStatus& stepStatus,
     const LOCA::Abstract::Iterator&, double& stepSize) {
-  const double requestedBeta = state_.beta;
-  const double carriedBeta = state_.carriedBeta;
-  state_.carriedBeta = 1.0;
-  state_.beta = 1.0;
-  state_.afterFailure = false;
   model_.setNewContactsFrozen(false);
+  const double lambda = curGroup.getContinuationParameter();
+  continuation::AttemptPlan plan;
   if (first_) {
     first_ = false;
-    stepSize = initial_;
+    plan = control_.firstAttempt(lambda);
   } else if (stepStatus == LOCA::Abstract::Iterator::Unsuccessful) {
-    if (state_.restartRequested) {
-      // eq. (10): Δt_cor = β Δt, then the increment is solved once more without a new check (I_cor = 1).
-      state_.restartRequested = false;
-      state_.beta = requestedBeta;
-      stepSize *= state_.beta;
-      state_.checkThisAttempt = false;
-      previous_ = stepSize;
-      return NOX::Abstract::Group::Ok;
-    }
-    stepSize *= failedFactor_;  // a genuine Newton failure: cut back, and check β again
-    state_.afterFailure = true;
+    plan = control_.restartRequested() ? control_.afterBetaRestart() : control_.afterFailedAttempt(lambda);
   } else {
-    // After a converged increment the base step is the one just accepted (β-corrected), times the β
-    // measured in it when that was too close to 1 to restart for.
-    stepSize = (previous_ > 0 ? previous_ : stepSize) * carriedBeta;
+    plan = control_.afterConvergedIncrement(lambda, model_.committedIncrement(), solver.getNumIterations());
   }
-  if (stepSize < min_) {
-    stepSize = min_;
-    state_.hitMinimumStep = true;
-    return NOX::Abstract::Group::Failed;
-  }
-  stepSize = std::min(stepSize, max_);
-  // A sliver left for a last increment is taken now: the β check below still guards this step.
-  const double remaining = state_.finalLoadFactor - curGroup.getContinuationParameter();
-  if (remaining > stepSize && remaining < 1.25 * stepSize && remaining <= max_) stepSize = remaining;
-  state_.stepSize = stepSize;
-  state_.startLoadFactor = curGroup.getContinuationParameter();
-  state_.minStep = min_;
-  state_.maxStep = max_;
-  if (state_.mode == ContactBetaState::Mode::Predictor) {
-    state_.beta = predictedBeta(curGroup, predictor, stepSize);
-    stepSize *= state_.beta;
-  } else {
-    state_.checkThisAttempt = true;
-    model_.setNewContactsFrozen(true);
-  }
+  stepSize = plan.step;
+  if (!plan.ok) return NOX::Abstract::Group::Failed;
+  if (control_.settings().mode == ContactBetaSettings::Mode::Predictor && !plan.corrected)
+    stepSize = control_.correctByPrediction(predictedNodes(curGroup, predictor, stepSize));
+  if (plan.checkFirstIterate) model_.setNewContactsFrozen(true);
   previous_ = stepSize;
   return NOX::Abstract::Group::Ok;
 }

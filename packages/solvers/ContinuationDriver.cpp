@@ -114,11 +114,13 @@ class NewtonCounter : public NOX::Observer {
 class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
  public:
   IncrementBookkeeper(model::ContactMechanicsModel& model, IncrementObserver& observer, const NewtonCounter& newton,
-                      const ContactBetaState* contactBeta, double initialLambda)
+                      const continuation::ContactBetaControl* contactBeta, continuation::CountedEvents counted,
+                      double initialLambda)
       : model_(model),
         observer_(observer),
         newton_(newton),
         contactBeta_(contactBeta),
+        counted_(counted),
         lastLambda_(initialLambda),
         start_(Clock::now()) {}
 
@@ -136,8 +138,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
       lastFailedTarget = r.lambda;
       lastAttemptFailed = true;
       r.failure = lastFailure.reason;
-      r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested;
-      if (r.betaRestart) r.beta = contactBeta_->beta;
+      r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested();
+      if (r.betaRestart) r.beta = contactBeta_->beta();
       observer_.attemptFailed(r);
     }
   }
@@ -152,6 +154,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     lastAttemptFailed = false;
     IncrementReport r = report(lambda);
     r.dlambda = first_ ? 0.0 : lambda - lastLambda_;
+    r.newEvents = first_ ? 0 : continuation::countEvents(model_.committedIncrement(), counted_);
     observer_.incrementConverged(*tpetraX, r);
     if (!first_) ++increments;
     lastLambda_ = lambda;
@@ -171,7 +174,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   IncrementReport report(double lambda) const {
     IncrementReport r;
     r.step = first_ ? 0 : increments + 1;
-    r.beta = contactBeta_ != nullptr && !first_ ? contactBeta_->beta : 1.0;
+    r.beta = contactBeta_ != nullptr && !first_ ? contactBeta_->beta() : 1.0;
     r.lambda = lambda;
     r.attempts = attempts_;
     r.newtonIterations = newton_.iterations;
@@ -183,7 +186,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   model::ContactMechanicsModel& model_;
   IncrementObserver& observer_;
   const NewtonCounter& newton_;
-  const ContactBetaState* contactBeta_;
+  const continuation::ContactBetaControl* contactBeta_;
+  continuation::CountedEvents counted_;
   double lastLambda_;
   Clock::time_point start_;
   bool first_ = true, pendingSuccess_ = false;
@@ -290,8 +294,8 @@ ContinuationDriver::ContinuationDriver(const RCP<model::ContactMechanicsModel>& 
 RunSummary ContinuationDriver::run() {
   const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
   const bool contactBeta = stepSize.get<std::string>("Method") == "Contact Beta";
-  ContactBetaState betaState = contactBetaState(stepSize);
-  betaState.finalLoadFactor = piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value");
+  continuation::ContactBetaControl betaState(
+      contactBetaSettings(stepSize, piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value")));
 
   const auto& tests = piro_.sublist("NOX").sublist("Status Tests");
   const auto* model = model_.get();
@@ -300,11 +304,15 @@ RunSummary ContinuationDriver::run() {
       *model_,
       rcp(new ResidualTest(tests.get<double>("Absolute Residual Tolerance"), tests.get<double>("Relative Residual Tolerance"),
                            tests.get<double>("Update Tolerance"), [model] { return !model->newContactsFrozen(); },
-                           [&betaState] { return !betaState.justUnfrozen; })),
+                           [&betaState] { return !betaState.newContactsJustReleased(); })),
       tests.get<int>("Maximum Iterations"),
-      contactBeta && betaState.mode == ContactBetaState::Mode::Restart
+      contactBeta && betaState.settings().mode == continuation::ContactBetaSettings::Mode::Restart
           ? Teuchos::RCP<NOX::StatusTest::Generic>(rcp(new ContactBetaRestartTest(*model_, betaState)))
-          : Teuchos::null);
+          : Teuchos::null,
+      contactBeta ? std::function<std::string()>([&betaState, model] {
+        return betaState.redoAtConvergence(model->trialIncrement());
+      })
+                  : std::function<std::string()>());
 
   auto errors = rcp(new std::ostringstream());
   auto newton = rcp(new NewtonCounter(newtonTests, *errors));
@@ -320,7 +328,8 @@ RunSummary ContinuationDriver::run() {
   auto x0 = model_->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_, p, 0, true));
-  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr, lambda0));
+  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr,
+                                                betaState.settings().counted, lambda0));
   group->setSaveDataStrategy(bookkeeper);
 
   RunSummary summary;
@@ -343,8 +352,8 @@ RunSummary ContinuationDriver::run() {
       // The initial solve is no step of LOCA's: its failure is the latest solve's.
       cause.failure = cause.initialStateSolved ? bookkeeper->lastFailure : newton->failure;
       cause.failedTarget = bookkeeper->lastFailedTarget;
-      cause.contactBetaBelowMinimum = betaState.hitMinimumStep && !bookkeeper->lastAttemptFailed;
-      cause.contactsPerStep = betaState.options.contactsPerStep;
+      cause.contactBetaBelowMinimum = betaState.hitMinimumStep() && !bookkeeper->lastAttemptFailed;
+      cause.contactsPerStep = betaState.settings().beta.contactsPerStep;
       cause.locaErrors = errors->str();
       summary.message = stopMessage(cause);
     }

@@ -23,6 +23,7 @@ struct IncrementReport {
   double residualNorm = 0;   ///< ||f|| at convergence
   double wallSeconds = 0;    ///< since the start of the run
   bool betaRestart = false;  ///< a failed attempt stopped for a Contact Beta correction (not a Newton failure)
+  int newEvents = 0;         ///< status changes of the increment that Step Size/Counted Events counts
   std::string failure;       ///< a failed attempt: why, in one line (as in the stop message)
 };
 

@@ -74,15 +74,26 @@ std::ostream& AcceptedConvergenceTest::print(std::ostream& os, int indent) const
 }
 
 NewtonStatusTests::NewtonStatusTests(const model::ContactMechanicsModel& model, RCP<NOX::StatusTest::Generic> convergence,
-                                     int maxIterations, RCP<NOX::StatusTest::Generic> beforeConvergence)
+                                     int maxIterations, RCP<NOX::StatusTest::Generic> beforeConvergence,
+                                     std::function<std::string()> redoStep)
     : model_(model),
       finite_(rcp(new NOX::StatusTest::FiniteValue())),
       before_(std::move(beforeConvergence)),
       // A converged state in which a body has passed through another is no answer: the increment fails
       // and is cut back (theory-contact.md §12).
-      convergence_(rcp(new AcceptedConvergenceTest(std::move(convergence), [&model] { return model.contactTunnelling(); }))),
+      convergence_(rcp(new AcceptedConvergenceTest(std::move(convergence),
+                                                   [this] {
+                                                     redoRequested_ = false;
+                                                     std::string why = model_.contactTunnelling();
+                                                     if (why.empty() && redoStep_) {
+                                                       why = redoStep_();
+                                                       redoRequested_ = !why.empty();
+                                                     }
+                                                     return why;
+                                                   }))),
       maxIters_(rcp(new NOX::StatusTest::MaxIters(maxIterations))),
-      combo_(rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR))) {
+      combo_(rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR))),
+      redoStep_(std::move(redoStep)) {
   combo_->addStatusTest(finite_);
   if (!before_.is_null()) combo_->addStatusTest(before_);
   combo_->addStatusTest(convergence_);
@@ -97,6 +108,8 @@ void NewtonStatusTests::startSolve() {
 SolveFailure NewtonStatusTests::diagnose(const NOX::Solver::Generic& solver, const std::string& noxOutput) const {
   using Kind = SolveFailure::Kind;
   if (solver.getStatus() == NOX::StatusTest::Converged) return {};
+  if (convergence_->getStatus() == NOX::StatusTest::Failed && redoRequested_)
+    return {Kind::ContactBetaRestart, "stopped for a Contact Beta step correction: " + convergence_->rejection()};
   if (convergence_->getStatus() == NOX::StatusTest::Failed)
     return {Kind::Tunnelling, "contact tunnelling: " + convergence_->rejection() +
                                   " (the increment is too large for the contact to follow)"};

@@ -60,8 +60,12 @@ class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
 class NewtonStatusTests {
  public:
   /// `convergence` decides convergence; `beforeConvergence` (may be null) is checked before it.
+  /// `redoStep` (may be empty) is asked at a converged, tunnelling-free state whether the step is to be
+  /// solved again with another size (Contact Beta's event count check): a reason fails the solve as a
+  /// Contact Beta correction, not as a Newton failure.
   NewtonStatusTests(const model::ContactMechanicsModel& model, Teuchos::RCP<NOX::StatusTest::Generic> convergence,
-                    int maxIterations, Teuchos::RCP<NOX::StatusTest::Generic> beforeConvergence = Teuchos::null);
+                    int maxIterations, Teuchos::RCP<NOX::StatusTest::Generic> beforeConvergence = Teuchos::null,
+                    std::function<std::string()> redoStep = {});
 
   Teuchos::RCP<NOX::StatusTest::Generic> test() const { return combo_; }
 
@@ -82,6 +86,8 @@ class NewtonStatusTests {
   Teuchos::RCP<NOX::StatusTest::MaxIters> maxIters_;
   Teuchos::RCP<NOX::StatusTest::Combo> combo_;
   long linearFailuresAtStart_ = 0;
+  std::function<std::string()> redoStep_;
+  bool redoRequested_ = false;  ///< the last rejection was redoStep's
 };
 
 /// A number for messages: 3 significant digits, exponent when needed ("3.2e-02", "0.5").

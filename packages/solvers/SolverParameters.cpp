@@ -1,6 +1,9 @@
 #include "solvers/SolverParameters.hpp"
 
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
 #include "common/Error.hpp"
+#include "continuation/ContactBetaControl.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 
@@ -78,6 +81,22 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setBounded(step, "Restart Tolerance", 0.1, 0.0, 1.0, "Contact Beta, Restart: no restart when |β − 1| is below this");
   deck::setBounded(step, "Next Contact Fraction", 0.9, 0.0, 0.999,
                    "Contact Beta: β between β^{N_c} (0 = eq. 13 as printed) and β^{N_c+1} (closing N_c nodes, not N_c + 1)");
+  deck::setChoice(step, "Counted Events", "Closures", continuation::countedEventsNames(),
+                  "Contact Beta: the status changes limited to N_c per increment (history column new_events): "
+                  "Closures (the paper) or All Status Changes (closures, openings, stick/slip changes, slip reversals)");
+  step.set("Learn Event Rate", true,
+           "Contact Beta: correct the β^k of eq. (11) by the ratio of actual to predicted event fractions learned "
+           "from the last increments (not with Next Contact Fraction = 0: eq. 13 as printed)");
+  deck::setChoice(step, "Growth Without Events", "Max Growth Factor", continuation::quietGrowthNames(),
+                  "Contact Beta: how the step grows while at most N_c events lie ahead: to Max Growth Factor, or by "
+                  "the Newton iterations of the last increment (towards Target Newton Iterations)");
+  step.set("Max Corrections Per Increment", 3,
+           "Contact Beta (f > 0): beyond the paper's one restart, how often per increment a restarted step with β "
+           "far from 1 is checked again at its first iterate, and how often a converged increment with other than "
+           "N_c counted events is solved again with a corrected step; 0 = Table 1 as printed ([0, 10])",
+           Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 10)));
+  deck::setPositiveInt(step, "Target Newton Iterations", 6,
+                       "Contact Beta with Growth Without Events = Newton Iterations: the iterations an increment aims at");
 
   piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' added by Contessa; see below)");
   return piro;

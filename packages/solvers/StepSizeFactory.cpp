@@ -6,11 +6,11 @@ namespace contessa::solvers {
 
 bool StepSizeFactory::createStepSizeStrategy(const std::string& strategyName,
                                              const Teuchos::RCP<LOCA::Parameter::SublistParser>& /*topParams*/,
-                                             const Teuchos::RCP<Teuchos::ParameterList>& stepsizeParams,
+                                             const Teuchos::RCP<Teuchos::ParameterList>& /*stepsizeParams*/,
                                              Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) {
   // Names LOCA does not know are offered here first; LOCA's own ("Constant", "Adaptive") fall through.
   if (strategyName == "Contact Beta") {
-    strategy = Teuchos::rcp(new ContactBetaStepSize(*stepsizeParams, model_, contactBeta_));
+    strategy = Teuchos::rcp(new ContactBetaStepSize(model_, contactBeta_));
     return true;
   }
   return false;

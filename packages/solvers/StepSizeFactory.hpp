@@ -3,16 +3,15 @@
 // strategies that LOCA does not know are registered here by name.
 #include <LOCA_Abstract_Factory.H>
 
+#include "continuation/ContactBetaControl.hpp"
 #include "model/ContactMechanicsModel.hpp"
 
 namespace contessa::solvers {
 
-struct ContactBetaState;
-
 class StepSizeFactory : public LOCA::Abstract::Factory {
  public:
   /// `model` and `contactBeta` serve the "Contact Beta" strategy; both outlive the run.
-  StepSizeFactory(const model::ContactMechanicsModel& model, ContactBetaState& contactBeta)
+  StepSizeFactory(const model::ContactMechanicsModel& model, continuation::ContactBetaControl& contactBeta)
       : model_(model), contactBeta_(contactBeta) {}
   // LOCA's global data owns this factory: keeping a strong reference back would leak both.
   void init(const Teuchos::RCP<LOCA::GlobalData>& /*globalData*/) override {}
@@ -23,7 +22,7 @@ class StepSizeFactory : public LOCA::Abstract::Factory {
 
  private:
   const model::ContactMechanicsModel& model_;
-  ContactBetaState& contactBeta_;
+  continuation::ContactBetaControl& contactBeta_;
 };
 
 }  // namespace contessa::solvers

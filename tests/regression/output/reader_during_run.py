@@ -10,6 +10,7 @@ that lands in the middle of a step's flush may fail, and opening again works (do
 each look may therefore take up to 5 attempts, and the retries are printed."""
 import argparse
 import os
+import signal
 import subprocess
 import sys
 import time
@@ -61,19 +62,35 @@ def open_held(path):
     return None, 5
 
 
+# The run is paused (SIGSTOP) while a reader opens the file, as a ParaView user opens it between two
+# steps; it then writes on while the file is held open and looked at again and again. Pausing makes
+# the test independent of how fast the run is: the second look is taken at least 50 steps later.
+os.kill(run.pid, signal.SIGSTOP)
 held, retries = open_held(exo)  # held open until the run ends
 if held is None:
     problems.append(f"this process could not open {exo} in 5 attempts")
 else:
     print(f"holding {exo} open at step {len(held.variables['time_whole'])}")
 looker = subprocess.Popen([sys.executable, "-c", LOOKER, exo], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+lines = [looker.stdout.readline()]  # the first look, while the run is paused
+first_rows = rows_written(history)
+os.kill(run.pid, signal.SIGCONT)
+while rows_written(history) < first_rows + 50 and run.poll() is None and time.time() < deadline + 60:
+    time.sleep(0.01)
+if run.poll() is None:  # a look at least 50 steps later, the run paused again
+    os.kill(run.pid, signal.SIGSTOP)
+    while len(lines) < 200:
+        lines.append(looker.stdout.readline())
+        if lines[-1].startswith("FAILED") or int(lines[-1].split()[0]) > first_rows + 49:
+            break
+    os.kill(run.pid, signal.SIGCONT)
 run.wait()
 looker.stdin.close()
 counts = []
-for line in looker.stdout:
+for line in lines + list(looker.stdout):
     if line.startswith("FAILED"):
         problems.append(f"a reader could not open {exo} in 5 attempts: {line.strip()}")
-    else:
+    elif line.strip():
         count, attempts = map(int, line.split())
         counts.append(count)
         retries += attempts
