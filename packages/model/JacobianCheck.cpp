@@ -34,14 +34,16 @@ void residual(const ContactMechanicsModel& model, const RCP<const Thyra::VectorB
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// The contact trial state, as far as the model shows it (gaps of the latest evaluation), must be what
+// The contact trial state, as far as the model shows it (gaps, status, Coulomb indicator of the latest
+// evaluation), must be what
 // it was before the check: the perturbed residuals leave no trace.
-void requireSameContactState(const std::vector<contact::SlaveGapChange>& before,
-                             const std::vector<contact::SlaveGapChange>& after) {
+void requireSameContactState(const std::vector<continuation::SlaveNodeIncrement>& before,
+                             const std::vector<continuation::SlaveNodeIncrement>& after) {
   bool same = before.size() == after.size();
   for (std::size_t k = 0; same && k < before.size(); ++k)
     same = sameBits(before[k].committedGap, after[k].committedGap) && sameBits(before[k].trialGap, after[k].trialGap) &&
-           before[k].inContactAtCommit == after[k].inContactAtCommit;
+           before[k].trialStatus == after[k].trialStatus && sameBits(before[k].trialIndicator, after[k].trialIndicator) &&
+           before[k].slipReversed == after[k].slipReversed;
   if (!same) throw std::logic_error("the Jacobian check changed the contact trial state of the model");
 }
 
@@ -176,17 +178,17 @@ JacobianComparison compareAt(const ContactMechanicsModel& model, const Thyra::Ve
 JacobianComparison JacobianCheck::compare(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x,
                                           double lambda, const Thyra::LinearOpBase<double>& W) const {
   const auto state = model.saveEvaluationState();
-  const auto gaps = model.contactGapChanges();
+  const auto gaps = model.trialIncrement();
   const auto result = compareAt(model, x, lambda, W, options_);
   model.restoreEvaluationState(*state);
-  requireSameContactState(gaps, model.contactGapChanges());
+  requireSameContactState(gaps, model.trialIncrement());
   return result;
 }
 
 JacobianComparison JacobianCheck::check(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x,
                                         double lambda) const {
   const auto state = model.saveEvaluationState();
-  const auto gaps = model.contactGapChanges();
+  const auto gaps = model.trialIncrement();
   auto W = model.create_W_op();
   {
     auto in = model.createInArgs();
@@ -200,7 +202,7 @@ JacobianComparison JacobianCheck::check(const ContactMechanicsModel& model, cons
   }
   const auto result = compareAt(model, x, lambda, *W, options_);
   model.restoreEvaluationState(*state);
-  requireSameContactState(gaps, model.contactGapChanges());
+  requireSameContactState(gaps, model.trialIncrement());
   return result;
 }
 

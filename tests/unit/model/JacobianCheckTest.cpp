@@ -108,8 +108,8 @@ struct Fixture {
 TEST(JacobianCheck, FindsTheModelsJacobianRightAndLeavesNoTrace) {
   Fixture fx;
   const auto before = fx.residual(0.8);
-  ASSERT_GT(fx.model->contactGapChanges().size(), 0u);
-  const auto gaps = fx.model->contactGapChanges();
+  ASSERT_GT(fx.model->trialIncrement().size(), 0u);
+  const auto gaps = fx.model->trialIncrement();
   const int passes = fx.model->elementPasses();
   const auto r = model::JacobianCheck().check(*fx.model, *fx.x, 0.8);
   EXPECT_LT(r.worstRelativeError, 1e-5) << model::JacobianCheck::describe(r, *fx.model);
@@ -123,9 +123,12 @@ TEST(JacobianCheck, FindsTheModelsJacobianRightAndLeavesNoTrace) {
   auto difference = before->clone_v();
   Thyra::Vp_StV(difference.ptr(), -1.0, *after);
   EXPECT_EQ(Thyra::norm_inf(*difference), 0.0);
-  const auto gapsAfter = fx.model->contactGapChanges();
+  const auto gapsAfter = fx.model->trialIncrement();
   ASSERT_EQ(gaps.size(), gapsAfter.size());
-  for (std::size_t k = 0; k < gaps.size(); ++k) EXPECT_EQ(gaps[k].trialGap, gapsAfter[k].trialGap) << k;
+  for (std::size_t k = 0; k < gaps.size(); ++k) {
+    EXPECT_EQ(gaps[k].trialGap, gapsAfter[k].trialGap) << k;
+    EXPECT_EQ(gaps[k].trialStatus, gapsAfter[k].trialStatus) << k;
+  }
 }
 
 // The must-fail side: a matrix 0.1 % off everywhere, and one with a single entry changed.
