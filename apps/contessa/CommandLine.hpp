@@ -9,6 +9,10 @@ struct CommandLine {
   std::string outputDirectory = ".";
   std::vector<std::string> overrides;
   std::vector<std::string> kokkosOptions;  ///< --kokkos-* options, passed on to Kokkos as written
+  /// --check-jacobian[=N,M,...]: the increments whose first Newton iterate gets the finite-difference
+  /// check of the Jacobian (empty with checkJacobian = every increment).
+  bool checkJacobian = false;
+  std::vector<int> checkJacobianIncrements;
   bool help = false, version = false, kokkosHelp = false, deckReference = false, quiet = false, timers = false;
 };
 

@@ -22,6 +22,7 @@
 #include "output/DeckText.hpp"
 #include "output/ResultsOutput.hpp"
 #include "solvers/ContinuationDriver.hpp"
+#include "solvers/JacobianCheckObserver.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/SolverParameters.hpp"
 #include "solvers/StaticSolveDriver.hpp"
@@ -73,6 +74,11 @@ std::string commandLineText(const CommandLine& cl) {
   if (cl.outputDirectory != ".") text += " --output-dir " + word(cl.outputDirectory);
   for (const auto& o : cl.overrides) text += " --set " + word(o);
   if (cl.quiet) text += " --quiet";
+  if (cl.checkJacobian) {
+    text += " --check-jacobian";
+    for (std::size_t k = 0; k < cl.checkJacobianIncrements.size(); ++k)
+      text += (k == 0 ? "=" : ",") + std::to_string(cl.checkJacobianIncrements[k]);
+  }
   return text;
 }
 
@@ -133,9 +139,16 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // is thrown on every rank alike, so FailureReporter prints it once (exit status 1).
   timers::switchTo(timers::Phase::Other);
   solvers::RunSummary summary;
+  // --check-jacobian: a NOX observer of the solves that sees the increment reports before the output.
+  Teuchos::RCP<solvers::JacobianCheckObserver> jacobianCheck;
+  if (cl.checkJacobian)
+    jacobianCheck = Teuchos::rcp(new solvers::JacobianCheckObserver(*model, cl.checkJacobianIncrements, results));
+  solvers::IncrementObserver& observer = jacobianCheck.is_null() ? static_cast<solvers::IncrementObserver&>(results)
+                                                                 : *jacobianCheck;
   try {
-    summary = piro.get<std::string>("Solver Type") == "NOX" ? solvers::solveStatic(model, piro, results)
-                                                            : solvers::ContinuationDriver(model, piro, results).run();
+    summary = piro.get<std::string>("Solver Type") == "NOX"
+                  ? solvers::solveStatic(model, piro, observer, jacobianCheck)
+                  : solvers::ContinuationDriver(model, piro, observer, jacobianCheck).run();
   } catch (const std::exception&) {
     if (results.failure().empty()) throw;
   }

@@ -247,6 +247,7 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   auto dl = overlapDfdLambda_->getDataNonConst(0);
   if (withStiffness) scatter_->beginPass();
   ++elementPasses_;
+  if (withStiffness) ++stiffnessPasses_;
   std::optional<timers::Scope> elementScope(std::in_place,
                                             phase(withStiffness ? Phase::ElementJacobian : Phase::ElementResidual));
   const auto status = solids_->assemble(u.getRawPtr(), withStiffness,

@@ -103,6 +103,16 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   double lastLoadFactor() const { return lastLoadFactor_; }
   int dimension() const { return dim_; }
 
+  // For the finite-difference check of the Jacobian (JacobianCheck; ContactMechanicsModelProbes.cpp).
+  /// Everything an evaluation changes: trial element and contact states, the latest pass, counters.
+  struct EvaluationState;
+  /// Taken before evaluations that must leave no trace, and put back after them.
+  std::shared_ptr<const EvaluationState> saveEvaluationState() const;
+  void restoreEvaluationState(const EvaluationState& state) const;
+  /// Who couples two DOFs (global ids), in words: "element 12 of block 'tube'", "contact 'plate' slave
+  /// node 41" (Exodus numbering), or both.
+  std::string describeCoupling(GO rowDof, GO columnDof) const;
+
  private:
   Thyra::ModelEvaluatorBase::OutArgs<double> createOutArgsImpl() const override;
   void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double>& inArgs,
@@ -152,7 +162,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   mutable SolidAssembler::Status passStatus_;
   mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
   mutable bool passServesReactions_ = false;    ///< until the state is rolled back
-  mutable int jacobianEvaluations_ = 0, elementPasses_ = 0;
+  mutable int jacobianEvaluations_ = 0, elementPasses_ = 0, stiffnessPasses_ = 0;
   mutable double lastLoadFactor_ = 0;
   mutable bool newContactsFrozen_ = false;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank

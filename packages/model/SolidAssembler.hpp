@@ -45,6 +45,10 @@ class SolidAssembler {
   /// abandoned.
   void commit() { committed_ = trial_; }
   void rollback() { trial_ = committed_; }
+  /// The trial copy, to put back after evaluations that must leave no trace (ContactMechanicsModel::
+  /// saveEvaluationState).
+  const std::vector<double>& trialState() const { return trial_; }
+  void restoreTrialState(const std::vector<double>& state) { trial_ = state; }
 
   const std::vector<GlobalIndex>& elements() const { return elements_; }
 

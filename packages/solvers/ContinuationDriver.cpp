@@ -11,6 +11,7 @@
 #include <LOCA_Thyra.H>
 #include <LOCA_Thyra_SaveDataStrategy.H>
 #include <NOX_Observer.hpp>
+#include <NOX_Observer_Vector.hpp>
 #include <NOX_Solver_LineSearchBased.H>
 #include <NOX_Thyra_Vector.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -286,8 +287,9 @@ std::string solverErrorMessage(const NewtonStatusTests& tests, double lambda, co
 }  // namespace
 
 ContinuationDriver::ContinuationDriver(const RCP<model::ContactMechanicsModel>& model,
-                                       const Teuchos::ParameterList& piro, IncrementObserver& observer)
-    : model_(model), piro_(piro), observer_(observer) {}
+                                       const Teuchos::ParameterList& piro, IncrementObserver& observer,
+                                       Teuchos::RCP<NOX::Observer> iterationObserver)
+    : model_(model), piro_(piro), observer_(observer), iterationObserver_(std::move(iterationObserver)) {}
 
 RunSummary ContinuationDriver::run() {
   const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
@@ -314,7 +316,10 @@ RunSummary ContinuationDriver::run() {
 
   auto errors = rcp(new std::ostringstream());
   auto newton = rcp(new NewtonCounter(newtonTests, *errors));
-  auto params = locaParameters(piro_, newton, errors);
+  auto observers = rcp(new NOX::ObserverVector());
+  observers->pushBack(newton);
+  if (!iterationObserver_.is_null()) observers->pushBack(iterationObserver_);
+  auto params = locaParameters(piro_, observers, errors);
   auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*model_, betaState)));
 
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");

@@ -5,6 +5,7 @@
 // strategies are registered through one (StepSizeFactory).
 #include <string>
 
+#include <NOX_Observer.hpp>
 #include <Teuchos_ParameterList.hpp>
 
 #include "model/ContactMechanicsModel.hpp"
@@ -45,14 +46,16 @@ struct RunSummary {
 class ContinuationDriver {
  public:
   /// `piro` is the validated deck list (Piro/NOX, Piro/LOCA); the model and observer must outlive run().
+  /// `iterationObserver` (optional) also sees every Newton solve (e.g. JacobianCheckObserver).
   ContinuationDriver(const Teuchos::RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
-                     IncrementObserver& observer);
+                     IncrementObserver& observer, Teuchos::RCP<NOX::Observer> iterationObserver = Teuchos::null);
   RunSummary run();
 
  private:
   Teuchos::RCP<model::ContactMechanicsModel> model_;
   Teuchos::ParameterList piro_;
   IncrementObserver& observer_;
+  Teuchos::RCP<NOX::Observer> iterationObserver_;
 };
 
 }  // namespace contessa::solvers

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include <NOX_Observer.hpp>
+#include <NOX_Observer_Vector.hpp>
 #include <NOX_StatusTest_NormF.H>
 #include <NOX_Utils.H>
 #include <Piro_NOXSolver.hpp>
@@ -37,7 +38,7 @@ class SolveObserver : public NOX::Observer {
 }  // namespace
 
 RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
-                       IncrementObserver& observer) {
+                       IncrementObserver& observer, const RCP<NOX::Observer>& iterationObserver) {
   const auto start = std::chrono::steady_clock::now();
   const auto& deckNox = piro.sublist("NOX");
   const auto& deckTests = deckNox.sublist("Status Tests");
@@ -67,7 +68,10 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
   nox.sublist("Printing").set("Error Stream", Teuchos::rcp_implicit_cast<std::ostream>(noxOutput));
   if (!details) nox.sublist("Printing").set("Output Stream", Teuchos::rcp_implicit_cast<std::ostream>(noxOutput));
   nox.set("Catch Throws During Solve", true);
-  nox.sublist("Solver Options").set("Observer", Teuchos::rcp_implicit_cast<NOX::Observer>(solveObserver));
+  auto observers = rcp(new NOX::ObserverVector());
+  observers->pushBack(solveObserver);
+  if (!iterationObserver.is_null()) observers->pushBack(iterationObserver);
+  nox.sublist("Solver Options").set("Observer", Teuchos::rcp_implicit_cast<NOX::Observer>(observers));
   auto& statusTests = nox.sublist("Status Tests");
   statusTests.set("Test Type", "User Defined");
   statusTests.set("User Status Test", tests.test());

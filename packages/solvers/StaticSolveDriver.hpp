@@ -9,7 +9,8 @@
 namespace contessa::solvers {
 
 /// `piro` is the validated deck list; NOX settings and status tests come from Piro/NOX.
+/// `iterationObserver` (optional) also sees the Newton solve (e.g. JacobianCheckObserver).
 RunSummary solveStatic(const Teuchos::RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
-                       IncrementObserver& observer);
+                       IncrementObserver& observer, const Teuchos::RCP<NOX::Observer>& iterationObserver = Teuchos::null);
 
 }  // namespace contessa::solvers

@@ -1,0 +1,92 @@
+// What the finite-difference check of the Jacobian (JacobianCheck) needs of the model beyond the
+// Thyra::ModelEvaluator: to put its evaluation state back after the perturbed residuals, and to name
+// who couples two DOFs.
+#include <algorithm>
+
+#include "model/ContactMechanicsModel.hpp"
+
+namespace contessa::model {
+
+struct ContactMechanicsModel::EvaluationState {
+  std::vector<double> solidTrial;
+  std::vector<contact::ContactInterface2D> contacts;  ///< trial histories, last positions, slip damping
+  Teuchos::RCP<Vector> passX, passForce, passDfdLambda;
+  double passLambda = 0;
+  bool passFrozen = false, passHasStiffness = false, passServesEvaluations = false, passServesReactions = false;
+  SolidAssembler::Status passStatus, lastElementStatus;
+  int jacobianEvaluations = 0, elementPasses = 0, stiffnessPasses = 0;
+  double lastLoadFactor = 0;
+};
+
+std::shared_ptr<const ContactMechanicsModel::EvaluationState> ContactMechanicsModel::saveEvaluationState() const {
+  auto s = std::make_shared<EvaluationState>();
+  s->solidTrial = solids_->trialState();
+  s->contacts = contacts_;
+  s->passX = Teuchos::rcp(new Vector(*passX_, Teuchos::Copy));
+  s->passForce = Teuchos::rcp(new Vector(*passForce_, Teuchos::Copy));
+  s->passDfdLambda = Teuchos::rcp(new Vector(*passDfdLambda_, Teuchos::Copy));
+  s->passLambda = passLambda_;
+  s->passFrozen = passFrozen_;
+  s->passHasStiffness = passHasStiffness_;
+  s->passServesEvaluations = passServesEvaluations_;
+  s->passServesReactions = passServesReactions_;
+  s->passStatus = passStatus_;
+  s->lastElementStatus = lastElementStatus_;
+  s->jacobianEvaluations = jacobianEvaluations_;
+  s->elementPasses = elementPasses_;
+  s->stiffnessPasses = stiffnessPasses_;
+  s->lastLoadFactor = lastLoadFactor_;
+  return s;
+}
+
+void ContactMechanicsModel::restoreEvaluationState(const EvaluationState& s) const {
+  solids_->restoreTrialState(s.solidTrial);
+  contacts_ = s.contacts;
+  passX_->assign(*s.passX);
+  passForce_->assign(*s.passForce);
+  passDfdLambda_->assign(*s.passDfdLambda);
+  passLambda_ = s.passLambda;
+  passFrozen_ = s.passFrozen;
+  // The stiffness of the saved pass is not kept: when a stiffness pass has overwritten it since, a
+  // Jacobian asked for at the saved point is computed again (the residual is still served).
+  passHasStiffness_ = s.passHasStiffness && stiffnessPasses_ == s.stiffnessPasses;
+  passServesEvaluations_ = s.passServesEvaluations;
+  passServesReactions_ = s.passServesReactions;
+  passStatus_ = s.passStatus;
+  lastElementStatus_ = s.lastElementStatus;
+  jacobianEvaluations_ = s.jacobianEvaluations;
+  elementPasses_ = s.elementPasses;
+  lastLoadFactor_ = s.lastLoadFactor;
+  // (stiffnessPasses_ keeps counting: it says whether the scatter holds the saved pass's stiffness.)
+}
+
+std::string ContactMechanicsModel::describeCoupling(GO rowDof, GO columnDof) const {
+  const GlobalIndex a = rowDof / dim_, b = columnDof / dim_;
+  std::vector<std::string> who;
+  // The first solid element holding both nodes (Exodus numbering, 1-based).
+  for (std::size_t k = 0; k < problem_.mesh.blocks.size() && who.empty(); ++k) {
+    const auto& block = problem_.mesh.blocks[k];
+    const int n = mesh::nodesPerCell(block.cellType);
+    for (GlobalIndex e = 0; e < block.numElements(); ++e) {
+      const auto first = block.connectivity.begin() + e * n, last = first + n;
+      if (std::find(first, last, a) != last && std::find(first, last, b) != last) {
+        who.push_back("element " + std::to_string(block.elements[e] + 1) + " of block '" + problem_.blocks[k].block + "'");
+        break;
+      }
+    }
+  }
+  // A contact element couples its slave node with the nodes of its master segment.
+  for (const auto& spec : problem_.contacts) {
+    for (GlobalIndex node : {a, b})
+      if (std::binary_search(spec.slaveNodes.begin(), spec.slaveNodes.end(), node)) {
+        who.push_back("contact '" + spec.name + "' slave node " + std::to_string(node + 1));
+        break;
+      }
+  }
+  if (who.empty()) return "no element or contact slave node holds both nodes";
+  std::string out;
+  for (const auto& w : who) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+}  // namespace contessa::model

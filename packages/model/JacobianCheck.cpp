@@ -1,0 +1,228 @@
+#include "model/JacobianCheck.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Thyra_VectorStdOps.hpp>
+
+namespace contessa::model {
+
+using Teuchos::RCP;
+using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+
+namespace {
+
+// The residual f(x, λ) into `f`.
+void residual(const ContactMechanicsModel& model, const RCP<const Thyra::VectorBase<double>>& x, double lambda,
+              const RCP<Thyra::VectorBase<double>>& f) {
+  auto in = model.createInArgs();
+  auto p = Thyra::createMember(model.get_p_space(0));
+  Thyra::set_ele(0, lambda, p.ptr());
+  in.set_x(x);
+  in.set_p(0, p);
+  auto out = model.createOutArgs();
+  out.set_f(f);
+  model.evalModel(in, out);
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// The contact trial state, as far as the model shows it (gaps, status, Coulomb indicator of the latest
+// evaluation), must be what
+// it was before the check: the perturbed residuals leave no trace.
+void requireSameContactState(const std::vector<continuation::SlaveNodeIncrement>& before,
+                             const std::vector<continuation::SlaveNodeIncrement>& after) {
+  bool same = before.size() == after.size();
+  for (std::size_t k = 0; same && k < before.size(); ++k)
+    same = sameBits(before[k].committedGap, after[k].committedGap) && sameBits(before[k].trialGap, after[k].trialGap) &&
+           before[k].trialStatus == after[k].trialStatus && sameBits(before[k].trialIndicator, after[k].trialIndicator) &&
+           before[k].slipReversed == after[k].slipReversed;
+  if (!same) throw std::logic_error("the Jacobian check changed the contact trial state of the model");
+}
+
+// Central differences of f, column by column (every rank walks all global columns in the same order;
+// the owner of column j perturbs it), against the entries of W on this rank's rows.
+JacobianComparison compareAt(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x, double lambda,
+                             const Thyra::LinearOpBase<double>& W, const JacobianCheck::Options& options) {
+  const auto start = std::chrono::steady_clock::now();
+  auto matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(Teuchos::rcpFromRef(W)), true);
+  const auto& rowMap = *matrix->getRowMap();
+  const auto& colMap = *matrix->getColMap();
+  const auto comm = rowMap.getComm();
+  const LO numRows = static_cast<LO>(rowMap.getNodeNumElements());
+
+  // W by columns on this rank's rows, and each row's largest entry.
+  std::unordered_map<GO, std::vector<std::pair<LO, double>>> columns;
+  std::vector<double> rowMax(numRows, 0.0);
+  for (LO r = 0; r < numRows; ++r) {
+    CrsMatrix::local_inds_host_view_type indices;
+    CrsMatrix::values_host_view_type values;
+    matrix->getLocalRowView(r, indices, values);
+    for (std::size_t k = 0; k < indices.extent(0); ++k) {
+      columns[colMap.getGlobalElement(indices(k))].emplace_back(r, values(k));
+      rowMax[r] = std::max(rowMax[r], std::abs(values(k)));
+    }
+  }
+
+  auto xp = x.clone_v();
+  auto xt = Extract::getTpetraVector(xp);
+  if (!xt->getMap()->isSameAs(rowMap)) throw std::logic_error("JacobianCheck: W's rows are not distributed as x");
+  const double xNorm = xt->normInf();
+  auto fPlus = Thyra::createMember(model.get_f_space()), fMinus = Thyra::createMember(model.get_f_space());
+  auto fCentre = Thyra::createMember(model.get_f_space());
+  const auto fp = Extract::getConstTpetraVector(fPlus), fm = Extract::getConstTpetraVector(fMinus);
+  residual(model, xp, lambda, fCentre);
+  const auto f0 = Extract::getConstTpetraVector(fCentre)->getData(0);
+
+  JacobianComparison result;
+  result.residualEvaluations = 1;
+  double localWorst = -1, worstW = 0, worstD = 0, sums[2] = {0, 0};  // Σ (W − D)², Σ W²
+  GO worstRow = -1, worstColumn = -1;
+  std::vector<double> wColumn(numRows, 0.0);
+  const GO first = rowMap.getMinAllGlobalIndex(), last = rowMap.getMaxAllGlobalIndex();
+  for (GO j = first; j <= last; ++j) {
+    const LO lj = rowMap.getLocalElement(j);
+    const bool mine = lj != Teuchos::OrdinalTraits<LO>::invalid();
+    double xj = 0, h = 0, hLocal = 0;
+    if (mine) {
+      xj = xt->getData(0)[lj];
+      hLocal = options.step * std::max({std::abs(xj), xNorm, 1.0});
+    }
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &hLocal, &h);
+    if (h == 0) continue;  // no rank has this DOF
+    // The same h on every rank; the perturbed value rounded, so the step is exactly the one taken.
+    double hPlus = 0, hMinus = 0;
+    if (mine) {
+      auto v = xt->getDataNonConst(0);
+      v[lj] = xj + h;
+      hPlus = v[lj] - xj;
+    }
+    residual(model, xp, lambda, fPlus);
+    if (mine) {
+      auto v = xt->getDataNonConst(0);
+      v[lj] = xj - h;
+      hMinus = xj - v[lj];
+    }
+    residual(model, xp, lambda, fMinus);
+    if (mine) xt->getDataNonConst(0)[lj] = xj;
+    double steps[2] = {hPlus, hMinus}, taken[2];
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 2, steps, taken);
+    result.residualEvaluations += 2;
+
+    const auto found = columns.find(j);
+    if (found != columns.end())
+      for (const auto& [r, w] : found->second) wColumn[r] = w;
+    const auto a = fp->getData(0), b = fm->getData(0);
+    for (LO r = 0; r < numRows; ++r) {
+      // Central differences, and where the residual has a kink within ±h (a contact opening or
+      // closing, stick turning to slip) the one-sided difference on the side W was computed on: the
+      // closest of the three is the reference.
+      const double w = wColumn[r];
+      const double candidates[3] = {(a[r] - b[r]) / (taken[0] + taken[1]), (a[r] - f0[r]) / taken[0],
+                                    (f0[r] - b[r]) / taken[1]};
+      double d = candidates[0];
+      for (double c : candidates)
+        if (std::abs(w - c) < std::abs(w - d)) d = c;
+      if (w == 0 && d == 0) continue;
+      const double difference = std::abs(w - d);
+      const double scale = std::max(std::abs(w), options.rowFloor * rowMax[r]);
+      double e = std::numeric_limits<double>::infinity();
+      if (std::isfinite(d)) e = scale > 0 ? difference / scale : (difference > 0 ? e : 0.0);
+      sums[0] += std::isfinite(d) ? difference * difference : 0.0;
+      sums[1] += w * w;
+      if (e > localWorst) {
+        localWorst = e;
+        worstRow = rowMap.getGlobalElement(r);
+        worstColumn = j;
+        worstW = w;
+        worstD = d;
+      }
+    }
+    if (found != columns.end())
+      for (const auto& [r, w] : found->second) wColumn[r] = 0.0;
+  }
+
+  // The worst entry over the ranks: the largest error, then the lowest (row, column).
+  double global = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &localWorst, &global);
+  const long long none = std::numeric_limits<long long>::max();
+  const long long span = static_cast<long long>(last) + 1;
+  long long key = localWorst == global && worstRow >= 0 ? worstRow * span + worstColumn : none, globalKey = none;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 1, &key, &globalKey);
+  double values[2] = {key == globalKey ? worstW : 0.0, key == globalKey ? worstD : 0.0}, globalValues[2];
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, values, globalValues);
+  double globalSums[2];
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, sums, globalSums);
+  result.worstRelativeError = std::max(global, 0.0);
+  if (globalKey != none) {
+    result.row = globalKey / span;
+    result.column = globalKey % span;
+  }
+  result.assembled = globalValues[0];
+  result.finiteDifference = globalValues[1];
+  result.normwiseError = globalSums[1] > 0 ? std::sqrt(globalSums[0] / globalSums[1]) : std::sqrt(globalSums[0]);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &seconds, &result.seconds);
+  return result;
+}
+
+}  // namespace
+
+JacobianComparison JacobianCheck::compare(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x,
+                                          double lambda, const Thyra::LinearOpBase<double>& W) const {
+  const auto state = model.saveEvaluationState();
+  const auto gaps = model.trialIncrement();
+  const auto result = compareAt(model, x, lambda, W, options_);
+  model.restoreEvaluationState(*state);
+  requireSameContactState(gaps, model.trialIncrement());
+  return result;
+}
+
+JacobianComparison JacobianCheck::check(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x,
+                                        double lambda) const {
+  const auto state = model.saveEvaluationState();
+  const auto gaps = model.trialIncrement();
+  auto W = model.create_W_op();
+  {
+    auto in = model.createInArgs();
+    auto p = Thyra::createMember(model.get_p_space(0));
+    Thyra::set_ele(0, lambda, p.ptr());
+    in.set_x(Teuchos::rcpFromRef(x));
+    in.set_p(0, p);
+    auto out = model.createOutArgs();
+    out.set_W_op(W);
+    model.evalModel(in, out);
+  }
+  const auto result = compareAt(model, x, lambda, *W, options_);
+  model.restoreEvaluationState(*state);
+  requireSameContactState(gaps, model.trialIncrement());
+  return result;
+}
+
+std::string JacobianCheck::describe(const JacobianComparison& r, const ContactMechanicsModel& model) {
+  const int dim = model.dimension();
+  const auto dof = [dim](GO g) {
+    // Node numbers are Exodus ids (1-based), as in the output file.
+    return "node " + std::to_string(g / dim + 1) + " " + std::string(1, "xyz"[g % dim]);
+  };
+  char text[512];
+  if (r.row < 0) {
+    std::snprintf(text, sizeof text, "worst relative error 0 (W and its finite differences agree exactly)");
+    return text;
+  }
+  std::snprintf(text, sizeof text,
+                "worst relative error %.1e at row %s, column %s (%s), W = %.4g, FD = %.4g; "
+                "norm-wise ||W - W_FD||/||W|| = %.1e",
+                r.worstRelativeError, dof(r.row).c_str(), dof(r.column).c_str(),
+                model.describeCoupling(r.row, r.column).c_str(), r.assembled, r.finiteDifference, r.normwiseError);
+  return text;
+}
+
+}  // namespace contessa::model
