@@ -31,11 +31,11 @@ struct ContactBetaSettings {
   double initialStep = 0.1, minStep = 1e-6, maxStep = 1.0, failedStepFactor = 0.5;
   double finalLoadFactor = 1.0;  ///< the stepper's Max Value
   QuietGrowth quietGrowth = QuietGrowth::Cap;
-  int targetNewtonIterations = 6;
+  int targetNewtonIterations = 6;  ///< QuietGrowth::Newton: the iterations an increment aims at
   /// Beyond the paper's one restart per increment: first-iterate re-checks of a restarted step whose β
   /// was far from 1, and re-solves of converged attempts with other than N_c events (redoAtConvergence),
   /// each at most this many per increment. 0: Table 1 as printed.
-  int maxCorrections = 3;  ///< QuietGrowth::Newton: the iterations an increment aims at
+  int maxCorrections = 3;
 };
 
 /// The step of one attempt.
@@ -68,8 +68,10 @@ class ContactBetaControl {
   double correctByPrediction(const std::vector<SlaveNodeIncrement>& predicted);
 
   /// Restart mode, at the first Newton iterate of a checked attempt (Table 1, i = 1, I_cor = 0).
-  /// True: |β − 1| > Restart Tolerance, stop and restart with β. False: the step stands, its β is
-  /// carried to the next increment, and new contacts are to be switched on.
+  /// True: the step does not stand as planned (standsAsPlanned: with Next Contact Fraction > 0 it must end
+  /// between the predicted N_c-th and next event, otherwise |β − 1| ≤ Restart Tolerance); stop and restart
+  /// with β. False: the step stands, its β is carried to the next increment, and new contacts are to be
+  /// switched on.
   bool restartAtFirstIterate(const std::vector<SlaveNodeIncrement>& firstIterate);
   /// At a converged state of the current attempt (every slave node against the commit): "" accepts it;
   /// otherwise it brought other than N_c counted events and the step is to be solved again with

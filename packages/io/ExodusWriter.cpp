@@ -131,6 +131,13 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
     throw OutputWriteError(path, "cannot create",
                            error != 0 ? systemMessage(error) : std::string("the Exodus library cannot create it"));
   }
+  // HDF5 truncates the file again when it creates it, which frees what was reserved past its end on
+  // ext4 and tmpfs: reserve again, now that the file is HDF5's, for the mesh and records written next.
+  if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) {
+    ex_close(id_);
+    ::close(spaceFd_);
+    throw OutputWriteError(path, "cannot create", systemMessage(error));
+  }
   try {
     const Calls check(path, "cannot create");
     const int id = id_;

@@ -44,7 +44,13 @@ HistoryWriter::HistoryWriter(const std::string& path, std::vector<std::string> c
   if (fd_ < 0) throw OutputWriteError(path_, "cannot create", systemMessage(errno));
   std::string header;
   for (size_t c = 0; c < columns_.size(); ++c) header += (c ? "," : "") + csvField(columns_[c]);
-  append(header + "\n", "cannot write the header to");
+  try {
+    append(header + "\n", "cannot write the header to");
+  } catch (...) {  // the destructor does not run for a constructor that throws
+    ::close(fd_);
+    fd_ = -1;
+    throw;
+  }
 }
 
 HistoryWriter::~HistoryWriter() {

@@ -34,7 +34,12 @@ class GmshSession {
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", 0);
   }
-  ~GmshSession() { gmsh::finalize(); }
+  ~GmshSession() {
+    try {
+      gmsh::finalize();
+    } catch (...) {  // an exception leaving a destructor would terminate the program
+    }
+  }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
 };

@@ -1,6 +1,7 @@
 #include "model/ContactMechanicsModel.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -268,6 +269,7 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   std::vector<LO> local;
   std::vector<int> entry;
   std::vector<double> block;
+  std::string missingCoupling;
   for (auto& interface : contacts_) {
     interface.evaluate(position, lambda, updateTrial,
                        [&](const GlobalIndex* dofs, int n, const double* r, const double* k, const double* drdl) {
@@ -288,10 +290,24 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
                          block.resize(static_cast<std::size_t>(m) * m);
                          for (int a = 0; a < m; ++a)
                            for (int b = 0; b < m; ++b) block[a * m + b] = k[entry[a] * n + entry[b]];
-                         scatter_->addStiffness(local.data(), m, block.data());
+                         // A coupling the graph did not reserve is an internal error; it is agreed on below
+                         // so that no rank leaves the pass while the others wait in its exports.
+                         try {
+                           scatter_->addStiffness(local.data(), m, block.data());
+                         } catch (const std::logic_error& e) {
+                           if (missingCoupling.empty()) missingCoupling = e.what();
+                         }
                        });
   }
   contactScope.reset();
+  if (withStiffness) {
+    int mine = missingCoupling.empty() ? 0 : 1, any = mine;
+    if (comm_->getSize() > 1) Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &mine, &any);
+    if (any != 0)
+      throw std::logic_error(missingCoupling.empty()
+                                 ? "StiffnessScatter: a contact coupling on another rank is not in the matrix graph"
+                                 : missingCoupling);
+  }
   fo = Teuchos::null;
   dl = Teuchos::null;
   force.putScalar(0.0);

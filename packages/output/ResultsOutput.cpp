@@ -37,7 +37,10 @@ std::string columnName(std::string name) {
 }
 
 const std::vector<std::string> kGlobals = {"load_factor", "step_size", "beta", "active_contacts", "newton_iterations"};
-constexpr std::size_t kFixedColumns = 13;  // step .. wall_s; the reactions and contact forces follow
+// The history's columns before the reactions and contact forces (which are also Exodus globals).
+const std::vector<std::string> kFixedColumns = {"step", "lambda", "dlambda", "beta", "attempts",
+                                                "newton_iterations", "active_contacts", "new_contacts",
+                                                "new_events", "stick", "slip", "residual_norm", "wall_s"};
 
 // Rank 0's message on every rank ("" when rank 0 succeeded): only rank 0 writes, so only it knows.
 std::string agree(const model::Comm& comm, std::string message) {
@@ -93,8 +96,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   rootNodeMap_ = rootMap(problem.mesh.numNodes(), comm);
   nodeToRoot_ = rcp(new model::Import(model.ownedNodeMap(), rootNodeMap_));
 
-  columns_ = {"step", "lambda", "dlambda", "beta", "attempts", "newton_iterations", "active_contacts",
-              "new_contacts", "new_events", "stick", "slip", "residual_norm", "wall_s"};
+  columns_ = kFixedColumns;
   const char* axes[] = {"x", "y", "z"};
   for (const auto& set : problem.reactionNodeSets)
     for (int c = 0; c < dim; ++c) columns_.push_back("reaction_" + set + "_" + axes[c]);
@@ -133,7 +135,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       // The history's reactions and contact forces are globals too: force-displacement curves can
       // be plotted from the Exodus file alone, under the same names.
       fields.global = kGlobals;
-      fields.global.insert(fields.global.end(), columns_.begin() + kFixedColumns, columns_.end());
+      fields.global.insert(fields.global.end(), columns_.begin() + kFixedColumns.size(), columns_.end());
       exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
                                                    runRecords(problem.title, run, comm->getSize()), lineBlocks);
       const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
@@ -208,7 +210,7 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
     }
     std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
                                    static_cast<double>(report.newtonIterations)};
-    globals.insert(globals.end(), row.begin() + kFixedColumns, row.end());
+    globals.insert(globals.end(), row.begin() + kFixedColumns.size(), row.end());
 
     // The Exodus step first, then the history row: a history row always has its Exodus step. Both
     // files' disk space is reserved before either is written, so a full disk stops the run with

@@ -66,6 +66,10 @@ class NewtonStatusTests {
   NewtonStatusTests(const model::ContactMechanicsModel& model, Teuchos::RCP<NOX::StatusTest::Generic> convergence,
                     int maxIterations, Teuchos::RCP<NOX::StatusTest::Generic> beforeConvergence = Teuchos::null,
                     std::function<std::string()> redoStep = {});
+  // Its status tests call back into this object (a lambda holding `this`): a copy or a move would leave
+  // them calling the original.
+  NewtonStatusTests(const NewtonStatusTests&) = delete;
+  NewtonStatusTests& operator=(const NewtonStatusTests&) = delete;
 
   Teuchos::RCP<NOX::StatusTest::Generic> test() const { return combo_; }
 

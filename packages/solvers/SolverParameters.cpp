@@ -78,7 +78,9 @@ RCP<const ParameterList> piroValidParameters() {
                   "Predictor = β from the predicted state before the solve (no restart)");
   deck::setBounded(step, "Max Growth Factor", 2.0, 1.0, 1e3, "Contact Beta: largest β (growth of Δλ per increment)");
   deck::setBounded(step, "Max Shrink Factor", 0.05, 1e-6, 1.0, "Contact Beta: smallest β (shrink of Δλ per increment)");
-  deck::setBounded(step, "Restart Tolerance", 0.1, 0.0, 1.0, "Contact Beta, Restart: no restart when |β − 1| is below this");
+  deck::setBounded(step, "Restart Tolerance", 0.1, 0.0, 1.0, "Contact Beta, Restart: no restart when |β − 1| is below this. Applies with Next Contact Fraction = 0 (the paper), "
+                  "when fewer candidates than Contacts Per Step approach, or when a step bound sets β; otherwise the step "
+                  "stands when it ends between the predicted N_c-th and next event (docs/theory-load-stepping.md §11)");
   deck::setBounded(step, "Next Contact Fraction", 0.9, 0.0, 0.999,
                    "Contact Beta: β between β^{N_c} (0 = eq. 13 as printed) and β^{N_c+1} (closing N_c nodes, not N_c + 1)");
   deck::setChoice(step, "Counted Events", "Closures", continuation::countedEventsNames(),
