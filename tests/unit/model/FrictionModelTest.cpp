@@ -20,61 +20,16 @@
 #include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
+#include "ModelHarness.hpp"
 
 namespace {
 
 using namespace contessa;
+using test::evaluate;
+using test::makeModel;
+using test::newtonAt;
 using Teuchos::RCP;
 using Teuchos::rcp;
-
-/// The model keeps a reference to its problem: keep the problem alive as long as the model.
-RCP<model::ContactMechanicsModel> makeModel(const deck::ProblemDefinition& problem) {
-  auto comm = Tpetra::getDefaultComm();
-  Teuchos::ParameterList strat("Stratimikos");
-  strat.set("Linear Solver Type", std::string("MUMPS"));
-  return rcp(new model::ContactMechanicsModel(comm, problem, mesh::partitionMesh(problem.mesh, comm->getSize()),
-                                              solvers::createLinearSolverFactory(strat)));
-}
-
-struct Evaluation {
-  RCP<Thyra::VectorBase<double>> f;
-  RCP<Thyra::LinearOpBase<double>> W;
-};
-
-Evaluation evaluate(model::ContactMechanicsModel& m, const Thyra::VectorBase<double>& x, double lambda, bool withW) {
-  auto in = m.createInArgs();
-  auto p = Thyra::createMember(m.get_p_space(0));
-  Thyra::set_ele(0, lambda, p.ptr());
-  in.set_x(Teuchos::rcpFromRef(x));
-  in.set_p(0, p);
-  Evaluation e;
-  e.f = Thyra::createMember(m.get_f_space());
-  auto out = m.createOutArgs();
-  out.set_f(e.f);
-  if (withW) {
-    e.W = m.create_W_op();
-    out.set_W_op(e.W);
-  }
-  m.evalModel(in, out);
-  return e;
-}
-
-/// Full Newton at load factor λ from x (in place): the residual norms, the last below `tolerance`.
-std::vector<double> newtonAt(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda,
-                             double tolerance) {
-  std::vector<double> norms;
-  for (int it = 0; it < 40; ++it) {
-    auto e = evaluate(m, x, lambda, true);
-    norms.push_back(Thyra::norm_2(*e.f));
-    if (norms.back() < tolerance || !std::isfinite(norms.back())) break;
-    auto lows = Thyra::linearOpWithSolve<double>(*m.get_W_factory(), e.W.getConst());
-    auto dx = Thyra::createMember(m.get_x_space());
-    Thyra::assign(dx.ptr(), 0.0);
-    Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
-    Thyra::Vp_StV(Teuchos::ptrFromRef(x), -1.0, *dx);
-  }
-  return norms;
-}
 
 std::string trace(const std::vector<double>& norms) {
   std::ostringstream s;
@@ -84,7 +39,7 @@ std::string trace(const std::vector<double>& norms) {
 
 /// Converges at λ and commits the increment (as LOCA does after a converged step).
 void convergeAndCommit(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda, double tolerance) {
-  const auto norms = newtonAt(m, x, lambda, tolerance);
+  const auto norms = newtonAt(m, x, lambda, tolerance, 40);
   ASSERT_LT(norms.back(), tolerance) << "no convergence at load factor " << lambda << ": " << trace(norms);
   evaluate(m, x, lambda, false);
   m.commitState();
@@ -230,7 +185,7 @@ TEST_P(SlipToleranceModelTest, NewtonConvergesQuadraticallyOnAFrictionalIncremen
   Thyra::assign(x.ptr(), 0.0);
   convergeAndCommit(*m, *x, 0.0, 1e-10);
   convergeAndCommit(*m, *x, 0.5, 1e-10);
-  const auto norms = newtonAt(*m, *x, 1.0, 1e-11);
+  const auto norms = newtonAt(*m, *x, 1.0, 1e-11, 40);
   ASSERT_LT(norms.back(), 1e-11) << trace(norms);
   evaluate(*m, *x, 1.0, false);
   m->commitState();
@@ -267,7 +222,7 @@ TEST(SlipReversalDamping, EndsTheTwoStateCycleOfAFullStep) {
   Thyra::assign(x.ptr(), 0.0);
   convergeAndCommit(*m, *x, 0.0, 1e-10);
   convergeAndCommit(*m, *x, 0.5, 1e-10);
-  const auto norms = newtonAt(*m, *x, 1.0, 1e-11);
+  const auto norms = newtonAt(*m, *x, 1.0, 1e-11, 40);
   if (Tpetra::getDefaultComm()->getRank() == 0) std::printf("Damped full step: residuals %s\n", trace(norms).c_str());
   ASSERT_LT(norms.back(), 1e-11) << trace(norms);
   EXPECT_LE(norms.size(), 12u) << trace(norms);

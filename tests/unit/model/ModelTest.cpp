@@ -15,10 +15,14 @@
 #include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
+#include "ModelHarness.hpp"
 
 namespace {
 
 using namespace contessa;
+using test::evaluate;
+using test::Evaluation;
+using test::newtonAt;
 using Teuchos::RCP;
 using Teuchos::rcp;
 using MEB = Thyra::ModelEvaluatorBase;
@@ -69,37 +73,9 @@ deck::ProblemDefinition makeProblem(const std::string& element) {
   return deck::buildProblem(*p, "");
 }
 
+// The model with the given communicator (the 1-vs-all-ranks tests build one on a single rank too).
 RCP<model::ContactMechanicsModel> makeModel(const RCP<const Teuchos::Comm<int>>& comm, const deck::ProblemDefinition& problem) {
-  Teuchos::ParameterList strat("Stratimikos");
-  strat.set("Linear Solver Type", std::string("MUMPS"));
-  auto lows = solvers::createLinearSolverFactory(strat);
-  return rcp(new model::ContactMechanicsModel(comm, problem, mesh::partitionMesh(problem.mesh, comm->getSize()), lows));
-}
-
-struct Evaluation {
-  RCP<Thyra::VectorBase<double>> f;
-  RCP<Thyra::LinearOpBase<double>> W;
-  RCP<Thyra::MultiVectorBase<double>> dfdp;
-};
-
-Evaluation evaluate(model::ContactMechanicsModel& m, const Thyra::VectorBase<double>& x, double lambda, bool withW) {
-  auto in = m.createInArgs();
-  auto p = Thyra::createMember(m.get_p_space(0));
-  Thyra::set_ele(0, lambda, p.ptr());
-  in.set_x(Teuchos::rcpFromRef(x));
-  in.set_p(0, p);
-  Evaluation e;
-  e.f = Thyra::createMember(m.get_f_space());
-  auto out = m.createOutArgs();
-  out.set_f(e.f);
-  if (withW) {
-    e.W = m.create_W_op();
-    e.dfdp = Thyra::createMembers(m.get_f_space(), 1);
-    out.set_W_op(e.W);
-    out.set_DfDp(0, MEB::Derivative<double>(e.dfdp, MEB::DERIV_MV_JACOBIAN_FORM));
-  }
-  m.evalModel(in, out);
-  return e;
+  return test::makeModel(problem, comm);
 }
 
 // A deformed state that inverts nothing: a smooth field, the same on every partition.
@@ -151,24 +127,6 @@ TEST_P(ModelTest, JacobianAndDfDpMatchCentralDifferences) {
   Thyra::V_StVpStV(fd.ptr(), 0.5 / 1e-3, *fp, -0.5 / 1e-3, *fm);
   Thyra::Vp_StV(fd.ptr(), -1.0, *e.dfdp->col(0));
   EXPECT_LT(Thyra::norm_inf(*fd), 1e-8 * std::max(1.0, Thyra::norm_inf(*e.dfdp->col(0))));
-}
-
-// Full Newton at load factor λ from x (in place), MUMPS for the linear solves; the residual norms.
-std::vector<double> newtonAt(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda,
-                             double tolerance = 1e-10) {
-  std::vector<double> norms;
-  for (int it = 0; it < 30; ++it) {
-    auto e = evaluate(m, x, lambda, true);
-    norms.push_back(Thyra::norm_2(*e.f));
-    if (norms.back() < tolerance || !std::isfinite(norms.back())) break;
-    auto lows = Thyra::linearOpWithSolve<double>(*m.get_W_factory(), e.W.getConst());
-    auto dx = Thyra::createMember(m.get_x_space());
-    Thyra::assign(dx.ptr(), 0.0);
-    const auto status = Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
-    EXPECT_EQ(status.solveStatus, Thyra::SOLVE_STATUS_CONVERGED);
-    Thyra::Vp_StV(Teuchos::ptrFromRef(x), -1.0, *dx);
-  }
-  return norms;
 }
 
 // Full Newton from the undeformed state straight to λ = 1 (no continuation): the residual norms.

@@ -1,0 +1,77 @@
+#pragma once
+// What the model tests share: a model with MUMPS, one evaluation through the Thyra ModelEvaluator
+// (f, and W with ∂f/∂λ when asked), and a plain full Newton at a fixed load factor.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_VectorStdOps.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "deck/ProblemDefinition.hpp"
+#include "mesh/Partition.hpp"
+#include "model/ContactMechanicsModel.hpp"
+#include "solvers/LinearSolverFactory.hpp"
+
+namespace contessa::test {
+
+/// The model keeps a reference to its problem: keep the problem alive as long as the model.
+inline Teuchos::RCP<model::ContactMechanicsModel> makeModel(
+    const deck::ProblemDefinition& problem,
+    const Teuchos::RCP<const Teuchos::Comm<int>>& comm = Tpetra::getDefaultComm()) {
+  Teuchos::ParameterList strat("Stratimikos");
+  strat.set("Linear Solver Type", std::string("MUMPS"));
+  return Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, mesh::partitionMesh(problem.mesh, comm->getSize()),
+                                                       solvers::createLinearSolverFactory(strat)));
+}
+
+struct Evaluation {
+  Teuchos::RCP<Thyra::VectorBase<double>> f;
+  Teuchos::RCP<Thyra::LinearOpBase<double>> W;         ///< when asked for
+  Teuchos::RCP<Thyra::MultiVectorBase<double>> dfdp;   ///< ∂f/∂λ, with W
+};
+
+inline Evaluation evaluate(model::ContactMechanicsModel& m, const Thyra::VectorBase<double>& x, double lambda,
+                           bool withW) {
+  auto in = m.createInArgs();
+  auto p = Thyra::createMember(m.get_p_space(0));
+  Thyra::set_ele(0, lambda, p.ptr());
+  in.set_x(Teuchos::rcpFromRef(x));
+  in.set_p(0, p);
+  Evaluation e;
+  e.f = Thyra::createMember(m.get_f_space());
+  auto out = m.createOutArgs();
+  out.set_f(e.f);
+  if (withW) {
+    e.W = m.create_W_op();
+    e.dfdp = Thyra::createMembers(m.get_f_space(), 1);
+    out.set_W_op(e.W);
+    out.set_DfDp(0, Thyra::ModelEvaluatorBase::Derivative<double>(e.dfdp, Thyra::ModelEvaluatorBase::DERIV_MV_JACOBIAN_FORM));
+  }
+  m.evalModel(in, out);
+  return e;
+}
+
+/// Full Newton at load factor λ from x (in place), MUMPS for the linear solves: the residual norms, the
+/// last below `tolerance` when it converged within `maxIterations`.
+inline std::vector<double> newtonAt(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda,
+                                    double tolerance = 1e-10, int maxIterations = 30) {
+  std::vector<double> norms;
+  for (int it = 0; it < maxIterations; ++it) {
+    auto e = evaluate(m, x, lambda, true);
+    norms.push_back(Thyra::norm_2(*e.f));
+    if (norms.back() < tolerance || !std::isfinite(norms.back())) break;
+    auto lows = Thyra::linearOpWithSolve<double>(*m.get_W_factory(), e.W.getConst());
+    auto dx = Thyra::createMember(m.get_x_space());
+    Thyra::assign(dx.ptr(), 0.0);
+    const auto status = Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
+    EXPECT_EQ(status.solveStatus, Thyra::SOLVE_STATUS_CONVERGED);
+    Thyra::Vp_StV(Teuchos::ptrFromRef(x), -1.0, *dx);
+  }
+  return norms;
+}
+
+}  // namespace contessa::test
