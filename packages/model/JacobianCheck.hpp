@@ -8,8 +8,12 @@
 // Entry error, robust against tiny entries (docs/user-guide.md, "Checking the Jacobian"):
 //   e_ij = |W_ij − D_ij| / max(|W_ij|, τ · max_k |W_ik|),   τ = rowFloor,
 // D_ij = (f_i(x + h_j e_j) − f_i(x − h_j e_j)) / (2 h_j),   h_j = η · max(|x_j|, ‖x‖_∞, 1),  η = step,
-// or, where the residual has a kink within ±h_j (a contact opening or closing, stick turning to slip),
-// the forward or backward difference when it is closer to W_ij (the side W was computed on).
+// W is the derivative with every contact node's status (open, stick, slip, slip reversed) held: where
+// the status of some node changes on one side of ±h_j (the residual's kink: a contact opening or
+// closing, stick turning to slip), D_ij is the one-sided difference on the other side (second order,
+// with a half step added there); where it changes
+// on both sides, h_j shrinks by 1e-2 twice (τ grows as 1/h_j with it, as the noise does), and a column that still straddles kinks is not compared
+// (counted and named in the report: its entries have no derivative to check at this state).
 // Norm-wise: ‖W − D‖_F / ‖W‖_F.
 #include <memory>
 #include <string>
@@ -27,6 +31,8 @@ struct JacobianComparison {
   double assembled = 0, finiteDifference = 0;  ///< W_ij and D_ij there
   double normwiseError = 0;       ///< ‖W − D‖_F / ‖W‖_F
   long residualEvaluations = 0;
+  long nonSmoothColumns = 0;      ///< columns with a contact status change on both sides at every step tried
+  GO firstNonSmoothColumn = -1;
   double seconds = 0;
 };
 
