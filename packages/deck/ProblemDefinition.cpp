@@ -280,6 +280,10 @@ RCP<const ParameterList> problemValidParameters() {
   auto& out = p->sublist("Output", false, "Results files");
   out.set("Reaction Node Sets", Teuchos::Array<std::string>(),
           "Node sets whose reaction forces are summed into the history (reaction_<set>_<x|y|z>)");
+  setChoice(out, "Exodus Layout", "Single File", {"Single File", "Per Rank"},
+            "Single File: <name>.exo, gathered to rank 0 and written there; Per Rank: each of the N ranks writes "
+            "its own piece, <name>.exo.N.r (a spatially decomposed set: ParaView opens it as one data set, "
+            "SEACAS epu joins it), nothing gathered");
   p->sublist("Regression", false, "Expected answers (one sublist per check): Quantity, Step, Expected, tolerances");
   p->sublist("Contact", false, "One sublist per contact interface (any name): slave, master, penalties, friction");
   return p;
@@ -379,6 +383,7 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     requireNodeSet(mesh, s, "Problem/Output/Reaction Node Sets");
     def.reactionNodeSets.push_back(s);
   }
+  def.exodusPerRank = problem.sublist("Output").get<std::string>("Exodus Layout") == "Per Rank";
 
   auto& contactList = problem.sublist("Contact");
   for (const auto& name : validateChildren(contactList, *contactValidParameters(), "Problem/Contact"))

@@ -52,6 +52,7 @@ struct ProblemDefinition {
   std::vector<DirichletCondition> dirichlet;
   std::vector<NodalForce> nodalForces;
   std::vector<std::string> reactionNodeSets;
+  bool exodusPerRank = false;  ///< Problem/Output/Exodus Layout = Per Rank
   std::vector<RegressionCheck> regression;
   /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
   std::vector<contact::ContactInterfaceSpec2D> contacts;

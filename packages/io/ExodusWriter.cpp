@@ -84,6 +84,83 @@ class Calls {
   std::string path_, action_;
 };
 
+// The global ids (1-based, as Exodus numbers) and the Nemesis records of one file of a decomposed set.
+// Nemesis numbers nodes and elements locally (1-based) in its maps; a border node is one that another
+// piece holds too, a border element one with a border node; one node communication map per neighbour,
+// with the neighbour's rank as its id.
+void writeDecomposition(int id, const ExodusDecomposition& d, const mesh::Mesh& mesh, GlobalIndex numNodes,
+                        GlobalIndex numElements, const Calls& check) {
+  if (static_cast<GlobalIndex>(d.globalNodes.size()) != numNodes ||
+      static_cast<GlobalIndex>(d.globalElements.size()) != numElements ||
+      static_cast<GlobalIndex>(d.sharedWith.size()) != mesh.numNodes())
+    throw std::logic_error("ExodusWriter: the decomposition does not match the piece");
+  std::vector<int64_t> ids(d.globalNodes.begin(), d.globalNodes.end());
+  for (int64_t& i : ids) ++i;
+  check(ex_put_id_map(id, EX_NODE_MAP, ids.data()), "the global node ids");
+  ids.assign(d.globalElements.begin(), d.globalElements.end());
+  for (int64_t& i : ids) ++i;
+  check(ex_put_id_map(id, EX_ELEM_MAP, ids.data()), "the global element ids");
+
+  char type[] = "p";  // parallel: one processor per file
+  check(ex_put_init_info(id, d.processors, 1, type), "the decomposition (init info)");
+  check(ex_put_init_global(id, d.globalNumNodes, d.globalNumElements, static_cast<int64_t>(d.globalBlockSizes.size()),
+                           static_cast<int64_t>(mesh.nodeSets.size()), static_cast<int64_t>(mesh.sideSets.size())),
+        "the decomposition (global sizes)");
+  std::vector<int64_t> blockIds, blockSizes(d.globalBlockSizes.begin(), d.globalBlockSizes.end());
+  for (std::size_t b = 0; b < blockSizes.size(); ++b) blockIds.push_back(static_cast<int64_t>(b) + 1);
+  if (!blockIds.empty())
+    check(ex_put_eb_info_global(id, blockIds.data(), blockSizes.data()), "the decomposition (global blocks)");
+
+  std::vector<int64_t> interiorNodes, borderNodes, interiorElements, borderElements;
+  std::vector<char> border(d.sharedWith.size(), 0);
+  std::vector<int> neighbours;
+  for (std::size_t n = 0; n < d.sharedWith.size(); ++n) {
+    border[n] = !d.sharedWith[n].empty();
+    (border[n] ? borderNodes : interiorNodes).push_back(static_cast<int64_t>(n) + 1);
+    for (int r : d.sharedWith[n])
+      if (std::find(neighbours.begin(), neighbours.end(), r) == neighbours.end()) neighbours.push_back(r);
+  }
+  // Line points (rigid surfaces) are drawn by one file only: interior there.
+  for (GlobalIndex n = static_cast<GlobalIndex>(d.sharedWith.size()); n < numNodes; ++n) interiorNodes.push_back(n + 1);
+  std::sort(neighbours.begin(), neighbours.end());
+  int64_t next = 1;
+  for (const auto& block : mesh.blocks) {
+    const int n = mesh::nodesPerCell(block.cellType);
+    for (GlobalIndex e = 0; e < block.numElements(); ++e, ++next) {
+      bool onBorder = false;
+      for (int a = 0; a < n && !onBorder; ++a) onBorder = border[block.connectivity[e * n + a]];
+      (onBorder ? borderElements : interiorElements).push_back(next);
+    }
+  }
+  for (; next <= numElements; ++next) interiorElements.push_back(next);
+  check(ex_put_loadbal_param(id, static_cast<int64_t>(interiorNodes.size()), static_cast<int64_t>(borderNodes.size()), 0,
+                             static_cast<int64_t>(interiorElements.size()), static_cast<int64_t>(borderElements.size()),
+                             static_cast<int64_t>(neighbours.size()), 0, d.processor),
+        "the decomposition (load balance)");
+  check(ex_put_processor_node_maps(id, interiorNodes.data(), borderNodes.data(), nullptr, d.processor),
+        "the decomposition (node maps)");
+  check(ex_put_processor_elem_maps(id, interiorElements.data(), borderElements.data(), d.processor),
+        "the decomposition (element maps)");
+  if (neighbours.empty()) return;
+  std::vector<int64_t> mapIds, mapSizes;
+  std::vector<std::vector<int64_t>> mapNodes(neighbours.size());
+  for (std::size_t n = 0; n < d.sharedWith.size(); ++n)
+    for (int r : d.sharedWith[n])
+      mapNodes[std::lower_bound(neighbours.begin(), neighbours.end(), r) - neighbours.begin()].push_back(
+          static_cast<int64_t>(n) + 1);
+  for (std::size_t k = 0; k < neighbours.size(); ++k) {
+    mapIds.push_back(neighbours[k]);
+    mapSizes.push_back(static_cast<int64_t>(mapNodes[k].size()));
+  }
+  check(ex_put_cmap_params(id, mapIds.data(), mapSizes.data(), nullptr, nullptr, d.processor),
+        "the decomposition (communication maps)");
+  for (std::size_t k = 0; k < neighbours.size(); ++k) {
+    std::vector<int64_t> processors(mapNodes[k].size(), neighbours[k]);
+    check(ex_put_node_cmap(id, mapIds[k], mapNodes[k].data(), processors.data(), d.processor),
+          "the decomposition (communication map)");
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> infoRecords(const std::vector<std::string>& lines) {
@@ -103,7 +180,8 @@ std::vector<std::string> infoRecords(const std::vector<std::string>& lines) {
 void disableHdf5FileLocking() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
 
 ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
-                           const ExodusRecords& records, const std::vector<ExodusLineBlock>& lineBlocks)
+                           const ExodusRecords& records, const std::vector<ExodusLineBlock>& lineBlocks,
+                           const ExodusDecomposition* decomposition)
     : path_(path), mesh_(mesh), fields_(fields) {
   const int dim = mesh.dimension;
   numNodes_ = mesh.numNodes();
@@ -279,6 +357,8 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
                                truth.data()),
             "the element variable truth table");
     }
+    if (decomposition != nullptr)
+      writeDecomposition(id, *decomposition, mesh, numNodes_, mesh.numElements() + segments, check);
     // On disk before the first step: a run that dies at once still leaves a valid file with the mesh.
     check(ex_update(id), "the file (flush)");
   } catch (...) {

@@ -26,6 +26,19 @@ struct ExodusLineBlock {
   std::vector<double> points;  ///< point-major: x0 y0 [z0] x1 y1 [z1] ...; segments join consecutive points
 };
 
+/// One file of a spatially decomposed set (`name.exo.N.r`, N files, this one rank r's): the global ids
+/// that let ParaView and SEACAS `epu` put the pieces together, and the Nemesis decomposition records
+/// (which nodes lie on the border with which other pieces).
+struct ExodusDecomposition {
+  int processor = 0, processors = 1;
+  std::vector<mesh::GlobalIndex> globalNodes;     ///< 0-based global id of each node of the file (line points too)
+  std::vector<mesh::GlobalIndex> globalElements;  ///< 0-based global id of each element of the file (line segments too)
+  mesh::GlobalIndex globalNumNodes = 0, globalNumElements = 0;  ///< of the whole set
+  std::vector<mesh::GlobalIndex> globalBlockSizes;  ///< elements of each block over the whole set
+  /// For each mesh node of the file, the other processors whose files hold it (empty: interior).
+  std::vector<std::vector<int>> sharedWith;
+};
+
 /// What the file says about the run besides the results.
 struct ExodusRecords {
   std::string title = "Contessa results";  ///< cut to 80 characters
@@ -53,8 +66,11 @@ class ExodusWriter {
   /// Creates (clobbers) `path` and writes the mesh (coordinates, blocks, node sets, side sets, names),
   /// the line blocks, the records and the variable names, and flushes it. Throws OutputWriteError
   /// naming the file when it cannot be created or written.
+  /// With `decomposition`, the file is one piece of a decomposed set: `mesh` is the piece (numbered
+  /// from 0), and the global ids and Nemesis records are written too.
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
-               const ExodusRecords& records = {}, const std::vector<ExodusLineBlock>& lineBlocks = {});
+               const ExodusRecords& records = {}, const std::vector<ExodusLineBlock>& lineBlocks = {},
+               const ExodusDecomposition* decomposition = nullptr);
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields, const std::string& title)
       : ExodusWriter(path, mesh, fields, ExodusRecords{title, {}, {}}) {}
   /// Closes the file.

@@ -18,10 +18,11 @@ namespace contessa::output {
 
 using Teuchos::RCP;
 using Teuchos::rcp;
+using Teuchos::rcpFromRef;
 
 namespace {
 
-// A map with every global id 0..n-1 on rank 0: the target of the gathers for writing.
+// A map with every global id 0..n-1 on rank 0: the target of the gathers for writing one file.
 RCP<const model::Map> rootMap(model::GO n, const RCP<const model::Comm>& comm) {
   std::vector<model::GO> ids;
   if (comm->getRank() == 0)
@@ -42,13 +43,45 @@ const std::vector<std::string> kFixedColumns = {"step", "lambda", "dlambda", "be
                                                 "newton_iterations", "active_contacts", "new_contacts",
                                                 "new_events", "stick", "slip", "residual_norm", "wall_s"};
 
-// Rank 0's message on every rank ("" when rank 0 succeeded): only rank 0 writes, so only it knows.
+// A map of the given global ids, in that order, on this rank (others have their own).
+RCP<const model::Map> mapOf(const std::vector<model::GO>& ids, const RCP<const model::Comm>& comm) {
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  return rcp(new model::Map(invalid, Teuchos::ArrayView<const model::GO>(ids), 0, comm));
+}
+
+// The message of the lowest rank that has one, on every rank ("" when none has): a rank only knows
+// its own writes.
 std::string agree(const model::Comm& comm, std::string message) {
+  const int mine = message.empty() ? comm.getSize() : comm.getRank();
+  int first = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &mine, &first);
+  if (first == comm.getSize()) return "";
   int size = static_cast<int>(message.size());
-  Teuchos::broadcast(comm, 0, &size);
+  Teuchos::broadcast(comm, first, &size);
   message.resize(static_cast<std::size_t>(size));
-  if (size > 0) Teuchos::broadcast(comm, 0, size, message.data());
+  Teuchos::broadcast(comm, first, size, message.data());
   return message;
+}
+
+// The owner of every element, on every rank.
+std::vector<int> elementOwners(const model::Map& ownedElements, model::GO numElements) {
+  const auto comm = ownedElements.getComm();
+  std::vector<model::GO> all(static_cast<std::size_t>(numElements));
+  for (model::GO e = 0; e < numElements; ++e) all[e] = e;
+  model::Vector owner(rcpFromRef(ownedElements));
+  owner.putScalar(static_cast<double>(comm->getRank()));
+  model::Vector everywhere(mapOf(all, comm));
+  everywhere.doImport(owner, model::Import(rcpFromRef(ownedElements), everywhere.getMap()), Tpetra::INSERT);
+  std::vector<int> ranks(static_cast<std::size_t>(numElements));
+  const auto values = everywhere.getData(0);
+  for (model::GO e = 0; e < numElements; ++e) ranks[e] = static_cast<int>(values[e]);
+  return ranks;
+}
+
+// SEACAS' name of rank r's file in a set of n: the rank zero-padded to the digits of n.
+std::string pieceSuffix(int n, int r) {
+  const std::string rank = std::to_string(r), count = std::to_string(n);
+  return "." + count + "." + std::string(count.size() - std::min(count.size(), rank.size()), '0') + rank;
 }
 
 std::string formatTime(const char* format) {
@@ -89,12 +122,25 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   const auto comm = model.ownedDofMap()->getComm();
   root_ = comm->getRank() == 0;
   const int dim = problem.mesh.dimension;
-  rootDofMap_ = rootMap(problem.mesh.numNodes() * dim, comm);
-  rootElementMap_ = rootMap(problem.mesh.numElements(), comm);
-  dofToRoot_ = rcp(new model::Import(model.ownedDofMap(), rootDofMap_));
-  elementToRoot_ = rcp(new model::Import(model.ownedElementMap(), rootElementMap_));
-  rootNodeMap_ = rootMap(problem.mesh.numNodes(), comm);
-  nodeToRoot_ = rcp(new model::Import(model.ownedNodeMap(), rootNodeMap_));
+  perRank_ = problem.exodusPerRank;
+  if (perRank_) {
+    piece_ = std::make_unique<mesh::MeshPiece>(
+        mesh::extractPiece(problem.mesh, elementOwners(*model.ownedElementMap(), problem.mesh.numElements()),
+                           comm->getRank()));
+    std::vector<model::GO> dofs;
+    for (model::GO node : piece_->globalNodes)
+      for (int c = 0; c < dim; ++c) dofs.push_back(node * dim + c);
+    fileDofMap_ = mapOf(dofs, comm);
+    fileElementMap_ = mapOf(piece_->globalElements, comm);
+    fileNodeMap_ = mapOf(piece_->globalNodes, comm);
+  } else {
+    fileDofMap_ = rootMap(problem.mesh.numNodes() * dim, comm);
+    fileElementMap_ = rootMap(problem.mesh.numElements(), comm);
+    fileNodeMap_ = rootMap(problem.mesh.numNodes(), comm);
+  }
+  dofToFile_ = rcp(new model::Import(model.ownedDofMap(), fileDofMap_));
+  elementToFile_ = rcp(new model::Import(model.ownedElementMap(), fileElementMap_));
+  nodeToFile_ = rcp(new model::Import(model.ownedNodeMap(), fileNodeMap_));
 
   columns_ = kFixedColumns;
   const char* axes[] = {"x", "y", "z"};
@@ -120,24 +166,60 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     rigidSurfaces_.push_back(rigid);
   }
 
-  exodusPath_ = directory + "/" + name + ".exo";
+  const int ranks = comm->getSize();
+  exodusPath_ = directory + "/" + name + ".exo" + (perRank_ ? "." + std::to_string(ranks) + ".*" : "");
   historyPath_ = directory + "/" + name + ".history.csv";
+  io::ExodusFields fields;
+  for (int c = 0; c < dim; ++c) fields.nodal.push_back(std::string("displ_") + axes[c]);
+  if (model.hasContact())
+    for (const auto& f : model::ContactMechanicsModel::contactFieldNames()) fields.nodal.push_back(f);
+  fields.element = model::ContactMechanicsModel::elementStressNames(dim);
+  // The history's reactions and contact forces are globals too: force-displacement curves can
+  // be plotted from the Exodus file alone, under the same names.
+  fields.global = kGlobals;
+  fields.global.insert(fields.global.end(), columns_.begin() + kFixedColumns.size(), columns_.end());
+  const auto createExodus = [&]() {
+    if (!perRank_) {
+      exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
+                                                   runRecords(problem.title, run, ranks), lineBlocks);
+      return;
+    }
+    // The rigid surfaces are drawn by rank 0's piece; the other pieces hold their blocks empty.
+    io::ExodusDecomposition decomposition;
+    decomposition.processor = comm->getRank();
+    decomposition.processors = ranks;
+    decomposition.globalNodes = piece_->globalNodes;
+    decomposition.globalElements = piece_->globalElements;
+    decomposition.sharedWith = piece_->sharedWith;
+    decomposition.globalNumNodes = problem.mesh.numNodes();
+    decomposition.globalNumElements = problem.mesh.numElements();
+    for (const auto& block : problem.mesh.blocks) decomposition.globalBlockSizes.push_back(block.numElements());
+    std::vector<io::ExodusLineBlock> pieceLines = lineBlocks;
+    for (auto& line : pieceLines) {
+      const auto points = static_cast<mesh::GlobalIndex>(line.points.size()) / dim;
+      decomposition.globalBlockSizes.push_back(std::max<mesh::GlobalIndex>(0, points - 1));
+      for (mesh::GlobalIndex p = 0; p < points; ++p) {
+        if (root_) decomposition.globalNodes.push_back(decomposition.globalNumNodes + p);
+        if (root_ && p + 1 < points) decomposition.globalElements.push_back(decomposition.globalNumElements + p);
+      }
+      decomposition.globalNumNodes += points;
+      decomposition.globalNumElements += std::max<mesh::GlobalIndex>(0, points - 1);
+      if (!root_) line.points.clear();
+    }
+    if (!root_) rigidSurfaces_.clear();
+    exodus_ = std::make_unique<io::ExodusWriter>(directory + "/" + name + ".exo" +
+                                                     pieceSuffix(ranks, comm->getRank()),
+                                                 piece_->mesh, fields, runRecords(problem.title, run, ranks),
+                                                 pieceLines, &decomposition);
+  };
+  // Rank 0 takes the lock before any file is created, so a second run on the same files stops before
+  // it touches them; per rank, every rank creates its piece once the lock is held.
   std::string error;
   if (root_) {
     try {
       lock_ = std::make_unique<io::OutputLock>(directory, name);
       warning_ = lock_->warning();
-      io::ExodusFields fields;
-      for (int c = 0; c < dim; ++c) fields.nodal.push_back(std::string("displ_") + axes[c]);
-      if (model.hasContact())
-        for (const auto& f : model::ContactMechanicsModel::contactFieldNames()) fields.nodal.push_back(f);
-      fields.element = model::ContactMechanicsModel::elementStressNames(dim);
-      // The history's reactions and contact forces are globals too: force-displacement curves can
-      // be plotted from the Exodus file alone, under the same names.
-      fields.global = kGlobals;
-      fields.global.insert(fields.global.end(), columns_.begin() + kFixedColumns.size(), columns_.end());
-      exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
-                                                   runRecords(problem.title, run, comm->getSize()), lineBlocks);
+      if (!perRank_) createExodus();
       const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
                                                        "new_contacts", "new_events", "stick", "slip"};
       history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
@@ -150,6 +232,20 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   }
   error = agree(*comm, error);
   if (!error.empty()) throw InputError(error);
+  if (perRank_) {
+    try {
+      createExodus();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    error = agree(*comm, error);
+    if (!error.empty()) {
+      exodus_.reset();
+      history_.reset();
+      lock_.reset();
+      throw InputError(error);
+    }
+  }
   if (root_ && printTable_) {
     std::printf("%5s %12s %12s %7s %4s %6s %7s %11s %9s\n", "incr", "lambda", "dlambda", "beta", "att", "newton",
                 "contact", "|f|", "time[s]");
@@ -160,81 +256,94 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
 void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) {
   timers::Scope timed(timers::Phase::Output);
   const int dim = problem_.mesh.dimension;
-  // Collective part: every rank computes and sends.
-  model::Vector allX(rootDofMap_);
-  allX.doImport(x, *dofToRoot_, Tpetra::INSERT);
+  const auto& comm = *model_.ownedDofMap()->getComm();
+  // Collective part: every rank computes and sends what the Exodus files show (to rank 0's file, or
+  // to each rank's piece).
+  model::Vector fileX(fileDofMap_);
+  fileX.doImport(x, *dofToFile_, Tpetra::INSERT);
   const auto stresses = model_.elementStresses(x);
-  model::MultiVector allStress(rootElementMap_, stresses->getNumVectors());
-  allStress.doImport(*stresses, *elementToRoot_, Tpetra::INSERT);
+  model::MultiVector fileStress(fileElementMap_, stresses->getNumVectors());
+  fileStress.doImport(*stresses, *elementToFile_, Tpetra::INSERT);
   const auto reactions = model_.reactions(x, report.lambda);
   const auto counts = model_.contactCounts();
   const auto contactForces = model_.contactForces();
-  model::MultiVector allContact(rootNodeMap_, 4);
-  if (model_.hasContact()) allContact.doImport(*model_.contactNodalFields(), *nodeToRoot_, Tpetra::INSERT);
+  model::MultiVector fileContact(fileNodeMap_, 4);
+  if (model_.hasContact()) fileContact.doImport(*model_.contactNodalFields(), *nodeToFile_, Tpetra::INSERT);
 
+  // The history row (its reactions and contact forces are sums over the ranks, known everywhere).
+  std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
+                             static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
+                             static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
+                             static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
+                             static_cast<double>(counts.slip),
+                             report.residualNorm, report.wallSeconds};
+  for (const auto& r : reactions)
+    for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
+  for (const auto& [name, force] : contactForces)
+    for (int c = 0; c < dim; ++c) row.push_back(force[c]);
+
+  const std::string stepText = "cannot write step " + std::to_string(report.step);
+  const auto describe = [&stepText](const std::exception& e) {
+    if (const auto* w = dynamic_cast<const io::OutputWriteError*>(&e)) return stepText + " to " + w->path() + ": " + w->reason();
+    return stepText + ": " + e.what();
+  };
+  // What the user still has: the history's steps, which every Exodus file holds too.
+  const auto kept = [this]() {
+    return rows_.empty() ? std::string(" (no step was written)")
+                         : " (the results keep steps 0 to " + std::to_string(std::llround(rows_.back()[0])) + ")";
+  };
+  // The Exodus step(s) first, then the history row: a history row always has its Exodus step. The
+  // history's disk space is reserved before any Exodus file is written, so a full disk stops the
+  // run with the files holding the same increments.
   std::string error;
-  if (root_) {
-    std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
-                               static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
-                               static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
-                               static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
-                               static_cast<double>(counts.slip),
-                               report.residualNorm, report.wallSeconds};
-    for (const auto& r : reactions)
-      for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
-    for (const auto& [name, force] : contactForces)
-      for (int c = 0; c < dim; ++c) row.push_back(force[c]);
-
-    // Nodal values: the mesh nodes, then the rigid surfaces' points (displaced by λ · motion, no
-    // contact values of their own).
-    const model::GO meshNodes = problem_.mesh.numNodes();
-    const auto totalNodes = static_cast<std::size_t>(exodus_->numNodes());
-    const auto u = allX.getData(0);
-    std::vector<std::vector<double>> nodal(dim, std::vector<double>(totalNodes, 0.0));
-    for (model::GO n = 0; n < meshNodes; ++n)
-      for (int c = 0; c < dim; ++c) nodal[c][n] = u[n * dim + c];
-    std::size_t point = static_cast<std::size_t>(meshNodes);
-    for (const auto& surface : rigidSurfaces_)
-      for (std::size_t p = 0; p < surface.points; ++p, ++point)
-        for (int c = 0; c < dim; ++c) nodal[c][point] = report.lambda * surface.motion[c];
-    if (model_.hasContact())
-      for (std::size_t v = 0; v < 4; ++v) {
-        const auto col = allContact.getData(v);
-        nodal.emplace_back(col.begin(), col.end());
-        nodal.back().resize(totalNodes, 0.0);
+  try {
+    if (history_) history_->reserveRow();
+    if (exodus_) {
+      // Nodal values: the file's mesh nodes, then the rigid surfaces' points (displaced by λ · motion,
+      // no contact values of their own).
+      const auto meshNodes = static_cast<std::size_t>(fileNodeMap_->getNodeNumElements());
+      const auto totalNodes = static_cast<std::size_t>(exodus_->numNodes());
+      const auto u = fileX.getData(0);
+      std::vector<std::vector<double>> nodal(dim, std::vector<double>(totalNodes, 0.0));
+      for (std::size_t n = 0; n < meshNodes; ++n)
+        for (int c = 0; c < dim; ++c) nodal[c][n] = u[n * dim + c];
+      std::size_t point = meshNodes;
+      for (const auto& surface : rigidSurfaces_)
+        for (std::size_t p = 0; p < surface.points; ++p, ++point)
+          for (int c = 0; c < dim; ++c) nodal[c][point] = report.lambda * surface.motion[c];
+      if (model_.hasContact())
+        for (std::size_t v = 0; v < 4; ++v) {
+          const auto col = fileContact.getData(v);
+          nodal.emplace_back(col.begin(), col.end());
+          nodal.back().resize(totalNodes, 0.0);
+        }
+      std::vector<std::vector<double>> element(fileStress.getNumVectors());
+      for (std::size_t v = 0; v < element.size(); ++v) {
+        const auto col = fileStress.getData(v);
+        element[v].assign(col.begin(), col.end());
       }
-    std::vector<std::vector<double>> element(allStress.getNumVectors());
-    for (std::size_t v = 0; v < element.size(); ++v) {
-      const auto col = allStress.getData(v);
-      element[v].assign(col.begin(), col.end());
-    }
-    std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
-                                   static_cast<double>(report.newtonIterations)};
-    globals.insert(globals.end(), row.begin() + kFixedColumns.size(), row.end());
-
-    // The Exodus step first, then the history row: a history row always has its Exodus step. Both
-    // files' disk space is reserved before either is written, so a full disk stops the run with
-    // the two files holding the same increments.
-    try {
-      history_->reserveRow();
+      std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
+                                     static_cast<double>(report.newtonIterations)};
+      globals.insert(globals.end(), row.begin() + kFixedColumns.size(), row.end());
       exodus_->writeStep(report.lambda, nodal, element, globals);
-      history_->writeRow(row);
-      rows_.push_back(row);
-    } catch (const io::OutputWriteError& e) {
-      error = "cannot write step " + std::to_string(report.step) + " to " + e.path() + ": " + e.reason();
-    } catch (const std::exception& e) {
-      error = "cannot write step " + std::to_string(report.step) + ": " + e.what();
     }
-    // What the user still has: both files hold the same increments, up to the last one written.
-    if (!error.empty())
-      error += rows_.empty() ? " (no step was written)"
-                             : " (the results keep steps 0 to " + std::to_string(std::llround(rows_.back()[0])) + ")";
+  } catch (const std::exception& e) {
+    error = describe(e) + kept();
   }
-  error = agree(*model_.ownedDofMap()->getComm(), error);
+  error = agree(comm, error);
+  if (error.empty() && history_) {
+    try {
+      history_->writeRow(row);
+    } catch (const std::exception& e) {
+      error = describe(e) + kept();
+    }
+  }
+  error = agree(comm, error);
   if (!error.empty()) {
     failure_ = error;
     throw std::runtime_error(error);
   }
+  rows_.push_back(row);  // on every rank, so that any rank can say which steps the files keep
   if (root_ && printTable_) {
     std::printf("%5d %12.6g %12.6g %7.3g %4d %6d %7d %11.3e %9.2f\n", report.step, report.lambda, report.dlambda,
                 report.beta, report.attempts, report.newtonIterations, counts.active, report.residualNorm,

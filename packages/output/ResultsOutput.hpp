@@ -1,8 +1,10 @@
 #pragma once
-// Everything a run writes after each converged increment: the Exodus II file, the history CSV and
-// the progress table on stdout (DESIGN.md contracts). Fields are gathered to rank 0, which writes;
-// whether a write succeeded is then agreed by all ranks, so that an output error ends the run on
-// every rank instead of leaving the others waiting in the next collective call.
+// Everything a run writes after each converged increment: the Exodus II results, the history CSV and
+// the progress table on stdout (DESIGN.md contracts). The Exodus results are one file, gathered to
+// rank 0 which writes it, or (Problem/Output/Exodus Layout = Per Rank) one piece per rank, written by
+// each rank from what it holds; the history is written by rank 0. Whether the writes succeeded is then
+// agreed by all ranks, so that an output error ends the run on every rank instead of leaving the
+// others waiting in the next collective call.
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "io/ExodusWriter.hpp"
 #include "io/HistoryWriter.hpp"
 #include "io/OutputLock.hpp"
+#include "mesh/MeshPiece.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/ContinuationDriver.hpp"
 
@@ -26,13 +29,15 @@ struct RunDescription {
 class ResultsOutput : public solvers::IncrementObserver {
  public:
   /// Locks `<directory>/<name>.lock` and creates `<directory>/<name>.exo` and
-  /// `<directory>/<name>.history.csv` on rank 0. Collective: when another run holds the lock or a
-  /// file cannot be created, every rank throws InputError with rank 0's one-line reason.
+  /// `<directory>/<name>.history.csv` on rank 0 (per rank: `<directory>/<name>.exo.N.r` on each rank r
+  /// of N, the rank zero-padded to the digits of N as SEACAS names them). Collective: when another run
+  /// holds the lock or a file cannot be created, every rank throws InputError with the one-line reason
+  /// of the lowest rank that failed.
   ResultsOutput(const deck::ProblemDefinition& problem, const model::ContactMechanicsModel& model,
                 const std::string& directory, const std::string& name, bool printTable,
                 const RunDescription& run = {});
 
-  /// Collective. When rank 0 cannot write the increment, every rank throws std::runtime_error with
+  /// Collective. When a rank cannot write the increment, every rank throws std::runtime_error with
   /// the reason (also kept in failure()); the files keep every increment before it.
   void incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) override;
   void attemptFailed(const solvers::IncrementReport& report) override;
@@ -40,6 +45,7 @@ class ResultsOutput : public solvers::IncrementObserver {
   /// The history so far, by column name (for the deck's regression checks).
   const std::vector<std::string>& historyColumns() const { return columns_; }
   const std::vector<std::vector<double>>& historyRows() const { return rows_; }
+  /// The Exodus file, or for a per-rank set its pattern, e.g. "out/tube.exo.2.*".
   std::string exodusPath() const { return exodusPath_; }
   std::string historyPath() const { return historyPath_; }
   /// Why the output failed ("" while it has not), on every rank.
@@ -66,9 +72,12 @@ class ResultsOutput : public solvers::IncrementObserver {
   std::unique_ptr<io::HistoryWriter> history_;
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
-  Teuchos::RCP<const model::Map> rootDofMap_, rootElementMap_;
-  Teuchos::RCP<const model::Map> rootNodeMap_;
-  Teuchos::RCP<const model::Import> dofToRoot_, elementToRoot_, nodeToRoot_;
+  // What this rank's Exodus file shows (Single File: the whole mesh on rank 0, nothing elsewhere; Per
+  // Rank: this rank's piece), as maps numbered in the file's order, and the imports of the owned values.
+  bool perRank_ = false;
+  std::unique_ptr<mesh::MeshPiece> piece_;
+  Teuchos::RCP<const model::Map> fileDofMap_, fileElementMap_, fileNodeMap_;
+  Teuchos::RCP<const model::Import> dofToFile_, elementToFile_, nodeToFile_;
 };
 
 }  // namespace contessa::output
