@@ -280,3 +280,117 @@ TEST(ContactSurface, RigidQuadChecksNameTheParameter) {
 }
 
 }  // namespace
+
+// ---- Finite-difference checks of the interface at the selector's edge cases --------------------------------
+namespace fd {
+
+// A deformable master of mesh nodes 0 … n−1 (their positions in `x`, 3 per node) and one slave node n.
+struct Setup {
+  std::vector<std::array<int, 4>> faces;  ///< node ids, oriented
+  std::vector<double> x;                  ///< positions of all nodes, slave last
+};
+
+cc::ContactInterfaceSpec spec(const Setup& s) {
+  cc::ContactInterfaceSpec spec;
+  spec.name = "fd";
+  spec.dimension = 3;
+  const int slave = static_cast<int>(s.x.size() / 3) - 1;
+  spec.slaveNodes = {slave};
+  spec.slaveAreas = {0.7};
+  spec.slaveFacetLengths = {1.0};
+  for (const auto& f : s.faces) spec.masterFacets.insert(spec.masterFacets.end(), f.begin(), f.end());
+  spec.law.normalPenalty = 1e3;
+  return spec;
+}
+
+// The assembled residual and tangent (dense, over every node's dofs) of one evaluation without history.
+void evaluate(cc::ContactInterfaceBase& i, const std::vector<double>& x, std::vector<double>& r,
+              std::vector<double>& k, int& elements) {
+  const std::size_t n = x.size();
+  r.assign(n, 0.0);
+  k.assign(n * n, 0.0);
+  elements = 0;
+  i.evaluate([&](cc::GlobalIndex node, double* p) { for (int c = 0; c < 3; ++c) p[c] = x[3 * node + c]; }, 0.0, false,
+             [&](const cc::GlobalIndex* dofs, int m, const double* re, const double* ke, const double*) {
+               ++elements;
+               for (int a = 0; a < m; ++a) {
+                 if (dofs[a] < 0) continue;
+                 r[dofs[a]] += re[a];
+                 for (int b = 0; b < m; ++b)
+                   if (dofs[b] >= 0) k[dofs[a] * n + dofs[b]] += ke[a * m + b];
+               }
+             });
+}
+
+// The tangent against central differences of the residual over every dof; the selection must be `kind`.
+void expectTangentMatchesDifferences(const Setup& s, cc::SelectionKind kind) {
+  const auto interface = cc::makeContactInterface(spec(s), {1});
+  // The selection the evaluation makes, from the selector on the same faces.
+  std::vector<cc::MasterFacetNodes<cc::Quad4Facet>> faces;
+  for (std::size_t f = 0; f < s.faces.size(); ++f) {
+    cc::MasterFacetNodes<cc::Quad4Facet> m;
+    m.id = static_cast<int>(f);
+    for (int a = 0; a < 4; ++a) {
+      m.nodes[a] = s.faces[f][a];
+      for (int c = 0; c < 3; ++c) m.x[a][c] = s.x[3 * s.faces[f][a] + c];
+    }
+    faces.push_back(m);
+  }
+  const std::size_t n = s.x.size();
+  const P slave{s.x[n - 3], s.x[n - 2], s.x[n - 1]};
+  const auto selection = cc::FacetSelector<cc::Quad4Facet>().select(slave, faces);
+  ASSERT_EQ(selection.kind, kind);
+  ASSERT_LT(selection.gap, 0.0);
+
+  std::vector<double> r, k, rp, rm, kk;
+  int elements = 0;
+  evaluate(*interface, s.x, r, k, elements);
+  ASSERT_EQ(elements, 1);
+  double scale = 0;
+  for (double v : k) scale = std::max(scale, std::abs(v));
+  const double h = 1e-6;
+  double worst = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    auto xp = s.x, xm = s.x;
+    xp[j] += h;
+    xm[j] -= h;
+    int ep = 0, em = 0;
+    evaluate(*interface, xp, rp, kk, ep);
+    evaluate(*interface, xm, rm, kk, em);
+    ASSERT_EQ(ep, 1);
+    ASSERT_EQ(em, 1);
+    for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, std::abs((rp[i] - rm[i]) / (2 * h) - k[i * n + j]));
+  }
+  EXPECT_LT(worst, 1e-6 * scale) << "largest |K - FD| " << worst << " of max |K| " << scale;
+}
+
+}  // namespace fd
+
+// Under a valley (a concave edge seen from the slave), in the wedge where the node projects outside both
+// faces: AtEdge, the element on the chosen face extended beyond its edge. Two faces, nodes 0–5, slave 6.
+TEST(ContactInterface3DTangent, AtAValleyEdgeMatchesFiniteDifferences) {
+  fd::Setup s;
+  s.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}};
+  s.x = {0, 0, 0, 1, 0, 0, 2, 0, 0.6, 0, 1, 0, 1, 1.05, 0, 2, 1, 0.6,  // B rises: a valley along x = 1
+         1.004, 0.45, -0.01};                                           // below the edge, in the wedge
+  fd::expectTangentMatchesDifferences(s, cc::SelectionKind::AtEdge);
+}
+
+// Under a convex ridge a penetrating node lies inside both faces: the smaller |g_N| (OnFacet) near the edge.
+TEST(ContactInterface3DTangent, UnderAConvexRidgeMatchesFiniteDifferences) {
+  fd::Setup s;
+  s.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}};
+  s.x = {0, 0, 0, 1, 0, 0, 2, 0, -0.6, 0, 1, 0, 1, 1.05, 0, 2, 1, -0.6, 0.98, 0.45, -0.02};
+  fd::expectTangentMatchesDifferences(s, cc::SelectionKind::OnFacet);
+}
+
+// Outside a concave corner (three faces of a cavity, normals into it): AtVertex, the element on the face
+// most in line with the node, extended. Nodes 0–6, slave 7.
+TEST(ContactInterface3DTangent, AtAConcaveCornerVertexMatchesFiniteDifferences) {
+  fd::Setup s;
+  // The corner at node 0 of the cube [−1, 0]³, faces ordered so their normals point into the cube (−x, −y, −z).
+  s.faces = {{0, 1, 2, 3}, {0, 3, 4, 5}, {0, 5, 6, 1}};
+  s.x = {0, 0, 0, 0, -1, 0, -1, -1.1, 0, -1, 0, 0, -1, 0, -1, 0, 0, -1, 0, -1, -1,
+         0.1, 0.2, 0.3};
+  fd::expectTangentMatchesDifferences(s, cc::SelectionKind::AtVertex);
+}
