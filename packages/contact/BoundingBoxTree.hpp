@@ -3,7 +3,7 @@
 // box is enlarged by a search distance; a slave node's candidates are the facets whose enlarged box
 // contains it. Building is O(m log m) (median splits), a query O(log m + k), so n slave nodes against
 // m facets cost O((n + m) log m) instead of the brute-force O(n·m). The local choice among the
-// candidates is SegmentSelector2D's job.
+// candidates is FacetSelector's job.
 #include "contact/SmallMatrix.hpp"
 
 #include <cstddef>

@@ -8,7 +8,7 @@
 
 namespace contessa::contact {
 
-/// A slipping node has no tangential stiffness along its slip (eq. 27 with one surface coordinate), so a
+/// A slipping node has no tangential stiffness along its slip (eq. 27 along the slip direction), so a
 /// Newton step can carry it across its whole stick range into slip the other way, and the next step back:
 /// the two-state cycle of nearly unloaded nodes (MOOSE's ping-pong, Code_Aster's "sliding forward/backward"
 /// cycle, docs/theory-contact.md §5). This class watches each slave node's trial state from iterate to
@@ -36,16 +36,21 @@ class SlipReversalDamping {
 
   /// Compares the node's new trial state with the one of the previous iterate (the committed state at the
   /// first iterate of an increment). Returns true when the slip direction has just reversed.
-  bool observe(std::size_t node, const ContactHistory<1>& previous, const ContactHistory<1>& current) {
+  template <int NXi>
+  bool observe(std::size_t node, const ContactHistory<NXi>& previous, const ContactHistory<NXi>& current) {
     if (current == previous) return false;  // the same iterate evaluated again
     NodeState& n = nodes_[node];
     const bool bothSlip = previous.status == ContactStatus::Slip && current.status == ContactStatus::Slip &&
                           previous.segment == current.segment;
-    const double dt = current.tangentialTraction[0] - previous.tangentialTraction[0];
-    const double dxi = current.xi[0] - previous.xi[0];
-    const bool reversed = bothSlip && previous.tangentialTraction[0] * current.tangentialTraction[0] < 0.0;
-    if (reversed && dt * dxi > 0.0) {
-      n.secant = dt / dxi;  // > 0: the traction follows the motion across the stick range
+    // With two surface coordinates (3D) the tractions and the slip are compared in the parent coordinates:
+    // reversed when the traction turns by more than 90°, the secant is Δt·Δξ/Δξ·Δξ along the slip.
+    const Vector<NXi> dt = subtract(current.tangentialTraction, previous.tangentialTraction);
+    const Vector<NXi> dxi = subtract(current.xi, previous.xi);
+    const bool reversed = bothSlip && dot(previous.tangentialTraction, current.tangentialTraction) < 0.0;
+    const double dtAlong = dot(dt, dxi);
+    if (reversed && dtAlong > 0.0) {
+      // > 0: the traction follows the motion (one coordinate: Δt/Δξ, written so to keep 2D answers bit-identical)
+      n.secant = NXi == 1 ? dt[0] / dxi[0] : dtAlong / dot(dxi, dxi);
       n.streak = 0;
       ++reversals_;
     } else if (current.status == ContactStatus::Slip && n.secant > 0.0 && ++n.streak >= kReleaseIterates) {

@@ -7,6 +7,7 @@
 
 #include "common/Error.hpp"
 #include "deck/ParameterValidation.hpp"
+#include "contact/ContactSurface.hpp"
 #include "mesh/MeshFactory.hpp"
 #include "mesh/MeshMerge.hpp"
 
@@ -92,44 +93,6 @@ void requireNodeSet(const mesh::Mesh& mesh, const std::string& name, const std::
   throw InputError(where + ": node set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
 }
 
-// Nodes of a side set with their tributary lengths (half of each adjacent side) and facet lengths (mean
-// length of the adjacent sides: the length the slip tolerance refers to), and its sides as node pairs in
-// element order: counter-clockwise elements make the outward normal point to the right.
-struct SideSetGeometry {
-  std::vector<GlobalIndex> nodes;
-  std::vector<double> areas;
-  std::vector<double> facetLengths;
-  std::vector<std::array<GlobalIndex, 2>> segments;
-};
-
-SideSetGeometry sideSetGeometry(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where) {
-  requireInput(mesh.dimension == 2, where + ": contact is implemented in 2D (node-to-segment) only so far");
-  SideSetGeometry g;
-  std::map<GlobalIndex, double> area;
-  std::map<GlobalIndex, int> sides;
-  for (std::size_t i = 0; i < set.elements.size(); ++i) {
-    const auto loc = mesh.locate(set.elements[i]);
-    const auto& block = mesh.blocks[loc.block];
-    const int nn = mesh::nodesPerCell(block.cellType);
-    const auto local = mesh::sideNodes(block.cellType, set.sides[i]);
-    const GlobalIndex a = block.connectivity[loc.local * nn + local[0]];
-    const GlobalIndex b = block.connectivity[loc.local * nn + local[1]];
-    const double length = std::hypot(mesh.coordinates[2 * b] - mesh.coordinates[2 * a],
-                                      mesh.coordinates[2 * b + 1] - mesh.coordinates[2 * a + 1]);
-    area[a] += 0.5 * length;
-    area[b] += 0.5 * length;
-    ++sides[a];
-    ++sides[b];
-    g.segments.push_back({a, b});
-  }
-  for (const auto& [node, tributary] : area) {
-    g.nodes.push_back(node);
-    g.areas.push_back(tributary);
-    g.facetLengths.push_back(2.0 * tributary / sides[node]);  // mean of the adjacent sides
-  }
-  return g;
-}
-
 void requireSideSet(const mesh::Mesh& mesh, const std::string& name, const std::string& where) {
   if (mesh.hasSideSet(name)) return;
   std::vector<std::string> known;
@@ -137,11 +100,12 @@ void requireSideSet(const mesh::Mesh& mesh, const std::string& name, const std::
   throw InputError(where + ": side set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
 }
 
-std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& list, const std::string& name,
-                                                          const mesh::Mesh& mesh) {
+std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
+                                                        const mesh::Mesh& mesh) {
   const std::string where = "Problem/Contact/" + name;
-  contact::ContactInterfaceSpec2D spec;
+  contact::ContactInterfaceSpec spec;
   spec.name = name;
+  spec.dimension = mesh.dimension;
   spec.law.normalPenalty = list.get<double>("Normal Penalty");
   spec.law.tangentialPenalty = list.get<double>("Tangential Penalty");
   spec.law.frictionCoefficient = list.get<double>("Friction Coefficient");
@@ -152,43 +116,47 @@ std::vector<contact::ContactInterfaceSpec2D> buildContact(const ParameterList& l
 
   const std::string slaveSet = list.get<std::string>("Slave Side Set");
   const std::string masterSet = list.get<std::string>("Master Side Set");
-  const auto& points = list.sublist("Rigid Surface").get<Teuchos::Array<double>>("Points");
-  const auto& motion = list.sublist("Rigid Surface").get<Teuchos::Array<double>>("Motion");
+  const auto& rigidList = list.sublist("Rigid Surface");
+  const auto& points = rigidList.get<Teuchos::Array<double>>("Points");
+  const auto& facets = rigidList.get<Teuchos::Array<int>>("Facets");
+  const auto& motion = rigidList.get<Teuchos::Array<double>>("Motion");
   requireInput(!slaveSet.empty(), where + "/Slave Side Set: required");
   requireSideSet(mesh, slaveSet, where + "/Slave Side Set");
   const bool rigid = masterSet.empty();
   requireInput(rigid != points.empty(),
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
-  const auto slave = sideSetGeometry(mesh, mesh.sideSet(slaveSet), where + "/Slave Side Set");
+  const auto slave = contact::ContactSurface::fromSideSet(mesh, mesh.sideSet(slaveSet), where + "/Slave Side Set");
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
   spec.slaveFacetLengths = slave.facetLengths;
   if (rigid) {
-    requireInput(points.size() >= 4 && points.size() % 2 == 0,
-                 where + "/Rigid Surface/Points: expected x0, y0, x1, y1, ... (at least two points)");
-    requireInput(motion.size() == 2, where + "/Rigid Surface/Motion: expected two values (the displacement at load factor 1)");
     requireInput(!list.get<bool>("Two Pass"), where + "/Two Pass: a rigid master has no slave side of its own");
     spec.rigidMaster = true;
-    for (Teuchos::Array<double>::size_type i = 0; i + 1 < points.size(); i += 2) spec.rigidSurface.points.push_back({points[i], points[i + 1]});
-    spec.rigidSurface.motion = {motion[0], motion[1]};
-    for (std::size_t i = 1; i < spec.rigidSurface.points.size(); ++i)
-      requireInput(spec.rigidSurface.points[i] != spec.rigidSurface.points[i - 1],
-                   where + "/Rigid Surface/Points: two consecutive points coincide");
+    auto& surface = spec.rigidSurface;
+    surface.points.assign(points.begin(), points.end());
+    surface.motion.assign(motion.begin(), motion.end());
+    surface.facets.assign(facets.begin(), facets.end());
+    // 2D without Facets: the points are a polyline, one segment per consecutive pair.
+    if (mesh.dimension == 2 && surface.facets.empty())
+      for (int i = 0; i + 1 < static_cast<int>(points.size() / 2); ++i) surface.facets.insert(surface.facets.end(), {i, i + 1});
+    contact::validateRigidSurface(surface, mesh.dimension, where + "/Rigid Surface");
     return {spec};
   }
+  requireInput(facets.empty() && motion.empty(),
+               where + "/Rigid Surface: Facets and Motion belong to a rigid master (no Master Side Set)");
   requireSideSet(mesh, masterSet, where + "/Master Side Set");
   requireInput(masterSet != slaveSet, where + "/Master Side Set: must differ from the Slave Side Set");
-  const auto master = sideSetGeometry(mesh, mesh.sideSet(masterSet), where + "/Master Side Set");
-  spec.masterSegments = master.segments;
+  const auto master = contact::ContactSurface::fromSideSet(mesh, mesh.sideSet(masterSet), where + "/Master Side Set");
+  spec.masterFacets = master.facets;
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
-  contact::ContactInterfaceSpec2D swapped = spec;
+  contact::ContactInterfaceSpec swapped = spec;
   swapped.name = name + " (second pass)";
   swapped.slaveNodes = master.nodes;
   swapped.slaveAreas = master.areas;
   swapped.slaveFacetLengths = master.facetLengths;
-  swapped.masterSegments = slave.segments;
+  swapped.masterFacets = slave.facets;
   return {spec, swapped};
 }
 
@@ -247,13 +215,19 @@ RCP<const ParameterList> regressionValidParameters() {
 
 RCP<const ParameterList> contactValidParameters() {
   auto p = rcp(new ParameterList("Contact Interface"));
-  p->set("Slave Side Set", std::string(""), "Side set whose nodes may not penetrate the master (node-to-segment); required");
+  p->set("Slave Side Set", std::string(""), "Side set whose nodes may not penetrate the master (node-to-segment in 2D, node-to-face in 3D); required");
   p->set("Master Side Set", std::string(""),
          "Side set of a deformable master body; leave empty for a rigid master (Rigid Surface)");
-  auto& rigid = p->sublist("Rigid Surface", false, "A rigid master: a polyline moving rigidly with the load factor");
+  auto& rigid = p->sublist("Rigid Surface", false,
+                           "A rigid master moving rigidly with the load factor: a polyline (2D) or quadrilaterals (3D)");
   rigid.set("Points", Teuchos::Array<double>(),
-            "x0, y0, x1, y1, ...: the rigid body lies to the left of the direction of traversal");
-  rigid.set("Motion", Teuchos::Array<double>(), "Displacement of the rigid surface at load factor 1 (x, y)");
+            "2D: x0, y0, x1, y1, ...: a polyline; the rigid body lies to the left of the direction of traversal. "
+            "3D: x0, y0, z0, x1, y1, z1, ...: the corners of the Facets");
+  rigid.set("Facets", Teuchos::Array<int>(),
+            "3D (required): 4 point indices (0-based) per quadrilateral, counter-clockwise seen from the slave "
+            "side, so that the normal (right-hand rule) points out of the rigid body towards the slave. "
+            "2D: empty = consecutive points; else 2 indices per segment");
+  rigid.set("Motion", Teuchos::Array<double>(), "Displacement of the rigid surface at load factor 1 (x, y[, z])");
   setNonNegative(*p, "Normal Penalty", 0.0, "Normal penalty ε_N (pressure per unit penetration), eq. (16); required");
   setNonNegative(*p, "Tangential Penalty", 0.0,
                  "Tangential (stick) penalty ε_T, eq. (17): with Slip Tolerance = 0 the constant ε_T (required when "

@@ -10,7 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "contact/ContactInterface2D.hpp"
+#include "contact/ContactInterface.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
 #include "mesh/Mesh.hpp"
@@ -55,7 +55,7 @@ struct ProblemDefinition {
   bool exodusPerRank = false;  ///< Problem/Output/Exodus Layout = Per Rank
   std::vector<RegressionCheck> regression;
   /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
-  std::vector<contact::ContactInterfaceSpec2D> contacts;
+  std::vector<contact::ContactInterfaceSpec> contacts;
 };
 
 /// Valid parameters of each part, with docs and defaults (published for the deck reference).

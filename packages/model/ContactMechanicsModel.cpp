@@ -31,7 +31,7 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const 
     std::vector<char> evaluates(spec.slaveNodes.size());
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k)
       evaluates[k] = partition.nodeOwner[spec.slaveNodes[k]] == comm_->getRank();
-    contacts_.emplace_back(spec, evaluates);
+    contacts_.push_back(contact::makeContactInterface(spec, evaluates));
   }
   solids_ = std::make_unique<SolidAssembler>(problem_, partition.ownedElements(comm_->getRank()),
                                              [this](GlobalIndex dof) { return overlapMap_->getLocalElement(dof); });
@@ -64,7 +64,7 @@ void ContactMechanicsModel::buildMaps(const mesh::Partition& partition) {
   // owner of a slave node sees its master segment wherever it slides.
   for (const auto& spec : problem_.contacts) {
     overlap.insert(overlap.end(), spec.slaveNodes.begin(), spec.slaveNodes.end());
-    for (const auto& seg : spec.masterSegments) overlap.insert(overlap.end(), seg.begin(), seg.end());
+    overlap.insert(overlap.end(), spec.masterFacets.begin(), spec.masterFacets.end());
   }
   std::sort(overlap.begin(), overlap.end());
   overlap.erase(std::unique(overlap.begin(), overlap.end()), overlap.end());
@@ -103,24 +103,25 @@ void ContactMechanicsModel::buildGraph() {
   // deformable master surface, so a node can slide anywhere on it without a graph rebuild. In 2D the
   // surfaces are small (O(√n) nodes); 3D will need a search-based reservation.
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    const auto& spec = contacts_[i].spec();
+    const auto& spec = contacts_[i]->spec();
     if (spec.rigidMaster) continue;
     std::vector<LO> masterDofs;
-    for (const auto& seg : spec.masterSegments)
-      for (GO node : seg)
-        for (int c = 0; c < dim_; ++c) masterDofs.push_back(overlapMap_->getLocalElement(node * dim_ + c));
+    for (GO node : spec.masterFacets)
+      for (int c = 0; c < dim_; ++c) masterDofs.push_back(overlapMap_->getLocalElement(node * dim_ + c));
     std::sort(masterDofs.begin(), masterDofs.end());
     masterDofs.erase(std::unique(masterDofs.begin(), masterDofs.end()), masterDofs.end());
-    // A master segment's own couplings exist in the global graph (its element), but this rank's
+    // A master facet's own couplings exist in the global graph (its element), but this rank's
     // overlap rows of a master node owned elsewhere must hold them too, to receive contact terms.
-    for (const auto& seg : spec.masterSegments)
-      for (GO a : seg)
-        for (GO b : seg)
+    const std::size_t perFacet = spec.nodesPerFacet();
+    for (std::size_t f = 0; f + perFacet <= spec.masterFacets.size(); f += perFacet)
+      for (std::size_t ia = f; ia < f + perFacet; ++ia)
+        for (std::size_t ib = f; ib < f + perFacet; ++ib)
           for (int c = 0; c < dim_; ++c)
             for (int d = 0; d < dim_; ++d)
-              rows[overlapMap_->getLocalElement(a * dim_ + c)].push_back(overlapMap_->getLocalElement(b * dim_ + d));
+              rows[overlapMap_->getLocalElement(spec.masterFacets[ia] * dim_ + c)].push_back(
+                  overlapMap_->getLocalElement(spec.masterFacets[ib] * dim_ + d));
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
-      if (!contacts_[i].evaluatesSlave()[k]) continue;
+      if (!contacts_[i]->evaluatesSlave()[k]) continue;
       for (int c = 0; c < dim_; ++c) {
         const LO s = overlapMap_->getLocalElement(spec.slaveNodes[k] * dim_ + c);
         for (LO m : masterDofs) {
@@ -261,17 +262,15 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   // Contact: each slave node's owner adds its node-to-segment element; rigid masters have no DOFs.
   std::optional<timers::Scope> contactScope(std::in_place, phase(Phase::Contact));
   const auto& X = problem_.mesh.coordinates;
-  const auto position = [&](GlobalIndex node) {
-    contact::Vector<2> p;
-    for (int c = 0; c < 2; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
-    return p;
+  const auto position = [&](GlobalIndex node, double* p) {
+    for (int c = 0; c < dim_; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
   };
   std::vector<LO> local;
   std::vector<int> entry;
   std::vector<double> block;
   std::string missingCoupling;
   for (auto& interface : contacts_) {
-    interface.evaluate(position, lambda, updateTrial,
+    interface->evaluate(position, lambda, updateTrial,
                        [&](const GlobalIndex* dofs, int n, const double* r, const double* k, const double* drdl) {
                          // The DOFs that are unknowns (not those of a rigid master), in local numbering.
                          local.clear();
@@ -404,7 +403,7 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
 
 void ContactMechanicsModel::commitState() {
   solids_->commit();
-  for (auto& c : contacts_) c.commit();
+  for (auto& c : contacts_) c->commit();
   // The history the pass started from has changed: a new request recomputes. The forces of the
   // pass are those of the converged state, which the reactions report.
   passServesEvaluations_ = false;
@@ -412,7 +411,7 @@ void ContactMechanicsModel::commitState() {
 
 void ContactMechanicsModel::rollbackState() {
   solids_->rollback();
-  for (auto& c : contacts_) c.rollback();
+  for (auto& c : contacts_) c->rollback();
   passServesEvaluations_ = false;
   passServesReactions_ = false;
 }
@@ -446,14 +445,14 @@ std::string ContactMechanicsModel::contactTunnelling() const {
   long long local = none, first = none;
   int localCount = 0, count = 0;
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    const auto nodes = contacts_[i].tunnellingNodes();
+    const auto nodes = contacts_[i]->tunnellingNodes();
     localCount += static_cast<int>(nodes.size());
     for (const auto& t : nodes) local = std::min(local, static_cast<long long>(i) * numNodes + t.node);
   }
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &localCount, &count);
   if (count == 0) return "";
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &first);
-  const auto& interface = contacts_[first / numNodes].spec();
+  const auto& interface = contacts_[first / numNodes]->spec();
   // Node numbers are Exodus ids (1-based), as in the output file.
   return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.name + "'" +
          (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + " passed through the master surface";
@@ -470,10 +469,10 @@ std::vector<std::string> ContactMechanicsModel::contactFieldNames() {
 RCP<MultiVector> ContactMechanicsModel::contactNodalFields() const {
   auto out = rcp(new MultiVector(nodeMap_, 4));
   for (const auto& interface : contacts_) {
-    const auto& spec = interface.spec();
-    const auto& states = interface.committedStates();
+    const auto& spec = interface->spec();
+    const auto& states = interface->committedStates();
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
-      if (!interface.evaluatesSlave()[k]) continue;
+      if (!interface->evaluatesSlave()[k]) continue;
       const LO lo = nodeMap_->getLocalElement(spec.slaveNodes[k]);
       const auto& st = states[k];
       // A node on several slave surfaces shows its largest pressure.
@@ -527,7 +526,7 @@ std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const 
 std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrement() const {
   std::vector<contact::SlaveNodeChange> local;
   for (const auto& interface : contacts_) {
-    const auto c = interface.trialChanges();
+    const auto c = interface->trialChanges();
     local.insert(local.end(), c.begin(), c.end());
   }
   return gatherAll(*comm_, local);
@@ -536,7 +535,7 @@ std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrem
 std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::committedIncrement() const {
   std::vector<contact::SlaveNodeChange> local;
   for (const auto& interface : contacts_) {
-    const auto c = interface.committedIncrement();
+    const auto c = interface->committedIncrement();
     local.insert(local.end(), c.begin(), c.end());
   }
   return gatherAll(*comm_, local);
@@ -546,14 +545,12 @@ std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrem
   overlapX_->doImport(x, *importer_, Tpetra::INSERT);
   auto u = overlapX_->getData(0);
   const auto& X = problem_.mesh.coordinates;
-  const auto position = [&](GlobalIndex node) {
-    contact::Vector<2> p;
-    for (int c = 0; c < 2; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
-    return p;
+  const auto position = [&](GlobalIndex node, double* p) {
+    for (int c = 0; c < dim_; ++c) p[c] = X[node * dim_ + c] + u[overlapMap_->getLocalElement(node * dim_ + c)];
   };
   std::vector<contact::SlaveNodeChange> local;
   for (const auto& interface : contacts_) {
-    const auto c = interface.changesAt(position, loadFactor);
+    const auto c = interface->changesAt(position, loadFactor);
     local.insert(local.end(), c.begin(), c.end());
   }
   return gatherAll(*comm_, local);
@@ -562,7 +559,7 @@ std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrem
 contact::ContactCounts ContactMechanicsModel::contactCounts() const {
   int local[4] = {0, 0, 0, 0}, global[4] = {0, 0, 0, 0};
   for (const auto& interface : contacts_) {
-    const auto c = interface.committedCounts();
+    const auto c = interface->committedCounts();
     local[0] += c.active;
     local[1] += c.newlyActive;
     local[2] += c.stick;
@@ -572,27 +569,26 @@ contact::ContactCounts ContactMechanicsModel::contactCounts() const {
   return {global[0], global[1], global[2], global[3]};
 }
 
-std::vector<std::pair<std::string, std::array<double, 2>>> ContactMechanicsModel::contactForces() const {
-  std::vector<std::pair<std::string, std::array<double, 2>>> out;
+std::vector<std::pair<std::string, std::vector<double>>> ContactMechanicsModel::contactForces() const {
+  std::vector<std::pair<std::string, std::vector<double>>> out;
   for (const auto& spec : problem_.contacts) {
     const std::string name = spec.name.substr(0, spec.name.find(" (second pass)"));
-    if (out.empty() || out.back().first != name) out.push_back({name, {0.0, 0.0}});
+    if (out.empty() || out.back().first != name) out.push_back({name, std::vector<double>(dim_, 0.0)});
   }
-  for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    const std::string name = contacts_[i].spec().name.substr(0, contacts_[i].spec().name.find(" (second pass)"));
-    const auto f = contacts_[i].committedSlaveForce();
+  for (const auto& interface : contacts_) {
+    const std::string name = interface->spec().name.substr(0, interface->spec().name.find(" (second pass)"));
+    const auto& f = interface->committedSlaveForce();
     for (auto& [n, total] : out)
       if (n == name) {
         // The second pass pushes the other body: the force on the first slave body is its opposite.
-        const double sign = contacts_[i].spec().name == name ? 1.0 : -1.0;
-        total[0] += sign * f[0];
-        total[1] += sign * f[1];
+        const double sign = interface->spec().name == name ? 1.0 : -1.0;
+        for (int c = 0; c < dim_; ++c) total[c] += sign * f[c];
       }
   }
   for (auto& [n, total] : out) {
-    double g[2];
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 2, total.data(), g);
-    total = {g[0], g[1]};
+    std::vector<double> g(dim_);
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, dim_, total.data(), g.data());
+    total = g;
   }
   return out;
 }

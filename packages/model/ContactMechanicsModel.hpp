@@ -9,7 +9,7 @@
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
-#include "contact/ContactInterface2D.hpp"
+#include "contact/ContactInterface.hpp"
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/Partition.hpp"
@@ -72,13 +72,13 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   std::vector<continuation::SlaveNodeIncrement> committedIncrement() const override;
   /// Contact Beta, Restart mode: nodes open at the last commit get no contact force while frozen.
   void setNewContactsFrozen(bool frozen) const {
-    for (auto& c : contacts_) c.setNewContactsFrozen(frozen);
+    for (auto& c : contacts_) c->setNewContactsFrozen(frozen);
     newContactsFrozen_ = frozen;
   }
   bool newContactsFrozen() const { return newContactsFrozen_; }
   /// Force the master exerts on the slave body, per interface (both passes of a two-pass interface
-  /// are summed under the interface name), summed over ranks.
-  std::vector<std::pair<std::string, std::array<double, 2>>> contactForces() const;
+  /// are summed under the interface name), summed over ranks: one component per space dimension.
+  std::vector<std::pair<std::string, std::vector<double>>> contactForces() const;
 
   // Why a solve failed or must not be accepted, in words for the one-line stop message. Collective:
   // every rank calls them at the same point and gets the same text.
@@ -87,7 +87,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// or degenerate (det F <= 0)"; empty when every element was admissible.
   std::string inadmissibleElement() const;
   /// Slave nodes that passed through their master surface between the last commit and the latest
-  /// evaluation and are not in contact now (ContactInterface2D::tunnellingNodes, every interface and
+  /// evaluation and are not in contact now (ContactInterfaceBase::tunnellingNodes, every interface and
   /// rank), e.g. "slave node 41 of interface 'plate' (and 28 more) passed through the master surface";
   /// empty when none did.
   std::string contactTunnelling() const;
@@ -147,7 +147,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   std::vector<double> prescribedValues_;     ///< ū at λ = 1, per prescribed row
   std::vector<char> isPrescribedOverlap_;    ///< per overlapped local DOF
   std::unique_ptr<SolidAssembler> solids_;
-  mutable std::vector<contact::ContactInterface2D> contacts_;
+  mutable std::vector<std::unique_ptr<contact::ContactInterfaceBase>> contacts_;
   Teuchos::RCP<const Map> nodeMap_;
   Teuchos::RCP<Vector> overlapDfdLambda_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;

@@ -157,12 +157,20 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     std::string blockName = contact.name;
     if (problem.mesh.hasBlock(blockName)) blockName += "_rigid";
     const auto& surface = contact.rigidSurface;
+    // 2D: the polyline of the points. 3D: the outline of each quadrilateral, closed (its corners and the
+    // first again; consecutive facets' outlines are joined by one segment).
     io::ExodusLineBlock line{blockName, {}};
-    for (const auto& point : surface.points)
-      for (int c = 0; c < dim; ++c) line.points.push_back(c < 2 ? point[c] : 0.0);
+    const auto addPoint = [&](std::size_t i) {
+      for (int c = 0; c < dim; ++c) line.points.push_back(surface.points[i * dim + c]);
+    };
+    if (dim == 2) {
+      for (std::size_t i = 0; i < surface.points.size() / dim; ++i) addPoint(i);
+    } else {
+      for (std::size_t f = 0; f + 4 <= surface.facets.size(); f += 4)
+        for (int a = 0; a <= 4; ++a) addPoint(static_cast<std::size_t>(surface.facets[f + a % 4]));
+    }
+    RigidSurface rigid{blockName, line.points.size() / dim, std::vector<double>(surface.motion.begin(), surface.motion.end())};
     lineBlocks.push_back(line);
-    RigidSurface rigid{blockName, surface.points.size(), std::vector<double>(dim, 0.0)};
-    for (int c = 0; c < dim && c < 2; ++c) rigid.motion[c] = surface.motion[c];
     rigidSurfaces_.push_back(rigid);
   }
 

@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""compare_history.py A.csv B.csv [--rtol R] [--atol A]
+"""compare_history.py A.csv B.csv [--rtol R] [--atol A] [--ignore COLUMN ...]
 
 Compares two Contessa history files row by row (every numeric column but wall_s) with
-|a - b| <= atol + rtol * max(|a|, |b|), as exodiff does. Exit 0 when they agree."""
+|a - b| <= atol + rtol * max(|a|, |b|), as exodiff does. Exit 0 when they agree. --ignore leaves
+columns out (a test that does so says why)."""
 import argparse
 import csv
 import sys
@@ -12,6 +13,7 @@ parser.add_argument("a")
 parser.add_argument("b")
 parser.add_argument("--rtol", type=float, default=1e-8)
 parser.add_argument("--atol", type=float, default=1e-10)
+parser.add_argument("--ignore", nargs="*", default=[], help="columns not compared")
 args = parser.parse_args()
 
 rows_a = list(csv.DictReader(open(args.a)))
@@ -20,8 +22,9 @@ if len(rows_a) != len(rows_b):
     sys.exit(f"FAIL: {len(rows_a)} rows in {args.a}, {len(rows_b)} in {args.b}")
 if not rows_a:
     sys.exit("FAIL: empty histories")
-columns = [c for c in rows_a[0] if c != "wall_s"]
-if set(columns) != set(c for c in rows_b[0] if c != "wall_s"):
+skipped = {"wall_s", *args.ignore}
+columns = [c for c in rows_a[0] if c not in skipped]
+if set(columns) != set(c for c in rows_b[0] if c not in skipped):
     sys.exit("FAIL: different columns")
 worst = (0.0, None)
 failures = 0

@@ -3,7 +3,7 @@
 #include "contact/ContactLawParameters.hpp"
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/HistoryTransfer.hpp"
-#include "contact/SegmentSelector2D.hpp"
+#include "contact/FacetSelector.hpp"
 #include "contact/PenaltyNormalLaw.hpp"
 #include "contact/SlipReversalDamping.hpp"
 
@@ -324,8 +324,8 @@ TEST(ContactHistoryStore, RollbackRestoresTheCommittedStateExactly) {
 TEST(HistoryTransfer, UnrollsTheContactPointAcrossTheSharedVertex) {
   // Counter-clockwise top of a block: segment 0 from (4,0) to (2,0) (‖ā_1‖ = 1), then segment 1 from
   // (2,0) to (−2,0) (‖ā_1‖ = 2).
-  const cc::MasterSegment2D first{0, {0, 1}, {{{4.0, 0.0}, {2.0, 0.0}}}};
-  const cc::MasterSegment2D second{1, {1, 2}, {{{2.0, 0.0}, {-2.0, 0.0}}}};
+  const cc::MasterFacetNodes<cc::Line2Facet> first{0, {0, 1}, {{{4.0, 0.0}, {2.0, 0.0}}}};
+  const cc::MasterFacetNodes<cc::Line2Facet> second{1, {1, 2}, {{{2.0, 0.0}, {-2.0, 0.0}}}};
   cc::ContactHistory<1> h;
   h.segment = 0;
   h.xi = {0.5};                   // x = 2.5, 0.5 before the vertex

@@ -4,7 +4,7 @@
 // Line2Facet instantiation reproduced to round-off before it was removed.)
 #include "contact/HistoryTransfer.hpp"
 #include "contact/NodeToFacetContact.hpp"
-#include "contact/SegmentSelector2D.hpp"
+#include "contact/FacetSelector.hpp"
 
 #include <gtest/gtest.h>
 
@@ -366,9 +366,9 @@ TEST(NodeToFacetContactLine2, StickingNodeCrossingAVertexKeepsItsTraction) {
   // Two collinear segments of different lengths vs one long segment: after transferHistory the
   // physical tangential traction t_T1/‖ā_1‖ is the same as on the single segment.
   const Element element({1e3, 5e2, 50.0});
-  const cc::MasterSegment2D right{0, {0, 1}, {{{3.0, 0.0}, {1.0, 0.0}}}};
-  const cc::MasterSegment2D left{1, {1, 2}, {{{1.0, 0.0}, {-3.0, 0.0}}}};
-  const cc::MasterSegment2D whole{2, {0, 2}, {{{3.0, 0.0}, {-3.0, 0.0}}}};
+  const cc::MasterFacetNodes<cc::Line2Facet> right{0, {0, 1}, {{{3.0, 0.0}, {1.0, 0.0}}}};
+  const cc::MasterFacetNodes<cc::Line2Facet> left{1, {1, 2}, {{{1.0, 0.0}, {-3.0, 0.0}}}};
+  const cc::MasterFacetNodes<cc::Line2Facet> whole{2, {0, 2}, {{{3.0, 0.0}, {-3.0, 0.0}}}};
   // Committed: stuck at x = 1.4 with a physical traction of 0.6.
   const auto onRight = inContact(0, 0.6, 0.6 * 1.0, ContactStatus::Stick);
   const auto onWhole = inContact(2, -1.4 / 3.0, 0.6 * 3.0, ContactStatus::Stick);

@@ -1,6 +1,6 @@
 // Closest-point projection (eq. 1–5) and the local choice of the master segment of a slave node.
 #include "contact/Projection.hpp"
-#include "contact/SegmentSelector2D.hpp"
+#include "contact/FacetSelector.hpp"
 
 #include <gtest/gtest.h>
 
@@ -221,17 +221,17 @@ TEST(Projection3D, GapIsInvariantUnderRigidRotation) {
 
 namespace {
 
-cc::MasterSegment2D segment(int id, int node1, int node2, Vector<2> x1, Vector<2> x2) {
+cc::MasterFacetNodes<cc::Line2Facet> segment(int id, int node1, int node2, Vector<2> x1, Vector<2> x2) {
   return {id, {node1, node2}, {x1, x2}};
 }
 
 }  // namespace
 
-TEST(SegmentSelector2D, NodeSlidesFromOneSegmentToTheNext) {
+TEST(FacetSelectorLine2, NodeSlidesFromOneSegmentToTheNext) {
   // Top of a block, counter-clockwise: nodes 0 (2, 0.1) → 1 (0, 0) → 2 (−2, 0), a slight convex kink.
-  const std::vector<cc::MasterSegment2D> candidates{segment(10, 0, 1, {2.0, 0.1}, {0.0, 0.0}),
+  const std::vector<cc::MasterFacetNodes<cc::Line2Facet>> candidates{segment(10, 0, 1, {2.0, 0.1}, {0.0, 0.0}),
                                                     segment(11, 1, 2, {0.0, 0.0}, {-2.0, 0.0})};
-  const cc::SegmentSelector2D selector;
+  const cc::FacetSelector<cc::Line2Facet> selector;
   double previousGap = std::numeric_limits<double>::quiet_NaN();
   int switches = 0;
   int previousSegment = 10;
@@ -240,11 +240,11 @@ TEST(SegmentSelector2D, NodeSlidesFromOneSegmentToTheNext) {
     const auto s = selector.select({x, -0.01}, candidates);
     ASSERT_NE(s.kind, cc::SelectionKind::None) << "x = " << x;
     EXPECT_TRUE(s.isPenetrating()) << "x = " << x;
-    if (s.segment != previousSegment) {
+    if (s.facet != previousSegment) {
       ++switches;
       EXPECT_LE(x, 1e-3) << "switched too early";  // the projection leaves segment 10 only past the vertex region
     }
-    previousSegment = s.segment;
+    previousSegment = s.facet;
     if (!std::isnan(previousGap)) {
       EXPECT_NEAR(s.gap, previousGap, 2e-3) << "gap jumps at x = " << x;
     }
@@ -254,16 +254,16 @@ TEST(SegmentSelector2D, NodeSlidesFromOneSegmentToTheNext) {
   EXPECT_EQ(previousSegment, 11);
   // Exactly on the left segment far from the vertex: ξ inside, g_N = −0.01.
   const auto left = selector.select({-1.0, -0.01}, candidates);
-  EXPECT_EQ(left.kind, cc::SelectionKind::OnSegment);
-  EXPECT_EQ(left.segment, 11);
+  EXPECT_EQ(left.kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(left.facet, 11);
   EXPECT_NEAR(left.gap, -0.01, kTol);
 }
 
-TEST(SegmentSelector2D, ConvexCornerUsesTheClosestVertex) {
+TEST(FacetSelectorLine2, ConvexCornerUsesTheClosestVertex) {
   // Block [−2, 0]², counter-clockwise: right side node 1 (0,−2) → node 2 (0,0), top node 2 → node 3 (−2, 0).
-  const std::vector<cc::MasterSegment2D> candidates{segment(0, 1, 2, {0.0, -2.0}, {0.0, 0.0}),
+  const std::vector<cc::MasterFacetNodes<cc::Line2Facet>> candidates{segment(0, 1, 2, {0.0, -2.0}, {0.0, 0.0}),
                                                     segment(1, 2, 3, {0.0, 0.0}, {-2.0, 0.0})};
-  const cc::SegmentSelector2D selector;
+  const cc::FacetSelector<cc::Line2Facet> selector;
   // Outside the corner: both projections fall outside their segments.
   const auto outside = selector.select({0.3, 0.4}, candidates);
   ASSERT_EQ(outside.kind, cc::SelectionKind::AtVertex);
@@ -274,24 +274,24 @@ TEST(SegmentSelector2D, ConvexCornerUsesTheClosestVertex) {
   EXPECT_FALSE(outside.isPenetrating());
   // Penetrating near the corner: inside both, the smaller |g_N| (right side) pushes out the shortest way.
   const auto inside = selector.select({-0.1, -0.3}, candidates);
-  ASSERT_EQ(inside.kind, cc::SelectionKind::OnSegment);
-  EXPECT_EQ(inside.segment, 0);
+  ASSERT_EQ(inside.kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(inside.facet, 0);
   EXPECT_NEAR(inside.gap, -0.1, kTol);
   EXPECT_NEAR(inside.normal[0], 1.0, kTol);
 }
 
-TEST(SegmentSelector2D, ConcaveCornerTakesTheSmallerGap) {
+TEST(FacetSelectorLine2, ConcaveCornerTakesTheSmallerGap) {
   // Valley: body below the polyline (2,2) → (0,0) → (−2,2), ordered counter-clockwise (right to left).
-  const std::vector<cc::MasterSegment2D> candidates{segment(0, 0, 1, {2.0, 2.0}, {0.0, 0.0}),
+  const std::vector<cc::MasterFacetNodes<cc::Line2Facet>> candidates{segment(0, 0, 1, {2.0, 2.0}, {0.0, 0.0}),
                                                     segment(1, 1, 2, {0.0, 0.0}, {-2.0, 2.0})};
-  const cc::SegmentSelector2D selector;
+  const cc::FacetSelector<cc::Line2Facet> selector;
   // Above the valley the node projects inside both arms: the nearer arm wins.
   const auto above = selector.select({0.1, 0.5}, candidates);
-  ASSERT_EQ(above.kind, cc::SelectionKind::OnSegment);
-  EXPECT_EQ(above.segment, 0);
+  ASSERT_EQ(above.kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(above.facet, 0);
   EXPECT_NEAR(above.gap, 0.4 / std::sqrt(2.0), kTol);
   const auto mirrored = selector.select({-0.1, 0.5}, candidates);
-  EXPECT_EQ(mirrored.segment, 1);
+  EXPECT_EQ(mirrored.facet, 1);
   EXPECT_NEAR(mirrored.gap, 0.4 / std::sqrt(2.0), kTol);
   // Penetrating under the valley vertex: projections outside both arms, contact with the vertex,
   // a negative gap and a normal that points up, out of the master body.
@@ -301,36 +301,36 @@ TEST(SegmentSelector2D, ConcaveCornerTakesTheSmallerGap) {
   EXPECT_NEAR(under.gap, -std::hypot(0.05, 0.2), kTol);
   EXPECT_GT(under.normal[1], 0.9);
   EXPECT_TRUE(under.isPenetrating());
-  EXPECT_EQ(under.segment, 0);  // the arm whose projection overshoots least (ξ = 1.075 vs −1.125)
+  EXPECT_EQ(under.facet, 0);  // the arm whose projection overshoots least (ξ = 1.075 vs −1.125)
 }
 
-TEST(SegmentSelector2D, NodeLeavingTheMasterSurfaceIsNotInContact) {
+TEST(FacetSelectorLine2, NodeLeavingTheMasterSurfaceIsNotInContact) {
   // Free end at node 2 (−2, 0): beyond it there is no master surface.
-  const std::vector<cc::MasterSegment2D> candidates{segment(0, 0, 1, {2.0, 0.0}, {0.0, 0.0}),
+  const std::vector<cc::MasterFacetNodes<cc::Line2Facet>> candidates{segment(0, 0, 1, {2.0, 0.0}, {0.0, 0.0}),
                                                     segment(1, 1, 2, {0.0, 0.0}, {-2.0, 0.0})};
-  const cc::SegmentSelector2D selector;
+  const cc::FacetSelector<cc::Line2Facet> selector;
   const auto gone = selector.select({-2.3, -0.01}, candidates);
   EXPECT_EQ(gone.kind, cc::SelectionKind::None);
   EXPECT_FALSE(gone.isPenetrating());
-  EXPECT_EQ(gone.segment, -1);
+  EXPECT_EQ(gone.facet, -1);
   // Within the tolerance at the free end it is still on the segment.
   const auto atEnd = selector.select({-2.0 - 1e-10, -0.01}, candidates);
-  EXPECT_EQ(atEnd.kind, cc::SelectionKind::OnSegment);
-  EXPECT_EQ(atEnd.segment, 1);
+  EXPECT_EQ(atEnd.kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(atEnd.facet, 1);
   EXPECT_TRUE(atEnd.isPenetrating());
   // No candidates at all.
   EXPECT_EQ(selector.select({0.0, 0.0}, {}).kind, cc::SelectionKind::None);
 }
 
-TEST(SegmentSelector2D, PenetratingNodeJustPastAFreeEndStaysInContact) {
+TEST(FacetSelectorLine2, PenetratingNodeJustPastAFreeEndStaysInContact) {
   // A flush edge: the end segment (0,0)→(−2,0) ends at the free vertex (−2, 0). ξ̄ = −1 − 0.05 there
   // for x = −2.05 (5 % of a half-length past the end).
-  const std::vector<cc::MasterSegment2D> candidates{segment(0, 0, 1, {2.0, 0.0}, {0.0, 0.0}),
+  const std::vector<cc::MasterFacetNodes<cc::Line2Facet>> candidates{segment(0, 0, 1, {2.0, 0.0}, {0.0, 0.0}),
                                                     segment(1, 1, 2, {0.0, 0.0}, {-2.0, 0.0})};
-  const cc::SegmentSelector2D selector;
+  const cc::FacetSelector<cc::Line2Facet> selector;
   const auto penetrating = selector.select({-2.05, -0.01}, candidates);
-  EXPECT_EQ(penetrating.kind, cc::SelectionKind::OnSegment);
-  EXPECT_EQ(penetrating.segment, 1);
+  EXPECT_EQ(penetrating.kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(penetrating.facet, 1);
   EXPECT_NEAR(penetrating.gap, -0.01, 1e-12);
   // The same place above the surface is off the master (an open node past the end), and further out
   // than the tolerance a penetrating node is off it too.

@@ -1,6 +1,6 @@
 // The tunnelling check: the swept crossing test of a node against a moving facet (2D segment, 3D 4-node
 // face), against closed-form crossing times and against brute-force sampling of random motions, and
-// ContactInterface2D::tunnellingNodes on a rigid plate that passes through slave nodes.
+// ContactInterfaceBase::tunnellingNodes on a rigid plate that passes through slave nodes.
 #include "contact/SweptCrossing.hpp"
 
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "contact/ContactInterface2D.hpp"
+#include "contact/ContactInterface.hpp"
 
 namespace cc = contessa::contact;
 using cc::Line2Facet;
@@ -181,17 +181,21 @@ TEST(SweptCrossing3D, NotACrossing) {
   EXPECT_FALSE(cc::sweptCrossing<Quad4Facet>({0.5, 0.5, 1.0}, {0.5, 0.5, 0.1}, kFace, kFace).crossed);   // stops short
 }
 
-// ---- ContactInterface2D::tunnellingNodes -------------------------------------------------------------
+// ---- ContactInterfaceBase::tunnellingNodes -------------------------------------------------------------
 
 // Three slave nodes on y = 0 (x = 0, 1, 2), a rigid master above them moving down by `motion` at λ = 1.
-cc::ContactInterfaceSpec2D plateSpec(std::vector<cc::Vector<2>> points, double motion) {
-  cc::ContactInterfaceSpec2D spec;
+cc::ContactInterfaceSpec plateSpec(std::vector<cc::Vector<2>> points, double motion) {
+  cc::ContactInterfaceSpec spec;
   spec.name = "plate";
+  spec.dimension = 2;
   spec.slaveNodes = {0, 1, 2};
   spec.slaveAreas = {0.5, 1.0, 0.5};
   spec.slaveFacetLengths = {1.0, 1.0, 1.0};
   spec.rigidMaster = true;
-  spec.rigidSurface.points = std::move(points);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    spec.rigidSurface.points.insert(spec.rigidSurface.points.end(), {points[i][0], points[i][1]});
+    if (i + 1 < points.size()) spec.rigidSurface.facets.insert(spec.rigidSurface.facets.end(), {int(i), int(i + 1)});
+  }
   spec.rigidSurface.motion = {0.0, -motion};
   spec.law.normalPenalty = 1e6;
   return spec;
@@ -199,8 +203,11 @@ cc::ContactInterfaceSpec2D plateSpec(std::vector<cc::Vector<2>> points, double m
 
 class Tunnelling : public ::testing::Test {
  protected:
-  static cc::Vector<2> slave(cc::GlobalIndex node) { return {static_cast<double>(node), 0.0}; }
-  static void evaluate(cc::ContactInterface2D& i, double lambda) {
+  static void slave(cc::GlobalIndex node, double* x) {
+    x[0] = static_cast<double>(node);
+    x[1] = 0.0;
+  }
+  static void evaluate(cc::ContactInterfaceBase& i, double lambda) {
     i.evaluate(slave, lambda, true, [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {});
   }
   // The plate: a line 0.5 above the nodes, traversed towards +x (the body above it); 4 long, so a
@@ -209,7 +216,8 @@ class Tunnelling : public ::testing::Test {
 };
 
 TEST_F(Tunnelling, PlateBeyondReachIsTunnelling) {
-  cc::ContactInterface2D i(plateSpec(line_, 10.0), {1, 1, 1});
+  const auto interface = cc::makeContactInterface(plateSpec(line_, 10.0), {1, 1, 1});
+  auto& i = *interface;
   evaluate(i, 0.0);
   i.commit();
   evaluate(i, 1.0);  // the plate at y = −9.5: every node 9.5 behind it, out of reach, "open"
@@ -220,7 +228,8 @@ TEST_F(Tunnelling, PlateBeyondReachIsTunnelling) {
 }
 
 TEST_F(Tunnelling, PenaltyPenetrationIsNot) {
-  cc::ContactInterface2D i(plateSpec(line_, 10.0), {1, 1, 1});
+  const auto interface = cc::makeContactInterface(plateSpec(line_, 10.0), {1, 1, 1});
+  auto& i = *interface;
   evaluate(i, 0.0);
   i.commit();
   evaluate(i, 0.051);  // 0.01 of penetration: in contact
@@ -235,7 +244,8 @@ TEST_F(Tunnelling, PenaltyPenetrationIsNot) {
 }
 
 TEST_F(Tunnelling, RolledBackIncrementIsMeasuredFromTheCommit) {
-  cc::ContactInterface2D i(plateSpec(line_, 10.0), {1, 1, 1});
+  const auto interface = cc::makeContactInterface(plateSpec(line_, 10.0), {1, 1, 1});
+  auto& i = *interface;
   evaluate(i, 0.0);
   i.commit();
   evaluate(i, 1.0);
@@ -248,17 +258,19 @@ TEST_F(Tunnelling, ThroughAThinBodyToItsFarSide) {
   // A closed thin plate, 0.2 thick (body on the left of each edge): after the step the nodes are 2.3
   // above its top face, in reach and in front of it (g_N > 0): not in contact, but they went through.
   const std::vector<cc::Vector<2>> thin{{-1.0, 0.5}, {3.0, 0.5}, {3.0, 0.7}, {-1.0, 0.7}, {-1.0, 0.5}};
-  cc::ContactInterface2D i(plateSpec(thin, 3.0), {1, 1, 1});
+  const auto interface = cc::makeContactInterface(plateSpec(thin, 3.0), {1, 1, 1});
+  auto& i = *interface;
   evaluate(i, 0.0);
   i.commit();
   evaluate(i, 1.0);
   const auto t = i.tunnellingNodes();
   ASSERT_EQ(t.size(), 3u);
-  EXPECT_EQ(t[1].segment, 0);  // through the bottom face
+  EXPECT_EQ(t[1].facet, 0);  // through the bottom face
 }
 
 TEST_F(Tunnelling, OnlyTheNodesThisRankEvaluates) {
-  cc::ContactInterface2D i(plateSpec(line_, 10.0), {0, 1, 0});
+  const auto interface = cc::makeContactInterface(plateSpec(line_, 10.0), {0, 1, 0});
+  auto& i = *interface;
   evaluate(i, 0.0);
   i.commit();
   evaluate(i, 1.0);
@@ -268,7 +280,8 @@ TEST_F(Tunnelling, OnlyTheNodesThisRankEvaluates) {
 }
 
 TEST_F(Tunnelling, MovingAwayIsNot) {
-  cc::ContactInterface2D i(plateSpec(line_, -10.0), {1, 1, 1});
+  const auto interface = cc::makeContactInterface(plateSpec(line_, -10.0), {1, 1, 1});
+  auto& i = *interface;
   evaluate(i, 0.0);
   i.commit();
   evaluate(i, 1.0);

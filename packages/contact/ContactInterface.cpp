@@ -1,0 +1,368 @@
+#include "contact/ContactInterface.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "contact/BoundingBoxTree.hpp"
+#include "contact/FacetSelector.hpp"
+#include "contact/HistoryTransfer.hpp"
+#include "contact/MasterSurface.hpp"
+#include "contact/NodeToFacetContact.hpp"
+#include "contact/SlipReversalDamping.hpp"
+#include "contact/SweptCrossing.hpp"
+
+namespace contessa::contact {
+
+namespace {
+constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
+
+/// The largest distance between two nodes of a facet: the segment's length, the face's longer diagonal
+/// (or edge): the size the global search enlarges boxes by.
+template <class Facet>
+double facetSize(const MasterFacetNodes<Facet>& m) {
+  double size = 0;
+  for (int a = 0; a < Facet::kNodes; ++a)
+    for (int b = a + 1; b < Facet::kNodes; ++b) size = std::max(size, norm(subtract(m.x[b], m.x[a])));
+  return size;
+}
+}  // namespace
+
+ContactInterfaceBase::ContactInterfaceBase(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave)
+    : spec_(std::move(spec)),
+      evaluatesSlave_(std::move(evaluatesSlave)),
+      trialOutput_(spec_.slaveNodes.size()),
+      committedOutput_(spec_.slaveNodes.size()),
+      trialChanges_(spec_.slaveNodes.size()),
+      committedIncrement_(spec_.slaveNodes.size()),
+      trialForce_(spec_.dimension, 0.0),
+      committedForce_(spec_.dimension, 0.0) {
+  spec_.law.validate();
+  if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size() || spec_.slaveAreas.size() != spec_.slaveNodes.size())
+    throw std::logic_error("ContactInterface '" + spec_.name + "': one area and facet length per slave node expected");
+  for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
+  committedOutput_ = trialOutput_;
+}
+
+std::vector<SlaveNodeChange> ContactInterfaceBase::owned(const std::vector<SlaveNodeChange>& all) const {
+  std::vector<SlaveNodeChange> out;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
+    if (evaluatesSlave_[k]) out.push_back(all[k]);
+  return out;
+}
+
+/// One interface over master facets of type Facet: search → select → history transfer → element → scale
+/// by the tributary area → scatter with DOF ids and ∂r/∂λ.
+template <class Facet>
+class ContactInterface final : public ContactInterfaceBase {
+ public:
+  static constexpr int kDim = Facet::kSpaceDim;
+  static constexpr int kXi = Facet::kSurfaceDim;
+  static constexpr int kDofs = NodeToFacetContact<Facet>::kDofs;
+  using Point = typename Facet::Point;
+  using Facets = std::vector<MasterFacetNodes<Facet>>;
+
+  ContactInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave)
+      : ContactInterfaceBase(std::move(spec), std::move(evaluatesSlave)),
+        master_(spec_),
+        element_(spec_.law),
+        history_(spec_.slaveNodes.size()),
+        damping_(spec_.slaveNodes.size()),
+        lastSlave_(spec_.slaveNodes.size()) {}
+
+  std::unique_ptr<ContactInterfaceBase> clone() const override { return std::make_unique<ContactInterface>(*this); }
+  void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) override;
+  std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const override;
+  std::vector<TunnellingNode> tunnellingNodes() const override;
+  void commit() override;
+  void rollback() override;
+
+ private:
+  Point slavePosition(const NodePosition& position, std::size_t k) const {
+    Point x{};
+    position(spec_.slaveNodes[k], x.data());
+    return x;
+  }
+  /// The element of slave node k at `xs` on master facet `facet` against the committed history on it.
+  NodeToFacetResult<Facet> evaluateElement(std::size_t k, const Point& xs, const MasterFacetNodes<Facet>& facet,
+                                           const ContactHistory<kXi>& committed,
+                                           SlipTangent tangent = SlipTangent::consistent()) const {
+    NodeToFacetGeometry<Facet> geometry;
+    geometry.slave = xs;
+    geometry.master = facet.x;
+    return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent);
+  }
+  /// Scales the element by the tributary area of slave node k and hands it to the sink; returns the
+  /// scaled residual (its first kDim entries are minus the force on the slave node).
+  Vector<kDofs> scatter(std::size_t k, int facet, const NodeToFacetResult<Facet>& r, const Sink& sink) const;
+  /// Slave node k against its commit: `result` is its contact evaluation with `committed` (its committed
+  /// history on the evaluated facet), or null when it was not evaluated (no master, or frozen).
+  SlaveNodeChange changeOf(std::size_t k, double gap, const NodeToFacetResult<Facet>* result,
+                           const ContactHistory<kXi>& committed) const;
+  /// The committed history of slave node k, re-expressed on master `facet` when it was kept on another
+  /// (committed coordinates, so it stays constant within the increment).
+  ContactHistory<kXi> committedHistoryOn(std::size_t k, int facet) const;
+  /// Slave node k with nothing changed since the commit.
+  SlaveNodeChange unchanged(std::size_t k) const;
+
+  MasterSurface<Facet> master_;
+  NodeToFacetContact<Facet> element_;
+  FacetSelector<Facet> selector_;
+  ContactHistoryStore<kXi> history_;
+  SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates
+  Facets committedMaster_;       ///< master positions of the committed configuration
+  Facets lastFacets_;            ///< master positions of the latest trial evaluation
+  std::vector<Point> committedSlave_;  ///< slave positions of the committed configuration
+  std::vector<Point> lastSlave_;       ///< slave positions of the latest trial evaluation
+};
+
+template <class Facet>
+void ContactInterface<Facet>::evaluate(const NodePosition& position, double loadFactor, bool updateTrial,
+                                       const Sink& sink) {
+  const Facets facets = master_.facets(position, loadFactor);
+  if (committedMaster_.empty()) committedMaster_ = facets;
+
+  // Global search: master facet boxes enlarged by the largest facet, so a slave node finds every facet it
+  // could project on, and its neighbours (edges, corners).
+  double reach = 0;
+  for (const auto& m : facets) reach = std::max(reach, facetSize(m));
+  std::vector<BoundingBox<kDim>> boxes(facets.size());
+  for (std::size_t s = 0; s < facets.size(); ++s) {
+    for (const auto& x : facets[s].x) boxes[s].include(x);
+    boxes[s].enlarge(reach);
+  }
+  const BoundingBoxTree<kDim> tree(boxes);
+
+  std::vector<double> force(kDim, 0.0);
+  std::vector<int> hits;
+  Facets candidates;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const Point xs = slavePosition(position, k);
+    if (updateTrial) lastSlave_[k] = xs;
+    hits.clear();
+    tree.query(xs, hits);
+    candidates.clear();
+    for (int h : hits) candidates.push_back(facets[h]);
+    const FacetSelection<Facet> selection = selector_.select(xs, candidates);
+
+    SlaveNodeState out;
+    out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
+    ContactHistory<kXi> trial = history_.committed(k);
+    SlaveNodeChange change = changeOf(k, out.gap, nullptr, trial);
+    // Frozen: nodes open at the commit carry no force — except nodes already touching (zero gap),
+    // which close at once in any step and shape how their neighbours approach.
+    const bool frozenOpen =
+        frozen_ && !history_.committed(k).isInContact() && !(committedOutput_[k].gap <= kTouchingGap);
+    if (selection.kind != SelectionKind::None && !frozenOpen) {
+      // The history is kept on the facet the node projected on at the last commit.
+      const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
+      const auto& facet = facets[selection.facet];
+      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
+      // tangential stiffness (SlipReversalDamping); the residual is the same either way.
+      NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, committed);
+      if (updateTrial) {
+        damping_.observe(k, history_.trial(k), r.trial);
+        const SlipTangent tangent = damping_.tangent(k);
+        if (tangent.secant) r = evaluateElement(k, xs, facet, committed, tangent);
+      }
+      trial = r.trial;
+      change = changeOf(k, out.gap, &r, committed);
+      out.status = r.status;
+      out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
+      if (r.status != ContactStatus::Open) {
+        const Vector<kDofs> residual = scatter(k, selection.facet, r, sink);
+        for (int c = 0; c < kDim; ++c) force[c] -= residual[c];
+      }
+    } else {
+      trial.status = ContactStatus::Open;
+    }
+    out.slip = trial.accumulatedSlip;
+    if (updateTrial) {
+      history_.setTrial(k, trial);
+      trialOutput_[k] = out;
+      trialChanges_[k] = change;
+    }
+  }
+  if (updateTrial) {
+    trialForce_ = force;
+    lastFacets_ = facets;
+    if (committedSlave_.empty()) committedSlave_ = lastSlave_;
+  }
+}
+
+template <class Facet>
+auto ContactInterface<Facet>::scatter(std::size_t k, int facet,
+                                                                          const NodeToFacetResult<Facet>& r,
+                                                                          const Sink& sink) const -> Vector<kDofs> {
+  // t_N and t_T are tractions (eq. 14–16): the nodal force is the traction times the slave node's
+  // tributary area (length in 2D), so ε_N does not depend on the mesh size.
+  const double area = spec_.slaveAreas[k];
+  Vector<kDofs> residual{};
+  std::array<double, kDofs * kDofs> tangent{};
+  Vector<kDofs> dLambda{};
+  for (int i = 0; i < kDofs; ++i) residual[i] = area * r.residual[i];
+  for (int i = 0; i < kDofs; ++i)
+    for (int j = 0; j < kDofs; ++j) tangent[i * kDofs + j] = area * r.tangent(i, j);
+  std::array<GlobalIndex, kDofs> dofs{};
+  const GlobalIndex node = spec_.slaveNodes[k];
+  for (int c = 0; c < kDim; ++c) dofs[c] = kDim * node + c;
+  const auto masterDofs = master_.dofs(facet);
+  for (int j = 0; j < MasterSurface<Facet>::kFacetDofs; ++j) dofs[kDim + j] = masterDofs[j];
+  // x_master = X + λ · motion for a rigid master: ∂r_c/∂λ = Σ_master K[:, master] · ∂x_master/∂λ.
+  const auto dx = master_.dPositiondLambda(facet);
+  for (int i = 0; i < kDofs; ++i)
+    for (int j = 0; j < MasterSurface<Facet>::kFacetDofs; ++j) dLambda[i] += tangent[i * kDofs + kDim + j] * dx[j];
+  sink(dofs.data(), kDofs, residual.data(), tangent.data(), dLambda.data());
+  return residual;
+}
+
+template <class Facet>
+std::vector<TunnellingNode> ContactInterface<Facet>::tunnellingNodes() const {
+  std::vector<TunnellingNode> out;
+  if (lastFacets_.empty() || committedSlave_.empty() || committedMaster_.size() != lastFacets_.size()) return out;
+  // Swept boxes: each facet's box over both states, a hair larger so touching counts.
+  double largest = 0;
+  for (const auto& m : lastFacets_) largest = std::max(largest, facetSize(m));
+  const double margin = 1e-9 * largest;
+  std::vector<BoundingBox<kDim>> boxes(lastFacets_.size());
+  for (std::size_t s = 0; s < lastFacets_.size(); ++s) {
+    for (int a = 0; a < Facet::kNodes; ++a) {
+      boxes[s].include(committedMaster_[s].x[a]);
+      boxes[s].include(lastFacets_[s].x[a]);
+    }
+    boxes[s].enlarge(margin);
+  }
+  const BoundingBoxTree<kDim> tree(boxes);
+  std::vector<int> hits;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    // In contact now (g_N ≤ 0 on the selected facet): penalty penetration, not tunnelling.
+    if (!evaluatesSlave_[k] || !(trialOutput_[k].gap > 0.0)) continue;
+    // A node in contact at the commit starts from its contact point on the master: its penalty
+    // penetration there is not a crossing.
+    Point start = committedSlave_[k];
+    const auto& committed = history_.committed(k);
+    if (committed.isInContact() && committed.segment >= 0 &&
+        committed.segment < static_cast<int>(committedMaster_.size()))
+      start = Projection<Facet>::evaluateAt(start, committedMaster_[committed.segment].x, committed.xi).position;
+    const Point& end = lastSlave_[k];
+    BoundingBox<kDim> path;
+    path.include(start);
+    path.include(end);
+    hits.clear();
+    tree.queryBox(path, hits);
+    for (int s : hits) {
+      const SweptCrossing crossing = sweptCrossing<Facet>(start, end, committedMaster_[s].x, lastFacets_[s].x);
+      if (!crossing.crossed) continue;
+      out.push_back({k, spec_.slaveNodes[k], s, crossing.time});
+      break;
+    }
+  }
+  return out;
+}
+
+template <class Facet>
+SlaveNodeChange ContactInterface<Facet>::changeOf(std::size_t k, double gap, const NodeToFacetResult<Facet>* result,
+                                                  const ContactHistory<kXi>& committed) const {
+  SlaveNodeChange c = unchanged(k);
+  c.trialGap = gap;
+  c.trialStatus = result != nullptr ? result->status : ContactStatus::Open;
+  const double mu = spec_.law.frictionCoefficient;
+  if (result == nullptr || mu == 0.0 || !committed.isInContact() || result->status == ContactStatus::Open) return c;
+  // Coulomb indicators (eq. 19, 21) in the facet's metric: ‖t‖² = t_α ā^αβ t_β; the committed traction is
+  // "driven the other way" when its scalar product with the trial traction, t_α ā^αβ t^trial_β, is < 0.
+  const auto& friction = result->friction;
+  const auto& inverseMetric = result->projection.inverseMetric;
+  double committedSquare = 0.0, along = 0.0;
+  for (int a = 0; a < kXi; ++a)
+    for (int b = 0; b < kXi; ++b) {
+      committedSquare += committed.tangentialTraction[a] * inverseMetric(a, b) * committed.tangentialTraction[b];
+      along += committed.tangentialTraction[a] * inverseMetric(a, b) * friction.trialTraction[b];
+    }
+  const double committedNorm = std::sqrt(committedSquare);
+  const bool opposite = along < 0.0;
+  c.committedIndicator = (opposite ? -committedNorm : committedNorm) - mu * committedOutput_[k].pressure;
+  c.trialIndicator = friction.trialIndicator;
+  c.slipReversed = opposite && committed.status == ContactStatus::Slip && result->status == ContactStatus::Slip;
+  return c;
+}
+
+template <class Facet>
+auto ContactInterface<Facet>::committedHistoryOn(std::size_t k, int facet) const -> ContactHistory<kXi> {
+  const ContactHistory<kXi>& committed = history_.committed(k);
+  if (!committed.isInContact() || committed.segment == facet || committed.segment < 0) return committed;
+  return transferHistory<Facet>(committed, committedMaster_[committed.segment], committedMaster_[facet]);
+}
+
+template <class Facet>
+SlaveNodeChange ContactInterface<Facet>::unchanged(std::size_t k) const {
+  SlaveNodeChange c;
+  c.committedGap = c.trialGap = committedOutput_[k].gap;
+  c.committedStatus = c.trialStatus = history_.committed(k).status;
+  return c;
+}
+
+template <class Facet>
+std::vector<SlaveNodeChange> ContactInterface<Facet>::changesAt(const NodePosition& position, double loadFactor) const {
+  const Facets facets = master_.facets(position, loadFactor);
+  std::vector<SlaveNodeChange> out;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const Point xs = slavePosition(position, k);
+    const FacetSelection<Facet> selection = selector_.select(xs, facets);
+    if (selection.kind == SelectionKind::None) {
+      out.push_back(changeOf(k, std::numeric_limits<double>::infinity(), nullptr, history_.committed(k)));
+      continue;
+    }
+    const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
+    const NodeToFacetResult<Facet> r = evaluateElement(k, xs, facets[selection.facet], committed);
+    out.push_back(changeOf(k, selection.gap, &r, committed));
+  }
+  return out;
+}
+
+template <class Facet>
+void ContactInterface<Facet>::commit() {
+  ContactCounts counts;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const auto status = history_.trial(k).status;
+    if (status == ContactStatus::Open) continue;
+    ++counts.active;
+    if (!history_.committed(k).isInContact()) ++counts.newlyActive;
+    if (status == ContactStatus::Stick) ++counts.stick;
+    if (status == ContactStatus::Slip) ++counts.slip;
+  }
+  history_.commit();
+  damping_.reset();
+  committedIncrement_ = trialChanges_;
+  committedOutput_ = trialOutput_;
+  committedForce_ = trialForce_;
+  committedCounts_ = counts;
+  if (!lastFacets_.empty()) {
+    committedMaster_ = lastFacets_;
+    committedSlave_ = lastSlave_;
+  }
+  for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+}
+
+template <class Facet>
+void ContactInterface<Facet>::rollback() {
+  history_.rollback();
+  damping_.reset();
+  trialOutput_ = committedOutput_;
+  trialForce_ = committedForce_;
+  for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+}
+
+template class ContactInterface<Line2Facet>;
+template class ContactInterface<Quad4Facet>;
+
+std::unique_ptr<ContactInterfaceBase> makeContactInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
+  if (spec.dimension == 2) return std::make_unique<ContactInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+  if (spec.dimension == 3) return std::make_unique<ContactInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
+  throw std::logic_error("makeContactInterface: interface '" + spec.name + "' has dimension " +
+                         std::to_string(spec.dimension) + " (2 or 3 expected)");
+}
+
+}  // namespace contessa::contact

@@ -1,0 +1,156 @@
+#pragma once
+// Coupling of one contact interface: which slave nodes touch which master facets, their contact forces and
+// tangents handed to the assembler, and the committed/trial contact history. One path for 2D and 3D: the
+// model holds ContactInterfaceBase pointers, made by makeContactInterface for the mesh dimension
+// (ContactInterface<Line2Facet>, node-to-segment; ContactInterface<Quad4Facet>, node-to-face; both defined
+// and instantiated in ContactInterface.cpp). Detection (BoundingBoxTree + FacetSelector), the master
+// surface (MasterSurface: deformable or rigid), history transfer and resolution (NodeToFacetContact) are
+// used as they are; this class only organises them over an interface. Pure C++: the model turns the global
+// DOF ids it receives into Tpetra entries.
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/ContactHistory.hpp"
+#include "contact/ContactLawParameters.hpp"
+
+namespace contessa::contact {
+
+using GlobalIndex = long long;
+
+/// A rigid master surface: facets over points that move rigidly by λ · motion. Each facet lists
+/// nodesPerFacet point indices (2D: a segment, 2; 3D: a quadrilateral, 4), ordered so the facet's normal
+/// (MasterFacet.hpp: the right of the direction of traversal in 2D, the right-hand rule in 3D) points out
+/// of the rigid body, towards the slave.
+struct RigidSurface {
+  std::vector<double> points;  ///< reference positions, spaceDim values per point
+  std::vector<int> facets;     ///< point indices (0-based), nodesPerFacet per facet
+  std::vector<double> motion;  ///< displacement of every point at load factor 1, spaceDim values
+};
+
+/// Everything that defines an interface, in mesh terms (built by ContactSurface from side sets).
+struct ContactInterfaceSpec {
+  std::string name;
+  int dimension = 2;                      ///< space dimension: 2 (node-to-segment) or 3 (node-to-face)
+  std::vector<GlobalIndex> slaveNodes;    ///< mesh nodes, sorted
+  std::vector<double> slaveAreas;         ///< tributary length (2D, unit thickness) or area (3D) of each slave node
+  std::vector<double> slaveFacetLengths;  ///< mean size of the slave facets at each node (slip tolerance's L_k)
+  /// Deformable master: mesh nodes, nodesPerFacet() per facet, oriented so the master body's outward
+  /// normal is the facet's normal.
+  std::vector<GlobalIndex> masterFacets;
+  bool rigidMaster = false;
+  RigidSurface rigidSurface;  ///< when rigidMaster
+  ContactLawParameters law;
+
+  int nodesPerFacet() const { return dimension == 2 ? 2 : 4; }
+  std::size_t numMasterFacets() const {
+    return (rigidMaster ? rigidSurface.facets.size() : masterFacets.size()) / static_cast<std::size_t>(nodesPerFacet());
+  }
+};
+
+/// State of one slave node for output (at the last converged increment).
+struct SlaveNodeState {
+  double pressure = 0;  ///< contact pressure −t_N ≥ 0 (force per unit area), eq. (16)
+  double gap = 0;       ///< g_N, eq. (4); +∞ when no master facet is in reach
+  ContactStatus status = ContactStatus::Open;
+  double slip = 0;      ///< accumulated slip g_T, eq. (7)
+};
+
+/// An owned slave node over the increment: the last commit against a trial state, for the load-step
+/// correction of eq. (11) and its events (continuation::SlaveNodeIncrement documents each field).
+struct SlaveNodeChange {
+  double committedGap = std::numeric_limits<double>::infinity();  ///< g_N at the commit; +∞: no master
+  double trialGap = std::numeric_limits<double>::infinity();
+  ContactStatus committedStatus = ContactStatus::Open, trialStatus = ContactStatus::Open;
+  /// Coulomb indicator f (eq. 19) of the committed tractions along the trial slip direction, and
+  /// f^trial (eq. 21); NaN unless in contact in both states with μ > 0.
+  double committedIndicator = std::numeric_limits<double>::quiet_NaN();
+  double trialIndicator = std::numeric_limits<double>::quiet_NaN();
+  bool slipReversed = false;  ///< slipping in both states, in opposite directions
+};
+
+struct ContactCounts {
+  int active = 0, newlyActive = 0, stick = 0, slip = 0;
+};
+
+/// A slave node that passed through the master surface in the current increment (tunnelling).
+struct TunnellingNode {
+  std::size_t slave = 0;  ///< index into ContactInterfaceSpec::slaveNodes
+  GlobalIndex node = -1;  ///< its mesh node
+  int facet = -1;         ///< the master facet it went through
+  double time = 0;        ///< where along the increment, 0 (committed) … 1 (trial)
+};
+
+/// One interface as the model sees it, whatever the dimension.
+class ContactInterfaceBase {
+ public:
+  /// Current position of a mesh node (reference + displacement): writes spec().dimension values to x.
+  using NodePosition = std::function<void(GlobalIndex node, double* x)>;
+  /// One contact element: global DOF ids (node·dim + c; −1 for a rigid master's DOFs, which are not
+  /// unknowns), the residual r_c and tangent ∂r_c/∂u (row-major), and ∂r_c/∂λ (a moving rigid master).
+  using Sink = std::function<void(const GlobalIndex* dofs, int numDofs, const double* residual,
+                                  const double* tangent, const double* dResidualdLambda)>;
+
+  virtual ~ContactInterfaceBase() = default;
+  /// A copy with the same state (saved and put back around the finite-difference Jacobian check).
+  virtual std::unique_ptr<ContactInterfaceBase> clone() const = 0;
+
+  /// Evaluates every slave node this rank owns at the current positions and load factor. With
+  /// `updateTrial`, stores the trial history (Newton iterations); without, leaves it alone (reactions).
+  virtual void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) = 0;
+  /// The owned slave nodes at the given positions and load factor against the last commit (contact
+  /// evaluated with every node free to close, no force assembled, no history stored: a look ahead at a
+  /// predicted state).
+  virtual std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const = 0;
+  /// Slave nodes of this rank that crossed a master facet, from its front to its back, between the last
+  /// commit and the latest trial evaluation and are not in contact now (no master in reach, or a positive
+  /// gap on another facet): the penalty never saw them (theory-contact.md §12). A node in contact now is
+  /// ordinary penalty penetration, whatever it crossed. Each node's straight path is tested against each
+  /// facet's straight motion (SweptCrossing) among the candidates of a tree of swept boxes, so the check
+  /// costs O((n + m) log m).
+  virtual std::vector<TunnellingNode> tunnellingNodes() const = 0;
+  /// The increment converged: trial → committed (and the master positions the history refers to).
+  virtual void commit() = 0;
+  /// The increment is abandoned: back to the committed state.
+  virtual void rollback() = 0;
+
+  /// The owned slave nodes: the last commit against the latest trial evaluation.
+  std::vector<SlaveNodeChange> trialChanges() const { return owned(trialChanges_); }
+  /// The owned slave nodes over the last converged increment: its start against its end.
+  std::vector<SlaveNodeChange> committedIncrement() const { return owned(committedIncrement_); }
+  /// While frozen, nodes open at the last commit carry no force (their gaps are still measured): the
+  /// first Newton iterate then shows where the body goes without new contacts (eq. 11 of Contact Beta).
+  void setNewContactsFrozen(bool frozen) { frozen_ = frozen; }
+
+  const ContactInterfaceSpec& spec() const { return spec_; }
+  const std::vector<char>& evaluatesSlave() const { return evaluatesSlave_; }
+  /// Output of the owned slave nodes at the last commit.
+  const std::vector<SlaveNodeState>& committedStates() const { return committedOutput_; }
+  /// Counts over owned slave nodes at the last commit (new = open at the commit before).
+  ContactCounts committedCounts() const { return committedCounts_; }
+  /// Total force the master exerts on the owned slave nodes at the last commit (spec().dimension
+  /// components; per unit thickness in 2D).
+  const std::vector<double>& committedSlaveForce() const { return committedForce_; }
+
+ protected:
+  /// `evaluatesSlave[i]`: this rank evaluates slave node i (its owner does, so each contribution is
+  /// assembled once).
+  ContactInterfaceBase(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
+
+  std::vector<SlaveNodeChange> owned(const std::vector<SlaveNodeChange>& all) const;
+
+  ContactInterfaceSpec spec_;
+  std::vector<char> evaluatesSlave_;
+  std::vector<SlaveNodeState> trialOutput_, committedOutput_;
+  std::vector<SlaveNodeChange> trialChanges_, committedIncrement_;  ///< per slave node (owned ones set)
+  std::vector<double> trialForce_, committedForce_;
+  ContactCounts committedCounts_;
+  bool frozen_ = false;
+};
+
+/// The interface of spec.dimension (2: Line2Facet segments, 3: Quad4Facet faces).
+std::unique_ptr<ContactInterfaceBase> makeContactInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
+
+}  // namespace contessa::contact

@@ -1,0 +1,136 @@
+#include "contact/ContactSurface.hpp"
+
+#include <cmath>
+#include <map>
+
+#include "common/Error.hpp"
+#include "contact/MasterFacet.hpp"
+#include "contact/Projection.hpp"
+
+namespace contessa::contact {
+
+namespace {
+
+/// ∫ H_i dA of each node of a facet and its area, by Gauss quadrature exact for the facet (a straight
+/// segment: the midpoint rule, ∫ H_i = l/2; a bilinear face: 2×2 points).
+template <class Facet>
+std::array<double, Facet::kNodes> nodalAreas(const std::array<typename Facet::Point, Facet::kNodes>& x, double& area) {
+  std::array<double, Facet::kNodes> a{};
+  area = 0;
+  if constexpr (Facet::kSurfaceDim == 1) {
+    // hypot, as the 2D code always measured sides: the 2D histories stay bit-identical.
+    area = std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]);
+    a = {0.5 * area, 0.5 * area};
+  } else {
+    const double g = 1.0 / std::sqrt(3.0);
+    for (double s : {-g, g})
+      for (double t : {-g, g}) {
+        const typename Facet::SurfaceCoords xi{s, t};
+        const auto p = Projection<Facet>::evaluateAt(typename Facet::Point{}, x, xi);
+        const double jacobian = norm(Facet::areaNormal(p.covariantBasis));  // weight 1 per point
+        area += jacobian;
+        for (int i = 0; i < Facet::kNodes; ++i) a[i] += p.shape[i] * jacobian;
+      }
+  }
+  return a;
+}
+
+template <class Facet>
+void addFacets(const mesh::Mesh& mesh, const mesh::SideSet& set, ContactSurface& surface) {
+  constexpr int n = Facet::kNodes, dim = Facet::kSpaceDim;
+  std::map<GlobalIndex, double> area, size;
+  std::map<GlobalIndex, int> count;
+  for (std::size_t i = 0; i < set.elements.size(); ++i) {
+    const auto loc = mesh.locate(set.elements[i]);
+    const auto& block = mesh.blocks[loc.block];
+    const int nn = mesh::nodesPerCell(block.cellType);
+    const auto local = mesh::sideNodes(block.cellType, set.sides[i]);
+    std::array<typename Facet::Point, n> x{};
+    std::array<GlobalIndex, n> nodes{};
+    for (int a = 0; a < n; ++a) {
+      nodes[a] = block.connectivity[loc.local * nn + local[a]];
+      for (int c = 0; c < dim; ++c) x[a][c] = mesh.coordinates[nodes[a] * dim + c];
+      surface.facets.push_back(nodes[a]);
+    }
+    double facetArea = 0;
+    const auto nodal = nodalAreas<Facet>(x, facetArea);
+    // L_k: the side's length in 2D, √(area) of the face in 3D.
+    const double facetSize = Facet::kSurfaceDim == 1 ? facetArea : std::sqrt(facetArea);
+    for (int a = 0; a < n; ++a) {
+      area[nodes[a]] += nodal[a];
+      size[nodes[a]] += facetSize;
+      ++count[nodes[a]];
+    }
+  }
+  for (const auto& [node, tributary] : area) {
+    surface.nodes.push_back(node);
+    surface.areas.push_back(tributary);
+    surface.facetLengths.push_back(size[node] / count[node]);  // mean of the adjacent facets
+  }
+}
+
+}  // namespace
+
+ContactSurface ContactSurface::fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where) {
+  requireInput(mesh.dimension == 2 || mesh.dimension == 3, where + ": contact needs a 2D or 3D mesh");
+  requireInput(!set.elements.empty(), where + ": side set '" + set.name + "' is empty");
+  ContactSurface surface;
+  surface.nodesPerFacet = mesh.dimension == 2 ? 2 : 4;
+  if (mesh.dimension == 2)
+    addFacets<Line2Facet>(mesh, set, surface);
+  else
+    addFacets<Quad4Facet>(mesh, set, surface);
+  return surface;
+}
+
+void validateRigidSurface(const RigidSurface& surface, int dimension, const std::string& where) {
+  const int perFacet = dimension == 2 ? 2 : 4;
+  const std::string coords = dimension == 2 ? "x, y" : "x, y, z";
+  requireInput(surface.points.size() >= static_cast<std::size_t>(perFacet * dimension) &&
+                   surface.points.size() % dimension == 0,
+               where + (dimension == 2 ? "/Points: expected x0, y0, x1, y1, ... (at least two points)"
+                                       : "/Points: expected x0, y0, z0, x1, y1, z1, ... (3 coordinates per point, at "
+                                         "least four points), got " + std::to_string(surface.points.size()) + " values"));
+  const std::size_t numPoints = surface.points.size() / dimension;
+  requireInput(surface.motion.size() == static_cast<std::size_t>(dimension),
+               where + "/Motion: expected " + std::string(dimension == 2 ? "two" : "three") + " values (" + coords +
+                   " displacement at load factor 1), got " + std::to_string(surface.motion.size()));
+  requireInput(!surface.facets.empty() && surface.facets.size() % perFacet == 0,
+               where + "/Facets: expected " + std::to_string(perFacet) + " point indices per facet");
+  for (std::size_t f = 0; f * perFacet < surface.facets.size(); ++f) {
+    const std::string which = where + "/Facets: facet " + std::to_string(f + 1);
+    std::array<std::array<double, 3>, 4> x{};
+    for (int a = 0; a < perFacet; ++a) {
+      const int i = surface.facets[f * perFacet + a];
+      requireInput(i >= 0 && static_cast<std::size_t>(i) < numPoints,
+                   which + ": point index " + std::to_string(i) + " out of range (0 to " +
+                       std::to_string(numPoints - 1) + ")");
+      for (int c = 0; c < dimension; ++c) x[a][c] = surface.points[i * dimension + c];
+    }
+    if (dimension == 2) {
+      const bool polyline = surface.facets[2 * f + 1] == surface.facets[2 * f] + 1;
+      requireInput(x[0] != x[1], polyline ? where + "/Points: two consecutive points coincide (segment " +
+                                                std::to_string(f + 1) + ")"
+                                          : which + ": its two points coincide");
+      continue;
+    }
+    // A bilinear quad: its area Jacobian must keep one sign (the normal's) and stay away from zero at the
+    // corners, where it is smallest on a convex quad.
+    std::array<Quad4Facet::Point, 4> q{};
+    for (int a = 0; a < 4; ++a) q[a] = {x[a][0], x[a][1], x[a][2]};
+    const auto centre = Projection<Quad4Facet>::evaluateAt(Quad4Facet::Point{}, q, Quad4Facet::center());
+    const Quad4Facet::Point n0 = Quad4Facet::areaNormal(centre.covariantBasis);
+    double size = 0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) size = std::max(size, norm(subtract(q[b], q[a])));
+    for (int a = 0; a < 4; ++a) {
+      const auto corner = Projection<Quad4Facet>::evaluateAt(Quad4Facet::Point{}, q, Quad4Facet::nodeCoords(a));
+      const double jacobian = dot(Quad4Facet::areaNormal(corner.covariantBasis), n0) / std::max(norm(n0), 1e-300);
+      requireInput(jacobian > 1e-10 * size * size,
+                   which + ": degenerate or folded quadrilateral (its points must be distinct, not collinear, and "
+                           "ordered around it)");
+    }
+  }
+}
+
+}  // namespace contessa::contact

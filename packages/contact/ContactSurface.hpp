@@ -1,0 +1,36 @@
+#pragma once
+// The geometry an interface needs of a mesh side set, built once in the reference configuration: the
+// slave nodes with their tributary areas and facet sizes, and the master facets as oriented node tuples.
+// Also the checks of a rigid master surface given in the deck.
+#include <string>
+#include <vector>
+
+#include "contact/ContactInterface.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace contessa::contact {
+
+struct ContactSurface {
+  int nodesPerFacet = 2;
+  std::vector<GlobalIndex> nodes;      ///< the side set's nodes, sorted
+  /// Tributary area A_k = Σ_faces ∫ H_k dA of each node (2D: half of each adjacent side's length, per unit
+  /// thickness; 3D: over the adjacent bilinear faces, 2×2 Gauss): a traction times A_k is the nodal force.
+  std::vector<double> areas;
+  /// L_k, the mean size of the facets at each node (2D: side length; 3D: √(face area)), the length the
+  /// slip tolerance refers to (ContactLawParameters).
+  std::vector<double> facetLengths;
+  /// The sides as node tuples in mesh::sideNodes order, nodesPerFacet per side: the Exodus side orderings
+  /// make the facet's normal (MasterFacet.hpp) the outward normal of the body.
+  std::vector<GlobalIndex> facets;
+
+  /// Throws InputError starting with `where` for a side set that is not a surface of the mesh's dimension.
+  static ContactSurface fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where);
+};
+
+/// Checks a rigid master surface of the given dimension (one-line InputError naming `where`/Points,
+/// Facets or Motion): spaceDim coordinates per point, facets of 2 (2D) or 4 (3D) indices in range, no
+/// degenerate facet (coincident points; a quad with a vanishing or folded area Jacobian), motion of
+/// spaceDim values.
+void validateRigidSurface(const RigidSurface& surface, int dimension, const std::string& where);
+
+}  // namespace contessa::contact

@@ -1,0 +1,254 @@
+#include "contact/FacetSelector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace contessa::contact {
+
+namespace {
+
+/// How far ξ̄ lies beyond the parent domain [−1, 1] (0 inside).
+double overshoot(double xi) { return std::max(0.0, std::abs(xi) - 1.0); }
+
+/// The node is on candidate c's facet if its projection is closer than the best so far.
+template <class Facet>
+void considerOnFacet(const ProjectionResult<Facet>& p, int facet, FacetSelection<Facet>& best, double& bestDistance) {
+  if (!(std::abs(p.gap) < bestDistance)) return;
+  bestDistance = std::abs(p.gap);
+  best.kind = SelectionKind::OnFacet;
+  best.facet = facet;
+  best.vertexNode = -1;
+  best.projection = p;
+  best.gap = p.gap;
+  best.normal = p.normal;
+  best.closestPoint = p.position;
+}
+
+}  // namespace
+
+// ---- Line2Facet: 2D node-to-segment ---------------------------------------------------------------------
+
+template <>
+FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
+    const Line2Facet::Point& slave, const std::vector<MasterFacetNodes<Line2Facet>>& candidates) const {
+  const Projection<Line2Facet> projection(options_.projection);
+  std::vector<ProjectionResult<Line2Facet>> projected;
+  projected.reserve(candidates.size());
+  for (const auto& segment : candidates) projected.push_back(projection.project(slave, segment.x));
+
+  FacetSelection<Line2Facet> best;
+  double bestDistance = std::numeric_limits<double>::infinity();
+
+  // 1. Projections inside their segment: the smaller |g_N| wins (concave corners, eq. 4).
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+    if (projected[c].converged && projected[c].isInside(options_.insideTolerance))
+      considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+
+  // 2. Corner regions: a vertex that is the clamped closest point of two candidate segments.
+  for (std::size_t a = 0; a < candidates.size(); ++a) {
+    const auto& pa = projected[a];
+    if (!pa.converged || pa.isInside(options_.insideTolerance)) continue;
+    const int endA = pa.xi[0] > 0.0 ? 1 : 0;
+    const int vertex = candidates[a].nodes[endA];
+    for (std::size_t b = a + 1; b < candidates.size(); ++b) {
+      const auto& pb = projected[b];
+      if (!pb.converged || pb.isInside(options_.insideTolerance)) continue;
+      const int endB = pb.xi[0] > 0.0 ? 1 : 0;
+      if (candidates[b].nodes[endB] != vertex) continue;
+
+      const Vector<2>& xv = candidates[a].x[endA];
+      const Vector<2> d = subtract(slave, xv);
+      const double distance = norm(d);
+      if (!(distance < bestDistance)) continue;  // ties go to the inside projection
+      // Sign of the gap from the averaged outward normal of the two segments (eq. 5 on each).
+      const Vector<2> averaged = add(pa.normal, pb.normal);
+      const double side = dot(d, averaged) >= 0.0 ? 1.0 : -1.0;
+      const bool aOvershootsLess = overshoot(pa.xi[0]) <= overshoot(pb.xi[0]);
+      bestDistance = distance;
+      best.kind = SelectionKind::AtVertex;
+      best.facet = aOvershootsLess ? candidates[a].id : candidates[b].id;
+      best.vertexNode = vertex;
+      best.projection = aOvershootsLess ? pa : pb;
+      best.gap = side * distance;
+      best.normal = distance > 0.0 ? scaled(side / distance, d) : scaled(1.0 / norm(averaged), averaged);
+      best.closestPoint = xv;
+    }
+  }
+
+  // 3. A penetrating node just past a free end of the master surface (a flush edge: the end segment
+  //    tilts as it deforms, so a node sitting on the edge projects a little outside): it stays in
+  //    contact with that segment, extended by at most freeEndTolerance in ξ.
+  if (best.kind == SelectionKind::None)
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      if (projected[c].converged && projected[c].isPenetrating() && projected[c].isInside(options_.freeEndTolerance))
+        considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+
+  // 4. Nothing inside and no corner: the node has left the master surface.
+  if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
+  return best;
+}
+
+// ---- Quad4Facet: 3D node-to-face ------------------------------------------------------------------------
+//
+// The faces' edges are straight (a bilinear face is linear along each edge), so the closest point of a face's
+// boundary is found edge by edge, in closed form. Rules beyond the common ones of FacetSelector.hpp:
+//  - an EDGE (two node ids) is interior when two candidate faces hold it as an edge (a ridge or a valley);
+//    a free edge belongs to one face only;
+//  - a VERTEX is interior when the candidate faces holding it close a fan around it: every edge leaving it
+//    (collapsed edges, a node id twice, aside) is held by exactly two of them. A vertex on the free boundary
+//    is shared by two faces too, but its fan is open, so a node beyond the free boundary near it is not in
+//    contact (the 2D free end);
+//  - the element is evaluated on the face, among those holding the edge or vertex, whose unit normal at
+//    that point best matches the direction from the point to the node (signed as the gap): the face the
+//    node is most "above";
+//  - a projection where the face's area Jacobian has nearly vanished (the apex of a collapsed face, with
+//    a node id twice) is not inside: the neighbours, or the apex as a vertex, take the node.
+
+namespace {
+
+using QuadNodes = MasterFacetNodes<Quad4Facet>;
+
+/// Local index of global node `id` in face f, or −1.
+int localIndex(const QuadNodes& f, int id) {
+  for (int i = 0; i < Quad4Facet::kNodes; ++i)
+    if (f.nodes[i] == id) return i;
+  return -1;
+}
+
+/// Face f holds the edge a–b (adjacent nodes of its cycle).
+bool holdsEdge(const QuadNodes& f, int a, int b) {
+  for (int i = 0; i < Quad4Facet::kNodes; ++i) {
+    const int j = (i + 1) % Quad4Facet::kNodes;
+    if ((f.nodes[i] == a && f.nodes[j] == b) || (f.nodes[i] == b && f.nodes[j] == a)) return true;
+  }
+  return false;
+}
+
+/// The candidate faces around vertex v close a fan (see above).
+bool interiorVertex(const std::vector<QuadNodes>& candidates, int v) {
+  std::vector<int> neighbours;
+  for (const auto& f : candidates)
+    for (int i = 0; i < Quad4Facet::kNodes; ++i) {
+      if (f.nodes[i] != v) continue;
+      for (int j : {(i + 1) % Quad4Facet::kNodes, (i + Quad4Facet::kNodes - 1) % Quad4Facet::kNodes})
+        if (f.nodes[j] != v) neighbours.push_back(f.nodes[j]);
+    }
+  if (neighbours.empty()) return false;
+  std::sort(neighbours.begin(), neighbours.end());
+  for (std::size_t i = 0; i < neighbours.size();) {
+    std::size_t j = i;
+    while (j < neighbours.size() && neighbours[j] == neighbours[i]) ++j;
+    if (j - i != 2) return false;
+    i = j;
+  }
+  return true;
+}
+
+/// Area Jacobian ‖ā_1 × ā_2‖ of face x at ξ.
+double areaJacobian(const std::array<Quad4Facet::Point, 4>& x, const Quad4Facet::SurfaceCoords& xi) {
+  return norm(Quad4Facet::areaNormal(Projection<Quad4Facet>::evaluateAt(Quad4Facet::Point{}, x, xi).covariantBasis));
+}
+
+}  // namespace
+
+template <>
+FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::Point& slave,
+                                                             const std::vector<QuadNodes>& candidates) const {
+  using Point = Quad4Facet::Point;
+  constexpr int kNodes = Quad4Facet::kNodes;
+  const Projection<Quad4Facet> projection(options_.projection);
+  const std::size_t n = candidates.size();
+  std::vector<ProjectionResult<Quad4Facet>> projected(n);
+  std::vector<char> regular(n), inside(n);  // regular: converged and not at a collapsed apex
+  for (std::size_t c = 0; c < n; ++c) {
+    projected[c] = projection.project(slave, candidates[c].x);
+    const auto& p = projected[c];
+    regular[c] = p.converged && areaJacobian(candidates[c].x, p.xi) >=
+                                    options_.collapsedJacobianRatio * areaJacobian(candidates[c].x, Quad4Facet::center());
+    inside[c] = regular[c] && p.isInside(options_.insideTolerance);
+  }
+
+  FacetSelection<Quad4Facet> best;
+  double bestDistance = std::numeric_limits<double>::infinity();
+
+  // 1. Projections inside their face: the smaller |g_N| wins (valleys, concave corners).
+  for (std::size_t c = 0; c < n; ++c)
+    if (inside[c]) considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+
+  // 2. Interior edges and vertices: the closest point of each outside face's boundary.
+  for (std::size_t c = 0; c < n; ++c) {
+    if (inside[c]) continue;
+    const QuadNodes& face = candidates[c];
+    for (int i = 0; i < kNodes; ++i) {
+      const int j = (i + 1) % kNodes;
+      if (face.nodes[i] == face.nodes[j]) continue;  // a collapsed edge
+      const Point edge = subtract(face.x[j], face.x[i]);
+      const double length2 = dot(edge, edge);
+      if (!(length2 > 0.0)) continue;
+      const double t = std::clamp(dot(subtract(slave, face.x[i]), edge) / length2, 0.0, 1.0);
+      const bool atVertex = t <= 0.0 || t >= 1.0;
+      const int vertex = t <= 0.0 ? face.nodes[i] : face.nodes[j];
+      const Point point = atVertex ? (t <= 0.0 ? face.x[i] : face.x[j]) : add(face.x[i], scaled(t, edge));
+      const Point d = subtract(slave, point);
+      const double distance = norm(d);
+      if (!(distance < bestDistance)) continue;  // ties go to the inside projection / the first point
+      if (atVertex && !interiorVertex(candidates, vertex)) continue;
+      // The faces holding the point, and their unit normals there (eq. 5).
+      std::vector<std::size_t> holders;
+      std::vector<Point> normals;
+      Point averaged{};
+      for (std::size_t f = 0; f < n; ++f) {
+        Quad4Facet::SurfaceCoords xi{};
+        if (atVertex) {
+          const int l = localIndex(candidates[f], vertex);
+          if (l < 0) continue;
+          xi = Quad4Facet::nodeCoords(l);
+        } else {
+          if (!holdsEdge(candidates[f], face.nodes[i], face.nodes[j])) continue;
+          const int li = localIndex(candidates[f], face.nodes[i]), lj = localIndex(candidates[f], face.nodes[j]);
+          xi = add(scaled(1.0 - t, Quad4Facet::nodeCoords(li)), scaled(t, Quad4Facet::nodeCoords(lj)));
+        }
+        const auto at = Projection<Quad4Facet>::evaluateAt(slave, candidates[f].x, xi);
+        if (!(norm(Quad4Facet::areaNormal(at.covariantBasis)) > 0.0)) continue;  // the apex of a collapsed face
+        holders.push_back(f);
+        normals.push_back(at.normal);
+        averaged = add(averaged, at.normal);
+      }
+      if (holders.size() < 2) continue;  // a free edge (or a vertex held by one face)
+      const double side = dot(d, averaged) >= 0.0 ? 1.0 : -1.0;
+      // The face whose normal best matches the signed direction point → node.
+      std::size_t chosen = 0;
+      double match = -std::numeric_limits<double>::infinity();
+      for (std::size_t h = 0; h < holders.size(); ++h) {
+        const double m = distance > 0.0 ? side * dot(normals[h], d) / distance : 0.0;
+        if (m > match) {
+          match = m;
+          chosen = h;
+        }
+      }
+      const double averagedNorm = norm(averaged);
+      bestDistance = distance;
+      best.kind = atVertex ? SelectionKind::AtVertex : SelectionKind::AtEdge;
+      best.facet = candidates[holders[chosen]].id;
+      best.vertexNode = atVertex ? vertex : -1;
+      best.projection = projected[holders[chosen]];
+      best.gap = side * distance;
+      best.normal = distance > 0.0 ? scaled(side / distance, d)
+                    : averagedNorm > 0.0 ? scaled(1.0 / averagedNorm, averaged) : normals[chosen];
+      best.closestPoint = point;
+    }
+  }
+
+  // 3. A penetrating node just past a free boundary: it stays on the boundary face, extended.
+  if (best.kind == SelectionKind::None)
+    for (std::size_t c = 0; c < n; ++c)
+      if (regular[c] && projected[c].isPenetrating() && projected[c].isInside(options_.freeEndTolerance))
+        considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+
+  // 4. Nothing inside and no interior edge or vertex: the node has left the master surface.
+  if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
+  return best;
+}
+
+}  // namespace contessa::contact

@@ -1,0 +1,87 @@
+#pragma once
+// Local search for one slave node among candidate master facets: which facet (or which edge or corner
+// vertex shared by several facets) the node is in contact with, after the global search (BoundingBoxTree)
+// has produced the candidates. The rules are facet geometry (docs/theory-contact.md §3): one selector per
+// facet type, Line2Facet (2D node-to-segment) and Quad4Facet (3D node-to-face).
+#include "contact/Projection.hpp"
+
+#include <vector>
+
+namespace contessa::contact {
+
+enum class SelectionKind {
+  OnFacet,   ///< ξ̄ inside the parent domain of `facet`, enlarged by the inside tolerance
+  AtEdge,    ///< 3D: the closest point lies on an edge shared by two candidate faces (a ridge or valley)
+  AtVertex,  ///< the closest point is a vertex shared by candidate facets (a corner region)
+  None       ///< no valid projection: the node has left the master surface, not in contact
+};
+
+template <class Facet>
+struct FacetSelection {
+  SelectionKind kind = SelectionKind::None;
+  int facet = -1;       ///< facet on which the node-to-facet element is evaluated
+  int vertexNode = -1;  ///< AtVertex: the global node id of the vertex
+  ProjectionResult<Facet> projection{};  ///< projection on `facet`, unclamped
+  double gap = 0.0;                  ///< signed distance to the closest point, eq. (4)
+  typename Facet::Point normal{};    ///< unit normal at the closest point, g_N = (x^k − closest point)·normal
+  typename Facet::Point closestPoint{};
+
+  /// eq. (6): only a penetrating node carries a contact force.
+  bool isPenetrating() const { return kind != SelectionKind::None && gap < 0.0; }
+};
+
+struct FacetSelectorOptions {
+  /// A projection with ξ̄ within the parent domain enlarged by insideTolerance counts as inside its facet.
+  /// Slightly positive so a node sitting exactly on an edge or vertex does not flicker between "on facet"
+  /// and "at edge/vertex".
+  double insideTolerance = 1e-8;
+  /// A PENETRATING node past a free boundary of the master surface stays on the boundary facet while its
+  /// ξ̄ lies within freeEndTolerance of the parent domain (0.1: 5 % of the facet size), so a slave node on
+  /// a flush edge is not dropped when the boundary facet tilts under load.
+  double freeEndTolerance = 0.1;
+  /// 3D: a projection on a face whose area Jacobian ‖ā_1 × ā_2‖ at ξ̄ is below this fraction of its value
+  /// at the face centre (near the apex of a collapsed face) does not count as inside: the node is handed to
+  /// a neighbour, or to the apex vertex.
+  double collapsedJacobianRatio = 1e-3;
+  ProjectionOptions projection{};
+};
+
+/// Chooses the master facet of one slave node among candidates (rules common to both facet types):
+///  - projections inside their facet (eq. 1–4) are preferred; when several are inside (a node above a
+///    concave corner or valley of the master body, or a penetrating node near a convex one), the smaller
+///    |g_N| wins: the node is pushed out the shortest way. A node sliding from one facet to the next
+///    therefore switches facet exactly when its projection leaves the first one;
+///  - when the node projects outside every candidate sharing an interior vertex (2D and 3D) or an interior
+///    edge (3D), and that vertex or edge point is the closest point of the master surface (the node is
+///    outside a convex corner or ridge, or under a concave one), that point is the contact point:
+///    g_N = ±‖x^k − x_p‖, signed by the averaged outward normal of the facets sharing it, normal along
+///    x^k − x_p. It is the true closest point of the piecewise surface, so the gap stays continuous as the
+///    node goes round the corner or ridge (the load-step predictor of eq. (11) relies on that). Such a point
+///    wins over an inside projection only when strictly closer. The element is then evaluated on one facet
+///    sharing the point (2D: the one whose projection overshoots least; 3D: the one whose normal best
+///    matches x^k − x_p), i.e. on that facet extended;
+///  - a PENETRATING node just past a free boundary (within freeEndTolerance) stays on the boundary facet;
+///  - otherwise the node has left the master surface: kind None, not in contact.
+/// The 3D rules for edges and vertices (which are interior, collapsed faces) are in FacetSelector.cpp.
+template <class Facet>
+class FacetSelector {
+ public:
+  explicit FacetSelector(FacetSelectorOptions options = {}) : options_(options) {}
+
+  FacetSelection<Facet> select(const typename Facet::Point& slave,
+                               const std::vector<MasterFacetNodes<Facet>>& candidates) const;
+
+  const FacetSelectorOptions& options() const { return options_; }
+
+ private:
+  FacetSelectorOptions options_;
+};
+
+template <>
+FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(const Line2Facet::Point&,
+                                                             const std::vector<MasterFacetNodes<Line2Facet>>&) const;
+template <>
+FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::Point&,
+                                                             const std::vector<MasterFacetNodes<Quad4Facet>>&) const;
+
+}  // namespace contessa::contact
