@@ -69,6 +69,7 @@ struct SlaveNodeChange {
   double committedIndicator = std::numeric_limits<double>::quiet_NaN();
   double trialIndicator = std::numeric_limits<double>::quiet_NaN();
   bool slipReversed = false;  ///< slipping in both states, in opposite directions
+  int trialFacet = -1;        ///< the master facet the trial state was evaluated on (−1: none)
 };
 
 struct ContactCounts {

@@ -31,6 +31,9 @@ struct SlaveNodeIncrement {
   double trialIndicator = std::numeric_limits<double>::quiet_NaN();
   /// Slipping in both states, the trial slip direction opposite to the committed one.
   bool slipReversed = false;
+  /// The master facet the trial state was evaluated on (−1: none). A node moving to another facet is
+  /// no event, but a kink of the residual (the Jacobian check keeps it out of its differences).
+  int trialFacet = -1;
 
   bool inContactAtCommit() const { return committedStatus != NodeStatus::Open; }
 };

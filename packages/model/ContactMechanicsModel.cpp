@@ -490,12 +490,12 @@ namespace {
 // Every rank needs every slave node's change to sort the β^k of eq. (12): gather them all, as
 // continuation::SlaveNodeIncrement (7 numbers each), in rank order.
 std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const std::vector<contact::SlaveNodeChange>& local) {
-  constexpr int kFields = 7;
+  constexpr int kFields = 8;
   std::vector<double> packed;
   for (const auto& c : local) {
     packed.insert(packed.end(), {c.committedGap, c.trialGap, static_cast<double>(static_cast<int>(c.committedStatus)),
                                  static_cast<double>(static_cast<int>(c.trialStatus)), c.committedIndicator,
-                                 c.trialIndicator, c.slipReversed ? 1.0 : 0.0});
+                                 c.trialIndicator, c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet)});
   }
   const int size = comm.getSize();
   std::vector<int> counts(size), offsets(size + 1, 0);
@@ -517,6 +517,7 @@ std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const 
     n.committedIndicator = all[i + 4];
     n.trialIndicator = all[i + 5];
     n.slipReversed = all[i + 6] != 0.0;
+    n.trialFacet = static_cast<int>(all[i + 7]);
     out.push_back(n);
   }
   return out;

@@ -43,7 +43,7 @@ void requireSameContactState(const std::vector<continuation::SlaveNodeIncrement>
   for (std::size_t k = 0; same && k < before.size(); ++k)
     same = sameBits(before[k].committedGap, after[k].committedGap) && sameBits(before[k].trialGap, after[k].trialGap) &&
            before[k].trialStatus == after[k].trialStatus && sameBits(before[k].trialIndicator, after[k].trialIndicator) &&
-           before[k].slipReversed == after[k].slipReversed;
+           before[k].slipReversed == after[k].slipReversed && before[k].trialFacet == after[k].trialFacet;
   if (!same) throw std::logic_error("the Jacobian check changed the contact trial state of the model");
 }
 
@@ -82,13 +82,17 @@ JacobianComparison compareAt(const ContactMechanicsModel& model, const Thyra::Ve
   residual(model, xp, lambda, fCentre);
   const auto f0 = Extract::getConstTpetraVector(fCentre)->getData(0);
 
-  // The contact status of every owned slave node (open/stick/slip, slip reversed) at the unperturbed
-  // state: W is the derivative of the residual with these statuses held. A perturbed residual whose
-  // statuses differ lies beyond a kink of the residual (a node opening or closing, stick turning to
-  // slip), where no difference quotient measures W.
+  // The contact status of every slave node (open/stick/slip, slip reversed, and the master facet it is
+  // evaluated on) at the unperturbed state: W is the derivative of the residual with these held. A
+  // perturbed residual whose statuses differ lies beyond a kink of the residual (a node opening or
+  // closing, stick turning to slip, a node at a vertex changing facet), where no difference quotient
+  // measures W.
   const auto statusesOf = [&model]() {
     std::vector<int> s;
-    for (const auto& n : model.trialIncrement()) s.push_back(2 * static_cast<int>(n.trialStatus) + (n.slipReversed ? 1 : 0));
+    for (const auto& n : model.trialIncrement()) {
+      s.push_back(2 * static_cast<int>(n.trialStatus) + (n.slipReversed ? 1 : 0));
+      s.push_back(n.trialFacet);
+    }
     return s;
   };
   const std::vector<int> baseStatuses = statusesOf();

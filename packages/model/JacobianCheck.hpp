@@ -8,7 +8,8 @@
 // Entry error, robust against tiny entries (docs/user-guide.md, "Checking the Jacobian"):
 //   e_ij = |W_ij − D_ij| / max(|W_ij|, τ · max_k |W_ik|),   τ = rowFloor,
 // D_ij = (f_i(x + h_j e_j) − f_i(x − h_j e_j)) / (2 h_j),   h_j = η · max(|x_j|, ‖x‖_∞, 1),  η = step,
-// W is the derivative with every contact node's status (open, stick, slip, slip reversed) held: where
+// W is the derivative with every contact node's status (open, stick, slip, slip reversed, the master
+// facet it is evaluated on) held: where
 // the status of some node changes on one side of ±h_j (the residual's kink: a contact opening or
 // closing, stick turning to slip), D_ij is the one-sided difference on the other side (second order,
 // with a half step added there); where it changes

@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""check_hertz_sphere.py EXO HISTORY [--R 50 --E 20000 --nu 0.3 --interface plane] [tolerances]
+
+Compares the contact of inputs/verification/hertz_sphere.xml (an eighth of an elastic sphere, pole on a
+rigid plane, symmetry about x = 0 and y = 0) with Hertz for the force P the run transmits
+(P = 4 x |contact_force_<interface>_z|, the octant carrying a quarter of the contact area):
+  a_H = (3 P R / (4 E*))^(1/3),  p0_H = 3 P / (2 pi a_H^2),  E* = E / (1 - nu^2).
+Checks:
+- peak pressure (the pole node): |p0 / p0_H - 1| <= --p0-rtol (0.03, the issue's 3 %);
+- the contact edge: a_H lies within one element of the last node in contact (the discrete edge smears
+  the pressure over one element);
+- equilibrium: the reaction of the pushed equator equals the contact force (1e-6 relative).
+Printed, not checked (docs/verification-contact.md, Hertz sphere): the contact radius from a least-squares
+fit of p^2 = p0^2 (1 - r^2/a^2) to the contact nodes with r <= 0.8 a_H, which is mesh-dependent at this
+resolution (-3.8 % of a_H on the registered mesh, -1.7 % on a 2.3x finer one), and a and p0 against the
+displacement-driven values of Code_Aster's SSNV104 (two hemispheres R = 50, each pushed 2 mm: a =
+sqrt(R h / 2) = 10 mm, p0 = E/(pi (1 - nu^2)) sqrt(2 h / R) = 2798.3 MPa): the hemisphere pushed at its
+equator carries 12 % more force than Hertz's half-space for the same approach, so those differ by more.
+Exit 0 when every check holds."""
+import argparse
+import csv
+import math
+import sys
+
+import netCDF4
+import numpy as np
+
+
+def names(ds, var):
+    if var not in ds.variables:
+        return []
+    return ["".join(c.decode() for c in row if c not in (b"", b"\x00")).strip() for row in ds.variables[var][:].data]
+
+
+parser = argparse.ArgumentParser()
+parser.add_argument("exo")
+parser.add_argument("history")
+parser.add_argument("--R", type=float, default=50.0)
+parser.add_argument("--E", type=float, default=20000.0)
+parser.add_argument("--nu", type=float, default=0.3)
+parser.add_argument("--interface", default="plane")
+parser.add_argument("--surface", default="surface")
+parser.add_argument("--reaction", default="equator")
+parser.add_argument("--p0-rtol", type=float, default=0.03)
+args = parser.parse_args()
+
+ds = netCDF4.Dataset(args.exo)
+x, y = (np.asarray(ds.variables[f"coord{c}"][:], dtype=float) for c in "xy")
+nodal = names(ds, "name_nod_var")
+sets = names(ds, "ns_names")
+if "contact_pressure" not in nodal:
+    sys.exit(f"{args.exo}: no nodal variable contact_pressure (have {nodal})")
+pressure = np.asarray(ds.variables[f"vals_nod_var{nodal.index('contact_pressure') + 1}"][-1, :], dtype=float)
+surface = np.asarray(ds.variables[f"node_ns{sets.index(args.surface) + 1}"][:], dtype=int) - 1
+rows = list(csv.DictReader(open(args.history)))
+last = {k: float(v) for k, v in rows[-1].items()}
+force = last[f"contact_force_{args.interface}_z"]
+P = 4.0 * abs(force)
+E_star = args.E / (1.0 - args.nu ** 2)
+a_h = (3.0 * P * args.R / (4.0 * E_star)) ** (1.0 / 3.0)
+p0_h = 3.0 * P / (2.0 * math.pi * a_h ** 2)
+
+r = np.hypot(x[surface], y[surface])
+p = pressure[surface]
+order = np.argsort(r)
+r, p = r[order], p[order]
+touching = p > 0
+pole = int(np.argmin(r))
+p0 = p[pole]
+fit = touching & (r <= 0.8 * a_h)
+# p^2 = p0^2 - (p0^2 / a^2) r^2: a straight line in r^2.
+slope, intercept = np.polyfit(r[fit] ** 2, p[fit] ** 2, 1)
+a_fit = math.sqrt(-intercept / slope) if slope < 0 < intercept else float("nan")
+r_last = r[touching].max()
+beyond = r[(~touching) & (r > r_last)]
+r_open = beyond.min() if beyond.size else float("nan")
+h_edge = r_open - r_last if beyond.size else float("inf")
+reaction = last.get(f"reaction_{args.reaction}_z", float("nan"))
+
+print(f"P = {P:.6f} N (4 x contact_force_{args.interface}_z), a_H = {a_h:.5f} mm, p0_H = {p0_h:.3f} MPa; "
+      f"{int(touching.sum())} surface nodes in contact")
+print(f"info: contact radius from the fit of p^2: a_fit = {a_fit:.5f} mm, {a_fit / a_h - 1:+.2%} of a_H")
+print(f"info: SSNV104 (displacement-driven): a = 10 mm -> {a_fit / 10.0 - 1:+.2%}, p0 = 2798.3 MPa -> {p0 / 2798.3 - 1:+.2%}")
+checks = [
+    ("peak pressure (pole node)", f"p0 = {p0:.3f}, error {p0 / p0_h - 1:+.2e}", abs(p0 / p0_h - 1) <= args.p0_rtol,
+     f"<= {args.p0_rtol:g}"),
+    ("contact edge", f"last contact node r = {r_last:.4f}, first open {r_open:.4f}",
+     abs(r_last - a_h) <= h_edge, "within one element of a_H"),
+    ("equilibrium", f"reaction_{args.reaction}_z + contact force = {reaction + force:.2e}",
+     abs(reaction + force) <= 1e-6 * abs(force), "<= 1e-6 x force"),
+]
+failed = 0
+for name, text, ok, tol in checks:
+    print(f"{'ok  ' if ok else 'FAIL'} {name}: {text} ({tol})")
+    failed += not ok
+sys.exit(1 if failed else 0)
