@@ -24,12 +24,12 @@ class MasterSurface {
   explicit MasterSurface(const ContactInterfaceSpec& spec) : rigid_(spec.rigidMaster) {
     if (spec.nodesPerFacet() != kNodes || spec.dimension != kDim)
       throw std::logic_error("MasterSurface: interface '" + spec.name + "' does not match the facet type");
-    const auto& ids = rigid_ ? spec.rigidSurface.facets : std::vector<int>{};
     const std::size_t count = spec.numMasterFacets();
     nodes_.resize(count);
     for (std::size_t f = 0; f < count; ++f)
       for (int a = 0; a < kNodes; ++a)
-        nodes_[f][a] = rigid_ ? -1 - static_cast<GlobalIndex>(ids[f * kNodes + a]) : spec.masterFacets[f * kNodes + a];
+        nodes_[f][a] = rigid_ ? -1 - static_cast<GlobalIndex>(spec.rigidSurface.facets[f * kNodes + a])
+                              : spec.masterFacets[f * kNodes + a];
     if (rigid_) {
       const auto& p = spec.rigidSurface.points;
       points_.resize(p.size() / kDim);
