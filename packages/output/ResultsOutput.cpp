@@ -40,7 +40,8 @@ const std::vector<std::string> kGlobals = {"load_factor", "step_size", "beta", "
 // The history's columns before the reactions and contact forces (which are also Exodus globals).
 const std::vector<std::string> kFixedColumns = {"step", "lambda", "dlambda", "beta", "attempts",
                                                 "newton_iterations", "active_contacts", "new_contacts",
-                                                "new_events", "stick", "slip", "residual_norm", "wall_s"};
+                                                "new_events", "stick", "slip", "residual_norm", "wall_s",
+                                                "linear_iterations"};
 
 // Rank 0's message on every rank ("" when rank 0 succeeded): only rank 0 writes, so only it knows.
 std::string agree(const model::Comm& comm, std::string message) {
@@ -139,7 +140,8 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
                                                    runRecords(problem.title, run, comm->getSize()), lineBlocks);
       const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
-                                                       "new_contacts", "new_events", "stick", "slip"};
+                                                       "new_contacts", "new_events", "stick", "slip",
+                                                       "linear_iterations"};
       history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
     } catch (const std::exception& e) {
       error = e.what();
@@ -179,7 +181,8 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
                                static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
                                static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
                                static_cast<double>(counts.slip),
-                               report.residualNorm, report.wallSeconds};
+                               report.residualNorm, report.wallSeconds,
+                               static_cast<double>(report.linearIterations)};
     for (const auto& r : reactions)
       for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
     for (const auto& [name, force] : contactForces)

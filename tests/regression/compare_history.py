@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""compare_history.py A.csv B.csv [--rtol R] [--atol A]
+"""compare_history.py A.csv B.csv [--rtol R] [--atol A] [--ignore COL,COL...]
 
-Compares two Contessa history files row by row (every numeric column but wall_s) with
+Compares two Contessa history files row by row (every numeric column but wall_s and the --ignore
+ones, e.g. the solver's own counts when two linear solvers are compared) with
 |a - b| <= atol + rtol * max(|a|, |b|), as exodiff does. Exit 0 when they agree."""
 import argparse
 import csv
@@ -12,6 +13,7 @@ parser.add_argument("a")
 parser.add_argument("b")
 parser.add_argument("--rtol", type=float, default=1e-8)
 parser.add_argument("--atol", type=float, default=1e-10)
+parser.add_argument("--ignore", default="", help="comma-separated columns left out besides wall_s")
 args = parser.parse_args()
 
 rows_a = list(csv.DictReader(open(args.a)))
@@ -20,8 +22,9 @@ if len(rows_a) != len(rows_b):
     sys.exit(f"FAIL: {len(rows_a)} rows in {args.a}, {len(rows_b)} in {args.b}")
 if not rows_a:
     sys.exit("FAIL: empty histories")
-columns = [c for c in rows_a[0] if c != "wall_s"]
-if set(columns) != set(c for c in rows_b[0] if c != "wall_s"):
+skipped = {"wall_s"} | {c for c in args.ignore.split(",") if c}
+columns = [c for c in rows_a[0] if c not in skipped]
+if set(columns) != set(c for c in rows_b[0] if c not in skipped):
     sys.exit("FAIL: different columns")
 worst = (0.0, None)
 failures = 0
