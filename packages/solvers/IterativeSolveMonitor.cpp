@@ -25,8 +25,8 @@ namespace {
 
 class MonitoredLinearOpWithSolve : public LOWS {
  public:
-  MonitoredLinearOpWithSolve(RCP<LOWS> inner, std::string solverName)
-      : inner_(std::move(inner)), solverName_(std::move(solverName)) {}
+  MonitoredLinearOpWithSolve(RCP<LOWS> inner, std::string solverName, IterativeSolveLimits limits)
+      : inner_(std::move(inner)), solverName_(std::move(solverName)), limits_(limits) {}
   LOWS& inner() const { return *inner_; }
 
   RCP<const Thyra::VectorSpaceBase<double>> range() const override { return inner_->range(); }
@@ -56,11 +56,18 @@ class MonitoredLinearOpWithSolve : public LOWS {
     if (iterations > 0) log.iterations += iterations;
     if (status.solveStatus != Thyra::SOLVE_STATUS_CONVERGED) {
       ++log.failures;
-      log.lastFailure = "the linear solver (" + solverName_ + ") did not converge in " +
-                        (iterations >= 0 ? std::to_string(iterations) : std::string("its")) +
-                        " iterations (relative residual " +
-                        (status.achievedTol >= 0 ? shortNumber(status.achievedTol) : std::string("unknown")) +
-                        "; raise Maximum Iterations or use a stronger preconditioner, or MUMPS)";
+      const std::string residual = status.achievedTol >= 0 ? shortNumber(status.achievedTol) : std::string("unknown");
+      // Either the iterations ran out, or Belos stopped early because the true residual cannot reach the
+      // tolerance (its "loss of accuracy": the matrix is too ill-conditioned for it, e.g. stiff penalty rows).
+      if (iterations >= limits_.maxIterations || iterations < 0)
+        log.lastFailure = "the linear solver (" + solverName_ + ") did not converge in " + std::to_string(iterations) +
+                          " iterations (Maximum Iterations; relative residual " + residual +
+                          "; raise Maximum Iterations or use a stronger preconditioner, or MUMPS)";
+      else
+        log.lastFailure = "the linear solver (" + solverName_ + ") stopped after " + std::to_string(iterations) +
+                          " iterations: the true residual does not reach Convergence Tolerance = " +
+                          shortNumber(limits_.tolerance) +
+                          " (Belos' loss of accuracy: the matrix is too ill-conditioned for that tolerance; loosen it, or use MUMPS)";
       throw std::runtime_error(log.lastFailure);
     }
     return status;
@@ -69,14 +76,15 @@ class MonitoredLinearOpWithSolve : public LOWS {
  private:
   RCP<LOWS> inner_;
   std::string solverName_;
+  IterativeSolveLimits limits_;
 };
 
 LOWS* innerOf(LOWS* op) { return &dynamic_cast<MonitoredLinearOpWithSolve&>(*op).inner(); }
 
 class MonitoredLinearOpWithSolveFactory : public LOWSF {
  public:
-  MonitoredLinearOpWithSolveFactory(RCP<LOWSF> inner, std::string solverName)
-      : inner_(std::move(inner)), solverName_(std::move(solverName)) {}
+  MonitoredLinearOpWithSolveFactory(RCP<LOWSF> inner, std::string solverName, IterativeSolveLimits limits)
+      : inner_(std::move(inner)), solverName_(std::move(solverName)), limits_(limits) {}
 
   bool acceptsPreconditionerFactory() const override { return inner_->acceptsPreconditionerFactory(); }
   void setPreconditionerFactory(const RCP<Thyra::PreconditionerFactoryBase<double>>& factory,
@@ -90,7 +98,7 @@ class MonitoredLinearOpWithSolveFactory : public LOWSF {
     inner_->unsetPreconditionerFactory(factory, label);
   }
   bool isCompatible(const Source& src) const override { return inner_->isCompatible(src); }
-  RCP<LOWS> createOp() const override { return rcp(new MonitoredLinearOpWithSolve(inner_->createOp(), solverName_)); }
+  RCP<LOWS> createOp() const override { return rcp(new MonitoredLinearOpWithSolve(inner_->createOp(), solverName_, limits_)); }
   void initializeOp(const RCP<const Source>& src, LOWS* op, const Thyra::ESupportSolveUse use) const override {
     timers::Scope timed(timers::Phase::IterativeSetup);
     inner_->initializeOp(src, innerOf(op), use);
@@ -125,12 +133,14 @@ class MonitoredLinearOpWithSolveFactory : public LOWSF {
  private:
   RCP<LOWSF> inner_;
   std::string solverName_;
+  IterativeSolveLimits limits_;
 };
 
 }  // namespace
 
-RCP<LOWSF> monitorIterativeSolver(const RCP<LOWSF>& inner, const std::string& solverName) {
-  return rcp(new MonitoredLinearOpWithSolveFactory(inner, solverName));
+RCP<LOWSF> monitorIterativeSolver(const RCP<LOWSF>& inner, const std::string& solverName,
+                                  const IterativeSolveLimits& limits) {
+  return rcp(new MonitoredLinearOpWithSolveFactory(inner, solverName, limits));
 }
 
 }  // namespace contessa::solvers

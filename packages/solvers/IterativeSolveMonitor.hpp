@@ -28,9 +28,16 @@ struct IterativeSolveLog {
 /// The log of the iterative solver of this process (one linear solver per run).
 IterativeSolveLog& iterativeSolveLog();
 
+/// What an unconverged solve is measured against, for its message.
+struct IterativeSolveLimits {
+  double tolerance = 0;   ///< Convergence Tolerance (relative residual)
+  int maxIterations = 0;  ///< Maximum Iterations
+};
+
 /// `inner` (Stratimikos' Belos factory) with every solve recorded in iterativeSolveLog(). `solverName`
 /// names it in messages, e.g. "Belos Pseudo Block GMRES with MueLu".
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> monitorIterativeSolver(
-    const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& inner, const std::string& solverName);
+    const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& inner, const std::string& solverName,
+    const IterativeSolveLimits& limits);
 
 }  // namespace contessa::solvers

@@ -123,6 +123,23 @@ void probeIterativeSolver(Thyra::LinearOpWithSolveFactoryBase<double>& factory) 
   lows->solve(Thyra::NOTRANS, *tb, tx.ptr());
 }
 
+// The Belos solver's Convergence Tolerance and Maximum Iterations as it uses them: the deck's, else
+// Belos' defaults (from the factory's lists once Stratimikos has given it the deck's).
+IterativeSolveLimits belosLimits(const Thyra::LinearOpWithSolveFactoryBase<double>& factory) {
+  IterativeSolveLimits limits{1e-8, 1000};
+  const auto given = factory.getParameterList();
+  const auto valid = factory.getValidParameters();
+  std::string type = "Pseudo Block GMRES";
+  if (!given.is_null() && given->isType<std::string>("Solver Type")) type = given->get<std::string>("Solver Type");
+  for (const auto& list : {valid, given}) {
+    if (list.is_null() || !list->isSublist("Solver Types") || !list->sublist("Solver Types").isSublist(type)) continue;
+    const auto& solver = list->sublist("Solver Types").sublist(type);
+    if (solver.isType<double>("Convergence Tolerance")) limits.tolerance = solver.get<double>("Convergence Tolerance");
+    if (solver.isType<int>("Maximum Iterations")) limits.maxIterations = solver.get<int>("Maximum Iterations");
+  }
+  return limits;
+}
+
 // "Belos (Pseudo Block GMRES) with MueLu", for messages.
 std::string iterativeSolverName(const Teuchos::ParameterList& stratimikos) {
   std::string belos = "Pseudo Block GMRES";
@@ -216,7 +233,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
       throw InputError("Piro/Stratimikos (" + iterativeSolverName(stratimikos) +
                        "): the solver refused its parameters: " + firstMeaningfulLine(e.what()));
     }
-    return monitorIterativeSolver(factory, iterativeSolverName(stratimikos));
+    return monitorIterativeSolver(factory, iterativeSolverName(stratimikos), belosLimits(*factory));
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& e) {
