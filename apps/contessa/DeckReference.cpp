@@ -80,11 +80,16 @@ std::string deckReference() {
   md << "### `Piro/Stratimikos` additions\n\n"
         "Stratimikos validates this list itself (see the Stratimikos documentation). Contessa registers the\n"
         "linear solver `MUMPS` (the default: a parallel direct solver, the same answer on any number of ranks)\n"
-        "and the preconditioner `Ifpack2` for `Belos`. `Linear Solver Type` is one of `MUMPS`, `Amesos2`,\n"
-        "`Belos` and `Preconditioner Type` one of `None` (the default), `Ifpack2`: Stratimikos' Epetra solvers\n"
-        "(`Amesos`, `AztecOO`, `ML`, `Ifpack`) cannot take Contessa's Tpetra matrices. `Amesos2` (KLU2) is\n"
-        "refused on more than one rank, and its `Tacho` always, because they give wrong answers or crash in\n"
-        "this Trilinos build.\n\n"
+        "and the preconditioners `Ifpack2` and `MueLu` for `Belos`. `Linear Solver Type` is one of `MUMPS`,\n"
+        "`Amesos2`, `Belos` and `Preconditioner Type` one of `None` (the default), `Ifpack2`, `MueLu`:\n"
+        "Stratimikos' Epetra solvers (`Amesos`, `AztecOO`, `ML`, `Ifpack`) cannot take Contessa's Tpetra\n"
+        "matrices. `Amesos2` (KLU2) is refused on more than one rank, and its `Tacho` always, because they give\n"
+        "wrong answers or crash in this Trilinos build. With `Belos`, the solver is built and tried on a small\n"
+        "matrix before the run, so that Belos', Ifpack2's and MueLu's parameters are checked then (exit 2);\n"
+        "`Convergence Tolerance` must lie in (0, 1) and `Maximum Iterations` and `Num Blocks` be positive;\n"
+        "`Piro/Stratimikos/Preconditioner Types/MueLu` takes MueLu's own parameter names (MueLu's user guide),\n"
+        "and Contessa adds the rigid-body modes as `Nullspace` and the mesh dimension as `number of\n"
+        "equations` (unless given). See docs/user-guide.md, \"Linear solver\".\n\n"
         "#### `Piro/Stratimikos/Linear Solver Types/MUMPS`\n\n";
   describe(md, *solvers::MumpsLinearOpWithSolveFactory().getValidParameters(), "Piro/Stratimikos/Linear Solver Types/MUMPS", 5);
   return md.str();

@@ -1,6 +1,7 @@
 #include "Run.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 
 #include "Failure.hpp"
+#include "RunReport.hpp"
 #include "common/Error.hpp"
 #include "common/PhaseTimers.hpp"
 #include "deck/DeckReader.hpp"
@@ -86,6 +88,7 @@ std::string commandLineText(const CommandLine& cl) {
 
 int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
   const bool root = comm->getRank() == 0;
+  const auto start = std::chrono::steady_clock::now();
   // Before the first HDF5 call (the mesh reader may make it): readers may open the results while
   // the run writes them (io/ExodusWriter.hpp).
   io::disableHdf5FileLocking();
@@ -124,6 +127,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // 2. Partition, model, output.
   const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
   auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, partition, linearSolver));
+  // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
+  solvers::provideNearNullSpace(*linearSolver, *model->ownedDofMap(), problem.mesh);
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description);
   if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
   requireHistoryColumns(problem, results.historyColumns());
@@ -162,17 +167,36 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     std::fflush(stdout);
   }
   timers::printTable(*Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm(), stdout);
+  int exitStatus = 0;
   if (!summary.finished) {
     if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
-    return 1;
+    exitStatus = 1;
+  } else {
+    int failedChecks = root ? checkRegression(problem, results) : 0;
+    Teuchos::broadcast(*comm, 0, &failedChecks);
+    if (failedChecks > 0) {
+      if (root) std::fprintf(stderr, "contessa: error: %d regression check(s) of the deck failed\n", failedChecks);
+      exitStatus = 3;
+    }
   }
-  int failedChecks = root ? checkRegression(problem, results) : 0;
-  Teuchos::broadcast(*comm, 0, &failedChecks);
-  if (failedChecks > 0) {
-    if (root) std::fprintf(stderr, "contessa: error: %d regression check(s) of the deck failed\n", failedChecks);
-    return 3;
+
+  // The summary for batch logs and scripts, beside the history (a failure to write it is a warning:
+  // the results are complete).
+  RunReport report;
+  report.deck = cl.deck;
+  report.ranks = comm->getSize();
+  report.summary = summary;
+  report.exitStatus = exitStatus;
+  report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  gatherPeakMemory(*comm, report);
+  if (root) {
+    const std::string path = cl.outputDirectory + "/" + name + ".summary.json";
+    std::printf("%s\n", summaryLine(report).c_str());
+    const std::string error = writeFileAtomically(path, summaryJson(report));
+    if (!error.empty()) std::printf("contessa: warning: no run summary: %s\n", error.c_str());
+    std::fflush(stdout);
   }
-  return 0;
+  return exitStatus;
 }
 
 }  // namespace contessa::app

@@ -88,6 +88,8 @@ const char* phaseName(Phase phase) {
     case Phase::MumpsAnalysis: return "MUMPS analysis (JOB=1)";
     case Phase::MumpsFactorization: return "MUMPS factorisation (JOB=2)";
     case Phase::MumpsSolve: return "MUMPS solve (JOB=3, rhs to/from host)";
+    case Phase::IterativeSetup: return "iterative: preconditioner set-up";
+    case Phase::IterativeSolve: return "iterative: Krylov iterations";
     case Phase::Output: return "output: Exodus, CSV, stresses";
     case Phase::Reactions: return "reactions for output";
     case Phase::Other: return "NOX/LOCA and everything else";

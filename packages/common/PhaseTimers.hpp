@@ -24,6 +24,8 @@ enum class Phase : int {
   MumpsAnalysis,       ///< MUMPS JOB=1 (ordering, symbolic)
   MumpsFactorization,  ///< MUMPS JOB=2
   MumpsSolve,          ///< MUMPS JOB=3 with the right-hand side gathered to and scattered from the host
+  IterativeSetup,      ///< iterative solver: preconditioner set-up (MueLu hierarchy, Ifpack2 factorisation)
+  IterativeSolve,      ///< iterative solver: the Krylov iterations with the preconditioner applied
   Output,              ///< Exodus, history CSV, stresses, gathers to rank 0
   Reactions,           ///< reaction forces for the output
   Other,               ///< NOX/LOCA and everything else

@@ -41,7 +41,8 @@ const std::vector<std::string> kGlobals = {"load_factor", "step_size", "beta", "
 // The history's columns before the reactions and contact forces (which are also Exodus globals).
 const std::vector<std::string> kFixedColumns = {"step", "lambda", "dlambda", "beta", "attempts",
                                                 "newton_iterations", "active_contacts", "new_contacts",
-                                                "new_events", "stick", "slip", "residual_norm", "wall_s"};
+                                                "new_events", "stick", "slip", "residual_norm", "wall_s",
+                                                "linear_iterations"};
 
 // A map of the given global ids, in that order, on this rank (others have their own).
 RCP<const model::Map> mapOf(const std::vector<model::GO>& ids, const RCP<const model::Comm>& comm) {
@@ -229,7 +230,8 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       warning_ = lock_->warning();
       if (!perRank_) createExodus();
       const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
-                                                       "new_contacts", "new_events", "stick", "slip"};
+                                                       "new_contacts", "new_events", "stick", "slip",
+                                                       "linear_iterations"};
       history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
     } catch (const std::exception& e) {
       error = e.what();
@@ -284,7 +286,8 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
                              static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
                              static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
                              static_cast<double>(counts.slip),
-                             report.residualNorm, report.wallSeconds};
+                             report.residualNorm, report.wallSeconds,
+                             static_cast<double>(report.linearIterations)};
   for (const auto& r : reactions)
     for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
   for (const auto& [name, force] : contactForces)

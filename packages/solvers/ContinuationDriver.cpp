@@ -17,6 +17,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "solvers/ContactBetaStepSize.hpp"
+#include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/NewtonStatusTests.hpp"
 #include "solvers/StepSizeFactory.hpp"
@@ -91,20 +92,24 @@ class NewtonCounter : public NOX::Observer {
   NewtonCounter(NewtonStatusTests& tests, const std::ostringstream& noxOutput) : tests_(tests), noxOutput_(noxOutput) {}
   void runPreSolve(const NOX::Solver::Generic&) override {
     iterations = 0;
+    linearIterationsAtStart_ = iterativeSolveLog().iterations;
     tests_.startSolve();
     outputAtStart_ = noxOutput_.str().size();
   }
   void runPostSolve(const NOX::Solver::Generic& solver) override {
     iterations = solver.getNumIterations();
+    linearIterations = iterativeSolveLog().iterations - linearIterationsAtStart_;
     total += iterations;
     residualNorm = solver.getSolutionGroup().getNormF();
     failure = tests_.diagnose(solver, noxOutput_.str().substr(outputAtStart_));
   }
   int iterations = 0, total = 0;
+  long linearIterations = 0;  ///< Krylov iterations of the latest solve's Newton directions
   double residualNorm = 0;
   SolveFailure failure;  ///< of the latest solve (kind None when it converged)
 
  private:
+  long linearIterationsAtStart_ = 0;
   NewtonStatusTests& tests_;
   const std::ostringstream& noxOutput_;
   std::size_t outputAtStart_ = 0;
@@ -178,6 +183,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     r.lambda = lambda;
     r.attempts = attempts_;
     r.newtonIterations = newton_.iterations;
+    r.linearIterations = newton_.linearIterations;
     r.residualNorm = newton_.residualNorm;
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - start_).count();
     return r;
@@ -335,6 +341,7 @@ RunSummary ContinuationDriver::run() {
   RunSummary summary;
   const long solvesBefore = mumpsCounters().solves;
   const int jacobiansBefore = model_->jacobianEvaluations();
+  const long krylovBefore = iterativeSolveLog().iterations;
   try {
     LOCA::Stepper stepper(globalData, group, newtonTests.test(), params);
     const auto status = stepper.run();
@@ -368,6 +375,7 @@ RunSummary ContinuationDriver::run() {
   // A direct solver solves once per Jacobian; iterative solvers are counted as Jacobian evaluations.
   const long mumpsSolves = mumpsCounters().solves - solvesBefore;
   summary.linearSolves = mumpsSolves > 0 ? static_cast<int>(mumpsSolves) : model_->jacobianEvaluations() - jacobiansBefore;
+  summary.linearIterations = iterativeSolveLog().iterations - krylovBefore;
   summary.finalLambda = bookkeeper->lastLambda();
   LOCA::destroyGlobalData(globalData);
   return summary;

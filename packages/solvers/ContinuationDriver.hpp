@@ -20,6 +20,7 @@ struct IncrementReport {
   double beta = 1;           ///< step correction factor of the step-size strategy (1 = none)
   int attempts = 1;          ///< solves tried for this increment (1 + failed attempts)
   int newtonIterations = 0;  ///< Newton iterations of the converged solve
+  long linearIterations = 0; ///< Krylov iterations of its linear solves (0 with a direct solver)
   double residualNorm = 0;   ///< ||f|| at convergence
   double wallSeconds = 0;    ///< since the start of the run
   bool betaRestart = false;  ///< a failed attempt stopped for a Contact Beta correction (not a Newton failure)
@@ -40,6 +41,7 @@ struct RunSummary {
   bool finished = false;  ///< reached the final load factor
   std::string message;    ///< why not, when not
   int increments = 0, failedAttempts = 0, newtonIterations = 0, linearSolves = 0;
+  long linearIterations = 0;  ///< Krylov iterations of every linear solve (0 with a direct solver)
   double finalLambda = 0;
 };
 

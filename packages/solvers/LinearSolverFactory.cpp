@@ -1,13 +1,20 @@
 #include "solvers/LinearSolverFactory.hpp"
 
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
+#include <MueLu_MasterList.hpp>
+#include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_MueLuPreconditionerFactory.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_Core.hpp>
 
 #include "common/Error.hpp"
 #include "common/ErrorText.hpp"
-#include "model/TpetraTypes.hpp"
+#include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/RigidBodyModes.hpp"
 
 namespace contessa::solvers {
 namespace {
@@ -20,6 +27,128 @@ void registerSolvers(Stratimikos::DefaultLinearSolverBuilder& builder) {
       Teuchos::abstractFactoryStd<Thyra::PreconditionerFactoryBase<double>,
                                   Thyra::Ifpack2PreconditionerFactory<model::CrsMatrix>>(),
       "Ifpack2");
+  // MueLu over Contessa's Tpetra types (double, int, long long, Serial): smoothed aggregation AMG.
+  Stratimikos::enableMueLu<model::LO, model::GO, model::Node>(builder, "MueLu");
+}
+
+// MueLu does not type its parameters for Stratimikos: a value given by --set arrives as text. Each
+// text value of a parameter MueLu knows as a number or a flag is converted to that type (MueLu's own
+// list of parameters); a value that does not convert is an InputError naming the parameter.
+void typeMueLuParameters(Teuchos::ParameterList& list, const std::string& where) {
+  const auto master = MueLu::MasterList::List();
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string name = list.name(it);
+    if (list.isSublist(name)) continue;  // "level 1", "smoother: params", ...: MueLu checks them
+    if (!master->isParameter(name))
+      throw InputError(where + "/" + name + ": not a MueLu parameter (MueLu's user guide lists them, e.g. 'smoother: type', "
+                       "'coarse: max size', 'aggregation: drop tol')");
+    if (!list.isType<std::string>(name)) continue;
+    const std::string text = list.get<std::string>(name);
+    const auto& expected = master->getEntry(name);
+    std::size_t used = 0;
+    bool ok = false;
+    try {
+      if (expected.isType<int>()) {
+        const int value = std::stoi(text, &used);
+        ok = used == text.size();
+        if (ok) list.set(name, value);
+      } else if (expected.isType<double>()) {
+        const double value = std::stod(text, &used);
+        ok = used == text.size();
+        if (ok) list.set(name, value);
+      } else if (expected.isType<bool>()) {
+        ok = text == "true" || text == "false";
+        if (ok) list.set(name, text == "true");
+      } else {
+        continue;
+      }
+    } catch (const std::exception&) {
+    }
+    if (!ok)
+      throw InputError(where + "/" + name + ": expected " + expected.getAny(false).typeName() + ", got '" + text + "'");
+  }
+}
+
+using MueLuFactory = Thyra::MueLuPreconditionerFactory<double, model::LO, model::GO, model::Node>;
+
+// The first line of a library's message that says something (Teuchos prefixes file and line, and
+// MueLu and Belos add pages of context).
+std::string firstMeaningfulLine(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size() && lines.size() < 2) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    line.erase(0, line.find_first_not_of(" \t"));
+    if (line.empty() || line.rfind("/", 0) == 0 || line.find(".hpp:") != std::string::npos ||
+        line.find(".cpp:") != std::string::npos || line.rfind("Throw number", 0) == 0 || line.rfind("Throw test", 0) == 0)
+      continue;
+    // A line that announces more ("Could not construct any smoother:") takes the next one along.
+    if (!lines.empty() || line.back() == ':') lines.push_back(line);
+    else return line.size() > 300 ? line.substr(0, 300) + "..." : line;
+  }
+  std::string joined;
+  for (const auto& l : lines) joined += (joined.empty() ? "" : " ") + l;
+  if (joined.size() > 300) joined = joined.substr(0, 300) + "...";
+  return joined.empty() ? plainMessage(std::runtime_error(text)) : joined;
+}
+
+// Builds and applies the deck's iterative solver once, on a small diagonally dominant matrix (a
+// tridiagonal stiffness, 6 rows per rank so that 2 or 3 DOFs per node divide it), so that every
+// parameter of Belos, Ifpack2 and MueLu is read before the run rather than at its first solve.
+// Whether the probe converges does not matter; an exception does.
+void probeIterativeSolver(Thyra::LinearOpWithSolveFactoryBase<double>& factory) {
+  auto comm = Tpetra::getDefaultComm();
+  const model::LO local = 6;
+  auto map = Teuchos::rcp(new model::Map(static_cast<Tpetra::global_size_t>(local * comm->getSize()), local, 0, comm));
+  auto A = Teuchos::rcp(new model::CrsMatrix(map, 3));
+  const model::GO n = static_cast<model::GO>(map->getGlobalNumElements());
+  for (model::LO i = 0; i < local; ++i) {
+    const model::GO row = map->getGlobalElement(i);
+    std::vector<model::GO> cols;
+    std::vector<double> vals;
+    if (row > 0) cols.push_back(row - 1), vals.push_back(-1.0);
+    cols.push_back(row), vals.push_back(4.0);
+    if (row + 1 < n) cols.push_back(row + 1), vals.push_back(-1.0);
+    A->insertGlobalValues(row, Teuchos::ArrayView<const model::GO>(cols), Teuchos::ArrayView<const double>(vals));
+  }
+  A->fillComplete();
+  auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const model::Operator>(A));
+  auto lows = Thyra::linearOpWithSolve(factory, op);
+  model::Vector b(map), x(map);
+  b.putScalar(1.0);
+  auto tb = Thyra::createConstVector(Teuchos::rcpFromRef(b).getConst());
+  auto tx = Thyra::createVector(Teuchos::rcpFromRef(x));
+  lows->solve(Thyra::NOTRANS, *tb, tx.ptr());
+}
+
+// The Belos solver's Convergence Tolerance and Maximum Iterations as it uses them: the deck's, else
+// Belos' defaults (from the factory's lists once Stratimikos has given it the deck's).
+IterativeSolveLimits belosLimits(const Thyra::LinearOpWithSolveFactoryBase<double>& factory) {
+  IterativeSolveLimits limits{1e-8, 1000};
+  const auto given = factory.getParameterList();
+  const auto valid = factory.getValidParameters();
+  std::string type = "Pseudo Block GMRES";
+  if (!given.is_null() && given->isType<std::string>("Solver Type")) type = given->get<std::string>("Solver Type");
+  for (const auto& list : {valid, given}) {
+    if (list.is_null() || !list->isSublist("Solver Types") || !list->sublist("Solver Types").isSublist(type)) continue;
+    const auto& solver = list->sublist("Solver Types").sublist(type);
+    if (solver.isType<double>("Convergence Tolerance")) limits.tolerance = solver.get<double>("Convergence Tolerance");
+    if (solver.isType<int>("Maximum Iterations")) limits.maxIterations = solver.get<int>("Maximum Iterations");
+  }
+  return limits;
+}
+
+// "Belos (Pseudo Block GMRES) with MueLu", for messages.
+std::string iterativeSolverName(const Teuchos::ParameterList& stratimikos) {
+  std::string belos = "Pseudo Block GMRES";
+  if (stratimikos.isSublist("Linear Solver Types") && stratimikos.sublist("Linear Solver Types").isSublist("Belos")) {
+    const auto& list = stratimikos.sublist("Linear Solver Types").sublist("Belos");
+    if (list.isType<std::string>("Solver Type")) belos = list.get<std::string>("Solver Type");
+  }
+  const std::string prec = stratimikos.isType<std::string>("Preconditioner Type") ? stratimikos.get<std::string>("Preconditioner Type") : std::string("None");
+  return "Belos " + belos + (prec == "None" ? std::string(" without preconditioner") : " with " + prec);
 }
 
 std::string joinNames(const Teuchos::ParameterList& list) {
@@ -79,7 +208,14 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
   registerSolvers(builder);
   try {
     // The solvers keep pointers into the list: give them their own copy.
-    builder.setParameterList(Teuchos::rcp(new Teuchos::ParameterList(stratimikos)));
+    auto own = Teuchos::rcp(new Teuchos::ParameterList(stratimikos));
+    // MueLu prints its hierarchy at every setup unless told not to: quiet unless the deck asks.
+    if (own->isType<std::string>("Preconditioner Type") && own->get<std::string>("Preconditioner Type") == "MueLu") {
+      auto& muelu = own->sublist("Preconditioner Types").sublist("MueLu");
+      if (!muelu.isParameter("verbosity")) muelu.set("verbosity", std::string("none"));
+      typeMueLuParameters(muelu, "Piro/Stratimikos/Preconditioner Types/MueLu");
+    }
+    builder.setParameterList(own);
     // Stratimikos hands a solver its sublist only at the first solve: check MUMPS' now, before the run.
     if (stratimikos.isSublist("Linear Solver Types") && stratimikos.sublist("Linear Solver Types").isSublist("MUMPS")) {
       Teuchos::ParameterList mumps(stratimikos.sublist("Linear Solver Types").sublist("MUMPS"));
@@ -88,11 +224,50 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
       mumps.validateParametersAndSetDefaults(*valid);
       mumps.validateParametersAndSetDefaults(*valid);
     }
-    return Thyra::createLinearSolveStrategy(builder);
+    auto factory = Thyra::createLinearSolveStrategy(builder);
+    if (!stratimikos.isType<std::string>("Linear Solver Type") || stratimikos.get<std::string>("Linear Solver Type") != "Belos")
+      return factory;
+    try {
+      probeIterativeSolver(*factory);
+    } catch (const std::exception& e) {
+      throw InputError("Piro/Stratimikos (" + iterativeSolverName(stratimikos) +
+                       "): the solver refused its parameters: " + firstMeaningfulLine(e.what()));
+    }
+    return monitorIterativeSolver(factory, iterativeSolverName(stratimikos), belosLimits(*factory));
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     const std::string refused = firstRefusedEntry(stratimikos, *builder.getValidParameters(), "Piro/Stratimikos");
     throw InputError(refused.empty() ? "Piro/Stratimikos: " + plainMessage(e) : refused);
   }
+}
+
+void provideNearNullSpace(Thyra::LinearOpWithSolveFactoryBase<double>& factory, const model::Map& ownedDofMap,
+                          const mesh::Mesh& mesh) {
+  auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(factory.getPreconditionerFactory());
+  if (muelu.is_null()) return;
+  const int dim = mesh.dimension;
+  // The centroid of the whole mesh, the same on every rank (the mesh is replicated).
+  const auto center = centroid(dim, mesh.coordinates);
+  const int modes = rigidBodyModeCount(dim);
+  auto nullspace = Teuchos::rcp(new model::MultiVector(Teuchos::rcpFromRef(ownedDofMap), modes));
+  std::vector<double> nodeCoordinates(dim);
+  for (std::size_t i = 0; i < ownedDofMap.getNodeNumElements(); ++i) {
+    const model::GO dof = ownedDofMap.getGlobalElement(static_cast<model::LO>(i));
+    const model::GO node = dof / dim;
+    const int component = static_cast<int>(dof % dim);
+    for (int k = 0; k < dim; ++k) nodeCoordinates[k] = mesh.coordinates[static_cast<std::size_t>(node * dim + k)];
+    const auto nodeModes = rigidBodyModes(dim, nodeCoordinates, center);
+    for (int m = 0; m < modes; ++m)
+      nullspace->replaceLocalValue(static_cast<model::LO>(i), m, nodeModes[static_cast<std::size_t>(m * dim + component)]);
+  }
+  auto params = muelu->getNonconstParameterList();
+  if (params.is_null()) {
+    params = Teuchos::rcp(new Teuchos::ParameterList("MueLu"));
+    muelu->setParameterList(params);
+  }
+  if (!params->isParameter("number of equations")) params->set("number of equations", dim);
+  params->set("Nullspace", nullspace);
 }
 
 Teuchos::RCP<const Teuchos::ParameterList> stratimikosValidParameters() {

@@ -5,6 +5,7 @@
 #include <NOX_Abstract_Group.H>
 #include <NOX_Solver_Generic.H>
 
+#include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
 
 namespace contessa::solvers {
@@ -103,6 +104,7 @@ NewtonStatusTests::NewtonStatusTests(const model::ContactMechanicsModel& model, 
 void NewtonStatusTests::startSolve() {
   const MumpsFailures* failures = mumpsFailures(model_);
   linearFailuresAtStart_ = failures != nullptr ? failures->count : 0;
+  iterativeFailuresAtStart_ = iterativeSolveLog().failures;
 }
 
 SolveFailure NewtonStatusTests::diagnose(const NOX::Solver::Generic& solver, const std::string& noxOutput) const {
@@ -133,6 +135,8 @@ SolveFailure NewtonStatusTests::diagnose(const NOX::Solver::Generic& solver, con
 }
 
 SolveFailure NewtonStatusTests::linearSolverFailure() const {
+  if (iterativeSolveLog().failures != iterativeFailuresAtStart_)
+    return {SolveFailure::Kind::LinearSolver, iterativeSolveLog().lastFailure};
   const MumpsFailures* failures = mumpsFailures(model_);
   if (failures == nullptr || failures->count == linearFailuresAtStart_) return {};
   if (failures->nullPivots > 0)

@@ -90,6 +90,7 @@ class NewtonStatusTests {
   Teuchos::RCP<NOX::StatusTest::MaxIters> maxIters_;
   Teuchos::RCP<NOX::StatusTest::Combo> combo_;
   long linearFailuresAtStart_ = 0;
+  long iterativeFailuresAtStart_ = 0;  ///< iterativeSolveLog().failures at startSolve()
   std::function<std::string()> redoStep_;
   bool redoRequested_ = false;  ///< the last rejection was redoStep's
 };

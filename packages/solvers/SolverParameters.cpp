@@ -1,5 +1,9 @@
 #include "solvers/SolverParameters.hpp"
 
+#include <cmath>
+#include <cstdio>
+#include <type_traits>
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "common/Error.hpp"
@@ -21,13 +25,60 @@ std::string joinNames(const std::vector<std::string>& names) {
   return out;
 }
 
+// A number given in the deck or by --set (then a string): returns it, or throws InputError naming `where`.
+template <typename T>
+T requireNumber(Teuchos::ParameterList& list, const std::string& name, const std::string& where) {
+  if (list.isType<T>(name)) return list.get<T>(name);
+  if (list.isType<std::string>(name)) {
+    const std::string text = list.get<std::string>(name);
+    try {
+      std::size_t used = 0;
+      const T value = std::is_integral_v<T> ? static_cast<T>(std::stoll(text, &used)) : static_cast<T>(std::stod(text, &used));
+      if (used == text.size()) {
+        list.set(name, value);  // Belos reads the typed value
+        return value;
+      }
+    } catch (const std::exception&) {
+    }
+  }
+  throw InputError(where + ": expected " + (std::is_integral_v<T> ? "an integer" : "a number"));
+}
+
+// Belos reads its tolerance and iteration limit only at the first solve and takes a negative tolerance
+// or a zero limit without complaint (it then fails every solve): checked here, for every solver sublist
+// the deck gives.
+void validateBelosTolerances(ParameterList& strat) {
+  if (!strat.isSublist("Linear Solver Types") || !strat.sublist("Linear Solver Types").isSublist("Belos")) return;
+  auto& belos = strat.sublist("Linear Solver Types").sublist("Belos");
+  if (!belos.isSublist("Solver Types")) return;
+  auto& types = belos.sublist("Solver Types");
+  for (auto it = types.begin(); it != types.end(); ++it) {
+    if (!types.entry(it).isList()) continue;
+    auto& solver = types.sublist(types.name(it));
+    const std::string where = "Piro/Stratimikos/Linear Solver Types/Belos/Solver Types/" + types.name(it) + "/";
+    if (solver.isParameter("Convergence Tolerance")) {
+      const double tol = requireNumber<double>(solver, "Convergence Tolerance", where + "Convergence Tolerance");
+      char text[32];
+      std::snprintf(text, sizeof text, "%g", tol);
+      requireInput(std::isfinite(tol) && tol > 0 && tol < 1,
+                   where + "Convergence Tolerance: expected a relative residual reduction in (0, 1), got " + text);
+    }
+    if (solver.isParameter("Maximum Iterations"))
+      requireInput(requireNumber<int>(solver, "Maximum Iterations", where + "Maximum Iterations") > 0,
+                   where + "Maximum Iterations: expected a positive integer");
+    if (solver.isParameter("Num Blocks"))
+      requireInput(requireNumber<int>(solver, "Num Blocks", where + "Num Blocks") > 0,
+                   where + "Num Blocks: expected a positive integer (the GMRES restart length)");
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> stepSizeMethods() { return {"Constant", "Adaptive", "Contact Beta"}; }
 
 std::vector<std::string> linearSolverTypes() { return {"MUMPS", "Amesos2", "Belos"}; }
 
-std::vector<std::string> preconditionerTypes() { return {"None", "Ifpack2"}; }
+std::vector<std::string> preconditionerTypes() { return {"None", "Ifpack2", "MueLu"}; }
 
 RCP<const ParameterList> piroValidParameters() {
   auto piro = rcp(new ParameterList("Piro"));
@@ -128,6 +179,7 @@ void validatePiro(ParameterList& piro, int numRanks) {
     deck::requireOneOf(where, strat.get<std::string>(name), allowed);
   }
   const std::string type = strat.get<std::string>("Linear Solver Type");
+  if (type == "Belos") validateBelosTolerances(strat);
   if (type == "Amesos2") {
     std::string solver = "KLU2";
     if (strat.isSublist("Linear Solver Types") && strat.sublist("Linear Solver Types").isSublist("Amesos2"))

@@ -11,6 +11,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
+#include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/NewtonStatusTests.hpp"
 
@@ -96,6 +97,7 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
 
   RunSummary summary;
   const long solvesBefore = mumpsCounters().solves;
+  const long krylovBefore = iterativeSolveLog().iterations;
   try {
     Piro::NOXSolver<double> solver(appParams, model);
     auto in = solver.createInArgs();
@@ -114,6 +116,7 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
     r.lambda = 1.0;
     r.dlambda = 1.0;
     r.newtonIterations = results.get<int>("Nonlinear Iterations", 0);
+    r.linearIterations = iterativeSolveLog().iterations - krylovBefore;
     r.residualNorm = results.get<double>("2-Norm of Residual", 0.0);
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     observer.incrementConverged(*Extract::getConstTpetraVector(x), r);
@@ -136,6 +139,7 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
     summary.failedAttempts = 1;
   }
   summary.linearSolves = static_cast<int>(mumpsCounters().solves - solvesBefore);
+  summary.linearIterations = iterativeSolveLog().iterations - krylovBefore;
   return summary;
 }
 

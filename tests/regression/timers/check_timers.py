@@ -25,6 +25,8 @@ PHASES = [
     "MUMPS analysis (JOB=1)",
     "MUMPS factorisation (JOB=2)",
     "MUMPS solve (JOB=3, rhs to/from host)",
+    "iterative: preconditioner set-up",
+    "iterative: Krylov iterations",
     "output: Exodus, CSV, stresses",
     "reactions for output",
     "NOX/LOCA and everything else",

@@ -319,7 +319,7 @@ TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
       {{"Linear Solver Type", "Pardiso"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'Pardiso'"},
       {{"Linear Solver Type", "AztecOO"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'AztecOO'"},
-      {{"Preconditioner Type", "ML"}, "Piro/Stratimikos/Preconditioner Type: expected one of None, Ifpack2; got 'ML'"},
+      {{"Preconditioner Type", "ML"}, "Piro/Stratimikos/Preconditioner Type: expected one of None, Ifpack2, MueLu; got 'ML'"},
   };
   for (const auto& [setting, expected] : cases) {
     ParameterList piro("Piro");

@@ -1,0 +1,114 @@
+#include "RunReport.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <Teuchos_CommHelpers.hpp>
+
+namespace contessa::app {
+namespace {
+
+std::string jsonString(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\', out += c;
+    else if (static_cast<unsigned char>(c) < 0x20) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+      out += escaped;
+    } else out += c;
+  }
+  return out + "\"";
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+double mebibytes(long long bytes) { return static_cast<double>(bytes) / (1024.0 * 1024.0); }
+
+}  // namespace
+
+long long peakResidentBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atoll(line.c_str() + 6) * 1024LL;  // "VmHWM:   123456 kB"
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0) return static_cast<long long>(usage.ru_maxrss) * 1024LL;  // KiB on Linux
+  return 0;
+}
+
+void gatherPeakMemory(const Teuchos::Comm<int>& comm, RunReport& report) {
+  const long long mine = peakResidentBytes();
+  std::vector<long long> all(static_cast<std::size_t>(comm.getSize()), 0);
+  Teuchos::gatherAll(comm, 1, &mine, comm.getSize(), all.data());
+  report.peakBytesPerRank = all;
+}
+
+std::string summaryLine(const RunReport& r) {
+  const auto& s = r.summary;
+  const auto [lo, hi] = std::minmax_element(r.peakBytesPerRank.begin(), r.peakBytesPerRank.end());
+  std::ostringstream out;
+  out << "contessa: summary: " << s.increments << " increments, " << s.failedAttempts << " failed attempts, "
+      << s.newtonIterations << " Newton iterations, " << s.linearIterations << " linear iterations, wall "
+      << number(r.wallSeconds) << " s, peak memory per rank " << number(mebibytes(r.peakBytesPerRank.empty() ? 0 : *lo))
+      << " to " << number(mebibytes(r.peakBytesPerRank.empty() ? 0 : *hi)) << " MiB (" << r.ranks << " rank(s))";
+  return out.str();
+}
+
+std::string summaryJson(const RunReport& r) {
+  const auto& s = r.summary;
+  std::ostringstream out;
+  long long lo = 0, hi = 0;
+  if (!r.peakBytesPerRank.empty()) {
+    lo = *std::min_element(r.peakBytesPerRank.begin(), r.peakBytesPerRank.end());
+    hi = *std::max_element(r.peakBytesPerRank.begin(), r.peakBytesPerRank.end());
+  }
+  out << "{\n"
+      << "  \"deck\": " << jsonString(r.deck) << ",\n"
+      << "  \"ranks\": " << r.ranks << ",\n"
+      << "  \"finished\": " << (s.finished ? "true" : "false") << ",\n"
+      << "  \"exit_status\": " << r.exitStatus << ",\n"
+      << "  \"stop_reason\": " << jsonString(s.finished ? "" : s.message) << ",\n"
+      << "  \"final_load_factor\": " << number(s.finalLambda) << ",\n"
+      << "  \"increments\": " << s.increments << ",\n"
+      << "  \"failed_attempts\": " << s.failedAttempts << ",\n"
+      << "  \"newton_iterations\": " << s.newtonIterations << ",\n"
+      << "  \"linear_solves\": " << s.linearSolves << ",\n"
+      << "  \"linear_iterations\": " << s.linearIterations << ",\n"
+      << "  \"wall_seconds\": " << number(r.wallSeconds) << ",\n"
+      << "  \"peak_memory_bytes\": {\"min\": " << lo << ", \"max\": " << hi << ", \"per_rank\": [";
+  for (std::size_t k = 0; k < r.peakBytesPerRank.size(); ++k) out << (k ? ", " : "") << r.peakBytesPerRank[k];
+  out << "]}\n}\n";
+  return out.str();
+}
+
+std::string writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  std::FILE* file = std::fopen(temporary.c_str(), "w");
+  if (file == nullptr) return "cannot create " + temporary + ": " + std::strerror(errno);
+  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  const int savedErrno = errno;
+  if (std::fclose(file) != 0 || !written) {
+    std::remove(temporary.c_str());
+    return "cannot write " + temporary + ": " + std::strerror(written ? errno : savedErrno);
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(temporary.c_str());
+    return "cannot rename " + temporary + " to " + path + ": " + why;
+  }
+  return "";
+}
+
+}  // namespace contessa::app

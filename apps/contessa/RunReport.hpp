@@ -1,0 +1,40 @@
+#pragma once
+// The run's summary for batch logs and scripts: increments, Newton and linear iterations, wall time
+// and each rank's memory high-water mark, printed on rank 0 and written to `<name>.summary.json`
+// beside the history (docs/user-guide.md, "Batch runs").
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+
+#include "solvers/ContinuationDriver.hpp"
+
+namespace contessa::app {
+
+/// This process's peak resident memory in bytes: VmHWM of /proc/self/status, else getrusage's
+/// ru_maxrss; 0 when neither is available.
+long long peakResidentBytes();
+
+struct RunReport {
+  std::string deck;
+  int ranks = 1;
+  solvers::RunSummary summary;
+  int exitStatus = 0;
+  double wallSeconds = 0;
+  std::vector<long long> peakBytesPerRank;  ///< rank 0 only (gathered)
+};
+
+/// Collective: gathers every rank's peak memory to rank 0 into `report`.
+void gatherPeakMemory(const Teuchos::Comm<int>& comm, RunReport& report);
+
+/// Rank 0: the log line ("contessa: summary: ...").
+std::string summaryLine(const RunReport& report);
+
+/// Rank 0: the JSON text of `<name>.summary.json`.
+std::string summaryJson(const RunReport& report);
+
+/// Rank 0: writes `text` to `path` through a temporary file and a rename, so a reader never sees half
+/// of it. Returns "" or why it failed.
+std::string writeFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace contessa::app

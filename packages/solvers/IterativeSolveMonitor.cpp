@@ -1,0 +1,146 @@
+#include "solvers/IterativeSolveMonitor.hpp"
+
+#include <stdexcept>
+
+#include <Thyra_LinearOpWithSolveBase.hpp>
+#include <Thyra_PreconditionerFactoryBase.hpp>
+
+#include "common/PhaseTimers.hpp"
+#include "solvers/NewtonStatusTests.hpp"
+
+namespace contessa::solvers {
+
+using Teuchos::RCP;
+using Teuchos::rcp;
+using LOWS = Thyra::LinearOpWithSolveBase<double>;
+using LOWSF = Thyra::LinearOpWithSolveFactoryBase<double>;
+using Source = Thyra::LinearOpSourceBase<double>;
+
+IterativeSolveLog& iterativeSolveLog() {
+  static IterativeSolveLog log;
+  return log;
+}
+
+namespace {
+
+class MonitoredLinearOpWithSolve : public LOWS {
+ public:
+  MonitoredLinearOpWithSolve(RCP<LOWS> inner, std::string solverName, IterativeSolveLimits limits)
+      : inner_(std::move(inner)), solverName_(std::move(solverName)), limits_(limits) {}
+  LOWS& inner() const { return *inner_; }
+
+  RCP<const Thyra::VectorSpaceBase<double>> range() const override { return inner_->range(); }
+  RCP<const Thyra::VectorSpaceBase<double>> domain() const override { return inner_->domain(); }
+
+ protected:
+  bool opSupportedImpl(Thyra::EOpTransp t) const override { return Thyra::opSupported(*inner_, t); }
+  void applyImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<double>& X,
+                 const Teuchos::Ptr<Thyra::MultiVectorBase<double>>& Y, const double alpha,
+                 const double beta) const override {
+    Thyra::apply(*inner_, t, X, Y, alpha, beta);
+  }
+  bool solveSupportsImpl(Thyra::EOpTransp t) const override { return inner_->solveSupports(t); }
+  bool solveSupportsSolveMeasureTypeImpl(Thyra::EOpTransp t, const Thyra::SolveMeasureType& m) const override {
+    return inner_->solveSupportsSolveMeasureType(t, m);
+  }
+  Thyra::SolveStatus<double> solveImpl(const Thyra::EOpTransp t, const Thyra::MultiVectorBase<double>& B,
+                                       const Teuchos::Ptr<Thyra::MultiVectorBase<double>>& X,
+                                       const Teuchos::Ptr<const Thyra::SolveCriteria<double>>) const override {
+    // The deck's tolerance, not the caller's (header).
+    timers::Scope timed(timers::Phase::IterativeSolve);
+    const auto status = inner_->solve(t, B, X, Teuchos::null);
+    int iterations = -1;
+    if (!status.extraParameters.is_null()) iterations = status.extraParameters->get("Iteration Count", -1);
+    auto& log = iterativeSolveLog();
+    ++log.solves;
+    if (iterations > 0) log.iterations += iterations;
+    if (status.solveStatus != Thyra::SOLVE_STATUS_CONVERGED) {
+      ++log.failures;
+      const std::string residual = status.achievedTol >= 0 ? shortNumber(status.achievedTol) : std::string("unknown");
+      // Either the iterations ran out, or Belos stopped early because the true residual cannot reach the
+      // tolerance (its "loss of accuracy": the matrix is too ill-conditioned for it, e.g. stiff penalty rows).
+      if (iterations >= limits_.maxIterations || iterations < 0)
+        log.lastFailure = "the linear solver (" + solverName_ + ") did not converge in " + std::to_string(iterations) +
+                          " iterations (Maximum Iterations; relative residual " + residual +
+                          "; raise Maximum Iterations or use a stronger preconditioner, or MUMPS)";
+      else
+        log.lastFailure = "the linear solver (" + solverName_ + ") stopped after " + std::to_string(iterations) +
+                          " iterations: the true residual does not reach Convergence Tolerance = " +
+                          shortNumber(limits_.tolerance) +
+                          " (Belos' loss of accuracy: the matrix is too ill-conditioned for that tolerance; loosen it, or use MUMPS)";
+      throw std::runtime_error(log.lastFailure);
+    }
+    return status;
+  }
+
+ private:
+  RCP<LOWS> inner_;
+  std::string solverName_;
+  IterativeSolveLimits limits_;
+};
+
+LOWS* innerOf(LOWS* op) { return &dynamic_cast<MonitoredLinearOpWithSolve&>(*op).inner(); }
+
+class MonitoredLinearOpWithSolveFactory : public LOWSF {
+ public:
+  MonitoredLinearOpWithSolveFactory(RCP<LOWSF> inner, std::string solverName, IterativeSolveLimits limits)
+      : inner_(std::move(inner)), solverName_(std::move(solverName)), limits_(limits) {}
+
+  bool acceptsPreconditionerFactory() const override { return inner_->acceptsPreconditionerFactory(); }
+  void setPreconditionerFactory(const RCP<Thyra::PreconditionerFactoryBase<double>>& factory,
+                                const std::string& label) override {
+    inner_->setPreconditionerFactory(factory, label);
+  }
+  RCP<Thyra::PreconditionerFactoryBase<double>> getPreconditionerFactory() const override {
+    return inner_->getPreconditionerFactory();
+  }
+  void unsetPreconditionerFactory(RCP<Thyra::PreconditionerFactoryBase<double>>* factory, std::string* label) override {
+    inner_->unsetPreconditionerFactory(factory, label);
+  }
+  bool isCompatible(const Source& src) const override { return inner_->isCompatible(src); }
+  RCP<LOWS> createOp() const override { return rcp(new MonitoredLinearOpWithSolve(inner_->createOp(), solverName_, limits_)); }
+  void initializeOp(const RCP<const Source>& src, LOWS* op, const Thyra::ESupportSolveUse use) const override {
+    timers::Scope timed(timers::Phase::IterativeSetup);
+    inner_->initializeOp(src, innerOf(op), use);
+  }
+  void initializeAndReuseOp(const RCP<const Source>& src, LOWS* op) const override {
+    timers::Scope timed(timers::Phase::IterativeSetup);
+    inner_->initializeAndReuseOp(src, innerOf(op));
+  }
+  void uninitializeOp(LOWS* op, RCP<const Source>* src, RCP<const Thyra::PreconditionerBase<double>>* prec,
+                      RCP<const Source>* approx, Thyra::ESupportSolveUse* use) const override {
+    inner_->uninitializeOp(innerOf(op), src, prec, approx, use);
+  }
+  bool supportsPreconditionerInputType(const Thyra::EPreconditionerInputType type) const override {
+    return inner_->supportsPreconditionerInputType(type);
+  }
+  void initializePreconditionedOp(const RCP<const Source>& src, const RCP<const Thyra::PreconditionerBase<double>>& prec,
+                                  LOWS* op, const Thyra::ESupportSolveUse use) const override {
+    inner_->initializePreconditionedOp(src, prec, innerOf(op), use);
+  }
+  void initializeApproxPreconditionedOp(const RCP<const Source>& src, const RCP<const Source>& approx, LOWS* op,
+                                        const Thyra::ESupportSolveUse use) const override {
+    inner_->initializeApproxPreconditionedOp(src, approx, innerOf(op), use);
+  }
+
+  void setParameterList(const RCP<Teuchos::ParameterList>& params) override { inner_->setParameterList(params); }
+  RCP<Teuchos::ParameterList> getNonconstParameterList() override { return inner_->getNonconstParameterList(); }
+  RCP<Teuchos::ParameterList> unsetParameterList() override { return inner_->unsetParameterList(); }
+  RCP<const Teuchos::ParameterList> getParameterList() const override { return inner_->getParameterList(); }
+  RCP<const Teuchos::ParameterList> getValidParameters() const override { return inner_->getValidParameters(); }
+  std::string description() const override { return solverName_; }
+
+ private:
+  RCP<LOWSF> inner_;
+  std::string solverName_;
+  IterativeSolveLimits limits_;
+};
+
+}  // namespace
+
+RCP<LOWSF> monitorIterativeSolver(const RCP<LOWSF>& inner, const std::string& solverName,
+                                  const IterativeSolveLimits& limits) {
+  return rcp(new MonitoredLinearOpWithSolveFactory(inner, solverName, limits));
+}
+
+}  // namespace contessa::solvers
