@@ -43,6 +43,9 @@ struct ContactInterfaceSpec {
   bool rigidMaster = false;
   RigidSurface rigidSurface;  ///< when rigidMaster
   ContactLawParameters law;
+  /// Distance a slave node may move relative to the master beyond one master facet size before it needs a
+  /// matrix coupling that was not reserved; < 0: automatic (deck: Search Reach; CouplingReservation.hpp).
+  double searchReach = -1.0;
 
   int nodesPerFacet() const { return dimension == 2 ? 2 : 4; }
   std::size_t numMasterFacets() const {
