@@ -155,7 +155,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
   contact::ContactInterfaceSpec swapped = spec;
-  swapped.name = name + " (second pass)";
+  swapped.secondPass = true;
   swapped.slaveNodes = master.nodes;
   swapped.slaveAreas = master.areas;
   swapped.slaveFacetLengths = master.facetLengths;

@@ -23,10 +23,6 @@ using Teuchos::rcp;
 using MEB = Thyra::ModelEvaluatorBase;
 using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
 
-namespace {
-/// The deck name of an interface (a two-pass interface's second pass carries a suffix).
-std::string interfaceDeckName(const std::string& name) { return name.substr(0, name.find(" (second pass)")); }
-}  // namespace
 
 ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
                                              const mesh::Partition& partition,
@@ -343,9 +339,9 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
       const std::size_t i = static_cast<std::size_t>(first / numNodes);
       const auto& spec = contacts_[i]->spec();
       std::ostringstream message;
-      message << "contact interface '" << interfaceDeckName(spec.name) << "': slave node " << first % numNodes + 1
+      message << "contact interface '" << spec.name << "': slave node " << first % numNodes + 1
               << " met a master facet beyond the matrix graph's reach " << reservations_[i].reach
-              << " (2 x largest master facet + Search Reach); raise Problem/Contact/" << interfaceDeckName(spec.name)
+              << " (2 x largest master facet + Search Reach); raise Problem/Contact/" << spec.name
               << "/Search Reach to how far slave nodes slide on the master";
       throw std::runtime_error(message.str());
     }
@@ -497,7 +493,7 @@ std::string ContactMechanicsModel::contactTunnelling() const {
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &first);
   const auto& interface = contacts_[first / numNodes]->spec();
   // Node numbers are Exodus ids (1-based), as in the output file.
-  return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.name + "'" +
+  return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.label() + "'" +
          (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + " passed through the master surface";
 }
 
@@ -616,16 +612,15 @@ contact::ContactCounts ContactMechanicsModel::contactCounts() const {
 std::vector<std::pair<std::string, std::vector<double>>> ContactMechanicsModel::contactForces() const {
   std::vector<std::pair<std::string, std::vector<double>>> out;
   for (const auto& spec : problem_.contacts) {
-    const std::string name = spec.name.substr(0, spec.name.find(" (second pass)"));
-    if (out.empty() || out.back().first != name) out.push_back({name, std::vector<double>(dim_, 0.0)});
+    if (out.empty() || out.back().first != spec.name) out.push_back({spec.name, std::vector<double>(dim_, 0.0)});
   }
   for (const auto& interface : contacts_) {
-    const std::string name = interface->spec().name.substr(0, interface->spec().name.find(" (second pass)"));
+    const std::string& name = interface->spec().name;
     const auto& f = interface->committedSlaveForce();
     for (auto& [n, total] : out)
       if (n == name) {
         // The second pass pushes the other body: the force on the first slave body is its opposite.
-        const double sign = interface->spec().name == name ? 1.0 : -1.0;
+        const double sign = interface->spec().secondPass ? -1.0 : 1.0;
         for (int c = 0; c < dim_; ++c) total[c] += sign * f[c];
       }
   }
