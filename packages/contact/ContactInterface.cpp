@@ -39,7 +39,7 @@ ContactInterfaceBase::ContactInterfaceBase(ContactInterfaceSpec spec, std::vecto
       committedForce_(spec_.dimension, 0.0) {
   spec_.law.validate();
   if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size() || spec_.slaveAreas.size() != spec_.slaveNodes.size())
-    throw std::logic_error("ContactInterface '" + spec_.name + "': one area and facet length per slave node expected");
+    throw std::logic_error("ContactInterface '" + spec_.label() + "': one area and facet length per slave node expected");
   for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
   committedOutput_ = trialOutput_;
 }
@@ -362,7 +362,7 @@ template class ContactInterface<Quad4Facet>;
 std::unique_ptr<ContactInterfaceBase> makeContactInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
   if (spec.dimension == 2) return std::make_unique<ContactInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
   if (spec.dimension == 3) return std::make_unique<ContactInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
-  throw std::logic_error("makeContactInterface: interface '" + spec.name + "' has dimension " +
+  throw std::logic_error("makeContactInterface: interface '" + spec.label() + "' has dimension " +
                          std::to_string(spec.dimension) + " (2 or 3 expected)");
 }
 

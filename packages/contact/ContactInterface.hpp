@@ -43,6 +43,15 @@ struct ContactInterfaceSpec {
   bool rigidMaster = false;
   RigidSurface rigidSurface;  ///< when rigidMaster
   ContactLawParameters law;
+  /// Distance a slave node may move relative to the master beyond one master facet size before it needs a
+  /// matrix coupling that was not reserved; < 0: automatic (deck: Search Reach; CouplingReservation.hpp).
+  double searchReach = -1.0;
+  /// Two Pass: this spec is the interface's second pass, slave and master swapped, with its own history;
+  /// its force acts on the first pass's master body. `name` is the deck's name in both passes.
+  bool secondPass = false;
+
+  /// The interface in messages: its name, "(second pass)" added for the second pass.
+  std::string label() const { return secondPass ? name + " (second pass)" : name; }
 
   int nodesPerFacet() const { return dimension == 2 ? 2 : 4; }
   std::size_t numMasterFacets() const {

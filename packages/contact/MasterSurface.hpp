@@ -23,7 +23,7 @@ class MasterSurface {
   /// −1, −2, … (point i is node −1 − i), so shared vertices and edges are still recognised.
   explicit MasterSurface(const ContactInterfaceSpec& spec) : rigid_(spec.rigidMaster) {
     if (spec.nodesPerFacet() != kNodes || spec.dimension != kDim)
-      throw std::logic_error("MasterSurface: interface '" + spec.name + "' does not match the facet type");
+      throw std::logic_error("MasterSurface: interface '" + spec.label() + "' does not match the facet type");
     const std::size_t count = spec.numMasterFacets();
     nodes_.resize(count);
     for (std::size_t f = 0; f < count; ++f)

@@ -110,6 +110,9 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.law.tangentialPenalty = list.get<double>("Tangential Penalty");
   spec.law.frictionCoefficient = list.get<double>("Friction Coefficient");
   spec.law.slipTolerance = list.get<double>("Slip Tolerance");
+  spec.searchReach = list.get<double>("Search Reach");
+  requireInput(spec.searchReach == -1.0 || spec.searchReach >= 0.0,
+               where + "/Search Reach: expected a length >= 0, or -1 (automatic), got " + std::to_string(spec.searchReach));
   requireInput(spec.law.normalPenalty > 0, where + "/Normal Penalty: required; expected a value > 0");
   requireInput(spec.law.frictionCoefficient == 0 || spec.law.slipTolerance > 0 || spec.law.tangentialPenalty > 0,
                where + "/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0 and Slip Tolerance = 0");
@@ -152,7 +155,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
   contact::ContactInterfaceSpec swapped = spec;
-  swapped.name = name + " (second pass)";
+  swapped.secondPass = true;
   swapped.slaveNodes = master.nodes;
   swapped.slaveAreas = master.areas;
   swapped.slaveFacetLengths = master.facetLengths;
@@ -239,6 +242,12 @@ RCP<const ParameterList> contactValidParameters() {
              "slave sides at the node): "
              "the stick penalty is ε_T = μ|t_N|/(Slip Tolerance × L), so nearly unloaded nodes keep a finite stick "
              "range (as Abaqus' SLIP TOLERANCE); 0 = the paper's constant Tangential Penalty");
+  p->set("Search Reach", -1.0,
+         "Matrix graph of the interface (built once): a length >= 0 couples each slave node to the deformable "
+         "master facets within 2 x (largest master facet) + Search Reach of it, so slave nodes may move up to one "
+         "master facet + Search Reach relative to the master (sliding plus relative deformation, per "
+         "component); -1 = automatic: the whole master surface when slave x master nodes <= 250000, else as 0. "
+         "A run whose contact pairing leaves the reach stops with an error naming this parameter");
   p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
   return p;
 }

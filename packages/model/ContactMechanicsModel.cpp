@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_DetachedVectorView.hpp>
@@ -21,6 +22,7 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 using MEB = Thyra::ModelEvaluatorBase;
 using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
+
 
 ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
                                              const mesh::Partition& partition,
@@ -99,35 +101,42 @@ void ContactMechanicsModel::buildGraph() {
                       for (int i = 0; i < n; ++i)
                         for (int j = 0; j < n; ++j) rows[dofs[i]].push_back(dofs[j]);
                     });
-  // Contact couplings are reserved once: every slave node of an interface with every node of its
-  // deformable master surface, so a node can slide anywhere on it without a graph rebuild. In 2D the
-  // surfaces are small (O(√n) nodes); 3D will need a search-based reservation.
+  // Contact couplings are reserved once, by the reach rule of contact::CouplingReservation: the whole
+  // master surface for a small interface, else the master facets within reach of the slave node found by
+  // a box search in the reference configuration, so the graph grows with the surface, not its square.
+  // A rigid master has no unknowns: its slave nodes need only their own DOFs, which their elements hold.
+  reservations_.clear();
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     const auto& spec = contacts_[i]->spec();
+    const auto& evaluates = contacts_[i]->evaluatesSlave();
+    reservations_.push_back(contact::reserveCouplings(spec, problem_.mesh.coordinates, evaluates));
+    const auto& reservation = reservations_.back();
     if (spec.rigidMaster) continue;
-    std::vector<LO> masterDofs;
-    for (GO node : spec.masterFacets)
-      for (int c = 0; c < dim_; ++c) masterDofs.push_back(overlapMap_->getLocalElement(node * dim_ + c));
-    std::sort(masterDofs.begin(), masterDofs.end());
-    masterDofs.erase(std::unique(masterDofs.begin(), masterDofs.end()), masterDofs.end());
+    const auto dofsOf = [&](GO node, LO* out) {
+      for (int c = 0; c < dim_; ++c) out[c] = overlapMap_->getLocalElement(node * dim_ + c);
+    };
     // A master facet's own couplings exist in the global graph (its element), but this rank's
     // overlap rows of a master node owned elsewhere must hold them too, to receive contact terms.
     const std::size_t perFacet = spec.nodesPerFacet();
+    LO a[3], b[3];
     for (std::size_t f = 0; f + perFacet <= spec.masterFacets.size(); f += perFacet)
       for (std::size_t ia = f; ia < f + perFacet; ++ia)
-        for (std::size_t ib = f; ib < f + perFacet; ++ib)
+        for (std::size_t ib = f; ib < f + perFacet; ++ib) {
+          dofsOf(spec.masterFacets[ia], a);
+          dofsOf(spec.masterFacets[ib], b);
           for (int c = 0; c < dim_; ++c)
-            for (int d = 0; d < dim_; ++d)
-              rows[overlapMap_->getLocalElement(spec.masterFacets[ia] * dim_ + c)].push_back(
-                  overlapMap_->getLocalElement(spec.masterFacets[ib] * dim_ + d));
-    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
-      if (!contacts_[i]->evaluatesSlave()[k]) continue;
-      for (int c = 0; c < dim_; ++c) {
-        const LO s = overlapMap_->getLocalElement(spec.slaveNodes[k] * dim_ + c);
-        for (LO m : masterDofs) {
-          rows[s].push_back(m);
-          rows[m].push_back(s);
+            for (int d = 0; d < dim_; ++d) rows[a[c]].push_back(b[d]);
         }
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      if (!evaluates[k]) continue;
+      dofsOf(spec.slaveNodes[k], a);
+      for (const contact::GlobalIndex* m = reservation.begin(k); m != reservation.end(k); ++m) {
+        dofsOf(*m, b);
+        for (int c = 0; c < dim_; ++c)
+          for (int d = 0; d < dim_; ++d) {
+            rows[a[c]].push_back(b[d]);
+            rows[b[d]].push_back(a[c]);
+          }
       }
     }
   }
@@ -268,17 +277,22 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   std::vector<LO> local;
   std::vector<int> entry;
   std::vector<double> block;
+  // The first contact pairing (this rank) outside the couplings the graph reserved: (interface, slave node).
+  const long long none = std::numeric_limits<long long>::max();
+  const long long numNodes = problem_.mesh.numNodes();
+  long long outsideReach = none;
   std::string missingCoupling;
-  for (auto& interface : contacts_) {
-    interface->evaluate(position, lambda, updateTrial,
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const auto& reservation = reservations_[i];
+    contacts_[i]->evaluate(position, lambda, updateTrial,
                        [&](const GlobalIndex* dofs, int n, const double* r, const double* k, const double* drdl) {
                          // The DOFs that are unknowns (not those of a rigid master), in local numbering.
                          local.clear();
                          entry.clear();
-                         for (int i = 0; i < n; ++i)
-                           if (dofs[i] >= 0) {
-                             local.push_back(overlapMap_->getLocalElement(dofs[i]));
-                             entry.push_back(i);
+                         for (int j = 0; j < n; ++j)
+                           if (dofs[j] >= 0) {
+                             local.push_back(overlapMap_->getLocalElement(dofs[j]));
+                             entry.push_back(j);
                            }
                          const int m = static_cast<int>(local.size());
                          for (int a = 0; a < m; ++a) {
@@ -286,12 +300,22 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
                            dl[local[a]] += drdl[entry[a]];
                          }
                          if (!withStiffness) return;
+                         // dofs: the slave node's, then the master facet's nodes'. A master node beyond the
+                         // reserved reach has no place in the graph; it is agreed on below so that no rank
+                         // leaves the pass while the others wait in its exports.
+                         const GlobalIndex slave = dofs[0] / dim_;
+                         const auto& slaves = contacts_[i]->spec().slaveNodes;
+                         const std::size_t slaveIndex = static_cast<std::size_t>(
+                             std::lower_bound(slaves.begin(), slaves.end(), slave) - slaves.begin());
+                         for (int a = dim_; a < n; a += dim_)
+                           if (dofs[a] >= 0 && !contact::isReserved(reservation, slaveIndex, dofs[a] / dim_)) {
+                             outsideReach = std::min(outsideReach, static_cast<long long>(i) * numNodes + slave);
+                             return;
+                           }
                          block.resize(static_cast<std::size_t>(m) * m);
                          for (int a = 0; a < m; ++a)
                            for (int b = 0; b < m; ++b) block[a * m + b] = k[entry[a] * n + entry[b]];
-                         // A coupling the graph did not reserve is an internal error; it is agreed on below
-                         // so that no rank leaves the pass while the others wait in its exports.
-                         try {
+                         try {  // inside the reservation the graph holds it; anything else is a defect
                            scatter_->addStiffness(local.data(), m, block.data());
                          } catch (const std::logic_error& e) {
                            if (missingCoupling.empty()) missingCoupling = e.what();
@@ -306,6 +330,21 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
       throw std::logic_error(missingCoupling.empty()
                                  ? "StiffnessScatter: a contact coupling on another rank is not in the matrix graph"
                                  : missingCoupling);
+    long long first = outsideReach;
+    if (comm_->getSize() > 1) Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &outsideReach, &first);
+    if (first != none) {
+      // The graph is built once and the solver holds the Jacobian made on it: the evaluation fails on every
+      // rank with the same words. The continuation cuts the step back (each attempt fails at its first
+      // Jacobian, at once) and stops with this reason (exit 1); the user raises Search Reach.
+      const std::size_t i = static_cast<std::size_t>(first / numNodes);
+      const auto& spec = contacts_[i]->spec();
+      std::ostringstream message;
+      message << "contact interface '" << spec.name << "': slave node " << first % numNodes + 1
+              << " met a master facet beyond the matrix graph's reach " << reservations_[i].reach
+              << " (2 x largest master facet + Search Reach); raise Problem/Contact/" << spec.name
+              << "/Search Reach to how far slave nodes slide on the master";
+      throw std::runtime_error(message.str());
+    }
   }
   fo = Teuchos::null;
   dl = Teuchos::null;
@@ -454,7 +493,7 @@ std::string ContactMechanicsModel::contactTunnelling() const {
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &first);
   const auto& interface = contacts_[first / numNodes]->spec();
   // Node numbers are Exodus ids (1-based), as in the output file.
-  return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.name + "'" +
+  return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.label() + "'" +
          (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + " passed through the master surface";
 }
 
@@ -573,16 +612,15 @@ contact::ContactCounts ContactMechanicsModel::contactCounts() const {
 std::vector<std::pair<std::string, std::vector<double>>> ContactMechanicsModel::contactForces() const {
   std::vector<std::pair<std::string, std::vector<double>>> out;
   for (const auto& spec : problem_.contacts) {
-    const std::string name = spec.name.substr(0, spec.name.find(" (second pass)"));
-    if (out.empty() || out.back().first != name) out.push_back({name, std::vector<double>(dim_, 0.0)});
+    if (out.empty() || out.back().first != spec.name) out.push_back({spec.name, std::vector<double>(dim_, 0.0)});
   }
   for (const auto& interface : contacts_) {
-    const std::string name = interface->spec().name.substr(0, interface->spec().name.find(" (second pass)"));
+    const std::string& name = interface->spec().name;
     const auto& f = interface->committedSlaveForce();
     for (auto& [n, total] : out)
       if (n == name) {
         // The second pass pushes the other body: the force on the first slave body is its opposite.
-        const double sign = interface->spec().name == name ? 1.0 : -1.0;
+        const double sign = interface->spec().secondPass ? -1.0 : 1.0;
         for (int c = 0; c < dim_; ++c) total[c] += sign * f[c];
       }
   }

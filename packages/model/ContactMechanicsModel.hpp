@@ -10,6 +10,7 @@
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
 #include "contact/ContactInterface.hpp"
+#include "contact/CouplingReservation.hpp"
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/Partition.hpp"
@@ -148,6 +149,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   std::vector<char> isPrescribedOverlap_;    ///< per overlapped local DOF
   std::unique_ptr<SolidAssembler> solids_;
   mutable std::vector<std::unique_ptr<contact::ContactInterfaceBase>> contacts_;
+  std::vector<contact::CouplingReservation> reservations_;  ///< per interface: the couplings the graph holds
   Teuchos::RCP<const Map> nodeMap_;
   Teuchos::RCP<Vector> overlapDfdLambda_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;

@@ -80,7 +80,7 @@ std::string ContactMechanicsModel::describeCoupling(GO rowDof, GO columnDof) con
   for (const auto& spec : problem_.contacts) {
     for (GlobalIndex node : {a, b})
       if (std::binary_search(spec.slaveNodes.begin(), spec.slaveNodes.end(), node)) {
-        who.push_back("contact '" + spec.name + "' slave node " + std::to_string(node + 1));
+        who.push_back("contact '" + spec.label() + "' slave node " + std::to_string(node + 1));
         break;
       }
   }

@@ -232,6 +232,11 @@ TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   c.set("Two Pass", true);
   def = contessa::deck::buildProblem(*q, "");
   EXPECT_EQ(def.contacts.size(), 2u);  // two-pass: the second pass with the roles swapped
+  EXPECT_FALSE(def.contacts[0].secondPass);
+  EXPECT_TRUE(def.contacts[1].secondPass);  // a role of the spec: the name stays the deck's
+  EXPECT_EQ(def.contacts[1].name, "self");
+  EXPECT_EQ(def.contacts[1].label(), "self (second pass)");
+  EXPECT_EQ(def.contacts[1].slaveNodes.size(), def.contacts[0].numMasterFacets() + 1);  // 2D: a line of segments
 }
 
 TEST(ContactValidation, BadParametersAreNamed) {
