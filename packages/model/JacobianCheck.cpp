@@ -34,9 +34,14 @@ void residual(const ContactMechanicsModel& model, const RCP<const Thyra::VectorB
 }
 
 // The largest bend of a compared column: h |f''| / 2 against an entry's scale, about the ratio of the step
-// to the length over which the residual's slope changes by its own size. The central difference's error
-// is then about (2 · bend)² / 6 of the entry (7e-7 at 1e-3), well below the 1e-4 a check asks for.
-constexpr double kMaxBend = 1e-3;
+// to the length over which the residual's slope changes by its own size. Where f''' is of the size
+// f'' / length, the central difference's error is about (2 · bend)² / 6 of the entry, but f'' can be
+// small where f''' is not (with a pressure-dependent slip tolerance a bend of 9e-4 came with an error of
+// 2.6e-4): above this bend the column is differenced again and the two steps decide (kAgreement).
+constexpr double kMaxBend = 1e-4;
+// The bend a shortened step aims at, about a quarter of this (an error ~1e-7 where f''' ~ f'' / length):
+// no shorter than needed, since the floor of an entry's scale grows as the step shrinks.
+constexpr double kShortStepBend = 1e-3;
 // Differences at two steps that agree to this fraction of an entry's scale (at the longer step): the
 // longer step's are accurate to about as much (the error of a central difference falls as h²).
 constexpr double kAgreement = 1e-5;
@@ -236,14 +241,15 @@ JacobianComparison compareAt(const ContactMechanicsModel& model, const Thyra::Ve
       }
       // A residual that bends within the step (the slip direction of a 3D frictional node turns by
       // ε_T h / ‖t^trial‖, which is not small when ‖t^trial‖ is a few times μ|t_N|): the central
-      // difference's error can reach (2·bend)²/6 of the entry. Difference again with h shrunk so the bend
-      // is about kMaxBend / 4, and keep the shorter step unless both agree (above).
+      // difference's error can reach (2·bend)²/6 of the entry, or more. Difference again with h shrunk so
+      // the bend is about kShortStepBend / 4 (at least tenfold), and keep the shorter step unless both
+      // agree (above).
       if (std::isfinite(globalBend) && globalBend > kMaxBend && bendShrinks++ < kBendShrinks) {
         previousDifferences = differences;
         previousScales = scales;
         if (!havePrevious) ++result.retriedColumns;
         havePrevious = true;
-        shrink *= std::clamp(0.25 * kMaxBend / globalBend, 1e-4, 0.1);
+        shrink *= std::clamp(0.25 * kShortStepBend / globalBend, 1e-4, 0.1);
         continue;
       }
       compared = true;

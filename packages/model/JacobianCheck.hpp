@@ -15,7 +15,7 @@
 // with a half step added there); where it changes
 // on both sides, h_j shrinks by 1e-2 twice (τ grows as 1/h_j with it, as the noise does), and a column that still straddles kinks is not compared
 // (counted and named in the report: its entries have no derivative to check at this state).
-// Where the residual bends within h_j (h_j |f''| / 2 above 1e-3 of an entry's scale, from the second
+// Where the residual bends within h_j (h_j |f''| / 2 above 1e-4 of an entry's scale, from the second
 // difference of the same residuals), the column is differenced again with h_j shrunk (up to twice, τ
 // growing with it): when both agree to 1e-5 the longer step's differences stand, else the shorter's
 // (counted in the report). A slipping 3D frictional node needs it: its slip direction turns by
