@@ -15,6 +15,12 @@
 // with a half step added there); where it changes
 // on both sides, h_j shrinks by 1e-2 twice (τ grows as 1/h_j with it, as the noise does), and a column that still straddles kinks is not compared
 // (counted and named in the report: its entries have no derivative to check at this state).
+// Where the residual bends within h_j (h_j |f''| / 2 above 1e-4 of an entry's scale, from the second
+// difference of the same residuals), the column is differenced again with h_j shrunk (up to twice, τ
+// growing with it): when both agree to 1e-5 the longer step's differences stand, else the shorter's
+// (counted in the report). A slipping 3D frictional node needs it: its slip direction turns by
+// ε_T h_j / ‖t^trial‖, which is of order 1 when ‖t^trial‖ is a few μ|t_N| and ε_T h_j ≈ 1 (a wrong W
+// is not hidden by it: the shorter step only measures f' more accurately).
 // Norm-wise: ‖W − D‖_F / ‖W‖_F.
 #include <memory>
 #include <string>
@@ -34,6 +40,8 @@ struct JacobianComparison {
   long residualEvaluations = 0;
   long nonSmoothColumns = 0;      ///< columns with a contact status change on both sides at every step tried
   GO firstNonSmoothColumn = -1;
+  long retriedColumns = 0;        ///< columns differenced again at a shorter step because the residual bends within h
+  long bentColumns = 0;           ///< of those, the ones whose differences changed: compared at the shorter step
   double seconds = 0;
 };
 

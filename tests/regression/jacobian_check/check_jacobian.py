@@ -21,7 +21,8 @@ if proc.returncode != (int(sys.argv[3]) if sep > 3 else 0):
 pattern = re.compile(r"^jacobian check, increment (\d+) \(load factor \S+\): worst relative error (\S+) at row node "
                      r"\d+ [xyz], column node \d+ [xyz] \(.+\), W = \S+, FD = \S+; norm-wise \|\|W - W_FD\|\|/\|\|W\|\| = ([^;\s]+)"
                      r"(?:; (\d+) column\(s\) not compared \(a contact status changes within ±h on both sides, first: "
-                     r"node \d+ [xyz]\))? \((\d+) residuals, \S+ s\)$")
+                     r"node \d+ [xyz]\))?(?:; \d+ column\(s\) differenced with a shorter step \(the residual bends "
+                     r"within h\))? \((\d+) residuals, \S+ s\)$")
 found = []
 for line in proc.stdout.splitlines():
     if line.startswith("jacobian check"):

@@ -3,6 +3,8 @@
 // histories, the latest pass) exactly as it was; on 1 and 2 ranks.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
@@ -60,11 +62,55 @@ deck::ProblemDefinition blockOnBase() {
   return deck::buildProblem(*p, "");
 }
 
+// A 1 x 1 x 1 mm linear elastic block (2 x 1 x 1 Hex8) pressed lightly onto a rigid base (t_N = -2 MPa at zero displacement)
+// with Coulomb friction (mu = 0.3, eps_T = 1e6 MPa/mm, constant): the stick radius mu|t_N|/eps_T is
+// 6e-7 mm, below the check's step h = 1e-6 mm, as at the first iterates of the 3D Coulomb block
+// (inputs/verification/coulomb_block_3d.xml).
+deck::ProblemDefinition blockOnBase3d() {
+  auto p = Teuchos::getParametersFromXmlString(R"XML(
+<ParameterList name="Problem">
+  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="Box"/>
+    <Parameter name="Elements X" type="int" value="2"/>
+    <Parameter name="Elements Y" type="int" value="1"/>
+    <Parameter name="Elements Z" type="int" value="1"/>
+  </ParameterList>
+  <ParameterList name="Blocks">
+    <ParameterList name="block_1"><Parameter name="Element" type="string" value="Hex8"/>
+      <Parameter name="Material" type="string" value="elastic"/></ParameterList>
+  </ParameterList>
+  <ParameterList name="Materials">
+    <ParameterList name="elastic"><Parameter name="Model" type="string" value="Linear Elastic"/>
+      <Parameter name="Young's Modulus" type="double" value="1000.0"/>
+      <Parameter name="Poisson's Ratio" type="double" value="0.0"/></ParameterList>
+  </ParameterList>
+  <ParameterList name="Dirichlet Conditions">
+    <ParameterList name="top"><Parameter name="Node Set" type="string" value="top"/>
+      <Parameter name="Component" type="string" value="y"/><Parameter name="Value" type="double" value="0.0"/></ParameterList>
+  </ParameterList>
+  <ParameterList name="Contact">
+    <ParameterList name="base"><Parameter name="Slave Side Set" type="string" value="bottom"/>
+      <Parameter name="Normal Penalty" type="double" value="1e6"/>
+      <Parameter name="Tangential Penalty" type="double" value="1e6"/>
+      <Parameter name="Friction Coefficient" type="double" value="0.3"/>
+      <Parameter name="Slip Tolerance" type="double" value="0"/>
+      <ParameterList name="Rigid Surface">
+        <Parameter name="Points" type="Array(double)" value="{-1.0, 2e-6, -1.0, -1.0, 2e-6, 2.0, 2.0, 2e-6, 2.0, 2.0, 2e-6, -1.0}"/>
+        <Parameter name="Facets" type="Array(int)" value="{0, 1, 2, 3}"/>
+        <Parameter name="Motion" type="Array(double)" value="{0.0, 0.0, 0.0}"/>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+</ParameterList>)XML");
+  return deck::buildProblem(*p, "");
+}
+
 struct Fixture {
-  deck::ProblemDefinition problem = blockOnBase();
+  explicit Fixture(deck::ProblemDefinition definition = blockOnBase()) : problem(std::move(definition)) { setUp(); }
+  deck::ProblemDefinition problem;
   RCP<model::ContactMechanicsModel> model;
   RCP<Thyra::VectorBase<double>> x;
-  Fixture() {
+  void setUp() {
     auto comm = Tpetra::getDefaultComm();
     Teuchos::ParameterList strat("Stratimikos");
     strat.set("Linear Solver Type", std::string("MUMPS"));
@@ -114,7 +160,11 @@ TEST(JacobianCheck, FindsTheModelsJacobianRightAndLeavesNoTrace) {
   const auto r = model::JacobianCheck().check(*fx.model, *fx.x, 0.8);
   EXPECT_LT(r.worstRelativeError, 1e-5) << model::JacobianCheck::describe(r, *fx.model);
   EXPECT_LT(r.normwiseError, 1e-6);
-  EXPECT_EQ(r.residualEvaluations, 1 + 2 * fx.model->get_x_space()->dim());
+  // No kink; where the residual bends within h (entries with a small slope and a real curvature), the
+  // column is differenced again at a shorter step and both agree: the longer step's differences stand.
+  EXPECT_EQ(r.nonSmoothColumns, 0);
+  EXPECT_EQ(r.bentColumns, 0);
+  EXPECT_EQ(r.residualEvaluations, 1 + 2 * fx.model->get_x_space()->dim() + 2 * r.retriedColumns);
   // No trace: the same latest pass (the residual is served from it, no new element pass), the same
   // contact trial state, the same residual to the bit.
   EXPECT_EQ(fx.model->elementPasses(), passes);
@@ -169,6 +219,63 @@ TEST(JacobianCheck, CatchesAWrongJacobianAndSaysWhere) {
   EXPECT_EQ(one.column, target);
   const std::string line = model::JacobianCheck::describe(one, *fx.model);
   EXPECT_NE(line.find("contact 'base' slave node " + std::to_string(target / 2 + 1)), std::string::npos) << line;
+}
+
+// The 3D slipping node of the Coulomb block: its slip direction n = t^trial/|t^trial| turns by about
+// eps_T h / |t^trial| = 0.5 rad within the step, so central differences at h = 1e-6 mm were 50 % off W
+// (which is right: the error fell as h², to 1e-6 at h = 1e-9 mm). The check sees the bend and
+// differences those columns again at a shorter step.
+TEST(JacobianCheck, DifferencesA3DSlippingNodeWithAShortEnoughStep) {
+  Fixture fx(blockOnBase3d());
+  auto tx = Extract::getTpetraVector(fx.x);
+  tx->putScalar(0.0);
+  fx.residual(0.0);  // every bottom node in contact (first contact: stick, no tangential traction)
+  fx.model->commitState();
+  // The bottom slides by 2e-6 mm in differing directions in the x-z plane: |t^trial| = eps_T |slip| ≈ 2,
+  // more than mu |t_N| = 0.6, so every bottom node slips.
+  {
+    auto v = tx->getDataNonConst(0);
+    for (Teuchos::ArrayRCP<double>::size_type i = 0; i < v.size(); ++i) {
+      const auto gid = tx->getMap()->getGlobalElement(i);
+      const long node = static_cast<long>(gid / 3);
+      const double angle = 0.9 + 0.6 * node;
+      if (gid % 3 == 0) v[i] = 2e-6 * std::cos(angle);
+      if (gid % 3 == 2) v[i] = 2e-6 * std::sin(angle);
+    }
+  }
+  fx.residual(0.0);
+  int slipping = 0;  // (the model lists every slave node on every rank)
+  for (const auto& n : fx.model->trialIncrement()) slipping += n.trialStatus == continuation::NodeStatus::Slip ? 1 : 0;
+  ASSERT_EQ(slipping, 6);
+  const auto r = model::JacobianCheck().check(*fx.model, *fx.x, 0.0);
+  EXPECT_LT(r.worstRelativeError, 1e-5) << model::JacobianCheck::describe(r, *fx.model);
+  EXPECT_LT(r.normwiseError, 1e-6);
+  EXPECT_GT(r.bentColumns, 0);
+  EXPECT_EQ(r.nonSmoothColumns, 0);
+
+  // Still catches a wrong entry in those columns: a slave node's tangential stiffness halved.
+  auto W = fx.jacobian(0.0);
+  auto matrix = Teuchos::rcp_dynamic_cast<model::CrsMatrix>(Extract::getTpetraOperator(W), true);
+  const model::GO target = fx.problem.contacts[0].slaveNodes[0] * 3 + 2;
+  matrix->resumeFill();
+  const model::LO row = matrix->getRowMap()->getLocalElement(target);
+  if (row != Teuchos::OrdinalTraits<model::LO>::invalid()) {
+    model::CrsMatrix::local_inds_host_view_type indices;
+    model::CrsMatrix::values_host_view_type values;
+    matrix->getLocalRowView(row, indices, values);
+    double value = 0;
+    for (std::size_t k = 0; k < indices.extent(0); ++k)
+      if (matrix->getColMap()->getGlobalElement(indices(k)) == target) value = values(k);
+    const double half = 0.5 * value;
+    matrix->replaceGlobalValues(target, Teuchos::ArrayView<const model::GO>(&target, 1),
+                                Teuchos::ArrayView<const double>(&half, 1));
+  }
+  matrix->fillComplete();
+  const auto wrong = model::JacobianCheck().compare(*fx.model, *fx.x, 0.0, *W);
+  // (|W - D| = |W|, measured against the floor of the shortened step, τ max_k |W_ik| / shrink ≈ 2 |W|)
+  EXPECT_GT(wrong.worstRelativeError, 0.3) << model::JacobianCheck::describe(wrong, *fx.model);
+  EXPECT_EQ(wrong.row, target);
+  EXPECT_EQ(wrong.column, target);
 }
 
 }  // namespace
