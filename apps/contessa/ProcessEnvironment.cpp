@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <string>
 
 #include "common/PhaseTimers.hpp"
 
@@ -26,10 +28,34 @@ bool launchedByMpirun() {
 //   only talks to itself, which the basic layer does (MCA parameter pml = ob1).
 // Under mpirun neither is set: there the user's and the site's MPI configuration choose the network.
 // A value the user put in the environment wins.
+//
+// Isolated singletons all take the same job family (0), hence the same session directory
+// (<tmp>/ompi.<host>.<uid>/jf.0): one run ending removes it while another, starting on the same node,
+// creates its own inside, and MPI_Init of the second fails ("orte_init failed", measured once in 120
+// staggered concurrent starts: a parameter sweep of serial jobs would meet it). Each singleton therefore
+// gets a private session directory base, made here and removed when the process exits.
+std::string& privateSessionBase() {
+  static std::string base;
+  return base;
+}
+
+void removePrivateSessionBase() {
+  std::error_code ignored;
+  if (!privateSessionBase().empty()) std::filesystem::remove_all(privateSessionBase(), ignored);
+}
+
 void fastSingletonStart() {
   if (launchedByMpirun()) return;
+  const bool isolatedHere = !inEnvironment("OMPI_MCA_ess_singleton_isolated");
   setenv("OMPI_MCA_ess_singleton_isolated", "1", /*overwrite=*/0);
   setenv("OMPI_MCA_pml", "ob1", /*overwrite=*/0);
+  if (!isolatedHere || inEnvironment("OMPI_MCA_orte_tmpdir_base")) return;
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp != nullptr && *tmp != '\0' ? tmp : "/tmp") + "/contessa-mpi-XXXXXX";
+  if (mkdtemp(pattern.data()) == nullptr) return;  // Open MPI's default then, with the race above
+  privateSessionBase() = pattern;
+  setenv("OMPI_MCA_orte_tmpdir_base", pattern.c_str(), /*overwrite=*/1);
+  std::atexit(removePrivateSessionBase);
 }
 
 // OpenBLAS (the BLAS MUMPS uses) starts one thread per core by default; with one MPI rank per core

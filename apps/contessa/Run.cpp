@@ -26,6 +26,7 @@
 #include "solvers/ContinuationDriver.hpp"
 #include "solvers/JacobianCheckObserver.hpp"
 #include "solvers/LinearSolverFactory.hpp"
+#include "solvers/MumpsSolver.hpp"
 #include "solvers/SolverParameters.hpp"
 #include "solvers/StaticSolveDriver.hpp"
 
@@ -187,6 +188,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   report.ranks = comm->getSize();
   report.summary = summary;
   report.exitStatus = exitStatus;
+  report.directFactorizations = solvers::mumpsCounters().factorizations;
+  report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
   report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   gatherPeakMemory(*comm, report);
   if (root) {

@@ -21,6 +21,8 @@ struct RunReport {
   solvers::RunSummary summary;
   int exitStatus = 0;
   double wallSeconds = 0;
+  long directFactorizations = 0;     ///< MUMPS factorisations of the run
+  long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   std::vector<long long> peakBytesPerRank;  ///< rank 0 only (gathered)
 };
 

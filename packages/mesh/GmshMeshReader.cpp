@@ -1,7 +1,8 @@
 #include "mesh/GmshMeshReader.hpp"
 
-#include <gmsh.h>
+#include <dlfcn.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -12,9 +13,48 @@
 #include <vector>
 
 #include "common/Error.hpp"
+#include "mesh/GmshLibrary.hpp"
 #include "mesh/MemoryEstimate.hpp"
 
 namespace contessa::mesh {
+
+namespace {
+
+// The module beside the program (build/bin/contessa → build/lib/), or where this build made it.
+std::vector<std::string> gmshModuleCandidates() {
+  std::vector<std::string> paths;
+  std::string exe(4096, '\0');
+  const ssize_t n = ::readlink("/proc/self/exe", exe.data(), exe.size() - 1);
+  if (n > 0) {
+    exe.resize(static_cast<std::size_t>(n));
+    const auto slash = exe.rfind('/');
+    if (slash != std::string::npos) paths.push_back(exe.substr(0, slash) + "/../lib/" CONTESSA_GMSH_MODULE_NAME);
+  }
+  paths.push_back(CONTESSA_GMSH_MODULE_PATH);
+  return paths;
+}
+
+}  // namespace
+
+GmshLibrary& gmshLibrary() {
+  static GmshLibrary* library = [] {
+    std::string reasons;
+    for (const std::string& path : gmshModuleCandidates()) {
+      // Kept loaded for the rest of the run: Gmsh's global state lives in it.
+      if (void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL)) {
+        using Entry = GmshLibrary* (*)();
+        if (auto entry = reinterpret_cast<Entry>(::dlsym(handle, "contessa_gmsh_library"))) return entry();
+        reasons += std::string(reasons.empty() ? "" : "; ") + path + ": no entry point";
+      } else {
+        const char* why = ::dlerror();
+        reasons += std::string(reasons.empty() ? "" : "; ") + (why ? why : path);
+      }
+    }
+    throw InputError("cannot load Contessa's Gmsh reader module (" + reasons + "); rebuild Contessa (scripts/build.sh)");
+  }();
+  return *library;
+}
+
 namespace {
 
 // Gmsh element type numbers (its MSH format's): 2-node line, 4-node quadrilateral, 8-node hexahedron.
@@ -30,18 +70,18 @@ std::string oneLine(std::string text) {
 // printed: General.Terminal = 0) for one read, finalised whatever happens.
 class GmshSession {
  public:
-  GmshSession() {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-  }
+  explicit GmshSession(GmshLibrary& gmsh) : gmsh_(gmsh) { gmsh_.initialize(); }
   ~GmshSession() {
     try {
-      gmsh::finalize();
+      gmsh_.finalize();
     } catch (...) {  // an exception leaving a destructor would terminate the program
     }
   }
   GmshSession(const GmshSession&) = delete;
   GmshSession& operator=(const GmshSession&) = delete;
+
+ private:
+  GmshLibrary& gmsh_;
 };
 
 struct Group {
@@ -55,9 +95,9 @@ class Reader {
 
   Mesh read() {
     requireReadableMshFile();
-    GmshSession session;
+    GmshSession session(gmsh_);
     try {
-      gmsh::open(path_);
+      gmsh_.open(path_);
       return build();
     } catch (const std::string& gmshError) {  // how the Gmsh 4.8 API reports an error
       throw InputError(path_ + ": not a readable Gmsh file (" + oneLine(gmshError) + ")");
@@ -77,7 +117,7 @@ class Reader {
 
   Mesh build() {
     std::vector<std::pair<int, int>> dimTags;
-    gmsh::model::getPhysicalGroups(dimTags);
+    gmsh_.getPhysicalGroups(dimTags);
     int d = 0;
     for (const auto& [dim, tag] : dimTags) d = std::max(d, dim);
     requireInput(d >= 2, path_ + ": no physical surface or volume (Contessa makes its element blocks from the " +
@@ -85,7 +125,7 @@ class Reader {
     std::vector<Group> groups;
     for (const auto& [dim, tag] : dimTags) {
       Group g{dim, tag, ""};
-      gmsh::model::getPhysicalName(dim, tag, g.name);
+      gmsh_.getPhysicalName(dim, tag, g.name);
       if (g.name.empty()) {
         static const char* kWords[] = {"point", "curve", "surface", "volume"};
         g.name = std::string(kWords[dim]) + "_" + std::to_string(tag);
@@ -109,20 +149,17 @@ class Reader {
   template <class F>
   void forElements(const Group& g, F&& f) const {
     std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(g.dim, g.tag, entities);
+    gmsh_.getEntitiesForPhysicalGroup(g.dim, g.tag, entities);
     for (int entity : entities) {
       std::vector<int> types;
       std::vector<std::vector<std::size_t>> tags, nodes;
-      gmsh::model::mesh::getElements(types, tags, nodes, g.dim, entity);
+      gmsh_.getElements(types, tags, nodes, g.dim, entity);
       for (size_t t = 0; t < types.size(); ++t) f(types[t], tags[t], nodes[t]);
     }
   }
 
   std::string typeName(int type) const {
-    std::string name;
-    int dim = 0, order = 0, numNodes = 0, numPrimary = 0;
-    std::vector<double> local;
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, numNodes, local, numPrimary);
+    std::string name = gmsh_.elementTypeName(type);
     std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
     return name;
   }
@@ -172,8 +209,8 @@ class Reader {
     requireRunFits(size, path_, "use a coarser mesh or a machine with more memory");
 
     std::vector<std::size_t> tags;
-    std::vector<double> xyz, parametric;
-    gmsh::model::mesh::getNodes(tags, xyz, parametric, -1, -1, false, false);
+    std::vector<double> xyz;
+    gmsh_.getNodes(tags, xyz);
     const int d = mesh.dimension;
     mesh.coordinates.assign(d * used_.size(), 0.0);
     double extent = 0;
@@ -263,6 +300,7 @@ class Reader {
     mesh.nodeSets.push_back(std::move(set));
   }
 
+  GmshLibrary& gmsh_ = gmshLibrary();
   std::string path_;
   std::vector<std::size_t> used_;
   std::multimap<FaceKey, std::pair<GlobalIndex, int>> faces_;

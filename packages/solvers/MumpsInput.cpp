@@ -1,8 +1,11 @@
 #include "solvers/MumpsInput.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace contessa::solvers {
 
@@ -30,8 +33,98 @@ bool MumpsDistributedInput::update(const model::CrsMatrix& A, MPI_Comm comm) {
       }
     }
   }
+  if (newPattern) ++generation_;
   values_.assign(local.values.data(), local.values.data() + local.values.extent(0));
   return newPattern != 0;
+}
+
+void MumpsSymmetricInput::buildPattern(const MumpsMatrixView& general) {
+  const MUMPS_INT* rows = general.rows;
+  const MUMPS_INT* cols = general.columns;
+  const auto numEntries = static_cast<std::size_t>(general.numEntries);
+  n_ = general.order;
+  // Every entry by (row, column), to find each entry's transpose.
+  auto key = [](MUMPS_INT i, MUMPS_INT j) { return (static_cast<std::int64_t>(i) << 32) | static_cast<std::uint32_t>(j); };
+  std::vector<std::pair<std::int64_t, std::size_t>> byKey(numEntries);
+  for (std::size_t k = 0; k < numEntries; ++k) byKey[k] = {key(rows[k], cols[k]), k};
+  std::sort(byKey.begin(), byKey.end());
+  auto find = [&](MUMPS_INT i, MUMPS_INT j) -> long {
+    auto it = std::lower_bound(byKey.begin(), byKey.end(), std::make_pair(key(i, j), std::size_t{0}));
+    return it != byKey.end() && it->first == key(i, j) ? static_cast<long>(it->second) : -1;
+  };
+  lower_.clear();
+  transposeOf_.clear();
+  for (std::size_t k = 0; k < numEntries; ++k) {
+    if (rows[k] >= cols[k]) {
+      lower_.push_back(k);
+      transposeOf_.push_back(rows[k] == cols[k] ? static_cast<long>(k) : find(cols[k], rows[k]));
+    } else if (find(cols[k], rows[k]) < 0) {
+      // An upper entry without a lower partner: given to MUMPS as its transpose's position, with the
+      // lower value taken as zero (the symmetry check then asks it to be zero).
+      lower_.push_back(k);
+      transposeOf_.push_back(-2);
+    }
+  }
+  rows_.resize(lower_.size());
+  cols_.resize(lower_.size());
+  for (std::size_t e = 0; e < lower_.size(); ++e) {
+    rows_[e] = std::max(rows[lower_[e]], cols[lower_[e]]);
+    cols_[e] = std::min(rows[lower_[e]], cols[lower_[e]]);
+  }
+  values_.assign(lower_.size(), 0.0);
+  generalGeneration_ = general.patternGeneration;
+  ++generation_;
+}
+
+bool MumpsSymmetricInput::update(const MumpsMatrixView& general) {
+  if (general.patternGeneration != generalGeneration_) buildPattern(general);
+  const MUMPS_INT* rows = general.rows;
+  const MUMPS_INT* cols = general.columns;
+  const double* v = general.values;
+  const auto numEntries = static_cast<std::size_t>(general.numEntries);
+  const auto n = static_cast<std::size_t>(n_);
+  std::vector<double> rowNorm(n, 0.0);
+  diagonal_.assign(n, 0.0);
+  std::vector<char> offDiagonal(n, 0);
+  for (std::size_t k = 0; k < numEntries; ++k) {
+    const auto i = static_cast<std::size_t>(rows[k] - 1);
+    rowNorm[i] = std::max(rowNorm[i], std::abs(v[k]));
+    if (rows[k] == cols[k]) diagonal_[i] += v[k];
+    else if (v[k] != 0.0) offDiagonal[i] = 1;
+  }
+  decoupled_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) decoupled_[i] = !offDiagonal[i] && diagonal_[i] != 0.0;
+  eliminated_.clear();
+  for (std::size_t e = 0; e < lower_.size(); ++e) {
+    const std::size_t k = lower_[e];
+    const long t = transposeOf_[e];
+    if (t == static_cast<long>(k)) {  // diagonal
+      values_[e] = v[k];
+      continue;
+    }
+    // The pair (i, j), i > j: a = a_ij, b = a_ji.
+    const bool upperAlone = t == -2;
+    const MUMPS_INT i = rows_[e] - 1, j = cols_[e] - 1;
+    const double a = upperAlone ? 0.0 : v[k];
+    const double b = upperAlone ? v[k] : (t >= 0 ? v[static_cast<std::size_t>(t)] : 0.0);
+    values_[e] = 0.0;
+    if (decoupled_[j] && !decoupled_[i]) {
+      eliminated_.push_back({i, j, a});
+    } else if (decoupled_[i] && !decoupled_[j]) {
+      eliminated_.push_back({j, i, b});
+    } else if (!decoupled_[i] && !decoupled_[j]) {
+      if (std::abs(a - b) > kSymmetryTolerance * std::max(rowNorm[static_cast<std::size_t>(i)], rowNorm[static_cast<std::size_t>(j)]))
+        return false;
+      values_[e] = 0.5 * (a + b);
+    }
+  }
+  return true;
+}
+
+void MumpsSymmetricInput::eliminateColumns(std::vector<double>& rhs) const {
+  // A decoupled row's right-hand side is never changed here, so rhs[column] is still b_column.
+  for (const auto& e : eliminated_)
+    rhs[static_cast<std::size_t>(e.row)] -= e.value * rhs[static_cast<std::size_t>(e.column)] / diagonal_[static_cast<std::size_t>(e.column)];
 }
 
 }  // namespace contessa::solvers

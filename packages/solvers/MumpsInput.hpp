@@ -12,6 +12,17 @@
 
 namespace contessa::solvers {
 
+/// What MUMPS is given: order, triplets and the pattern's generation (a new generation needs a new
+/// analysis, JOB = 1).
+struct MumpsMatrixView {
+  MUMPS_INT order = 0;
+  MUMPS_INT8 numEntries = 0;
+  MUMPS_INT* rows = nullptr;
+  MUMPS_INT* columns = nullptr;
+  double* values = nullptr;
+  long patternGeneration = 0;
+};
+
 class MumpsDistributedInput {
  public:
   /// Takes the values of `A` (fill complete); builds the pattern first when `A` has another graph
@@ -19,20 +30,59 @@ class MumpsDistributedInput {
   /// rank when any rank built a new pattern (MUMPS then needs a new analysis, JOB = 1).
   bool update(const model::CrsMatrix& A, MPI_Comm comm);
 
-  /// The next update() builds the pattern again (after a failed analysis).
-  void forgetPattern() { graph_ = Teuchos::null; }
-
-  MUMPS_INT order() const { return n_; }
-  MUMPS_INT8 numEntries() const { return static_cast<MUMPS_INT8>(values_.size()); }
-  MUMPS_INT* rows() { return rows_.data(); }
-  MUMPS_INT* columns() { return cols_.data(); }
-  double* values() { return values_.data(); }
+  MumpsMatrixView view() {
+    return {n_, static_cast<MUMPS_INT8>(values_.size()), rows_.data(), cols_.data(), values_.data(), generation_};
+  }
 
  private:
   Teuchos::RCP<const model::CrsGraph> graph_;  // held, so that no other graph can take its address
   MUMPS_INT n_ = 0;
+  long generation_ = 0;
   std::vector<MUMPS_INT> rows_, cols_;
   std::vector<double> values_;
+};
+
+/// The same matrix as MUMPS' symmetric input (SYM = 2: LDLᵀ, about half the operations of LU), on one
+/// rank, when it is symmetric apart from decoupled rows. A decoupled row has every off-diagonal value
+/// zero: the identity row of a prescribed DOF, which leaves the matrix unsymmetric because its column
+/// keeps the stiffness. Its column is moved to the right-hand side (symmetric elimination), which is
+/// exact: x_j = b_j / a_jj, and b_i −= a_ij x_j in every other row. Symmetric means
+/// |a_ij − a_ji| ≤ kSymmetryTolerance · max(‖row i‖∞, ‖row j‖∞) for every other pair: round-off of
+/// a symmetric tangent (hyperelastic solids, frictionless penalty contact: the second derivative of a
+/// potential) passes by orders of magnitude, a Coulomb slip tangent (eq. 26) fails by orders.
+class MumpsSymmetricInput {
+ public:
+  static constexpr double kSymmetryTolerance = 1e-10;
+
+  /// Builds the lower triangle of `general` (all rows of the matrix, as on one rank) when its values
+  /// are symmetric in the sense above; returns false when they are not. The pattern is built again when
+  /// `general` has another pattern generation than the last call.
+  bool update(const MumpsMatrixView& general);
+
+  /// b −= the eliminated columns times their rows' solution values: call before the solve.
+  void eliminateColumns(std::vector<double>& rhs) const;
+
+  MumpsMatrixView view() {
+    return {n_, static_cast<MUMPS_INT8>(values_.size()), rows_.data(), cols_.data(), values_.data(), generation_};
+  }
+
+ private:
+  void buildPattern(const MumpsMatrixView& general);
+
+  long generalGeneration_ = -1;  ///< the general input's pattern this one was built from
+  long generation_ = 0;
+  MUMPS_INT n_ = 0;
+  std::vector<std::size_t> lower_;      ///< general entries with row ≥ column, in the order given to MUMPS
+  std::vector<long> transposeOf_;       ///< per lower entry: the general entry (j, i), −1 when absent
+  std::vector<MUMPS_INT> rows_, cols_;  ///< 1-based, lower triangle
+  std::vector<double> values_;
+  std::vector<double> diagonal_;        ///< a_jj of each row (0-based)
+  std::vector<char> decoupled_;         ///< per row (0-based)
+  struct EliminatedEntry {
+    MUMPS_INT row, column;  ///< 0-based: a_row,column with `column` decoupled and `row` not
+    double value;
+  };
+  std::vector<EliminatedEntry> eliminated_;
 };
 
 }  // namespace contessa::solvers

@@ -41,15 +41,25 @@ constexpr int infog(int k) { return k - 1; }
 
 constexpr int kDescribedNullVectors = 12;
 
-// One MUMPS instance bound to a matrix pattern: analysis once per pattern, factorization per matrix.
+struct MumpsSettings {
+  int memoryRelaxation = 50;
+  int ordering = 0;
+  double nullPivotThreshold = 1e-11;
+  bool verbose = false;
+  bool exploitSymmetry = true;
+};
+
+// One MUMPS instance of one symmetry: analysis once per pattern, factorization per matrix.
 class MumpsContext {
  public:
-  MumpsContext(MPI_Comm comm, int memoryRelaxation, int ordering, double nullPivotThreshold, bool verbose,
-               std::shared_ptr<MumpsFailures> failures)
+  MumpsContext(MPI_Comm comm, bool symmetric, int memoryRelaxation, int ordering, double nullPivotThreshold,
+               bool verbose, std::shared_ptr<MumpsFailures> failures)
       : comm_(comm), failures_(std::move(failures)) {
     id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
     id_.par = 1;  // the host takes part in the factorization
-    id_.sym = 0;  // general unsymmetric (the slip tangent of eq. (26) is non-symmetric)
+    // General unsymmetric (LU; the slip tangent of eq. (26) is non-symmetric), or symmetric indefinite
+    // (LDLᵀ, SYM = 2: a tangent stiffness need not be positive definite).
+    id_.sym = symmetric ? 2 : 0;
     id_.job = -1;
     dmumps_c(&id_);
     if (!verbose) {
@@ -80,25 +90,24 @@ class MumpsContext {
   MumpsContext(const MumpsContext&) = delete;
   MumpsContext& operator=(const MumpsContext&) = delete;
 
-  // Factorizes A (owned rows on each rank). Returns false when MUMPS reports an error (e.g. singular).
-  bool factorize(const CrsMatrix& A) {
-    std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
-    const bool newPattern = input_.update(A, comm_);
-    id_.n = input_.order();
-    id_.nnz_loc = input_.numEntries();
-    id_.irn_loc = input_.rows();
-    id_.jcn_loc = input_.columns();
-    id_.a_loc = input_.values();
-    n_ = input_.order();
-    inputScope.reset();
-    if (newPattern) {  // the analysis (ordering, symbolic factorisation) is done once per pattern
+  // Factorizes the matrix (each rank's triplets; collective). Returns false when MUMPS reports an error
+  // (e.g. singular).
+  bool factorize(const MumpsMatrixView& matrix) {
+    id_.n = matrix.order;
+    id_.nnz_loc = matrix.numEntries;
+    id_.irn_loc = matrix.rows;
+    id_.jcn_loc = matrix.columns;
+    id_.a_loc = matrix.values;
+    n_ = matrix.order;
+    if (matrix.patternGeneration != analysedGeneration_) {  // the analysis (ordering, symbolic) once per pattern
       timers::Scope scope(timers::Phase::MumpsAnalysis);
       id_.job = 1;
       dmumps_c(&id_);
       if (id_.infog[0] < 0) {
-        input_.forgetPattern();
+        analysedGeneration_ = -1;
         return false;
       }
+      analysedGeneration_ = matrix.patternGeneration;
     }
     // Penalty contact makes pivoting unpredictable: on a workspace shortfall (INFOG(1) = -8/-9),
     // relax the memory estimate and try again.
@@ -110,6 +119,7 @@ class MumpsContext {
       id_.icntl[icntl(14)] *= 2;
     }
     ++mumpsCounters().factorizations;
+    if (id_.sym != 0) ++mumpsCounters().symmetricFactorizations;
     const int nullPivots = id_.infog[0] >= 0 ? id_.infog[infog(28)] : 0;
     if (id_.infog[0] >= 0 && nullPivots == 0) return true;
     // INFOG(1) and INFOG(28) are global: every rank takes this branch.
@@ -161,20 +171,24 @@ class MumpsContext {
   std::shared_ptr<MumpsFailures> failures_;
   DMUMPS_STRUC_C id_{};
   GO n_ = 0;
-  MumpsDistributedInput input_;
+  long analysedGeneration_ = -1;
 };
 
 class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
  public:
-  void initialize(const RCP<const Thyra::LinearOpSourceBase<double>>& src, int memoryRelaxation, int ordering,
-                  double nullPivotThreshold, bool verbose, const std::shared_ptr<MumpsFailures>& failures) {
+  void initialize(const RCP<const Thyra::LinearOpSourceBase<double>>& src, const MumpsSettings& settings,
+                  const std::shared_ptr<MumpsFailures>& failures) {
     src_ = src;
     op_ = src->getOp();
     auto A = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(op_), true);
-    if (context_ == nullptr) {
+    if (comm_ == MPI_COMM_NULL) {
       auto mpiComm = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(A->getComm(), true);
-      context_ = std::make_shared<MumpsContext>((*mpiComm->getRawMpiComm())(), memoryRelaxation, ordering,
-                                                nullPivotThreshold, verbose, failures);
+      comm_ = (*mpiComm->getRawMpiComm())();
+      settings_ = settings;
+      failures_ = failures;
+      // LDLᵀ only on one rank: there every row is at hand to check the symmetry and move the prescribed
+      // columns to the right-hand side (docs/architecture.md, MUMPS).
+      exploitSymmetry_ = settings.exploitSymmetry && A->getComm()->getSize() == 1;
       const GO n = static_cast<GO>(A->getGlobalNumRows());
       TEUCHOS_TEST_FOR_EXCEPTION(A->getRowMap()->getMaxAllGlobalIndex() != n - 1 || A->getRowMap()->getMinAllGlobalIndex() != 0,
                                  std::logic_error, "MUMPS solver: row ids must be 0 .. n-1");
@@ -189,7 +203,11 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
       toHost_ = rcp(new Import(A->getRowMap(), hostMap_));
       fromHost_ = rcp(new Import(hostMap_, A->getRowMap()));
     }
-    factorized_ = context_->factorize(*A);
+    std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
+    input_.update(*A, comm_);
+    symmetricNow_ = exploitSymmetry_ && symmetricInput_.update(input_.view());
+    inputScope.reset();
+    factorized_ = context(symmetricNow_).factorize(symmetricNow_ ? symmetricInput_.view() : input_.view());
   }
   void uninitialize() {
     src_ = Teuchos::null;
@@ -232,7 +250,8 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
         auto hv = host.getData(0);
         rhs.assign(hv.begin(), hv.end());
       }
-      ok = context_->solve(rhs) && ok;
+      if (symmetricNow_) symmetricInput_.eliminateColumns(rhs);
+      ok = context(symmetricNow_).solve(rhs) && ok;
       {
         auto hv = host.getDataNonConst(0);
         std::copy(rhs.begin(), rhs.end(), hv.begin());
@@ -249,9 +268,24 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
   }
 
  private:
+  // The MUMPS instance of one symmetry, made at its first use (each keeps its own analysis).
+  MumpsContext& context(bool symmetric) const {
+    auto& c = symmetric ? symmetricContext_ : generalContext_;
+    if (c == nullptr)
+      c = std::make_unique<MumpsContext>(comm_, symmetric, settings_.memoryRelaxation, settings_.ordering,
+                                         settings_.nullPivotThreshold, settings_.verbose, failures_);
+    return *c;
+  }
+
   RCP<const Thyra::LinearOpSourceBase<double>> src_;
   RCP<const Thyra::LinearOpBase<double>> op_;
-  std::shared_ptr<MumpsContext> context_;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  MumpsSettings settings_;
+  std::shared_ptr<MumpsFailures> failures_;
+  bool exploitSymmetry_ = false, symmetricNow_ = false;
+  MumpsDistributedInput input_;
+  mutable MumpsSymmetricInput symmetricInput_;
+  mutable std::unique_ptr<MumpsContext> generalContext_, symmetricContext_;
   RCP<const Map> hostMap_;
   RCP<const Import> toHost_, fromHost_;
   bool factorized_ = false;
@@ -285,9 +319,13 @@ void MumpsLinearOpWithSolveFactory::initializeOp(const RCP<const Thyra::LinearOp
   params->validateParametersAndSetDefaults(*getValidParameters());
   const std::string ordering = params->get<std::string>("Ordering");
   const int orderingCode = mumpsOrderings().at(ordering);
-  dynamic_cast<MumpsLinearOpWithSolve&>(*op).initialize(fwdOpSrc, params->get<int>("Memory Relaxation Percent"),
-                                                        orderingCode, params->get<double>("Null Pivot Threshold"),
-                                                        params->get<bool>("Verbose"), failures_);
+  MumpsSettings settings;
+  settings.memoryRelaxation = params->get<int>("Memory Relaxation Percent");
+  settings.ordering = orderingCode;
+  settings.nullPivotThreshold = params->get<double>("Null Pivot Threshold");
+  settings.verbose = params->get<bool>("Verbose");
+  settings.exploitSymmetry = params->get<bool>("Exploit Symmetry");
+  dynamic_cast<MumpsLinearOpWithSolve&>(*op).initialize(fwdOpSrc, settings, failures_);
 }
 
 void MumpsLinearOpWithSolveFactory::uninitializeOp(Thyra::LinearOpWithSolveBase<double>* op,
@@ -337,7 +375,13 @@ RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParamet
                "times that of the scaled matrix (CNTL(3), in (0, 1)); the solve then fails and names the free "
                "direction",
                rcp(new Teuchos::EnhancedNumberValidator<double>(std::numeric_limits<double>::min(), 1.0)));
-    valid->set("Verbose", false, "Print MUMPS' own diagnostics");
+    // Booleans also as the text "true"/"false", as --set gives a parameter the deck does not have.
+    valid->set("Verbose", false, "Print MUMPS' own diagnostics", rcp(new Teuchos::BoolParameterEntryValidator));
+    valid->set("Exploit Symmetry", true,
+               "On one rank, factorise with LDLᵀ (MUMPS SYM = 2, about half the operations of LU) whenever the Jacobian "
+               "is symmetric apart from the prescribed rows, checked at every factorisation (hyperelastic solids with "
+               "frictionless contact are; a slipping Coulomb contact is not, and gets LU)",
+               rcp(new Teuchos::BoolParameterEntryValidator));
   }
   return valid;
 }

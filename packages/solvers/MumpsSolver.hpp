@@ -52,6 +52,7 @@ class MumpsLinearOpWithSolveFactory : public Thyra::LinearOpWithSolveFactoryBase
 /// Number of MUMPS factorizations and solves so far on this process (for the run statistics).
 struct MumpsCounters {
   long factorizations = 0;
+  long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   long solves = 0;
 };
 MumpsCounters& mumpsCounters();
