@@ -1,6 +1,7 @@
 #include "ProcessEnvironment.hpp"
 
 #include <dlfcn.h>
+#include <malloc.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -69,6 +70,19 @@ void oneBlasThreadPerRank() {
   if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))) set(1);
 }
 
+// MUMPS allocates its workspaces at every factorisation and frees them after; glibc returns such
+// blocks to the system (mmap above a threshold that starts at 128 KiB, heap trimming above 128 KiB), so
+// every factorisation faulted its workspace in again page by page: half of the tube's 18 700 page
+// faults, and page faults are slow in virtual machines. Blocks up to 32 MiB (glibc's largest threshold)
+// now come from the heap, and up to 1 GiB of freed memory stays with the process for the next
+// factorisation (measured: 9 600 page faults, a quarter less system time). The peak memory is
+// unchanged. A user's GLIBC_TUNABLES wins.
+void keepWorkspacesForReuse() {
+  if (inEnvironment("GLIBC_TUNABLES")) return;
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+}
+
 }  // namespace
 
 void prepareProcess(int argc, char** argv) {
@@ -76,6 +90,7 @@ void prepareProcess(int argc, char** argv) {
     if (std::strcmp(argv[i], "--timers") == 0) timers::enable();
   fastSingletonStart();
   oneBlasThreadPerRank();
+  keepWorkspacesForReuse();
 }
 
 }  // namespace contessa::app
