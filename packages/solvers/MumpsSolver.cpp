@@ -98,14 +98,14 @@ class MumpsContext {
   // (e.g. singular).
   bool factorize(const MumpsMatrixView& matrix) {
     id_.n = matrix.order;
-    id_.nnz_loc = matrix.numEntries;
+    id_.nnz_loc = matrix.numEntries;  // distributed input: this rank's rows
     id_.irn_loc = matrix.rows;
-    id_.nnz = matrix.numEntries;  // the same triplets as the host's whole matrix (centralised input)
+    id_.jcn_loc = matrix.columns;
+    id_.a_loc = matrix.values;
+    id_.nnz = matrix.numEntries;  // centralised input (one rank): the same triplets, the whole matrix
     id_.irn = matrix.rows;
     id_.jcn = matrix.columns;
     id_.a = matrix.values;
-    id_.jcn_loc = matrix.columns;
-    id_.a_loc = matrix.values;
     n_ = matrix.order;
     if (matrix.patternGeneration != analysedGeneration_) {  // the analysis (ordering, symbolic) once per pattern
       timers::Scope scope(timers::Phase::MumpsAnalysis);
