@@ -37,11 +37,11 @@ std::vector<std::string> coordinateNames(int dimension) {
 }
 
 // The library truncates names beyond its default 32 characters unless told the longest one first.
-int longestName(const mesh::Mesh& mesh, const ExodusFields& fields, const std::vector<ExodusLineBlock>& lineBlocks) {
+int longestName(const mesh::Mesh& mesh, const ExodusFields& fields, const std::vector<ExodusSurfaceBlock>& surfaceBlocks) {
   size_t longest = 32;
   auto consider = [&longest](const std::string& name) { longest = std::max(longest, name.size()); };
   for (const auto& b : mesh.blocks) consider(b.name);
-  for (const auto& b : lineBlocks) consider(b.name);
+  for (const auto& b : surfaceBlocks) consider(b.name);
   for (const auto& s : mesh.nodeSets) consider(s.name);
   for (const auto& s : mesh.sideSets) consider(s.name);
   for (const auto* list : {&fields.nodal, &fields.element, &fields.global})
@@ -120,7 +120,7 @@ void writeDecomposition(int id, const ExodusDecomposition& d, const mesh::Mesh& 
     for (int r : d.sharedWith[n])
       if (std::find(neighbours.begin(), neighbours.end(), r) == neighbours.end()) neighbours.push_back(r);
   }
-  // Line points (rigid surfaces) are drawn by one file only: interior there.
+  // Surface points (rigid surfaces) are drawn by one file only: interior there.
   for (GlobalIndex n = static_cast<GlobalIndex>(d.sharedWith.size()); n < numNodes; ++n) interiorNodes.push_back(n + 1);
   std::sort(neighbours.begin(), neighbours.end());
   int64_t next = 1;
@@ -180,12 +180,12 @@ std::vector<std::string> infoRecords(const std::vector<std::string>& lines) {
 void disableHdf5FileLocking() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
 
 ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
-                           const ExodusRecords& records, const std::vector<ExodusLineBlock>& lineBlocks,
+                           const ExodusRecords& records, const std::vector<ExodusSurfaceBlock>& surfaceBlocks,
                            const ExodusDecomposition* decomposition)
     : path_(path), mesh_(mesh), fields_(fields) {
   const int dim = mesh.dimension;
   numNodes_ = mesh.numNodes();
-  for (const auto& line : lineBlocks) numNodes_ += static_cast<GlobalIndex>(line.points.size()) / dim;
+  for (const auto& surface : surfaceBlocks) numNodes_ += static_cast<GlobalIndex>(surface.points.size()) / dim;
 
   // The system's reason for a path that cannot be written (a directory, no permission, a read-only
   // file system): the library's own message would blame netCDF-4 support for any failure.
@@ -219,27 +219,26 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
   try {
     const Calls check(path, "cannot create");
     const int id = id_;
-    check(ex_set_max_name_length(id, longestName(mesh, fields, lineBlocks)), "the name length");
+    check(ex_set_max_name_length(id, longestName(mesh, fields, surfaceBlocks)), "the name length");
 
-    const size_t meshBlocks = mesh.blocks.size(), numBlocks = meshBlocks + lineBlocks.size();
+    const size_t meshBlocks = mesh.blocks.size(), numBlocks = meshBlocks + surfaceBlocks.size();
     const std::string title = records.title.substr(0, MAX_LINE_LENGTH);
-    GlobalIndex segments = 0;
-    for (const auto& line : lineBlocks)
-      segments += std::max<GlobalIndex>(0, static_cast<GlobalIndex>(line.points.size()) / dim - 1);
-    check(ex_put_init(id, title.c_str(), dim, numNodes_, mesh.numElements() + segments,
+    GlobalIndex surfaceElements = 0;
+    for (const auto& surface : surfaceBlocks) surfaceElements += surface.numElements();
+    check(ex_put_init(id, title.c_str(), dim, numNodes_, mesh.numElements() + surfaceElements,
                       static_cast<int64_t>(numBlocks), static_cast<int64_t>(mesh.nodeSets.size()),
                       static_cast<int64_t>(mesh.sideSets.size())),
           "the header");
 
-    // Coordinates: the mesh nodes, then the line blocks' points.
+    // Coordinates: the mesh nodes, then the surface blocks' points.
     std::vector<std::vector<double>> xyz(static_cast<size_t>(dim), std::vector<double>(numNodes_));
     const GlobalIndex meshNodes = mesh.numNodes();
     for (GlobalIndex n = 0; n < meshNodes; ++n)
       for (int d = 0; d < dim; ++d) xyz[d][n] = mesh.coordinates[n * dim + d];
     GlobalIndex nextNode = meshNodes;
-    for (const auto& line : lineBlocks)
-      for (size_t p = 0; p + dim <= line.points.size(); p += dim, ++nextNode)
-        for (int d = 0; d < dim; ++d) xyz[d][nextNode] = line.points[p + d];
+    for (const auto& surface : surfaceBlocks)
+      for (size_t p = 0; p + dim <= surface.points.size(); p += dim, ++nextNode)
+        for (int d = 0; d < dim; ++d) xyz[d][nextNode] = surface.points[p + d];
     check(ex_put_coord(id, xyz[0].data(), xyz[1].data(), dim == 3 ? xyz[2].data() : nullptr), "coordinates");
     auto coordNames = coordinateNames(dim);
     auto coordPointers = namePointers(coordNames);
@@ -265,20 +264,29 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
       blockNames.push_back(block.name);
     }
     int64_t firstPoint = meshNodes + 1;  // Exodus node number of the block's first point
-    for (size_t l = 0; l < lineBlocks.size(); ++l) {
-      const auto& line = lineBlocks[l];
+    for (size_t l = 0; l < surfaceBlocks.size(); ++l) {
+      const auto& surface = surfaceBlocks[l];
       const int64_t blockId = static_cast<int64_t>(meshBlocks + l) + 1;
-      const int64_t points = static_cast<int64_t>(line.points.size()) / dim;
-      const int64_t segments = std::max<int64_t>(0, points - 1);
-      const std::string what = "line block '" + line.name + "'";
-      check(ex_put_block(id, EX_ELEM_BLOCK, blockId, "BAR2", segments, 2, 0, 0, 0), what);
-      if (segments > 0) {
+      const int64_t points = static_cast<int64_t>(surface.points.size()) / dim;
+      const std::string what = "surface block '" + surface.name + "'";
+      if (surface.nodesPerElement != 2 && surface.nodesPerElement != 4)
+        throw std::runtime_error(what + ": " + std::to_string(surface.nodesPerElement) +
+                                 " nodes per element (2: BAR2 or 4: SHELL4 expected)");
+      const char* type = surface.nodesPerElement == 2 ? "BAR2" : "SHELL4";
+      check(ex_put_block(id, EX_ELEM_BLOCK, blockId, type, surface.numElements(), surface.nodesPerElement, 0, 0, 0),
+            what);
+      if (surface.numElements() > 0) {
         std::vector<int64_t> connectivity;
-        for (int64_t s = 0; s < segments; ++s) connectivity.insert(connectivity.end(), {firstPoint + s, firstPoint + s + 1});
+        for (GlobalIndex point : surface.connectivity) {
+          if (point < 0 || point >= points)
+            throw std::runtime_error(what + ": point " + std::to_string(point) + " out of range (" +
+                                     std::to_string(points) + " points)");
+          connectivity.push_back(firstPoint + point);
+        }
         check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
       }
       firstPoint += points;
-      blockNames.push_back(line.name);
+      blockNames.push_back(surface.name);
     }
     if (!blockNames.empty()) {
       auto pointers = namePointers(blockNames);
@@ -348,7 +356,7 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
     putNames(EX_ELEM_BLOCK, fields.element, "element variable names");
     putNames(EX_GLOBAL, fields.global, "global variable names");
     if (!fields.element.empty() && numBlocks > 0) {
-      // Element variables live on the mesh blocks, not on the line blocks. Declaring them up front
+      // Element variables live on the mesh blocks, not on the surface blocks. Declaring them up front
       // avoids per-step redefinition.
       std::vector<int> truth(numBlocks * fields.element.size(), 0);
       for (size_t b = 0; b < meshBlocks; ++b)
@@ -358,7 +366,7 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
             "the element variable truth table");
     }
     if (decomposition != nullptr)
-      writeDecomposition(id, *decomposition, mesh, numNodes_, mesh.numElements() + segments, check);
+      writeDecomposition(id, *decomposition, mesh, numNodes_, mesh.numElements() + surfaceElements, check);
     // On disk before the first step: a run that dies at once still leaves a valid file with the mesh.
     check(ex_update(id), "the file (flush)");
   } catch (...) {

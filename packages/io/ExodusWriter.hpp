@@ -18,12 +18,19 @@ struct ExodusFields {
   std::vector<std::string> global;   ///< e.g. load_factor, step_size
 };
 
-/// A polyline drawn as its own block of 2-node line elements (BAR2) next to the mesh, e.g. a rigid
-/// contact surface. Its points are appended after the mesh nodes (blocks in order), so nodal values
-/// cover them too; no element variable is defined on it.
-struct ExodusLineBlock {
+/// A surface drawn as its own element block next to the mesh, e.g. a rigid contact surface: 2-node line
+/// elements (BAR2) in 2D, 4-node shells (SHELL4, which ParaView draws as surfaces) in 3D. Its points are
+/// appended after the mesh nodes (blocks in order), so nodal values cover them too; no element variable
+/// is defined on it.
+struct ExodusSurfaceBlock {
   std::string name;
-  std::vector<double> points;  ///< point-major: x0 y0 [z0] x1 y1 [z1] ...; segments join consecutive points
+  std::vector<double> points;  ///< point-major: x0 y0 [z0] x1 y1 [z1] ...
+  int nodesPerElement = 2;     ///< 2: BAR2, 4: SHELL4
+  std::vector<mesh::GlobalIndex> connectivity;  ///< 0-based point indices, nodesPerElement per element
+
+  mesh::GlobalIndex numElements() const {
+    return static_cast<mesh::GlobalIndex>(connectivity.size()) / nodesPerElement;
+  }
 };
 
 /// One file of a spatially decomposed set (`name.exo.N.r`, N files, this one rank r's): the global ids
@@ -31,8 +38,8 @@ struct ExodusLineBlock {
 /// (which nodes lie on the border with which other pieces).
 struct ExodusDecomposition {
   int processor = 0, processors = 1;
-  std::vector<mesh::GlobalIndex> globalNodes;     ///< 0-based global id of each node of the file (line points too)
-  std::vector<mesh::GlobalIndex> globalElements;  ///< 0-based global id of each element of the file (line segments too)
+  std::vector<mesh::GlobalIndex> globalNodes;     ///< 0-based global id of each node of the file (surface points too)
+  std::vector<mesh::GlobalIndex> globalElements;  ///< 0-based global id of each element of the file (surface elements too)
   mesh::GlobalIndex globalNumNodes = 0, globalNumElements = 0;  ///< of the whole set
   std::vector<mesh::GlobalIndex> globalBlockSizes;  ///< elements of each block over the whole set
   /// For each mesh node of the file, the other processors whose files hold it (empty: interior).
@@ -64,12 +71,12 @@ void disableHdf5FileLocking();
 class ExodusWriter {
  public:
   /// Creates (clobbers) `path` and writes the mesh (coordinates, blocks, node sets, side sets, names),
-  /// the line blocks, the records and the variable names, and flushes it. Throws OutputWriteError
+  /// the surface blocks, the records and the variable names, and flushes it. Throws OutputWriteError
   /// naming the file when it cannot be created or written.
   /// With `decomposition`, the file is one piece of a decomposed set: `mesh` is the piece (numbered
   /// from 0), and the global ids and Nemesis records are written too.
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
-               const ExodusRecords& records = {}, const std::vector<ExodusLineBlock>& lineBlocks = {},
+               const ExodusRecords& records = {}, const std::vector<ExodusSurfaceBlock>& surfaceBlocks = {},
                const ExodusDecomposition* decomposition = nullptr);
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields, const std::string& title)
       : ExodusWriter(path, mesh, fields, ExodusRecords{title, {}, {}}) {}
@@ -78,8 +85,8 @@ class ExodusWriter {
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
 
-  /// Appends one output step and flushes it. nodal[v][node] over the mesh nodes then the line-block
-  /// points, element[v][global element] over the mesh elements, global[v]. Values of the wrong size
+  /// Appends one output step and flushes it. nodal[v][node] over the mesh nodes then the surface
+  /// blocks' points, element[v][global element] over the mesh elements, global[v]. Values of the wrong size
   /// throw std::runtime_error; a failed write throws OutputWriteError (a runtime_error too), and the
   /// file keeps the steps written before (no step is written after a failure).
   void writeStep(double time, const std::vector<std::vector<double>>& nodal,
@@ -87,7 +94,7 @@ class ExodusWriter {
 
   int stepsWritten() const { return steps_; }
   const std::string& path() const { return path_; }
-  /// Mesh nodes plus line-block points: the length of every nodal variable.
+  /// Mesh nodes plus surface-block points: the length of every nodal variable.
   mesh::GlobalIndex numNodes() const { return numNodes_; }
 
  private:

@@ -150,29 +150,21 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   for (const auto& [name, force] : model.contactForces())
     for (int c = 0; c < dim; ++c) columns_.push_back("contact_force_" + columnName(name) + "_" + axes[c]);
 
-  // Rigid contact surfaces are not part of the mesh: each becomes a line block of its own, named
-  // after its interface, so that ParaView shows the plate moving with λ.
-  std::vector<io::ExodusLineBlock> lineBlocks;
+  // Rigid contact surfaces are not part of the mesh: each becomes a block of its own, named after its
+  // interface, so that ParaView shows the plate moving with λ: its facets on its points, segments (BAR2)
+  // in 2D, quadrilaterals (SHELL4, drawn as surfaces) in 3D.
+  std::vector<io::ExodusSurfaceBlock> surfaceBlocks;
   for (const auto& contact : problem.contacts) {
     if (!contact.rigidMaster) continue;
     std::string blockName = contact.name;
     if (problem.mesh.hasBlock(blockName)) blockName += "_rigid";
     const auto& surface = contact.rigidSurface;
-    // 2D: the polyline of the points. 3D: the outline of each quadrilateral, closed (its corners and the
-    // first again; consecutive facets' outlines are joined by one segment).
-    io::ExodusLineBlock line{blockName, {}};
-    const auto addPoint = [&](std::size_t i) {
-      for (int c = 0; c < dim; ++c) line.points.push_back(surface.points[i * dim + c]);
-    };
-    if (dim == 2) {
-      for (std::size_t i = 0; i < surface.points.size() / dim; ++i) addPoint(i);
-    } else {
-      for (std::size_t f = 0; f + 4 <= surface.facets.size(); f += 4)
-        for (int a = 0; a <= 4; ++a) addPoint(static_cast<std::size_t>(surface.facets[f + a % 4]));
-    }
-    RigidSurface rigid{blockName, line.points.size() / dim, std::vector<double>(surface.motion.begin(), surface.motion.end())};
-    lineBlocks.push_back(line);
-    rigidSurfaces_.push_back(rigid);
+    io::ExodusSurfaceBlock block{blockName, surface.points, contact.nodesPerFacet(),
+                                 {surface.facets.begin(), surface.facets.end()}};
+    const auto points = static_cast<mesh::GlobalIndex>(surface.points.size()) / dim;
+    rigidSurfaces_.push_back(RigidSurface{blockName, static_cast<std::size_t>(points),
+                                          std::vector<double>(surface.motion.begin(), surface.motion.end())});
+    surfaceBlocks.push_back(std::move(block));
   }
 
   const int ranks = comm->getSize();
@@ -190,7 +182,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   const auto createExodus = [&]() {
     if (!perRank_) {
       exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
-                                                   runRecords(problem.title, run, ranks), lineBlocks);
+                                                   runRecords(problem.title, run, ranks), surfaceBlocks);
       return;
     }
     // The rigid surfaces are drawn by rank 0's piece; the other pieces hold their blocks empty.
@@ -203,23 +195,27 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     decomposition.globalNumNodes = problem.mesh.numNodes();
     decomposition.globalNumElements = problem.mesh.numElements();
     for (const auto& block : problem.mesh.blocks) decomposition.globalBlockSizes.push_back(block.numElements());
-    std::vector<io::ExodusLineBlock> pieceLines = lineBlocks;
-    for (auto& line : pieceLines) {
-      const auto points = static_cast<mesh::GlobalIndex>(line.points.size()) / dim;
-      decomposition.globalBlockSizes.push_back(std::max<mesh::GlobalIndex>(0, points - 1));
-      for (mesh::GlobalIndex p = 0; p < points; ++p) {
-        if (root_) decomposition.globalNodes.push_back(decomposition.globalNumNodes + p);
-        if (root_ && p + 1 < points) decomposition.globalElements.push_back(decomposition.globalNumElements + p);
+    std::vector<io::ExodusSurfaceBlock> pieceSurfaces = surfaceBlocks;
+    for (auto& surface : pieceSurfaces) {
+      const auto points = static_cast<mesh::GlobalIndex>(surface.points.size()) / dim;
+      const mesh::GlobalIndex elements = surface.numElements();
+      decomposition.globalBlockSizes.push_back(elements);
+      if (root_) {
+        for (mesh::GlobalIndex p = 0; p < points; ++p) decomposition.globalNodes.push_back(decomposition.globalNumNodes + p);
+        for (mesh::GlobalIndex e = 0; e < elements; ++e)
+          decomposition.globalElements.push_back(decomposition.globalNumElements + e);
+      } else {
+        surface.points.clear();
+        surface.connectivity.clear();
       }
       decomposition.globalNumNodes += points;
-      decomposition.globalNumElements += std::max<mesh::GlobalIndex>(0, points - 1);
-      if (!root_) line.points.clear();
+      decomposition.globalNumElements += elements;
     }
     if (!root_) rigidSurfaces_.clear();
     exodus_ = std::make_unique<io::ExodusWriter>(directory + "/" + name + ".exo" +
                                                      pieceSuffix(ranks, comm->getRank()),
                                                  piece_->mesh, fields, runRecords(problem.title, run, ranks),
-                                                 pieceLines, &decomposition);
+                                                 pieceSurfaces, &decomposition);
   };
   // Rank 0 takes the lock before any file is created, so a second run on the same files stops before
   // it touches them; per rank, every rank creates its piece once the lock is held.

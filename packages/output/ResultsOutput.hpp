@@ -54,7 +54,7 @@ class ResultsOutput : public solvers::IncrementObserver {
   const std::string& warning() const { return warning_; }
 
  private:
-  /// One rigid contact surface drawn as a line block: its points move by λ · motion.
+  /// One rigid contact surface drawn as a block of its own (BAR2 in 2D, SHELL4 in 3D): its points move by λ · motion.
   struct RigidSurface {
     std::string name;
     std::size_t points = 0;

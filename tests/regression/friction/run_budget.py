@@ -13,9 +13,20 @@ round-off floor of the residual; on the tube a penalty of 1e9 times a tributary 
 spacing of doubles near 120 mm quantises each nodal force by about 3e-5 N/mm, and ||F|| stalls at 3e-5 to
 1.5e-4): each must satisfy r_k+1 <= C r_k^2 (--quadratic-constant C), and there must be at least
 --min-pairs of them. Steps where the residual grows (a node opens, closes or changes stick/slip between
-iterates) are counted and printed, not checked: they are not part of the asymptotic range.
+iterates) are counted and printed, not checked: they are not part of the asymptotic range. Each pair is
+printed with the convergence order estimate p = log(r_k+1 / r_k) / log(r_k / r_k-1) when r_k-1 is in the
+asymptotic range too (information: with two or three iterates above the floor, p is dominated by the
+first one's distance from the asymptotic range; the bounded ratio is the test).
+
+With --history CSV (the run's <name>.history.csv; no failed attempt allowed then, so that attempt i is
+increment i) every increment is classified by the contact states it converged to: stick (only sticking
+nodes), slip (only slipping nodes), mixed, or none; --require-states stick,slip demands at least one
+checked pair in increments of each of these kinds (a deck whose stick phase converges below the floor in
+one iterate would otherwise pass on slip alone).
 Exit 0 when everything holds."""
 import argparse
+import csv
+import math
 import re
 import subprocess
 import sys
@@ -29,6 +40,8 @@ parser.add_argument("--asymptotic", type=float, default=10.0)
 parser.add_argument("--floor", type=float, default=1e-3)
 parser.add_argument("--quadratic-constant", type=float, default=0.1)
 parser.add_argument("--min-pairs", type=int, default=20)
+parser.add_argument("--history")
+parser.add_argument("--require-states", default="")
 parser.add_argument("command", nargs=argparse.REMAINDER)
 args = parser.parse_args()
 command = args.command[1:] if args.command and args.command[0] == "--" else args.command
@@ -62,23 +75,46 @@ if args.newton_rate:
         m = re.search(r"\|\|F\|\| = (\S+)", line)
         if m and attempts:
             attempts[-1].append(float(m.group(1)))
+    states = {}
+    if args.history:
+        if summary and failed != 0:
+            failures.append(f"--history needs a run without failed attempts ({failed})")
+        with open(args.history) as f:
+            for row in csv.DictReader(f):
+                stick, slip = int(float(row["stick"])), int(float(row["slip"]))
+                kind = "mixed" if stick and slip else "stick" if stick else "slip" if slip else "none"
+                states[int(float(row["step"]))] = f"{kind} ({stick} stick, {slip} slip)"
+    checked = {}
     pairs = increases = 0
     for i, norms in enumerate(attempts):
-        for a, b in zip(norms, norms[1:]):
+        for k in range(1, len(norms)):
+            a, b = norms[k - 1], norms[k]
             if a > args.asymptotic or b < args.floor:
                 continue
             if b >= a:
                 increases += 1
                 continue
             pairs += 1
+            state = states.get(i, "")
+            kind = state.split(" ")[0]
+            checked[kind] = checked.get(kind, 0) + 1
             c = b / (a * a)
-            print(f"attempt {i}: ||F|| {a:.3e} -> {b:.3e}  r_k+1 / r_k^2 = {c:.3e}")
+            order = ""
+            if k >= 2 and args.floor <= norms[k - 2] <= args.asymptotic and norms[k - 2] > a:
+                order = f"  order {math.log(b / a) / math.log(a / norms[k - 2]):.2f}"
+            print(f"attempt {i}{' ' + state if state else ''}: ||F|| {a:.3e} -> {b:.3e}  "
+                  f"r_k+1 / r_k^2 = {c:.3e}{order}")
             if c > args.quadratic_constant:
                 failures.append(f"attempt {i}: {a:.3e} -> {b:.3e} is not quadratic (r_k+1 / r_k^2 = {c:.3e} > "
                                 f"{args.quadratic_constant})")
     print(f"{len(attempts)} attempts, {pairs} asymptotic pairs checked, {increases} residual increases skipped")
     if pairs < args.min_pairs:
         failures.append(f"only {pairs} asymptotic pairs (at least {args.min_pairs}): is Newton Details on?")
+    if checked:
+        print("pairs checked per kind of increment: " + ", ".join(f"{k} {n}" for k, n in sorted(checked.items())))
+    for kind in filter(None, args.require_states.split(",")):
+        if not checked.get(kind):
+            failures.append(f"no asymptotic pair checked in a {kind} increment")
 
 for f in failures:
     print("FAIL:", f)

@@ -6,8 +6,9 @@ back with netCDF4 only:
 - every reaction and contact force column of the history is an Exodus global variable of the same
   name with the same values at every step (the history prints 12 significant digits), and the
   load_factor global is the step time;
-- each rigid contact surface is a BAR2 block of its own (named after its interface), whose points
-  are the deck's Rigid Surface/Points and whose displacement at every step is lambda * Motion;
+- each rigid contact surface is a block of its own (named after its interface): BAR2 in 2D, SHELL4 in 3D,
+  whose points are the deck's Rigid Surface/Points, whose elements are its Facets (in 2D without Facets,
+  the chain of consecutive points) and whose displacement at every step is lambda * Motion;
 - a QA record ("contessa", the version `contessa --version` prints, the date, the time);
 - information records with the command line and the deck as run: every parameter of DECK is there
   with the same value, except those given with --set, which have the overriding value."""
@@ -90,7 +91,9 @@ with netCDF4.Dataset(args.exo) as ds:
     if "load_factor" in globals_ and not np.array_equal(values[:, globals_.index("load_factor")], times):
         problems.append("the load_factor global is not the step time")
 
-    # Rigid surfaces: a BAR2 block each, moving with lambda.
+    # Rigid surfaces: a BAR2 (2D) or SHELL4 (3D) block each on the deck's points and facets, moving with lambda.
+    dim = len(ds.dimensions["num_dim"])
+    axes = "xyz"[:dim]
     blocks = names(ds, "eb_names")
     surfaces = {}
     contact = deck.find("./ParameterList[@name='Problem']/ParameterList[@name='Contact']")
@@ -98,33 +101,41 @@ with netCDF4.Dataset(args.exo) as ds:
         surface = interface.find("./ParameterList[@name='Rigid Surface']")
         if surface is None:
             continue
-        get = {p.get("name"): [float(v) for v in p.get("value").strip("{} ").split(",")] for p in surface}
-        surfaces[interface.get("name")] = (np.reshape(get["Points"], (-1, 2)), np.array(get["Motion"]))
+        get = {p.get("name"): [float(v) for v in p.get("value").strip("{} ").split(",") if v.strip()] for p in surface}
+        points = np.reshape(get["Points"], (-1, dim))
+        facets = get.get("Facets") or [i + a for i in range(len(points) - 1) for a in (0, 1)]  # 2D: the chain
+        surfaces[interface.get("name")] = (points, np.reshape(np.array(facets, dtype=int), (-1, 2 if dim == 2 else 4)),
+                                           np.array(get["Motion"]))
     if not surfaces:
         problems.append(f"{args.deck} has no rigid surface")
     displ = names(ds, "name_nod_var")
-    for name, (points, motion) in surfaces.items():
+    # The surfaces' points follow the mesh nodes, surface after surface in the deck's order.
+    first = len(ds.dimensions["num_nodes"]) - sum(len(points) for points, _, _ in surfaces.values())
+    for name, (points, facets, motion) in surfaces.items():
+        nodes = np.arange(first, first + len(points))
+        first += len(points)
         if name not in blocks:
             problems.append(f"no block '{name}' for the rigid surface (blocks: {blocks})")
             continue
         b = blocks.index(name) + 1
         kind = ds.variables[f"connect{b}"].getncattr("elem_type")
-        if kind != "BAR2":
-            problems.append(f"block '{name}' has elements of type {kind}, expected BAR2")
+        expected_kind = "BAR2" if dim == 2 else "SHELL4"
+        if kind != expected_kind:
+            problems.append(f"block '{name}' has elements of type {kind}, expected {expected_kind}")
         connect = np.asarray(ds.variables[f"connect{b}"][:]) - 1
-        nodes = np.concatenate([connect[:, 0], connect[-1:, 1]])
-        if len(connect) != len(points) - 1 or np.any(connect[:, 1] != connect[:, 0] + 1):
-            problems.append(f"block '{name}' has {len(connect)} segments, expected a chain of {len(points) - 1}")
-        xy = np.stack([ds.variables["coordx"][nodes], ds.variables["coordy"][nodes]], axis=1)
-        if not np.allclose(xy, points, rtol=0, atol=1e-12):
-            problems.append(f"block '{name}' lies at {xy.tolist()}, the deck's points are {points.tolist()}")
-        for c, axis in enumerate("xy"):
+        if connect.shape != facets.shape or np.any(connect - nodes[0] != facets):
+            problems.append(f"block '{name}' has elements {(connect - nodes[0]).tolist()}, the deck's facets are "
+                            f"{facets.tolist()}")
+        coords = np.stack([np.asarray(ds.variables["coord" + a][:])[nodes] for a in axes], axis=1)
+        if not np.allclose(coords, points, rtol=0, atol=1e-12):
+            problems.append(f"block '{name}' lies at {coords.tolist()}, the deck's points are {points.tolist()}")
+        for c, axis in enumerate(axes):
             u = np.asarray(ds.variables[f"vals_nod_var{displ.index('displ_' + axis) + 1}"][:steps][:, nodes])
             expected = np.outer(times[:steps], np.full(len(nodes), motion[c]))
             if not np.allclose(u, expected, rtol=1e-14, atol=1e-12):
                 problems.append(f"block '{name}': displ_{axis} is not lambda * Motion")
-        print(f"rigid block '{name}': {len(points)} points, displ_y at the last step "
-              f"{float(np.asarray(ds.variables['vals_nod_var' + str(displ.index('displ_y') + 1)][steps - 1])[nodes[0]]):.6g}")
+        print(f"rigid block '{name}': {kind}, {len(points)} points, {len(connect)} elements, displacement at the "
+              f"last step {[float(np.asarray(ds.variables['vals_nod_var' + str(displ.index('displ_' + a) + 1)][steps - 1])[nodes[0]]) for a in axes]}")
 
     # QA record and information records.
     qa = [[text(field) for field in record] for record in ds.variables["qa_records"][:].data]

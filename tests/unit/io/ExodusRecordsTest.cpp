@@ -1,11 +1,14 @@
-// What a results file holds besides the mesh and the fields: line blocks (rigid surfaces) with their
-// own nodes and no element variables, QA and information records, and the flush after every step.
+// What a results file holds besides the mesh and the fields: surface blocks (rigid surfaces: BAR2 in 2D,
+// SHELL4 in 3D) with their own nodes and no element variables, QA and information records, and the flush after every step.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <cstdio>
+#include <stdexcept>
 #include <string>
+
+#include <exodusII.h>
 
 #include "io/ExodusResults.hpp"
 #include "io/ExodusWriter.hpp"
@@ -14,9 +17,9 @@
 
 using namespace contessa;
 using contessa::io::ExodusFields;
-using contessa::io::ExodusLineBlock;
 using contessa::io::ExodusRecords;
 using contessa::io::ExodusResults;
+using contessa::io::ExodusSurfaceBlock;
 using contessa::io::ExodusWriter;
 
 namespace {
@@ -46,7 +49,7 @@ TEST(ExodusRecords, LongLinesAreSplitIntoEightyCharacterRecords) {
   EXPECT_EQ(joined, line);
 }
 
-TEST(ExodusRecords, LineBlocksRecordsAndGlobalsRoundTrip) {
+TEST(ExodusRecords, SurfaceBlocksRecordsAndGlobalsRoundTrip) {
   mesh::RectangleSpec spec;
   spec.nx = 2;
   spec.ny = 1;
@@ -61,7 +64,7 @@ TEST(ExodusRecords, LineBlocksRecordsAndGlobalsRoundTrip) {
   records.title = "records test";
   records.qa.push_back({"contessa", "1.2.3 a-very-long-git-description-that-is-cut", "2024/01/02", "03:04:05"});
   records.info = {"first line", std::string(100, 'x')};
-  const std::vector<ExodusLineBlock> lines = {{"plate", {-1.0, 2.0, 0.0, 2.0, 3.0, 2.0}}};  // 3 points, 2 segments
+  const std::vector<ExodusSurfaceBlock> lines = {{"plate", {-1.0, 2.0, 0.0, 2.0, 3.0, 2.0}, 2, {0, 1, 1, 2}}};  // 3 points, 2 segments
   {
     ExodusWriter writer(path, mesh, fields, records, lines);
     EXPECT_EQ(writer.numNodes(), 9);
@@ -97,6 +100,66 @@ TEST(ExodusRecords, LineBlocksRecordsAndGlobalsRoundTrip) {
   EXPECT_EQ(info[0], "first line");
   EXPECT_EQ(info[1], std::string(79, 'x') + "\\");
   EXPECT_EQ(info[2], std::string(21, 'x'));
+  std::remove(path.c_str());
+}
+
+// 3D: a rigid surface of two quadrilaterals on six points is a SHELL4 block (ParaView draws surfaces, not
+// outlines) whose connectivity is the facets' point indices after the mesh nodes, moving with its nodal
+// displacements; the side sets and element variables of the mesh are untouched.
+TEST(ExodusRecords, ShellBlockOfA3DRigidSurface) {
+  mesh::BoxSpec spec;
+  spec.nx = 2;
+  spec.blockName = "body";
+  const mesh::Mesh mesh = mesh::generateBox(spec);  // 12 nodes, 2 elements
+  ASSERT_EQ(mesh.numNodes(), 12);
+  const std::string path = tempPath("shell");
+  ExodusFields fields;
+  fields.nodal = {"displ_x", "displ_y", "displ_z"};
+  fields.element = {"von_mises"};
+  const std::vector<double> points = {0, 2, 0, 1, 2, 0, 2, 2, 0, 0, 2, 1, 1, 2, 1, 2, 2, 1};
+  const std::vector<ExodusSurfaceBlock> surfaces = {{"plate", points, 4, {0, 3, 4, 1, 1, 4, 5, 2}}};
+  {
+    ExodusWriter writer(path, mesh, fields, {}, surfaces);
+    EXPECT_EQ(writer.numNodes(), 18);
+    std::vector<std::vector<double>> nodal(3, std::vector<double>(18, 0.0));
+    for (int n = 12; n < 18; ++n) nodal[1][n] = -0.25;
+    writer.writeStep(1.0, nodal, {{1.0, 2.0}}, {});
+  }
+  const ExodusResults results(path);
+  EXPECT_EQ(results.blockNames(), (std::vector<std::string>{"body", "plate"}));
+  EXPECT_EQ(results.blockTypes(), (std::vector<std::string>{"HEX8", "SHELL4"}));
+  EXPECT_EQ(results.element("von_mises", 0), (std::vector<double>{1.0, 2.0}));
+  const auto uy = results.nodal("displ_y", 0);
+  ASSERT_EQ(uy.size(), 18u);
+  for (int n = 12; n < 18; ++n) EXPECT_EQ(uy[n], -0.25);
+  // The connectivity, 1-based Exodus node numbers: the facets' points after the 12 mesh nodes.
+  int cpu = 8, io = 8;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpu, &io, &version);
+  ASSERT_GE(id, 0);
+  std::vector<int64_t> connectivity(8);
+  EXPECT_EQ(ex_get_conn(id, EX_ELEM_BLOCK, 2, connectivity.data(), nullptr, nullptr), 0);
+  EXPECT_EQ(connectivity, (std::vector<int64_t>{13, 16, 17, 14, 14, 17, 18, 15}));
+  std::vector<double> x(18), y(18), z(18);
+  EXPECT_EQ(ex_get_coord(id, x.data(), y.data(), z.data()), 0);
+  EXPECT_EQ(x[17], 2.0);
+  EXPECT_EQ(y[17], 2.0);
+  EXPECT_EQ(z[17], 1.0);
+  ex_close(id);
+  std::remove(path.c_str());
+}
+
+// A surface block whose connectivity names a point it does not have is refused, naming the block.
+TEST(ExodusWriter, SurfaceBlockPointOutOfRangeIsRefused) {
+  const mesh::Mesh mesh = mesh::generateRectangle({});
+  const std::string path = tempPath("range");
+  const std::vector<ExodusSurfaceBlock> lines = {{"plate", {0.0, 2.0, 1.0, 2.0}, 2, {0, 2}}};
+  try {
+    ExodusWriter writer(path, mesh, {}, {}, lines);
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "surface block 'plate': point 2 out of range (2 points)");
+  }
   std::remove(path.c_str());
 }
 
