@@ -10,7 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "contact/ContactInterface.hpp"
+#include "contact/InterfaceSpec.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
 #include "mesh/Mesh.hpp"

@@ -10,7 +10,7 @@ bool StepSizeFactory::createStepSizeStrategy(const std::string& strategyName,
                                              Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) {
   // Names LOCA does not know are offered here first; LOCA's own ("Constant", "Adaptive") fall through.
   if (strategyName == "Contact Beta") {
-    strategy = Teuchos::rcp(new ContactBetaStepSize(model_, contactBeta_));
+    strategy = Teuchos::rcp(new ContactBetaStepSize(events_, contactBeta_));
     return true;
   }
   return false;

@@ -4,15 +4,15 @@
 #include <LOCA_Abstract_Factory.H>
 
 #include "continuation/ContactBetaControl.hpp"
-#include "model/ContactMechanicsModel.hpp"
+#include "continuation/ContactEventSource.hpp"
 
 namespace contessa::solvers {
 
 class StepSizeFactory : public LOCA::Abstract::Factory {
  public:
-  /// `model` and `contactBeta` serve the "Contact Beta" strategy; both outlive the run.
-  StepSizeFactory(const model::ContactMechanicsModel& model, continuation::ContactBetaControl& contactBeta)
-      : model_(model), contactBeta_(contactBeta) {}
+  /// `events` and `contactBeta` serve the "Contact Beta" strategy; both outlive the run.
+  StepSizeFactory(continuation::ContactEventSource& events, continuation::ContactBetaControl& contactBeta)
+      : events_(events), contactBeta_(contactBeta) {}
   // LOCA's global data owns this factory: keeping a strong reference back would leak both.
   void init(const Teuchos::RCP<LOCA::GlobalData>& /*globalData*/) override {}
   bool createStepSizeStrategy(const std::string& strategyName,
@@ -21,7 +21,7 @@ class StepSizeFactory : public LOCA::Abstract::Factory {
                               Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) override;
 
  private:
-  const model::ContactMechanicsModel& model_;
+  continuation::ContactEventSource& events_;
   continuation::ContactBetaControl& contactBeta_;
 };
 
