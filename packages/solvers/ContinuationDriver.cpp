@@ -329,7 +329,7 @@ RunSummary ContinuationDriver::run() {
   observers->pushBack(newton);
   if (!iterationObserver_.is_null()) observers->pushBack(iterationObserver_);
   auto params = locaParameters(piro_, observers, errors);
-  auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*model_, betaState)));
+  auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(StepSizeContext{*model_, betaState})));
 
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
   LOCA::ParameterVector p;

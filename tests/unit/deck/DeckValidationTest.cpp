@@ -10,6 +10,7 @@
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "solvers/SolverParameters.hpp"
+#include "solvers/StepSizeMethods.hpp"
 
 namespace {
 
@@ -304,6 +305,24 @@ TEST(PiroValidation, UnknownStepSizeMethod) {
   ParameterList piro("Piro");
   piro.sublist("LOCA").sublist("Step Size").set("Method", std::string("Bisection"));
   expectPiroError(piro, 1, "Piro/LOCA/Step Size/Method: expected one of Constant, Adaptive, Contact Beta; got 'Bisection'");
+}
+
+// Step-size methods come from a registry: each row publishes the Step Size parameters it reads, and only
+// Contessa's own methods carry a factory (LOCA builds Constant and Adaptive from the same list).
+TEST(PiroValidation, StepSizeRegistry) {
+  using contessa::solvers::stepSizeMethodRegistry;
+  EXPECT_EQ(contessa::solvers::stepSizeMethods(), (std::vector<std::string>{"Constant", "Adaptive", "Contact Beta"}));
+  const auto valid = contessa::solvers::piroValidParameters();
+  const auto& step = valid->sublist("LOCA").sublist("Step Size");
+  for (const auto& method : stepSizeMethodRegistry()) {
+    EXPECT_EQ(static_cast<bool>(method.create), method.name == "Contact Beta") << method.name;
+    ParameterList own;
+    ASSERT_NE(method.addParameters, nullptr) << method.name;
+    method.addParameters(own);
+    EXPECT_GT(own.numParams(), 0) << method.name;
+    for (auto it = own.begin(); it != own.end(); ++it) EXPECT_TRUE(step.isParameter(own.name(it))) << own.name(it);
+  }
+  EXPECT_NE(step.getEntry("Method").docString().find("Contact Beta: N_c contacts per increment"), std::string::npos);
 }
 
 TEST(PiroValidation, StepSizesMustBeOrdered) {
