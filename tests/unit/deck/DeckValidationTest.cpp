@@ -6,6 +6,7 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include "common/Error.hpp"
+#include "deck/ContactLawFactory.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
@@ -240,6 +241,37 @@ TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   EXPECT_EQ(def.contacts[1].slaveNodes.size(), def.contacts[0].numMasterFacets() + 1);  // 2D: a line of segments
 }
 
+// Contact laws come from a registry: Law defaults to the one law, so decks without it read as before, and the
+// law's parameters are those its row publishes.
+TEST(ContactValidation, LawRegistry) {
+  using contessa::deck::ContactLawFactory;
+  ASSERT_EQ(ContactLawFactory::names(), std::vector<std::string>{"Penalty Coulomb"});
+  EXPECT_EQ(ContactLawFactory::defaultLaw(), "Penalty Coulomb");
+  const auto params = ContactLawFactory::validParameters("Penalty Coulomb");
+  for (const char* name : {"Normal Penalty", "Tangential Penalty", "Friction Coefficient", "Slip Tolerance"})
+    EXPECT_TRUE(params->isParameter(name)) << name;
+  try {
+    ContactLawFactory::validParameters("Mortar");
+    FAIL() << "no error for an unknown law";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown contact law 'Mortar' (known: Penalty Coulomb)"), std::string::npos)
+        << e.what();
+  }
+  auto implicit = contactProblem();
+  auto explicitLaw = contactProblem();
+  explicitLaw->sublist("Contact").sublist("plate").set("Law", std::string("Penalty Coulomb"));
+  for (auto* p : {implicit.get(), explicitLaw.get()}) p->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3);
+  const auto a = contessa::deck::buildProblem(*implicit, "").contacts.at(0).law;
+  const auto b = contessa::deck::buildProblem(*explicitLaw, "").contacts.at(0).law;
+  EXPECT_EQ(a.normalPenalty, 1e6);
+  EXPECT_EQ(a.frictionCoefficient, 0.3);
+  EXPECT_EQ(a.normalPenalty, b.normalPenalty);
+  EXPECT_EQ(a.tangentialPenalty, b.tangentialPenalty);
+  EXPECT_EQ(a.frictionCoefficient, b.frictionCoefficient);
+  EXPECT_EQ(a.slipTolerance, b.slipTolerance);
+  EXPECT_EQ(implicit->sublist("Contact").sublist("plate").get<std::string>("Law"), "Penalty Coulomb");  // the default, filled in
+}
+
 TEST(ContactValidation, BadParametersAreNamed) {
   const std::vector<std::pair<std::function<void(ParameterList&)>, std::string>> cases = {
       {[](ParameterList& c) { c.set("Slave Side Set", std::string("")); }, "Problem/Contact/plate/Slave Side Set: required"},
@@ -268,6 +300,9 @@ TEST(ContactValidation, BadParametersAreNamed) {
       {[](ParameterList& c) { c.set("Tangential Penalty", -1.0); }, "Problem/Contact/plate/Tangential Penalty: expected a value in [0"},
       {[](ParameterList& c) { c.set("Two Pass", true); }, "Problem/Contact/plate/Two Pass: a rigid master has no slave side of its own"},
       {[](ParameterList& c) { c.set("Penalty", 1.0); }, "Problem/Contact/plate/Penalty: unknown parameter"},
+      {[](ParameterList& c) { c.set("Law", std::string("Augmented Lagrange")); },
+       "Problem/Contact/plate/Law: expected one of Penalty Coulomb; got 'Augmented Lagrange'"},
+      {[](ParameterList& c) { c.set("Law", 1); }, "Problem/Contact/plate/Law: expected a string, one of Penalty Coulomb"},
   };
   for (const auto& [breakIt, expected] : cases) {
     auto p = contactProblem();
