@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "deck/ContactLawFactory.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mechanics/Material.hpp"
 #include "solvers/MumpsSolver.hpp"
@@ -73,6 +74,11 @@ std::string deckReference() {
   describe(md, *deck::nodalForceValidParameters(), "Problem/Nodal Forces/<name>", 4);
   md << "### `Problem/Contact/<name>`\n\n";
   describe(md, *deck::contactValidParameters(), "Problem/Contact/<name>", 4);
+  md << "### Contact laws (`Problem/Contact/<name>/Law`)\n\n";
+  for (const auto& law : deck::ContactLawFactory::names()) {
+    md << "#### `Law` = `" << law << "`\n\n" << deck::ContactLawFactory::description(law) << ".\n\n";
+    describe(md, *deck::ContactLawFactory::validParameters(law), "Problem/Contact/<name>", 5);
+  }
   md << "### `Problem/Regression/<name>`\n\n";
   describe(md, *deck::regressionValidParameters(), "Problem/Regression/<name>", 4);
   md << "## `Piro`\n\n";

@@ -19,7 +19,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "contact/ContactInterface.hpp"
+#include "contact/InterfaceSpec.hpp"
 
 namespace contessa::contact {
 

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <Teuchos_Array.hpp>
 
 #include "common/Error.hpp"
+#include "deck/ContactLawFactory.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "contact/ContactSurface.hpp"
 #include "mesh/MeshFactory.hpp"
@@ -73,8 +75,11 @@ mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
   return mesh;
 }
 
-// Each named child of an open list is validated against `valid`; returns the child names in order.
-std::vector<std::string> validateChildren(ParameterList& list, const ParameterList& valid, const std::string& where) {
+// The valid parameters of one child of an open list (the child and its deck path given).
+using ValidFor = std::function<RCP<const ParameterList>(const ParameterList& child, const std::string& where)>;
+
+// Each named child of an open list is validated against `validFor(child)`; returns the child names in order.
+std::vector<std::string> validateChildren(ParameterList& list, const ValidFor& validFor, const std::string& where) {
   std::vector<std::string> names;
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string& name = list.name(it);
@@ -82,8 +87,29 @@ std::vector<std::string> validateChildren(ParameterList& list, const ParameterLi
                                            where.substr(where.rfind('/') + 1) + " entry)");
     names.push_back(name);
   }
-  for (const auto& name : names) validateAndSetDefaults(list.sublist(name), valid, where + "/" + name);
+  for (const auto& name : names) {
+    auto& child = list.sublist(name);
+    validateAndSetDefaults(child, *validFor(child, where + "/" + name), where + "/" + name);
+  }
   return names;
+}
+
+std::vector<std::string> validateChildren(ParameterList& list, const ParameterList& valid, const std::string& where) {
+  return validateChildren(list, [&valid](const ParameterList&, const std::string&) { return Teuchos::rcpFromRef(valid); },
+                          where);
+}
+
+// A contact interface takes the common contact parameters and those of its Law (the default law when
+// none is given).
+RCP<const ParameterList> contactValidFor(const ParameterList& child, const std::string& where) {
+  std::string law = ContactLawFactory::defaultLaw();
+  if (child.isParameter("Law")) {
+    requireInput(child.isType<std::string>("Law"),
+                 where + "/Law: expected a string, one of " + joinNames(ContactLawFactory::names()));
+    law = child.get<std::string>("Law");
+    requireOneOf(where + "/Law", law, ContactLawFactory::names());
+  }
+  return contactValidParameters(law);
 }
 
 void requireNodeSet(const mesh::Mesh& mesh, const std::string& name, const std::string& where) {
@@ -106,16 +132,10 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   contact::ContactInterfaceSpec spec;
   spec.name = name;
   spec.dimension = mesh.dimension;
-  spec.law.normalPenalty = list.get<double>("Normal Penalty");
-  spec.law.tangentialPenalty = list.get<double>("Tangential Penalty");
-  spec.law.frictionCoefficient = list.get<double>("Friction Coefficient");
-  spec.law.slipTolerance = list.get<double>("Slip Tolerance");
   spec.searchReach = list.get<double>("Search Reach");
   requireInput(spec.searchReach == -1.0 || spec.searchReach >= 0.0,
                where + "/Search Reach: expected a length >= 0, or -1 (automatic), got " + std::to_string(spec.searchReach));
-  requireInput(spec.law.normalPenalty > 0, where + "/Normal Penalty: required; expected a value > 0");
-  requireInput(spec.law.frictionCoefficient == 0 || spec.law.slipTolerance > 0 || spec.law.tangentialPenalty > 0,
-               where + "/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0 and Slip Tolerance = 0");
+  spec.law = ContactLawFactory::create(list.get<std::string>("Law"), list, where);
 
   const std::string slaveSet = list.get<std::string>("Slave Side Set");
   const std::string masterSet = list.get<std::string>("Master Side Set");
@@ -231,17 +251,8 @@ RCP<const ParameterList> contactValidParameters() {
             "side, so that the normal (right-hand rule) points out of the rigid body towards the slave. "
             "2D: empty = consecutive points; else 2 indices per segment");
   rigid.set("Motion", Teuchos::Array<double>(), "Displacement of the rigid surface at load factor 1 (x, y[, z])");
-  setNonNegative(*p, "Normal Penalty", 0.0, "Normal penalty ε_N (pressure per unit penetration), eq. (16); required");
-  setNonNegative(*p, "Tangential Penalty", 0.0,
-                 "Tangential (stick) penalty ε_T, eq. (17): with Slip Tolerance = 0 the constant ε_T (required when "
-                 "Friction Coefficient > 0); with Slip Tolerance > 0 an upper bound of ε_T = μ|t_N|/(Slip Tolerance × "
-                 "facet length) (0 = no bound)");
-  setNonNegative(*p, "Friction Coefficient", 0.0, "Coulomb coefficient μ, eq. (18); 0 = frictionless");
-  setBounded(*p, "Slip Tolerance", 0.005, 0.0, 1.0,
-             "Allowable elastic slip while sticking, as a fraction of the slave facet length L (mean length of the "
-             "slave sides at the node): "
-             "the stick penalty is ε_T = μ|t_N|/(Slip Tolerance × L), so nearly unloaded nodes keep a finite stick "
-             "range (as Abaqus' SLIP TOLERANCE); 0 = the paper's constant Tangential Penalty");
+  setChoice(*p, "Law", ContactLawFactory::defaultLaw(), ContactLawFactory::names(),
+            "Contact law; its parameters are listed under Contact laws below");
   p->set("Search Reach", -1.0,
          "Matrix graph of the interface (built once): a length >= 0 couples each slave node to the deformable "
          "master facets within 2 x (largest master facet) + Search Reach of it, so slave nodes may move up to one "
@@ -249,6 +260,14 @@ RCP<const ParameterList> contactValidParameters() {
          "component); -1 = automatic: the whole master surface when slave x master nodes <= 250000, else as 0. "
          "A run whose contact pairing leaves the reach stops with an error naming this parameter");
   p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
+  return p;
+}
+
+RCP<const ParameterList> contactValidParameters(const std::string& law) {
+  auto p = rcp(new ParameterList(*contactValidParameters()));
+  const auto lawParameters = ContactLawFactory::validParameters(law);
+  for (auto it = lawParameters->begin(); it != lawParameters->end(); ++it)
+    p->setEntry(lawParameters->name(it), lawParameters->entry(it));
   return p;
 }
 
@@ -369,7 +388,7 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
   def.exodusPerRank = problem.sublist("Output").get<std::string>("Exodus Layout") == "Per Rank";
 
   auto& contactList = problem.sublist("Contact");
-  for (const auto& name : validateChildren(contactList, *contactValidParameters(), "Problem/Contact"))
+  for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact"))
     for (auto& spec : buildContact(contactList.sublist(name), name, mesh)) def.contacts.push_back(std::move(spec));
 
   auto& regressionList = problem.sublist("Regression");

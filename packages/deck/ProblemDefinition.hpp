@@ -10,7 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "contact/ContactInterface.hpp"
+#include "contact/InterfaceSpec.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
 #include "mesh/Mesh.hpp"
@@ -66,7 +66,10 @@ Teuchos::RCP<const Teuchos::ParameterList> blockValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> dirichletValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> nodalForceValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> regressionValidParameters();
+/// A contact interface's parameters common to every law (with Law, the law's name); with `law`, and that
+/// law's own parameters (ContactLawFactory).
 Teuchos::RCP<const Teuchos::ParameterList> contactValidParameters();
+Teuchos::RCP<const Teuchos::ParameterList> contactValidParameters(const std::string& law);
 
 /// Validates the "Problem" list in place (defaults filled in) and builds the problem; mesh file
 /// names are relative to `deckDirectory`. Throws InputError with the deck path on any problem.

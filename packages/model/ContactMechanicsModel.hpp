@@ -1,37 +1,48 @@
 #pragma once
-// The boundary between physics and solvers (DESIGN.md): a Thyra::ModelEvaluator over Tpetra with
+// The boundary between physics and solvers (docs/design.md): a Thyra::ModelEvaluator over Tpetra with
 // x = nodal displacements and one parameter, the load factor λ. It evaluates the residual
-// f(x, λ) = f_int(x) − λ f_ext on free DOFs and x − λ ū on prescribed DOFs, the Jacobian W = ∂f/∂x
-// and ∂f/∂λ. The CRS graph is built once. Continuum elements are assembled by SolidAssembler.
+// f(x, λ) = f_int(x) + r_c(x, λ) − λ f_ext on free DOFs and x − λ ū on prescribed DOFs, the Jacobian
+// W = ∂f/∂x and ∂f/∂λ. It composes parts with one job each and keeps only the evaluation bookkeeping:
+//   DofLayout           maps, Import/Export, the graph (built once)
+//   SolidAssembler      continuum elements
+//   ContactAssembly     contact interfaces, their reserved couplings and history
+//   StiffnessScatter    element and contact blocks into the Jacobian's values, at precomputed positions
+//   BoundaryConditions  Dirichlet rows and values, f_ext
+//   PostProcessing      stresses, reactions, contact fields and forces, slave-node gathers
+// The solvers see it through Thyra, IncrementalState (commit/rollback) and continuation::ContactEventSource
+// (Contact Beta); this header names no contact type.
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
-#include "contact/ContactInterface.hpp"
-#include "contact/CouplingReservation.hpp"
+#include "contact/ContactCounts.hpp"
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/Partition.hpp"
+#include "model/IncrementalState.hpp"
+#include "model/PostProcessing.hpp"
 #include "model/SolidAssembler.hpp"
-#include "model/StiffnessScatter.hpp"
 #include "model/TpetraTypes.hpp"
 
 namespace contessa::model {
 
-/// Reaction force summed over a node set: Σ (f_int − f_ext) over its nodes, the force the supports
-/// exert on the body (Abaqus RF convention). Per unit thickness in 2D.
-struct NodeSetReaction {
-  std::string nodeSet;
-  std::vector<double> force;  ///< one entry per component
-};
+class DofLayout;
+class ContactAssembly;
+class BoundaryConditions;
+class StiffnessScatter;
 
-class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>, public continuation::ContactEventSource {
+class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
+                              public IncrementalState,
+                              public continuation::ContactEventSource {
  public:
   ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
                         const mesh::Partition& partition,
                         const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory);
+  ~ContactMechanicsModel() override;
 
   // Thyra::ModelEvaluator
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override;
@@ -43,43 +54,43 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override;
 
-  // State of the increment: enhanced-strain parameters and contact history, committed after a
-  // converged increment, rolled back when an increment is abandoned.
-  void commitState();
-  void rollbackState();
+  // IncrementalState: enhanced-strain parameters and contact history, committed after a converged
+  // increment, rolled back when an increment is abandoned.
+  void commitState() override;
+  void rollbackState() override;
+  /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
+  double lastLoadFactor() const override { return lastLoadFactor_; }
 
-  // Post-processing for output, at a converged state.
-  const Teuchos::RCP<const Map>& ownedDofMap() const { return ownedMap_; }
-  const Teuchos::RCP<const Map>& ownedElementMap() const { return elementMap_; }
+  // Post-processing for output, at a converged state (PostProcessing).
+  const Teuchos::RCP<const Map>& ownedDofMap() const;
+  const Teuchos::RCP<const Map>& ownedElementMap() const;
+  const Teuchos::RCP<const Map>& ownedNodeMap() const;
   /// Columns: σ_xx σ_yy σ_zz σ_xy [σ_yz σ_xz] von Mises, one row per owned element.
   Teuchos::RCP<MultiVector> elementStresses(const Vector& x) const;
-  static std::vector<std::string> elementStressNames(int dimension);
+  static std::vector<std::string> elementStressNames(int dimension) { return PostProcessing::elementStressNames(dimension); }
   std::vector<NodeSetReaction> reactions(const Vector& x, double loadFactor) const;
 
   // Contact results at the last committed state.
-  bool hasContact() const { return !contacts_.empty(); }
-  const Teuchos::RCP<const Map>& ownedNodeMap() const { return nodeMap_; }
+  bool hasContact() const;
   /// Columns contact_pressure, contact_gap, contact_status, contact_slip per owned node (0 off the
   /// slave surfaces; gap NaN where no master segment is in reach).
   Teuchos::RCP<MultiVector> contactNodalFields() const;
-  static std::vector<std::string> contactFieldNames();
+  static std::vector<std::string> contactFieldNames() { return PostProcessing::contactFieldNames(); }
   /// Sums over all ranks and interfaces.
   contact::ContactCounts contactCounts() const;
-  /// Every slave node (all ranks, all interfaces, the same order on every rank) for Contact Beta
-  /// (continuation::ContactEventSource): the last commit against the latest evaluation, against the
-  /// state (x, λ), or over the last converged increment.
-  std::vector<continuation::SlaveNodeIncrement> trialIncrement() const override;
-  std::vector<continuation::SlaveNodeIncrement> trialIncrementAt(const Vector& x, double loadFactor) const;
-  std::vector<continuation::SlaveNodeIncrement> committedIncrement() const override;
-  /// Contact Beta, Restart mode: nodes open at the last commit get no contact force while frozen.
-  void setNewContactsFrozen(bool frozen) const {
-    for (auto& c : contacts_) c->setNewContactsFrozen(frozen);
-    newContactsFrozen_ = frozen;
-  }
-  bool newContactsFrozen() const { return newContactsFrozen_; }
   /// Force the master exerts on the slave body, per interface (both passes of a two-pass interface
   /// are summed under the interface name), summed over ranks: one component per space dimension.
   std::vector<std::pair<std::string, std::vector<double>>> contactForces() const;
+
+  // continuation::ContactEventSource: every slave node (all ranks, all interfaces, the same order on
+  // every rank) for Contact Beta.
+  std::vector<continuation::SlaveNodeIncrement> trialIncrement() const override;
+  std::vector<continuation::SlaveNodeIncrement> trialIncrementAt(const Thyra::VectorBase<double>& x,
+                                                                 double loadFactor) const override;
+  std::vector<continuation::SlaveNodeIncrement> trialIncrementAt(const Vector& x, double loadFactor) const;
+  std::vector<continuation::SlaveNodeIncrement> committedIncrement() const override;
+  void freezeNewContacts(bool frozen) override;
+  bool newContactsFrozen() const override;
 
   // Why a solve failed or must not be accepted, in words for the one-line stop message. Collective:
   // every rank calls them at the same point and gets the same text.
@@ -100,8 +111,6 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   int jacobianEvaluations() const { return jacobianEvaluations_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
   int elementPasses() const { return elementPasses_; }
-  /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
-  double lastLoadFactor() const { return lastLoadFactor_; }
   int dimension() const { return dim_; }
 
   // For the finite-difference check of the Jacobian (JacobianCheck; ContactMechanicsModelProbes.cpp).
@@ -119,9 +128,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   void evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double>& inArgs,
                      const Thyra::ModelEvaluatorBase::OutArgs<double>& outArgs) const override;
 
-  void buildMaps(const mesh::Partition& partition);
+  /// The graph from the element couplings and the contact reservations, and the scatter positions.
   void buildGraph();
-  void buildBoundaryConditions();
   /// One assembly pass at owned x and load factor λ: internal and contact forces and their ∂/∂λ,
   /// exported to owned rows, before boundary conditions; with `withStiffness`, the stiffness into
   /// scatter_. `updateTrial` stores the trial state. Returns the first element that failed, if any.
@@ -132,33 +140,29 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// Whether the latest pass was made at exactly this x, λ and contact freeze, and `valid` still holds
   /// (agreed by every rank).
   bool latestPassIsAt(const Vector& x, double lambda, bool valid) const;
+  /// x imported into the overlapped vector; its values.
+  Teuchos::ArrayRCP<const double> overlapped(const Vector& x) const;
 
   Teuchos::RCP<const Comm> comm_;
   const deck::ProblemDefinition& problem_;
   int dim_;
-  Teuchos::RCP<const Map> ownedMap_, overlapMap_, elementMap_, paramMap_;
-  Teuchos::RCP<const Export> exporter_;
-  Teuchos::RCP<const Import> importer_;
-  Teuchos::RCP<const CrsGraph> ownedGraph_;
-  std::unique_ptr<StiffnessScatter> scatter_;
-  Teuchos::RCP<Vector> overlapForce_;
-  mutable Teuchos::RCP<Vector> overlapX_;
-  Teuchos::RCP<Vector> externalForce_;       ///< f_ext at λ = 1 (owned)
-  std::vector<LO> prescribedRows_;           ///< owned local rows with a Dirichlet condition
-  std::vector<double> prescribedValues_;     ///< ū at λ = 1, per prescribed row
-  std::vector<char> isPrescribedOverlap_;    ///< per overlapped local DOF
+  std::unique_ptr<DofLayout> layout_;
+  // The parts an evaluation changes (trial states, the scatter's values): Thyra evaluates through a
+  // const method, so they are held by pointer and changed from it.
   std::unique_ptr<SolidAssembler> solids_;
-  mutable std::vector<std::unique_ptr<contact::ContactInterfaceBase>> contacts_;
-  std::vector<contact::CouplingReservation> reservations_;  ///< per interface: the couplings the graph holds
-  Teuchos::RCP<const Map> nodeMap_;
-  Teuchos::RCP<Vector> overlapDfdLambda_;
+  std::unique_ptr<ContactAssembly> contact_;
+  std::unique_ptr<StiffnessScatter> scatter_;
+  std::unique_ptr<BoundaryConditions> conditions_;
+  std::unique_ptr<PostProcessing> results_;
+  Teuchos::RCP<const Map> paramMap_;
+  Teuchos::RCP<Vector> overlapX_, overlapForce_, overlapDfdLambda_;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> xSpace_, pSpace_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
   // The latest evaluation pass: residual forces, ∂f/∂λ and (when asked for) the stiffness at one
   // (x, λ). A later request at the same point is served from it; at a converged increment it gives
   // the reactions (no second element loop for the output).
-  mutable Teuchos::RCP<Vector> passX_, passForce_, passDfdLambda_;  ///< owned; force = f_int + contact
+  Teuchos::RCP<Vector> passX_, passForce_, passDfdLambda_;  ///< owned; force = f_int + contact
   mutable double passLambda_ = 0;
   mutable bool passFrozen_ = false, passHasStiffness_ = false;
   mutable SolidAssembler::Status passStatus_;
@@ -166,7 +170,6 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   mutable bool passServesReactions_ = false;    ///< until the state is rolled back
   mutable int jacobianEvaluations_ = 0, elementPasses_ = 0, stiffnessPasses_ = 0;
   mutable double lastLoadFactor_ = 0;
-  mutable bool newContactsFrozen_ = false;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank
 };
 

@@ -4,12 +4,13 @@
 #include <algorithm>
 
 #include "model/ContactMechanicsModel.hpp"
+#include "model/ContactAssembly.hpp"
 
 namespace contessa::model {
 
 struct ContactMechanicsModel::EvaluationState {
   std::vector<double> solidTrial;
-  std::vector<std::unique_ptr<contact::ContactInterfaceBase>> contacts;  ///< trial histories, last positions, slip damping
+  ContactAssembly::Interfaces contacts;  ///< trial histories, last positions, slip damping
   Teuchos::RCP<Vector> passX, passForce, passDfdLambda;
   double passLambda = 0;
   bool passFrozen = false, passHasStiffness = false, passServesEvaluations = false, passServesReactions = false;
@@ -21,7 +22,7 @@ struct ContactMechanicsModel::EvaluationState {
 std::shared_ptr<const ContactMechanicsModel::EvaluationState> ContactMechanicsModel::saveEvaluationState() const {
   auto s = std::make_shared<EvaluationState>();
   s->solidTrial = solids_->trialState();
-  for (const auto& c : contacts_) s->contacts.push_back(c->clone());
+  s->contacts = contact_->saveState();
   s->passX = Teuchos::rcp(new Vector(*passX_, Teuchos::Copy));
   s->passForce = Teuchos::rcp(new Vector(*passForce_, Teuchos::Copy));
   s->passDfdLambda = Teuchos::rcp(new Vector(*passDfdLambda_, Teuchos::Copy));
@@ -41,8 +42,7 @@ std::shared_ptr<const ContactMechanicsModel::EvaluationState> ContactMechanicsMo
 
 void ContactMechanicsModel::restoreEvaluationState(const EvaluationState& s) const {
   solids_->restoreTrialState(s.solidTrial);
-  contacts_.clear();
-  for (const auto& c : s.contacts) contacts_.push_back(c->clone());
+  contact_->restoreState(s.contacts);
   passX_->assign(*s.passX);
   passForce_->assign(*s.passForce);
   passDfdLambda_->assign(*s.passDfdLambda);

@@ -6,7 +6,6 @@
 #include <LOCA_MultiContinuation_ExtendedVector.H>
 #include <NOX_Solver_Generic.H>
 #include <NOX_Thyra_Vector.H>
-#include <Thyra_TpetraThyraWrappers.hpp>
 
 namespace contessa::solvers {
 
@@ -42,13 +41,13 @@ NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solve
   // That iterate was computed with the contact set of time t (new contacts frozen), so a node about to
   // close shows the penetration it would reach without contact: ^{t+Δt} g_N of eq. (11).
   if (!control_.checkPending() || solver.getNumIterations() != 1) return status_;
-  if (control_.restartAtFirstIterate(model_.trialIncrement())) {
+  if (control_.restartAtFirstIterate(events_.trialIncrement())) {
     status_ = NOX::StatusTest::Failed;  // LOCA restarts the increment; the strategy applies β
     return status_;
   }
   // The step stands (the measured β seeds the next increment's step): contact is enforced from here
   // on, and the residual of this iterate is recomputed with it before the convergence tests see it.
-  model_.setNewContactsFrozen(false);
+  events_.freezeNewContacts(false);
   auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
   const auto x = group.getX().clone(NOX::DeepCopy);
   group.setX(*x);
@@ -73,16 +72,14 @@ std::vector<continuation::SlaveNodeIncrement> ContactBetaStepSize::predictedNode
   if (dlds != 0.0) xPredicted->update(stepSize / dlds, *predictor.getXVec(), 1.0);
   const double lambda = current.getScalar(0) + stepSize;
   const auto& thyra = dynamic_cast<const NOX::Thyra::Vector&>(*xPredicted);
-  const auto x = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>::getConstTpetraVector(
-      Teuchos::rcpFromRef(thyra.getThyraVector()));
-  return model_.trialIncrementAt(*x, lambda);
+  return events_.trialIncrementAt(thyra.getThyraVector(), lambda);
 }
 
 NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
     LOCA::MultiContinuation::AbstractStrategy& curGroup, const LOCA::MultiContinuation::ExtendedVector& predictor,
     const NOX::Solver::Generic& solver, const LOCA::Abstract::Iterator::StepStatus& stepStatus,
     const LOCA::Abstract::Iterator&, double& stepSize) {
-  model_.setNewContactsFrozen(false);
+  events_.freezeNewContacts(false);
   const double lambda = curGroup.getContinuationParameter();
   continuation::AttemptPlan plan;
   if (first_) {
@@ -91,13 +88,13 @@ NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
   } else if (stepStatus == LOCA::Abstract::Iterator::Unsuccessful) {
     plan = control_.restartRequested() ? control_.afterBetaRestart() : control_.afterFailedAttempt(lambda);
   } else {
-    plan = control_.afterConvergedIncrement(lambda, model_.committedIncrement(), solver.getNumIterations());
+    plan = control_.afterConvergedIncrement(lambda, events_.committedIncrement(), solver.getNumIterations());
   }
   stepSize = plan.step;
   if (!plan.ok) return NOX::Abstract::Group::Failed;
   if (control_.settings().mode == ContactBetaSettings::Mode::Predictor && !plan.corrected)
     stepSize = control_.correctByPrediction(predictedNodes(curGroup, predictor, stepSize));
-  if (plan.checkFirstIterate) model_.setNewContactsFrozen(true);
+  if (plan.checkFirstIterate) events_.freezeNewContacts(true);
   previous_ = stepSize;
   return NOX::Abstract::Group::Ok;
 }

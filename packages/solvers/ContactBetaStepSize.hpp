@@ -7,34 +7,34 @@
 //  - Predictor: the same β from the slave nodes at the predicted state (LOCA's predictor) before the
 //    solve, so the corrected step is taken without a restarted solve.
 // The decisions are continuation::ContactBetaControl's; the classes here relay LOCA's and NOX's calls
-// to it and give it the slave nodes (continuation::ContactEventSource, the model).
+// to it and give it the slave nodes (continuation::ContactEventSource, implemented by the model).
 #include <LOCA_StepSize_AbstractStrategy.H>
 #include <NOX_StatusTest_Generic.H>
 
 #include "continuation/ContactBetaControl.hpp"
-#include "model/ContactMechanicsModel.hpp"
+#include "continuation/ContactEventSource.hpp"
 
 namespace contessa::solvers {
 
 /// Restart mode: fails the Newton solve at its first iteration when β asks for another step.
 class ContactBetaRestartTest : public NOX::StatusTest::Generic {
  public:
-  ContactBetaRestartTest(const model::ContactMechanicsModel& model, continuation::ContactBetaControl& control)
-      : model_(model), control_(control) {}
+  ContactBetaRestartTest(continuation::ContactEventSource& events, continuation::ContactBetaControl& control)
+      : events_(events), control_(control) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override;
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& os, int indent) const override;
 
  private:
-  const model::ContactMechanicsModel& model_;
+  continuation::ContactEventSource& events_;
   continuation::ContactBetaControl& control_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
 class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy {
  public:
-  ContactBetaStepSize(const model::ContactMechanicsModel& model, continuation::ContactBetaControl& control)
-      : model_(model), control_(control) {}
+  ContactBetaStepSize(continuation::ContactEventSource& events, continuation::ContactBetaControl& control)
+      : events_(events), control_(control) {}
 
   NOX::Abstract::Group::ReturnType computeStepSize(LOCA::MultiContinuation::AbstractStrategy& curGroup,
                                                    const LOCA::MultiContinuation::ExtendedVector& predictor,
@@ -50,7 +50,7 @@ class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy {
                                                                const LOCA::MultiContinuation::ExtendedVector& predictor,
                                                                double stepSize) const;
 
-  const model::ContactMechanicsModel& model_;
+  continuation::ContactEventSource& events_;
   continuation::ContactBetaControl& control_;
   double previous_ = 0;
   bool first_ = true;

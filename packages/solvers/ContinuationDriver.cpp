@@ -118,10 +118,12 @@ class NewtonCounter : public NOX::Observer {
 // LOCA tells the group about every step: commit or roll back the model state, report to the observer.
 class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
  public:
-  IncrementBookkeeper(model::ContactMechanicsModel& model, IncrementObserver& observer, const NewtonCounter& newton,
+  IncrementBookkeeper(model::IncrementalState& state, const continuation::ContactEventSource& events,
+                      IncrementObserver& observer, const NewtonCounter& newton,
                       const continuation::ContactBetaControl* contactBeta, continuation::CountedEvents counted,
                       double initialLambda)
-      : model_(model),
+      : state_(state),
+        events_(events),
         observer_(observer),
         newton_(newton),
         contactBeta_(contactBeta),
@@ -131,13 +133,13 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
 
   void postProcessContinuationStep(LOCA::Abstract::Iterator::StepStatus status) override {
     if (status == LOCA::Abstract::Iterator::Successful) {
-      model_.commitState();
+      state_.commitState();
       pendingSuccess_ = true;
     } else {
-      model_.rollbackState();
+      state_.rollbackState();
       ++failedAttempts;
       ++attempts_;
-      IncrementReport r = report(model_.lastLoadFactor());
+      IncrementReport r = report(state_.lastLoadFactor());
       r.dlambda = r.lambda - lastLambda_;
       lastFailure = newton_.failure;
       lastFailedTarget = r.lambda;
@@ -155,11 +157,11 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     const auto& tx = dynamic_cast<const NOX::Thyra::Vector&>(x);
     auto tpetraX = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>::getConstTpetraVector(
         Teuchos::rcpFromRef(tx.getThyraVector()));
-    if (first_) model_.commitState();
+    if (first_) state_.commitState();
     lastAttemptFailed = false;
     IncrementReport r = report(lambda);
     r.dlambda = first_ ? 0.0 : lambda - lastLambda_;
-    r.newEvents = first_ ? 0 : continuation::countEvents(model_.committedIncrement(), counted_);
+    r.newEvents = first_ ? 0 : continuation::countEvents(events_.committedIncrement(), counted_);
     observer_.incrementConverged(*tpetraX, r);
     if (!first_) ++increments;
     lastLambda_ = lambda;
@@ -189,7 +191,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     return r;
   }
 
-  model::ContactMechanicsModel& model_;
+  model::IncrementalState& state_;
+  const continuation::ContactEventSource& events_;
   IncrementObserver& observer_;
   const NewtonCounter& newton_;
   const continuation::ContactBetaControl* contactBeta_;
@@ -326,7 +329,7 @@ RunSummary ContinuationDriver::run() {
   observers->pushBack(newton);
   if (!iterationObserver_.is_null()) observers->pushBack(iterationObserver_);
   auto params = locaParameters(piro_, observers, errors);
-  auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*model_, betaState)));
+  auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(StepSizeContext{*model_, betaState})));
 
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
   LOCA::ParameterVector p;
@@ -334,7 +337,7 @@ RunSummary ContinuationDriver::run() {
   auto x0 = model_->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_, p, 0, true));
-  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, observer_, *newton, contactBeta ? &betaState : nullptr,
+  auto bookkeeper = rcp(new IncrementBookkeeper(*model_, *model_, observer_, *newton, contactBeta ? &betaState : nullptr,
                                                 betaState.settings().counted, lambda0));
   group->setSaveDataStrategy(bookkeeper);
 

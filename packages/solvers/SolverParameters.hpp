@@ -8,10 +8,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-namespace contessa::solvers {
+#include "solvers/StepSizeMethods.hpp"  // stepSizeMethods()
 
-/// Step-size strategies known to LOCA or registered by Contessa's LOCA factory.
-std::vector<std::string> stepSizeMethods();
+namespace contessa::solvers {
 
 /// Stratimikos' linear solvers and preconditioners that work on Contessa's Tpetra matrices (MUMPS is
 /// registered by Contessa; Stratimikos' Epetra solvers are left out).

@@ -1,6 +1,6 @@
 #include "solvers/StepSizeFactory.hpp"
 
-#include "solvers/ContactBetaStepSize.hpp"
+#include <LOCA_StepSize_AbstractStrategy.H>
 
 namespace contessa::solvers {
 
@@ -9,10 +9,11 @@ bool StepSizeFactory::createStepSizeStrategy(const std::string& strategyName,
                                              const Teuchos::RCP<Teuchos::ParameterList>& /*stepsizeParams*/,
                                              Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) {
   // Names LOCA does not know are offered here first; LOCA's own ("Constant", "Adaptive") fall through.
-  if (strategyName == "Contact Beta") {
-    strategy = Teuchos::rcp(new ContactBetaStepSize(model_, contactBeta_));
-    return true;
-  }
+  for (const auto& method : stepSizeMethodRegistry())
+    if (method.name == strategyName && method.create) {
+      strategy = method.create(context_);
+      return true;
+    }
   return false;
 }
 

@@ -1,18 +1,16 @@
 #pragma once
-// Contessa's LOCA factory: LOCA offers every "Step Size/Method" name to it first, so step-size
-// strategies that LOCA does not know are registered here by name.
+// Contessa's LOCA factory: LOCA offers every "Step Size/Method" name to it first; the methods of the
+// registry (StepSizeMethods.hpp) with a factory of their own are built here, LOCA's fall through to LOCA.
 #include <LOCA_Abstract_Factory.H>
 
-#include "continuation/ContactBetaControl.hpp"
-#include "model/ContactMechanicsModel.hpp"
+#include "solvers/StepSizeMethods.hpp"
 
 namespace contessa::solvers {
 
 class StepSizeFactory : public LOCA::Abstract::Factory {
  public:
-  /// `model` and `contactBeta` serve the "Contact Beta" strategy; both outlive the run.
-  StepSizeFactory(const model::ContactMechanicsModel& model, continuation::ContactBetaControl& contactBeta)
-      : model_(model), contactBeta_(contactBeta) {}
+  /// `context` serves the strategies (Contact Beta's slave nodes and control); it outlives the run.
+  explicit StepSizeFactory(const StepSizeContext& context) : context_(context) {}
   // LOCA's global data owns this factory: keeping a strong reference back would leak both.
   void init(const Teuchos::RCP<LOCA::GlobalData>& /*globalData*/) override {}
   bool createStepSizeStrategy(const std::string& strategyName,
@@ -21,8 +19,7 @@ class StepSizeFactory : public LOCA::Abstract::Factory {
                               Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) override;
 
  private:
-  const model::ContactMechanicsModel& model_;
-  continuation::ContactBetaControl& contactBeta_;
+  StepSizeContext context_;
 };
 
 }  // namespace contessa::solvers

@@ -6,10 +6,12 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 
 #include "common/Error.hpp"
+#include "deck/ContactLawFactory.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "solvers/SolverParameters.hpp"
+#include "solvers/StepSizeMethods.hpp"
 
 namespace {
 
@@ -239,6 +241,37 @@ TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   EXPECT_EQ(def.contacts[1].slaveNodes.size(), def.contacts[0].numMasterFacets() + 1);  // 2D: a line of segments
 }
 
+// Contact laws come from a registry: Law defaults to the one law, so decks without it read as before, and the
+// law's parameters are those its row publishes.
+TEST(ContactValidation, LawRegistry) {
+  using contessa::deck::ContactLawFactory;
+  ASSERT_EQ(ContactLawFactory::names(), std::vector<std::string>{"Penalty Coulomb"});
+  EXPECT_EQ(ContactLawFactory::defaultLaw(), "Penalty Coulomb");
+  const auto params = ContactLawFactory::validParameters("Penalty Coulomb");
+  for (const char* name : {"Normal Penalty", "Tangential Penalty", "Friction Coefficient", "Slip Tolerance"})
+    EXPECT_TRUE(params->isParameter(name)) << name;
+  try {
+    ContactLawFactory::validParameters("Mortar");
+    FAIL() << "no error for an unknown law";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown contact law 'Mortar' (known: Penalty Coulomb)"), std::string::npos)
+        << e.what();
+  }
+  auto implicit = contactProblem();
+  auto explicitLaw = contactProblem();
+  explicitLaw->sublist("Contact").sublist("plate").set("Law", std::string("Penalty Coulomb"));
+  for (auto* p : {implicit.get(), explicitLaw.get()}) p->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3);
+  const auto a = contessa::deck::buildProblem(*implicit, "").contacts.at(0).law;
+  const auto b = contessa::deck::buildProblem(*explicitLaw, "").contacts.at(0).law;
+  EXPECT_EQ(a.normalPenalty, 1e6);
+  EXPECT_EQ(a.frictionCoefficient, 0.3);
+  EXPECT_EQ(a.normalPenalty, b.normalPenalty);
+  EXPECT_EQ(a.tangentialPenalty, b.tangentialPenalty);
+  EXPECT_EQ(a.frictionCoefficient, b.frictionCoefficient);
+  EXPECT_EQ(a.slipTolerance, b.slipTolerance);
+  EXPECT_EQ(implicit->sublist("Contact").sublist("plate").get<std::string>("Law"), "Penalty Coulomb");  // the default, filled in
+}
+
 TEST(ContactValidation, BadParametersAreNamed) {
   const std::vector<std::pair<std::function<void(ParameterList&)>, std::string>> cases = {
       {[](ParameterList& c) { c.set("Slave Side Set", std::string("")); }, "Problem/Contact/plate/Slave Side Set: required"},
@@ -267,6 +300,9 @@ TEST(ContactValidation, BadParametersAreNamed) {
       {[](ParameterList& c) { c.set("Tangential Penalty", -1.0); }, "Problem/Contact/plate/Tangential Penalty: expected a value in [0"},
       {[](ParameterList& c) { c.set("Two Pass", true); }, "Problem/Contact/plate/Two Pass: a rigid master has no slave side of its own"},
       {[](ParameterList& c) { c.set("Penalty", 1.0); }, "Problem/Contact/plate/Penalty: unknown parameter"},
+      {[](ParameterList& c) { c.set("Law", std::string("Augmented Lagrange")); },
+       "Problem/Contact/plate/Law: expected one of Penalty Coulomb; got 'Augmented Lagrange'"},
+      {[](ParameterList& c) { c.set("Law", 1); }, "Problem/Contact/plate/Law: expected a string, one of Penalty Coulomb"},
   };
   for (const auto& [breakIt, expected] : cases) {
     auto p = contactProblem();
@@ -304,6 +340,24 @@ TEST(PiroValidation, UnknownStepSizeMethod) {
   ParameterList piro("Piro");
   piro.sublist("LOCA").sublist("Step Size").set("Method", std::string("Bisection"));
   expectPiroError(piro, 1, "Piro/LOCA/Step Size/Method: expected one of Constant, Adaptive, Contact Beta; got 'Bisection'");
+}
+
+// Step-size methods come from a registry: each row publishes the Step Size parameters it reads, and only
+// Contessa's own methods carry a factory (LOCA builds Constant and Adaptive from the same list).
+TEST(PiroValidation, StepSizeRegistry) {
+  using contessa::solvers::stepSizeMethodRegistry;
+  EXPECT_EQ(contessa::solvers::stepSizeMethods(), (std::vector<std::string>{"Constant", "Adaptive", "Contact Beta"}));
+  const auto valid = contessa::solvers::piroValidParameters();
+  const auto& step = valid->sublist("LOCA").sublist("Step Size");
+  for (const auto& method : stepSizeMethodRegistry()) {
+    EXPECT_EQ(static_cast<bool>(method.create), method.name == "Contact Beta") << method.name;
+    ParameterList own;
+    ASSERT_NE(method.addParameters, nullptr) << method.name;
+    method.addParameters(own);
+    EXPECT_GT(own.numParams(), 0) << method.name;
+    for (auto it = own.begin(); it != own.end(); ++it) EXPECT_TRUE(step.isParameter(own.name(it))) << own.name(it);
+  }
+  EXPECT_NE(step.getEntry("Method").docString().find("Contact Beta: N_c contacts per increment"), std::string::npos);
 }
 
 TEST(PiroValidation, StepSizesMustBeOrdered) {

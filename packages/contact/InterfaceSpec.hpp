@@ -1,0 +1,54 @@
+#pragma once
+// What defines a contact interface, in mesh terms: its slave nodes with their tributary areas, its master
+// facets (mesh nodes, or a rigid surface), the contact law's parameters. Built by ContactSurface from the
+// deck's side sets; read by the contact interface (ContactInterface.hpp) and the graph reservation. A light
+// header: no contact algorithm, no Trilinos.
+#include <string>
+#include <vector>
+
+#include "contact/ContactLawParameters.hpp"
+
+namespace contessa::contact {
+
+using GlobalIndex = long long;
+
+/// A rigid master surface: facets over points that move rigidly by λ · motion. Each facet lists
+/// nodesPerFacet point indices (2D: a segment, 2; 3D: a quadrilateral, 4), ordered so the facet's normal
+/// (MasterFacet.hpp: the right of the direction of traversal in 2D, the right-hand rule in 3D) points out
+/// of the rigid body, towards the slave.
+struct RigidSurface {
+  std::vector<double> points;  ///< reference positions, spaceDim values per point
+  std::vector<int> facets;     ///< point indices (0-based), nodesPerFacet per facet
+  std::vector<double> motion;  ///< displacement of every point at load factor 1, spaceDim values
+};
+
+/// Everything that defines an interface, in mesh terms (built by ContactSurface from side sets).
+struct ContactInterfaceSpec {
+  std::string name;
+  int dimension = 2;                      ///< space dimension: 2 (node-to-segment) or 3 (node-to-face)
+  std::vector<GlobalIndex> slaveNodes;    ///< mesh nodes, sorted
+  std::vector<double> slaveAreas;         ///< tributary length (2D, unit thickness) or area (3D) of each slave node
+  std::vector<double> slaveFacetLengths;  ///< mean size of the slave facets at each node (slip tolerance's L_k)
+  /// Deformable master: mesh nodes, nodesPerFacet() per facet, oriented so the master body's outward
+  /// normal is the facet's normal.
+  std::vector<GlobalIndex> masterFacets;
+  bool rigidMaster = false;
+  RigidSurface rigidSurface;  ///< when rigidMaster
+  ContactLawParameters law;
+  /// Distance a slave node may move relative to the master beyond one master facet size before it needs a
+  /// matrix coupling that was not reserved; < 0: automatic (deck: Search Reach; CouplingReservation.hpp).
+  double searchReach = -1.0;
+  /// Two Pass: this spec is the interface's second pass, slave and master swapped, with its own history;
+  /// its force acts on the first pass's master body. `name` is the deck's name in both passes.
+  bool secondPass = false;
+
+  /// The interface in messages: its name, "(second pass)" added for the second pass.
+  std::string label() const { return secondPass ? name + " (second pass)" : name; }
+
+  int nodesPerFacet() const { return dimension == 2 ? 2 : 4; }
+  std::size_t numMasterFacets() const {
+    return (rigidMaster ? rigidSurface.facets.size() : masterFacets.size()) / static_cast<std::size_t>(nodesPerFacet());
+  }
+};
+
+}  // namespace contessa::contact

@@ -1,0 +1,62 @@
+#include "model/BoundaryConditions.hpp"
+
+#include <map>
+#include <string>
+
+#include "common/Error.hpp"
+
+namespace contessa::model {
+
+BoundaryConditions::BoundaryConditions(const deck::ProblemDefinition& problem, const DofLayout& layout) {
+  const mesh::Mesh& mesh = problem.mesh;
+  const int dim = layout.dimension();
+  const Map& owned = *layout.ownedMap();
+  // Dirichlet: one value per DOF; the same DOF prescribed twice with different values is an input error.
+  std::map<GO, std::pair<double, std::string>> prescribed;
+  for (const auto& bc : problem.dirichlet) {
+    for (GO node : mesh.nodeSet(bc.nodeSet).nodes) {
+      const GO dof = node * dim + bc.component;
+      auto [it, inserted] = prescribed.emplace(dof, std::make_pair(bc.value, bc.name));
+      requireInput(inserted || it->second.first == bc.value,
+                   "Problem/Dirichlet Conditions/" + bc.name + ": prescribes node " + std::to_string(node) +
+                       " differently from '" + it->second.second + "'");
+    }
+  }
+  for (const auto& [dof, value] : prescribed) {
+    const LO lo = owned.getLocalElement(dof);
+    if (lo != Teuchos::OrdinalTraits<LO>::invalid()) {
+      prescribedRows_.push_back(lo);
+      prescribedValues_.push_back(value.first);
+    }
+  }
+  // Nodal forces: shared equally by the set's nodes; only the owner adds a node's share.
+  externalForce_ = Teuchos::rcp(new Vector(layout.ownedMap()));
+  auto f = externalForce_->getDataNonConst(0);
+  for (const auto& force : problem.nodalForces) {
+    const auto& nodes = mesh.nodeSet(force.nodeSet).nodes;
+    for (GO node : nodes) {
+      const LO lo = owned.getLocalElement(node * dim + force.component);
+      if (lo != Teuchos::OrdinalTraits<LO>::invalid()) f[lo] += force.totalForce / static_cast<double>(nodes.size());
+    }
+  }
+}
+
+void BoundaryConditions::residual(const Vector& force, const Vector& x, double lambda, Vector& f) const {
+  // Free rows: f_int − λ f_ext (eq. of equilibrium); prescribed rows: u − λ ū.
+  f.update(1.0, force, -lambda, *externalForce_, 0.0);
+  auto fv = f.getDataNonConst(0);
+  auto xv = x.getData(0);
+  for (std::size_t k = 0; k < prescribedRows_.size(); ++k) {
+    const LO r = prescribedRows_[k];
+    fv[r] = xv[r] - lambda * prescribedValues_[k];
+  }
+}
+
+void BoundaryConditions::dResidualdLambda(const Vector& dForcedLambda, Vector& d) const {
+  d.putScalar(0.0);  // the caller's storage may hold anything, and 0·NaN is NaN
+  d.update(-1.0, *externalForce_, 1.0, dForcedLambda, 1.0);
+  auto dv = d.getDataNonConst(0);
+  for (std::size_t k = 0; k < prescribedRows_.size(); ++k) dv[prescribedRows_[k]] = -prescribedValues_[k];
+}
+
+}  // namespace contessa::model

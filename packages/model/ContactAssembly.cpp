@@ -1,0 +1,230 @@
+#include "model/ContactAssembly.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace contessa::model {
+
+using contact::GlobalIndex;
+
+ContactAssembly::ContactAssembly(const std::vector<contact::ContactInterfaceSpec>& specs, const mesh::Mesh& mesh,
+                                 const mesh::Partition& partition, const DofLayout& layout)
+    : mesh_(mesh), layout_(layout) {
+  const int rank = layout.comm()->getRank();
+  for (const auto& spec : specs) {
+    std::vector<char> evaluates(spec.slaveNodes.size());
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) evaluates[k] = partition.nodeOwner[spec.slaveNodes[k]] == rank;
+    interfaces_.push_back(contact::makeContactInterface(spec, evaluates));
+  }
+}
+
+std::vector<mesh::GlobalIndex> ContactAssembly::surfaceNodes(const std::vector<contact::ContactInterfaceSpec>& specs) {
+  std::vector<mesh::GlobalIndex> nodes;
+  for (const auto& spec : specs) {
+    nodes.insert(nodes.end(), spec.slaveNodes.begin(), spec.slaveNodes.end());
+    nodes.insert(nodes.end(), spec.masterFacets.begin(), spec.masterFacets.end());
+  }
+  return nodes;
+}
+
+void ContactAssembly::reserveCouplings(std::vector<std::vector<LO>>& rows) {
+  // Contact couplings are reserved once, by the reach rule of contact::CouplingReservation: the whole
+  // master surface for a small interface, else the master facets within reach of the slave node found by
+  // a box search in the reference configuration, so the graph grows with the surface, not its square.
+  // A rigid master has no unknowns: its slave nodes need only their own DOFs, which their elements hold.
+  const int dim = layout_.dimension();
+  reservations_.clear();
+  for (const auto& interface : interfaces_) {
+    const auto& spec = interface->spec();
+    const auto& evaluates = interface->evaluatesSlave();
+    reservations_.push_back(contact::reserveCouplings(spec, mesh_.coordinates, evaluates));
+    const auto& reservation = reservations_.back();
+    if (spec.rigidMaster) continue;
+    const auto dofsOf = [&](GO node, LO* out) {
+      for (int c = 0; c < dim; ++c) out[c] = layout_.overlapDof(node, c);
+    };
+    // A master facet's own couplings exist in the global graph (its element), but this rank's
+    // overlap rows of a master node owned elsewhere must hold them too, to receive contact terms.
+    const std::size_t perFacet = spec.nodesPerFacet();
+    LO a[3], b[3];
+    for (std::size_t f = 0; f + perFacet <= spec.masterFacets.size(); f += perFacet)
+      for (std::size_t ia = f; ia < f + perFacet; ++ia)
+        for (std::size_t ib = f; ib < f + perFacet; ++ib) {
+          dofsOf(spec.masterFacets[ia], a);
+          dofsOf(spec.masterFacets[ib], b);
+          for (int c = 0; c < dim; ++c)
+            for (int d = 0; d < dim; ++d) rows[a[c]].push_back(b[d]);
+        }
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      if (!evaluates[k]) continue;
+      dofsOf(spec.slaveNodes[k], a);
+      for (const GlobalIndex* m = reservation.begin(k); m != reservation.end(k); ++m) {
+        dofsOf(*m, b);
+        for (int c = 0; c < dim; ++c)
+          for (int d = 0; d < dim; ++d) {
+            rows[a[c]].push_back(b[d]);
+            rows[b[d]].push_back(a[c]);
+          }
+      }
+    }
+  }
+}
+
+contact::ContactInterfaceBase::NodePosition ContactAssembly::positions(const double* u) const {
+  const int dim = layout_.dimension();
+  const auto& X = mesh_.coordinates;
+  return [this, u, dim, &X](GlobalIndex node, double* p) {
+    for (int c = 0; c < dim; ++c) p[c] = X[node * dim + c] + u[layout_.overlapDof(node, c)];
+  };
+}
+
+void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial, double* fo, double* dl,
+                               StiffnessScatter* scatter) {
+  // Each slave node's owner adds its contact element; rigid masters have no DOFs.
+  const int dim = layout_.dimension();
+  const bool withStiffness = scatter != nullptr;
+  const auto position = positions(u);
+  std::vector<LO> local;
+  std::vector<int> entry;
+  std::vector<double> block;
+  // The first contact pairing (this rank) outside the couplings the graph reserved: (interface, slave node).
+  const long long none = std::numeric_limits<long long>::max();
+  const long long numNodes = mesh_.numNodes();
+  long long outsideReach = none;
+  std::string missingCoupling;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    const auto& reservation = reservations_[i];
+    interfaces_[i]->evaluate(position, lambda, updateTrial,
+                             [&](const GlobalIndex* dofs, int n, const double* r, const double* k, const double* drdl) {
+                               // The DOFs that are unknowns (not those of a rigid master), in local numbering.
+                               local.clear();
+                               entry.clear();
+                               for (int j = 0; j < n; ++j)
+                                 if (dofs[j] >= 0) {
+                                   local.push_back(layout_.overlapMap()->getLocalElement(dofs[j]));
+                                   entry.push_back(j);
+                                 }
+                               const int m = static_cast<int>(local.size());
+                               for (int a = 0; a < m; ++a) {
+                                 fo[local[a]] += r[entry[a]];
+                                 dl[local[a]] += drdl[entry[a]];
+                               }
+                               if (!withStiffness) return;
+                               // dofs: the slave node's, then the master facet's nodes'. A master node beyond the
+                               // reserved reach has no place in the graph; it is agreed on below so that no rank
+                               // leaves the pass while the others wait in its exports.
+                               const GlobalIndex slave = dofs[0] / dim;
+                               const auto& slaves = interfaces_[i]->spec().slaveNodes;
+                               const std::size_t slaveIndex = static_cast<std::size_t>(
+                                   std::lower_bound(slaves.begin(), slaves.end(), slave) - slaves.begin());
+                               for (int a = dim; a < n; a += dim)
+                                 if (dofs[a] >= 0 && !contact::isReserved(reservation, slaveIndex, dofs[a] / dim)) {
+                                   outsideReach = std::min(outsideReach, static_cast<long long>(i) * numNodes + slave);
+                                   return;
+                                 }
+                               block.resize(static_cast<std::size_t>(m) * m);
+                               for (int a = 0; a < m; ++a)
+                                 for (int b = 0; b < m; ++b) block[a * m + b] = k[entry[a] * n + entry[b]];
+                               try {  // inside the reservation the graph holds it; anything else is a defect
+                                 scatter->addStiffness(local.data(), m, block.data());
+                               } catch (const std::logic_error& e) {
+                                 if (missingCoupling.empty()) missingCoupling = e.what();
+                               }
+                             });
+  }
+  if (!withStiffness) return;
+  const Comm& comm = *layout_.comm();
+  int mine = missingCoupling.empty() ? 0 : 1, any = mine;
+  if (comm.getSize() > 1) Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &mine, &any);
+  if (any != 0)
+    throw std::logic_error(missingCoupling.empty()
+                               ? "StiffnessScatter: a contact coupling on another rank is not in the matrix graph"
+                               : missingCoupling);
+  long long first = outsideReach;
+  if (comm.getSize() > 1) Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &outsideReach, &first);
+  if (first != none) {
+    // The graph is built once and the solver holds the Jacobian made on it: the evaluation fails on every
+    // rank with the same words. The continuation cuts the step back (each attempt fails at its first
+    // Jacobian, at once) and stops with this reason (exit 1); the user raises Search Reach.
+    const std::size_t i = static_cast<std::size_t>(first / numNodes);
+    const auto& spec = interfaces_[i]->spec();
+    std::ostringstream message;
+    message << "contact interface '" << spec.name << "': slave node " << first % numNodes + 1
+            << " met a master facet beyond the matrix graph's reach " << reservations_[i].reach
+            << " (2 x largest master facet + Search Reach); raise Problem/Contact/" << spec.name
+            << "/Search Reach to how far slave nodes slide on the master";
+    throw std::runtime_error(message.str());
+  }
+}
+
+template <class Changes>
+std::vector<contact::SlaveNodeChange> ContactAssembly::collect(const Changes& changesOf) const {
+  std::vector<contact::SlaveNodeChange> out;
+  for (const auto& interface : interfaces_) {
+    const auto c = changesOf(*interface);
+    out.insert(out.end(), c.begin(), c.end());
+  }
+  return out;
+}
+
+std::vector<contact::SlaveNodeChange> ContactAssembly::changesAt(const double* u, double lambda) const {
+  const auto position = positions(u);
+  return collect([&](const contact::ContactInterfaceBase& c) { return c.changesAt(position, lambda); });
+}
+
+std::vector<contact::SlaveNodeChange> ContactAssembly::trialChanges() const {
+  return collect([](const contact::ContactInterfaceBase& c) { return c.trialChanges(); });
+}
+
+std::vector<contact::SlaveNodeChange> ContactAssembly::committedIncrement() const {
+  return collect([](const contact::ContactInterfaceBase& c) { return c.committedIncrement(); });
+}
+
+void ContactAssembly::commit() {
+  for (auto& c : interfaces_) c->commit();
+}
+
+void ContactAssembly::rollback() {
+  for (auto& c : interfaces_) c->rollback();
+}
+
+void ContactAssembly::setNewContactsFrozen(bool frozen) {
+  for (auto& c : interfaces_) c->setNewContactsFrozen(frozen);
+  frozen_ = frozen;
+}
+
+std::string ContactAssembly::tunnelling() const {
+  // The lowest (interface, node) over all ranks names the case; the count says how many there are.
+  const Comm& comm = *layout_.comm();
+  const long long none = std::numeric_limits<long long>::max();
+  const long long numNodes = mesh_.numNodes();
+  long long local = none, first = none;
+  int localCount = 0, count = 0;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    const auto nodes = interfaces_[i]->tunnellingNodes();
+    localCount += static_cast<int>(nodes.size());
+    for (const auto& t : nodes) local = std::min(local, static_cast<long long>(i) * numNodes + t.node);
+  }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &localCount, &count);
+  if (count == 0) return "";
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &local, &first);
+  const auto& interface = interfaces_[first / numNodes]->spec();
+  // Node numbers are Exodus ids (1-based), as in the output file.
+  return "slave node " + std::to_string(first % numNodes + 1) + " of interface '" + interface.label() + "'" +
+         (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + " passed through the master surface";
+}
+
+ContactAssembly::Interfaces ContactAssembly::saveState() const {
+  Interfaces copy;
+  for (const auto& c : interfaces_) copy.push_back(c->clone());
+  return copy;
+}
+
+void ContactAssembly::restoreState(const Interfaces& saved) {
+  interfaces_.clear();
+  for (const auto& c : saved) interfaces_.push_back(c->clone());
+}
+
+}  // namespace contessa::model

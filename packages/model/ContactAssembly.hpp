@@ -1,0 +1,82 @@
+#pragma once
+// The contact part of the residual and tangent: drives the contact interfaces (one
+// contact::ContactInterfaceBase per interface and pass, whatever the dimension) over the slave nodes this
+// rank owns, adds their forces and ∂r_c/∂λ to the overlapped force arrays, and their tangents to the
+// Jacobian through StiffnessScatter (positions cached per coupling). It reserves the contact couplings of
+// the graph once (contact::reserveCouplings) and reports, on every rank with the same words, a pairing
+// outside them. Holds the interfaces' committed and trial contact history.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/ContactInterface.hpp"
+#include "contact/CouplingReservation.hpp"
+#include "model/DofLayout.hpp"
+#include "model/StiffnessScatter.hpp"
+
+namespace contessa::model {
+
+class ContactAssembly {
+ public:
+  using Interfaces = std::vector<std::unique_ptr<contact::ContactInterfaceBase>>;
+
+  /// One interface per spec; each slave node is evaluated by the rank that owns it.
+  ContactAssembly(const std::vector<contact::ContactInterfaceSpec>& specs, const mesh::Mesh& mesh,
+                  const mesh::Partition& partition, const DofLayout& layout);
+
+  /// The nodes of every contact surface (slave nodes and deformable master nodes): every rank holds
+  /// them (DofLayout's replicated nodes).
+  static std::vector<mesh::GlobalIndex> surfaceNodes(const std::vector<contact::ContactInterfaceSpec>& specs);
+
+  /// Adds to `rows` (per overlapped row, its columns) the couplings the graph reserves for contact, by
+  /// the reach rule of contact::CouplingReservation, and remembers them.
+  void reserveCouplings(std::vector<std::vector<LO>>& rows);
+
+  /// Adds every owned slave node's contact force and ∂r_c/∂λ at the overlapped displacement `u` and load
+  /// factor λ to `force` and `dForcedLambda` (overlapped arrays); with `scatter`, its tangent. With
+  /// `updateTrial`, stores the trial history. Collective with `scatter`: throws std::runtime_error on
+  /// every rank when a slave node meets a master facet beyond the reserved couplings (the user raises
+  /// Search Reach), std::logic_error when a reserved coupling is missing from the graph (a defect).
+  void assemble(const double* u, double lambda, bool updateTrial, double* force, double* dForcedLambda,
+                StiffnessScatter* scatter);
+
+  /// The owned slave nodes at the overlapped displacement `u` and load factor λ against the last commit
+  /// (no force, no history stored).
+  std::vector<contact::SlaveNodeChange> changesAt(const double* u, double lambda) const;
+  /// The owned slave nodes: the last commit against the latest trial evaluation.
+  std::vector<contact::SlaveNodeChange> trialChanges() const;
+  /// The owned slave nodes over the last converged increment.
+  std::vector<contact::SlaveNodeChange> committedIncrement() const;
+
+  void commit();
+  void rollback();
+  /// Contact Beta, Restart mode: nodes open at the last commit carry no force while frozen.
+  void setNewContactsFrozen(bool frozen);
+  bool newContactsFrozen() const { return frozen_; }
+
+  /// Collective: slave nodes that passed through their master surface between the last commit and the
+  /// latest evaluation and are not in contact now, in words (ContactMechanicsModel::contactTunnelling).
+  std::string tunnelling() const;
+
+  bool empty() const { return interfaces_.empty(); }
+  const Interfaces& interfaces() const { return interfaces_; }
+  /// Copies of the interfaces with their state, and putting them back (the Jacobian check's evaluations
+  /// must leave no trace).
+  Interfaces saveState() const;
+  void restoreState(const Interfaces& saved);
+
+ private:
+  /// Current position of a mesh node: reference + overlapped displacement.
+  contact::ContactInterfaceBase::NodePosition positions(const double* u) const;
+  /// The owned slave nodes' changes of every interface, in interface order.
+  template <class Changes>
+  std::vector<contact::SlaveNodeChange> collect(const Changes& changesOf) const;
+
+  const mesh::Mesh& mesh_;
+  const DofLayout& layout_;
+  Interfaces interfaces_;
+  std::vector<contact::CouplingReservation> reservations_;  ///< per interface: the couplings the graph holds
+  bool frozen_ = false;
+};
+
+}  // namespace contessa::model

@@ -1,0 +1,49 @@
+#pragma once
+// Where the unknowns live on each rank: the owned and overlapped DOF maps (node·dim + c, every component
+// of a node on the node's owner), the element and node maps of the output, the Import/Export between
+// owned and overlapped vectors, and the Jacobian's graph, built once from the couplings the assemblers
+// declare (SolidAssembler's elements, ContactAssembly's reserved contact couplings). No physics here.
+#include <vector>
+
+#include "mesh/Mesh.hpp"
+#include "mesh/Partition.hpp"
+#include "model/TpetraTypes.hpp"
+
+namespace contessa::model {
+
+class DofLayout {
+ public:
+  /// `replicatedNodes`: nodes every rank holds in its overlap besides its elements' nodes (contact
+  /// surfaces are replicated, docs/design.md: the owner of a slave node sees its master facet wherever it
+  /// slides).
+  DofLayout(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, const mesh::Partition& partition,
+            const std::vector<mesh::GlobalIndex>& replicatedNodes);
+
+  int dimension() const { return dim_; }
+  const Teuchos::RCP<const Comm>& comm() const { return comm_; }
+  const Teuchos::RCP<const Map>& ownedMap() const { return ownedMap_; }
+  const Teuchos::RCP<const Map>& overlapMap() const { return overlapMap_; }
+  const Teuchos::RCP<const Map>& elementMap() const { return elementMap_; }  ///< owned elements
+  const Teuchos::RCP<const Map>& nodeMap() const { return nodeMap_; }        ///< owned nodes
+  const Import& importer() const { return *importer_; }                      ///< owned → overlapped
+  const Export& exporter() const { return *exporter_; }                      ///< overlapped → owned (ADD)
+  /// Overlapped local index of component c of a node (invalid when the rank does not hold it).
+  LO overlapDof(mesh::GlobalIndex node, int c) const { return overlapMap_->getLocalElement(node * dim_ + c); }
+  LO numOverlapDofs() const { return static_cast<LO>(overlapMap_->getNodeNumElements()); }
+
+  /// Builds the owned graph from `rows` (per overlapped row, the overlapped columns it couples to; each
+  /// row is sorted and made unique here, for StiffnessScatter to read). Rows shared between ranks receive
+  /// the entries of each. Once: the graph never changes during the run.
+  void buildGraph(std::vector<std::vector<LO>>& rows);
+  const Teuchos::RCP<const CrsGraph>& ownedGraph() const { return ownedGraph_; }
+
+ private:
+  Teuchos::RCP<const Comm> comm_;
+  int dim_;
+  Teuchos::RCP<const Map> ownedMap_, overlapMap_, elementMap_, nodeMap_;
+  Teuchos::RCP<const Export> exporter_;
+  Teuchos::RCP<const Import> importer_;
+  Teuchos::RCP<const CrsGraph> ownedGraph_;
+};
+
+}  // namespace contessa::model

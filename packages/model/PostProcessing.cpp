@@ -1,0 +1,171 @@
+#include "model/PostProcessing.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "model/ContactAssembly.hpp"
+#include "model/DofLayout.hpp"
+#include "model/SolidAssembler.hpp"
+
+namespace contessa::model {
+
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+PostProcessing::PostProcessing(const deck::ProblemDefinition& problem, const DofLayout& layout,
+                               const SolidAssembler& solids, const ContactAssembly& contact)
+    : problem_(problem), layout_(layout), solids_(solids), contact_(contact) {}
+
+std::vector<std::string> PostProcessing::elementStressNames(int dimension) {
+  if (dimension == 2) return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "von_mises"};
+  return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"};
+}
+
+RCP<MultiVector> PostProcessing::elementStresses(const double* u) const {
+  const int dim = layout_.dimension();
+  const auto sigmas = solids_.elementStresses(u);
+  const auto names = elementStressNames(dim);
+  auto out = rcp(new MultiVector(layout_.elementMap(), names.size()));
+  const std::vector<std::pair<int, int>> comps = dim == 2
+      ? std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}, {0, 1}}
+      : std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+  for (std::size_t c = 0; c < comps.size(); ++c) {
+    auto col = out->getDataNonConst(c);
+    for (std::size_t e = 0; e < sigmas.size(); ++e) col[e] = sigmas[e][mechanics::idx2(comps[c].first, comps[c].second)];
+  }
+  auto vm = out->getDataNonConst(comps.size());
+  for (std::size_t e = 0; e < sigmas.size(); ++e) vm[e] = mechanics::vonMises(sigmas[e]);
+  return out;
+}
+
+std::vector<NodeSetReaction> PostProcessing::reactions(const Vector& netForce) const {
+  const int dim = layout_.dimension();
+  const Map& owned = *layout_.ownedMap();
+  auto fv = netForce.getData(0);
+  std::vector<NodeSetReaction> out;
+  for (const auto& name : problem_.reactionNodeSets) {
+    std::vector<double> local(dim, 0.0), global(dim, 0.0);
+    for (GO node : problem_.mesh.nodeSet(name).nodes)
+      for (int c = 0; c < dim; ++c) {
+        const LO lo = owned.getLocalElement(node * dim + c);
+        if (lo != Teuchos::OrdinalTraits<LO>::invalid()) local[c] += fv[lo];
+      }
+    Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_SUM, dim, local.data(), global.data());
+    out.push_back({name, global});
+  }
+  return out;
+}
+
+std::vector<std::string> PostProcessing::contactFieldNames() {
+  return {"contact_pressure", "contact_gap", "contact_status", "contact_slip"};
+}
+
+RCP<MultiVector> PostProcessing::contactNodalFields() const {
+  const auto& nodeMap = layout_.nodeMap();
+  auto out = rcp(new MultiVector(nodeMap, 4));
+  for (const auto& interface : contact_.interfaces()) {
+    const auto& spec = interface->spec();
+    const auto& states = interface->committedStates();
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      if (!interface->evaluatesSlave()[k]) continue;
+      const LO lo = nodeMap->getLocalElement(spec.slaveNodes[k]);
+      const auto& st = states[k];
+      // A node on several slave surfaces shows its largest pressure.
+      if (st.pressure < out->getData(0)[lo]) continue;
+      out->replaceLocalValue(lo, 0, st.pressure);
+      out->replaceLocalValue(lo, 1, std::isfinite(st.gap) ? st.gap : std::numeric_limits<double>::quiet_NaN());
+      out->replaceLocalValue(lo, 2, static_cast<double>(static_cast<int>(st.status)));
+      out->replaceLocalValue(lo, 3, st.slip);
+    }
+  }
+  return out;
+}
+
+contact::ContactCounts PostProcessing::contactCounts() const {
+  int local[4] = {0, 0, 0, 0}, global[4] = {0, 0, 0, 0};
+  for (const auto& interface : contact_.interfaces()) {
+    const auto c = interface->committedCounts();
+    local[0] += c.active;
+    local[1] += c.newlyActive;
+    local[2] += c.stick;
+    local[3] += c.slip;
+  }
+  Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_SUM, 4, local, global);
+  return {global[0], global[1], global[2], global[3]};
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> PostProcessing::contactForces() const {
+  const int dim = layout_.dimension();
+  std::vector<std::pair<std::string, std::vector<double>>> out;
+  for (const auto& spec : problem_.contacts) {
+    if (out.empty() || out.back().first != spec.name) out.push_back({spec.name, std::vector<double>(dim, 0.0)});
+  }
+  for (const auto& interface : contact_.interfaces()) {
+    const std::string& name = interface->spec().name;
+    const auto& f = interface->committedSlaveForce();
+    for (auto& [n, total] : out)
+      if (n == name) {
+        // The second pass pushes the other body: the force on the first slave body is its opposite.
+        const double sign = interface->spec().secondPass ? -1.0 : 1.0;
+        for (int c = 0; c < dim; ++c) total[c] += sign * f[c];
+      }
+  }
+  for (auto& [n, total] : out) {
+    std::vector<double> g(dim);
+    Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_SUM, dim, total.data(), g.data());
+    total = g;
+  }
+  return out;
+}
+
+namespace {
+// Every rank needs every slave node's change to sort the β^k of eq. (12): gather them all, as
+// continuation::SlaveNodeIncrement (8 numbers each), in rank order.
+std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const std::vector<contact::SlaveNodeChange>& local) {
+  constexpr int kFields = 8;
+  std::vector<double> packed;
+  for (const auto& c : local) {
+    packed.insert(packed.end(), {c.committedGap, c.trialGap, static_cast<double>(static_cast<int>(c.committedStatus)),
+                                 static_cast<double>(static_cast<int>(c.trialStatus)), c.committedIndicator,
+                                 c.trialIndicator, c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet)});
+  }
+  const int size = comm.getSize();
+  std::vector<int> counts(size), offsets(size + 1, 0);
+  const int mine = static_cast<int>(packed.size());
+  Teuchos::gatherAll(comm, 1, &mine, size, counts.data());
+  for (int r = 0; r < size; ++r) offsets[r + 1] = offsets[r] + counts[r];
+  std::vector<double> all(offsets[size]);
+  // Teuchos has no gatherv: every rank contributes a zero-padded slice, summed.
+  std::vector<double> slice(offsets[size], 0.0);
+  std::copy(packed.begin(), packed.end(), slice.begin() + offsets[comm.getRank()]);
+  if (!all.empty()) Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(all.size()), slice.data(), all.data());
+  std::vector<continuation::SlaveNodeIncrement> out;
+  for (std::size_t i = 0; i + kFields <= all.size(); i += kFields) {
+    continuation::SlaveNodeIncrement n;
+    n.committedGap = all[i];
+    n.trialGap = all[i + 1];
+    n.committedStatus = static_cast<continuation::NodeStatus>(static_cast<int>(all[i + 2]));
+    n.trialStatus = static_cast<continuation::NodeStatus>(static_cast<int>(all[i + 3]));
+    n.committedIndicator = all[i + 4];
+    n.trialIndicator = all[i + 5];
+    n.slipReversed = all[i + 6] != 0.0;
+    n.trialFacet = static_cast<int>(all[i + 7]);
+    out.push_back(n);
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<continuation::SlaveNodeIncrement> PostProcessing::trialIncrement() const {
+  return gatherAll(*layout_.comm(), contact_.trialChanges());
+}
+
+std::vector<continuation::SlaveNodeIncrement> PostProcessing::incrementAt(const double* u, double loadFactor) const {
+  return gatherAll(*layout_.comm(), contact_.changesAt(u, loadFactor));
+}
+
+std::vector<continuation::SlaveNodeIncrement> PostProcessing::committedIncrement() const {
+  return gatherAll(*layout_.comm(), contact_.committedIncrement());
+}
+
+}  // namespace contessa::model
