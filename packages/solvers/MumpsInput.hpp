@@ -1,6 +1,7 @@
 #pragma once
-// MUMPS' distributed assembled input (ICNTL(18) = 3) of a Tpetra CrsMatrix: each rank gives its own
-// rows as (row, column, value) triplets with global 1-based indices. The pattern depends only on the
+// MUMPS' assembled input of a Tpetra CrsMatrix: each rank gives its own rows as (row, column, value)
+// triplets with global 1-based indices (distributed input, ICNTL(18) = 3; on one rank the same triplets
+// are the centralised input, ICNTL(18) = 0). The pattern depends only on the
 // matrix graph, which a Newton run never changes, so it is built once per graph; afterwards only the
 // values are copied, in the graph's own order (no index lookup, no pattern comparison).
 #include <dmumps_c.h>
