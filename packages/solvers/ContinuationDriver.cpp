@@ -21,6 +21,7 @@
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/NewtonStatusTests.hpp"
 #include "solvers/StepSizeFactory.hpp"
+#include "solvers/StepSizeMethods.hpp"
 
 namespace contessa::solvers {
 
@@ -302,7 +303,7 @@ ContinuationDriver::ContinuationDriver(const RCP<model::ContactMechanicsModel>& 
 
 RunSummary ContinuationDriver::run() {
   const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
-  const bool contactBeta = stepSize.get<std::string>("Method") == "Contact Beta";
+  const bool contactBeta = stepSizeMethod(stepSize.get<std::string>("Method")).regulatesContactEvents;
   continuation::ContactBetaControl betaState(
       contactBetaSettings(stepSize, piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value")));
 

@@ -1,6 +1,8 @@
 // Step-size method registry: one row per method (name, description, its parameters, its factory).
 #include "solvers/StepSizeMethods.hpp"
 
+#include <stdexcept>
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "continuation/ContactBetaControl.hpp"
@@ -63,11 +65,17 @@ Teuchos::RCP<LOCA::StepSize::AbstractStrategy> createContactBeta(const StepSizeC
 
 const std::vector<StepSizeMethod>& stepSizeMethodRegistry() {
   static const std::vector<StepSizeMethod> rows = {
-      {"Constant", "fixed Δλ, cut back on failure", constantParameters, {}},
-      {"Adaptive", "LOCA's iteration-count control", adaptiveParameters, {}},
-      {"Contact Beta", "N_c contacts per increment (eq. 10-13)", contactBetaParameters, createContactBeta},
+      {"Constant", "fixed Δλ, cut back on failure", constantParameters, {}, false},
+      {"Adaptive", "LOCA's iteration-count control", adaptiveParameters, {}, false},
+      {"Contact Beta", "N_c contacts per increment (eq. 10-13)", contactBetaParameters, createContactBeta, true},
   };
   return rows;
+}
+
+const StepSizeMethod& stepSizeMethod(const std::string& name) {
+  for (const auto& m : stepSizeMethodRegistry())
+    if (m.name == name) return m;
+  throw std::logic_error("step-size method '" + name + "' is not registered");
 }
 
 std::vector<std::string> stepSizeMethods() {

@@ -35,10 +35,16 @@ struct StepSizeMethod {
   void (*addParameters)(Teuchos::ParameterList& stepSize);
   /// Builds the strategy; empty for LOCA's own methods (LOCA builds them).
   std::function<Teuchos::RCP<LOCA::StepSize::AbstractStrategy>(const StepSizeContext&)> create;
+  /// The strategy regulates contact events through the ContactBetaControl: the Newton solve then takes
+  /// its restart test (Restart mode), its veto at convergence and the per-increment bookkeeping.
+  bool regulatesContactEvents = false;
 };
 
 /// The registry rows, in the order of the deck reference.
 const std::vector<StepSizeMethod>& stepSizeMethodRegistry();
+
+/// The row of a registered name (the deck has validated it; an unknown name is a logic error).
+const StepSizeMethod& stepSizeMethod(const std::string& name);
 
 /// Registered names: "Constant", "Adaptive", "Contact Beta".
 std::vector<std::string> stepSizeMethods();
