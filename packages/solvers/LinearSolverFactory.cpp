@@ -3,6 +3,7 @@
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <MueLu_MasterList.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
@@ -179,6 +180,12 @@ std::string firstRefusedEntry(const Teuchos::ParameterList& given, const Teuchos
     if (validator.is_null()) {
       if (entry.getAny(false).type() != expected->getAny(false).type())
         return where + ": expected type " + expected->getAny(false).typeName() + ", got " + entry.getAny(false).typeName();
+      continue;
+    }
+    // A boolean given as text (--set of a parameter the deck does not hold) must read true or false.
+    if (dynamic_cast<const Teuchos::BoolParameterEntryValidator*>(validator.get()) != nullptr && entry.isType<std::string>()) {
+      const std::string value = Teuchos::getValue<std::string>(entry);
+      if (value != "true" && value != "false") return where + ": expected true or false; got '" + value + "'";
       continue;
     }
     const auto strings = validator->validStringValues();
