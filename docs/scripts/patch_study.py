@@ -44,19 +44,28 @@ CASES = [
 ]
 
 
-def run(contessa, work, tag, lower, upper, slave, two_pass, delta):
+def run_patch(contessa, deck, out, mesh_sets, slave, two_pass, extra_sets=()):
+    """Runs a contact patch deck (2D or 3D: the same side-set names) with the given mesh overrides, slave
+    side and Two Pass; returns the master side, the run, its history and its results."""
     master = "upper_bottom" if slave == "lower_top" else "lower_top"
-    out = os.path.join(work, tag)
-    sets = [f"Problem/Mesh/lower/Elements X={lower}", f"Problem/Mesh/upper/Elements X={upper}",
-            f"Problem/Contact/interface/Slave Side Set={slave}", f"Problem/Contact/interface/Master Side Set={master}",
-            f"Problem/Contact/interface/Two Pass={'true' if two_pass else 'false'}",
-            f"Problem/Dirichlet Conditions/press/Value={-delta}"]
-    args = [contessa, DECK, "--quiet", "--output-dir", out]
+    sets = list(mesh_sets) + [f"Problem/Contact/interface/Slave Side Set={slave}",
+                              f"Problem/Contact/interface/Master Side Set={master}",
+                              f"Problem/Contact/interface/Two Pass={'true' if two_pass else 'false'}"] + list(extra_sets)
+    args = [contessa, deck, "--quiet", "--output-dir", out]
     for s in sets:
         args += ["--set", s]
     done = subprocess.run(args, capture_output=True, text=True)
-    hist = cr.read_history(os.path.join(out, "contact_patch.history.csv"))
-    res = cr.Results(os.path.join(out, "contact_patch.exo"))
+    stem = os.path.splitext(os.path.basename(deck))[0]
+    hist = cr.read_history(os.path.join(out, stem + ".history.csv"))
+    res = cr.Results(os.path.join(out, stem + ".exo"))
+    return master, done, hist, res
+
+
+def run(contessa, work, tag, lower, upper, slave, two_pass, delta):
+    master, done, hist, res = run_patch(
+        contessa, DECK, os.path.join(work, tag),
+        [f"Problem/Mesh/lower/Elements X={lower}", f"Problem/Mesh/upper/Elements X={upper}"], slave, two_pass,
+        [f"Problem/Dirichlet Conditions/press/Value={-delta}"])
     passes = [slave] + ([master] if two_pass else [])
     pressure = res.nodal("contact_pressure")
     data = []

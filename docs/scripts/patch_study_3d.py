@@ -14,12 +14,11 @@ p x 1 mm^2. Prints a Markdown table (docs/verification-contact.md, section 5).
 About 10 s."""
 import argparse
 import os
-import subprocess
 import sys
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tests", "regression", "contact"))
-import contact_results as cr  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import patch_study  # noqa: E402  (the shared run of a patch deck)
 
 import numpy as np  # noqa: E402
 
@@ -40,18 +39,10 @@ CASES = [
 
 
 def run(contessa, work, tag, lower, upper, slave, two_pass):
-    master = "upper_bottom" if slave == "lower_top" else "lower_top"
-    out = os.path.join(work, tag)
-    sets = [f"Problem/Mesh/lower/Elements X={lower[0]}", f"Problem/Mesh/lower/Elements Z={lower[1]}",
-            f"Problem/Mesh/upper/Elements X={upper[0]}", f"Problem/Mesh/upper/Elements Z={upper[1]}",
-            f"Problem/Contact/interface/Slave Side Set={slave}", f"Problem/Contact/interface/Master Side Set={master}",
-            f"Problem/Contact/interface/Two Pass={'true' if two_pass else 'false'}"]
-    args = [contessa, DECK, "--quiet", "--output-dir", out]
-    for s in sets:
-        args += ["--set", s]
-    done = subprocess.run(args, capture_output=True, text=True)
-    hist = cr.read_history(os.path.join(out, "contact_patch_3d_non_matching.history.csv"))
-    res = cr.Results(os.path.join(out, "contact_patch_3d_non_matching.exo"))
+    master, done, hist, res = patch_study.run_patch(
+        contessa, DECK, os.path.join(work, tag),
+        [f"Problem/Mesh/lower/Elements X={lower[0]}", f"Problem/Mesh/lower/Elements Z={lower[1]}",
+         f"Problem/Mesh/upper/Elements X={upper[0]}", f"Problem/Mesh/upper/Elements Z={upper[1]}"], slave, two_pass)
     exact = hist[-1]["lambda"] * DELTA / (H / E + (0.5 if two_pass else 1.0) / EPS_N)
     per_pass = exact / 2 if two_pass else exact
     pressure = res.nodal("contact_pressure")
