@@ -81,6 +81,37 @@ class MonitoredLinearOpWithSolve : public LOWS {
 
 LOWS* innerOf(LOWS* op) { return &dynamic_cast<MonitoredLinearOpWithSolve&>(*op).inner(); }
 
+// NOX's Thyra group builds the preconditioner itself, through the factory the solver factory hands out
+// (getPreconditionerFactory), and then calls initializePreconditionedOp: MueLu's hierarchy and Ifpack2's
+// factorisation are made here, so this is where the set-up timer must run.
+class TimedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<double> {
+ public:
+  using Factory = Thyra::PreconditionerFactoryBase<double>;
+  explicit TimedPreconditionerFactory(RCP<Factory> inner) : inner_(std::move(inner)) {}
+  const RCP<Factory>& inner() const { return inner_; }
+
+  bool isCompatible(const Source& src) const override { return inner_->isCompatible(src); }
+  RCP<Thyra::PreconditionerBase<double>> createPrec() const override { return inner_->createPrec(); }
+  void initializePrec(const RCP<const Source>& src, Thyra::PreconditionerBase<double>* prec,
+                      const Thyra::ESupportSolveUse use) const override {
+    timers::Scope timed(timers::Phase::IterativeSetup);
+    inner_->initializePrec(src, prec, use);
+  }
+  void uninitializePrec(Thyra::PreconditionerBase<double>* prec, RCP<const Source>* src,
+                        Thyra::ESupportSolveUse* use) const override {
+    inner_->uninitializePrec(prec, src, use);
+  }
+  void setParameterList(const RCP<Teuchos::ParameterList>& params) override { inner_->setParameterList(params); }
+  RCP<Teuchos::ParameterList> getNonconstParameterList() override { return inner_->getNonconstParameterList(); }
+  RCP<Teuchos::ParameterList> unsetParameterList() override { return inner_->unsetParameterList(); }
+  RCP<const Teuchos::ParameterList> getParameterList() const override { return inner_->getParameterList(); }
+  RCP<const Teuchos::ParameterList> getValidParameters() const override { return inner_->getValidParameters(); }
+  std::string description() const override { return inner_->description(); }
+
+ private:
+  RCP<Factory> inner_;
+};
+
 class MonitoredLinearOpWithSolveFactory : public LOWSF {
  public:
   MonitoredLinearOpWithSolveFactory(RCP<LOWSF> inner, std::string solverName, IterativeSolveLimits limits)
@@ -92,7 +123,9 @@ class MonitoredLinearOpWithSolveFactory : public LOWSF {
     inner_->setPreconditionerFactory(factory, label);
   }
   RCP<Thyra::PreconditionerFactoryBase<double>> getPreconditionerFactory() const override {
-    return inner_->getPreconditionerFactory();
+    auto factory = inner_->getPreconditionerFactory();
+    if (factory.is_null()) return factory;
+    return rcp(new TimedPreconditionerFactory(factory));
   }
   void unsetPreconditionerFactory(RCP<Thyra::PreconditionerFactoryBase<double>>* factory, std::string* label) override {
     inner_->unsetPreconditionerFactory(factory, label);
@@ -116,6 +149,7 @@ class MonitoredLinearOpWithSolveFactory : public LOWSF {
   }
   void initializePreconditionedOp(const RCP<const Source>& src, const RCP<const Thyra::PreconditionerBase<double>>& prec,
                                   LOWS* op, const Thyra::ESupportSolveUse use) const override {
+    timers::Scope timed(timers::Phase::IterativeSetup);
     inner_->initializePreconditionedOp(src, prec, innerOf(op), use);
   }
   void initializeApproxPreconditionedOp(const RCP<const Source>& src, const RCP<const Source>& approx, LOWS* op,
@@ -137,6 +171,11 @@ class MonitoredLinearOpWithSolveFactory : public LOWSF {
 };
 
 }  // namespace
+
+RCP<Thyra::PreconditionerFactoryBase<double>> unmonitored(const RCP<Thyra::PreconditionerFactoryBase<double>>& factory) {
+  const auto timed = Teuchos::rcp_dynamic_cast<TimedPreconditionerFactory>(factory);
+  return timed.is_null() ? factory : timed->inner();
+}
 
 RCP<LOWSF> monitorIterativeSolver(const RCP<LOWSF>& inner, const std::string& solverName,
                                   const IterativeSolveLimits& limits) {

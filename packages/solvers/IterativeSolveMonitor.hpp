@@ -14,6 +14,7 @@
 #include <string>
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+#include <Thyra_PreconditionerFactoryBase.hpp>
 
 namespace contessa::solvers {
 
@@ -39,5 +40,11 @@ struct IterativeSolveLimits {
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> monitorIterativeSolver(
     const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& inner, const std::string& solverName,
     const IterativeSolveLimits& limits);
+
+/// The preconditioner factory that a monitored solver factory's getPreconditionerFactory() wraps (it hands
+/// out a timed wrapper, since NOX builds the preconditioner through it); `factory` itself when it is no such
+/// wrapper. For settings made on the concrete factory, e.g. MueLu's near-null space.
+Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>> unmonitored(
+    const Teuchos::RCP<Thyra::PreconditionerFactoryBase<double>>& factory);
 
 }  // namespace contessa::solvers

@@ -251,7 +251,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
 
 void provideNearNullSpace(Thyra::LinearOpWithSolveFactoryBase<double>& factory, const model::Map& ownedDofMap,
                           const mesh::Mesh& mesh) {
-  auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(factory.getPreconditionerFactory());
+  auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(unmonitored(factory.getPreconditionerFactory()));
   if (muelu.is_null()) return;
   const int dim = mesh.dimension;
   // The centroid of the whole mesh, the same on every rank (the mesh is replicated).
