@@ -139,7 +139,9 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
                                    ": a static solve (Piro/Solver Type = NOX) has no increments to continue");
     restart = readRestart(*comm, cl.restart, identity);
   }
-  installStopSignalHandlers();
+  // A continuation acts on stop signals at its next increment; a single solve has none, so it leaves them
+  // to their default action.
+  if (continuation) installStopSignalHandlers();
 
   // 2. Partition, model, output.
   const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
