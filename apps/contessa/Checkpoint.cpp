@@ -1,6 +1,7 @@
 #include "Checkpoint.hpp"
 
 #include <csignal>
+#include <initializer_list>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -75,7 +76,8 @@ io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mes
   return c;
 }
 
-RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity) {
+RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity,
+                         int dimension) {
   // Rank 0 reads the file; every rank decodes the same bytes, so every rank throws the same error.
   std::string bytes, error;
   if (comm.getRank() == 0) {
@@ -115,6 +117,18 @@ RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path
       in.historyRows.push_back(r.values);
     }
   requireInput(!in.historyRows.empty(), "--restart " + path + ": corrupt restart file (no history rows)");
+  // Every rank reads its own nodes' displacements from it later: a file without all of them is refused
+  // here, on every rank alike.
+  const io::RestartRecords index(c.records);
+  requireInput(index.find(io::restart_kind::kRun, 0) != nullptr,
+               "--restart " + path + ": corrupt restart file (no continuation record)");
+  const auto dim = static_cast<std::size_t>(dimension);
+  for (std::int64_t node = 0; node < c.nodes; ++node)
+    for (const auto kind : {io::restart_kind::kDisplacement, io::restart_kind::kPreviousDisplacement}) {
+      const auto* r = index.find(kind, node);
+      requireInput(r != nullptr && r->size() == dim, "--restart " + path + ": corrupt restart file (node " +
+                                                          std::to_string(node + 1) + " has no displacement record)");
+    }
   return in;
 }
 

@@ -34,7 +34,9 @@ struct RestartInput {
 };
 /// Collective: rank 0 reads `path`, every rank checks it against `identity` and throws InputError alike
 /// ("--restart PATH: written for another deck: ..."; missing, truncated or corrupt files too).
-RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity);
+/// `dimension`: the mesh's (each node's displacement record has as many values).
+RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity,
+                         int dimension);
 
 /// The run's policy: a restart file every `every` increments, and a stop (with one) on a signal or when
 /// the next increment would not fit in `maxWallSeconds` of the run.

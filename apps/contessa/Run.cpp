@@ -137,7 +137,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (!cl.restart.empty()) {
     requireInput(continuation, "--restart " + cl.restart +
                                    ": a static solve (Piro/Solver Type = NOX) has no increments to continue");
-    restart = readRestart(*comm, cl.restart, identity);
+    restart = readRestart(*comm, cl.restart, identity, problem.mesh.dimension);
   }
   // A continuation acts on stop signals at its next increment; a single solve has none, so it leaves them
   // to their default action.
