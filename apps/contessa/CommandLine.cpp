@@ -7,7 +7,7 @@ namespace contessa::app {
 
 std::string usage() {
   return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet] [--timers]\n"
-         "                       [--check-jacobian[=N,M,...]]\n"
+         "                       [--check-jacobian[=N,M,...]] [--restart FILE]\n"
          "       contessa --deck-reference     print the deck reference (Markdown)\n"
          "       contessa --version            print the version and the git description of the build\n"
          "       contessa --help               print this text\n"
@@ -27,8 +27,12 @@ std::string usage() {
          "component, element or contact slave node) and ||W - W_FD||/||W||. The run goes on unchanged.\n"
          "A debugging option: 2 residual evaluations per unknown (a few seconds per increment for the\n"
          "tube's 2856 unknowns).\n"
+         "--restart FILE continues the run of the same deck from its restart file DIR/<deck name>.restart,\n"
+         "written every Problem/Output/Checkpoint/Every N Increments, before Max Wall Time runs out, and on\n"
+         "SIGTERM, SIGUSR1 or SIGINT; the Exodus file and the history are continued.\n"
          "Exit status: 0 the run reached its final load (and its regression checks passed);\n"
-         "1 the run stopped early or failed; 2 bad input; 3 a regression check of the deck failed.\n"
+         "1 the run stopped early or failed; 2 bad input; 3 a regression check of the deck failed;\n"
+         "4 the run wrote its restart file and stopped (a signal or Max Wall Time): continue with --restart.\n"
          "Every error is one line on stderr: contessa: error: ...\n";
 }
 
@@ -73,6 +77,8 @@ CommandLine parseCommandLine(int argc, char** argv) {
       cl.checkJacobianIncrements = parseIncrementList(arg, arg.substr(17));
     } else if (arg == "--output-dir") cl.outputDirectory = value(arg);
     else if (arg.rfind("--output-dir=", 0) == 0) cl.outputDirectory = arg.substr(13);
+    else if (arg == "--restart") cl.restart = value(arg);
+    else if (arg.rfind("--restart=", 0) == 0) cl.restart = arg.substr(10);
     else if (arg == "--set") cl.overrides.push_back(value(arg));
     else if (arg.rfind("--set=", 0) == 0) cl.overrides.push_back(arg.substr(6));
     else if (arg.rfind("--kokkos-", 0) == 0) {

@@ -13,6 +13,7 @@ struct CommandLine {
   /// check of the Jacobian (empty with checkJacobian = every increment).
   bool checkJacobian = false;
   std::vector<int> checkJacobianIncrements;
+  std::string restart;  ///< --restart FILE: continue from this restart file ("" = a new run)
   bool help = false, version = false, kokkosHelp = false, deckReference = false, quiet = false, timers = false;
 };
 

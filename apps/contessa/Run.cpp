@@ -10,14 +10,17 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 
+#include "Checkpoint.hpp"
 #include "Failure.hpp"
 #include "RunReport.hpp"
+#include "StopSignals.hpp"
 #include "common/Error.hpp"
 #include "common/PhaseTimers.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "io/ExodusWriter.hpp"
+#include "io/RestartFile.hpp"
 #include "mesh/MemoryEstimate.hpp"
 #include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
@@ -82,6 +85,7 @@ std::string commandLineText(const CommandLine& cl) {
     for (std::size_t k = 0; k < cl.checkJacobianIncrements.size(); ++k)
       text += (k == 0 ? "=" : ",") + std::to_string(cl.checkJacobianIncrements[k]);
   }
+  if (!cl.restart.empty()) text += " --restart " + word(cl.restart);
   return text;
 }
 
@@ -124,13 +128,30 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   });
   auto& piro = deckList->sublist("Piro");
   const std::string name = fs::path(cl.deck).stem().string();
+  const bool continuation = piro.get<std::string>("Solver Type") != "NOX";
+  // Checkpoint and restart: the deck and mesh a restart file must match; with --restart, the file is read
+  // and checked before any output is touched.
+  const io::RestartContent identity = restartIdentity(*deckList, problem.mesh);
+  const std::string restartPath = cl.outputDirectory + "/" + name + ".restart";
+  RestartInput restart;
+  if (!cl.restart.empty()) {
+    requireInput(continuation, "--restart " + cl.restart +
+                                   ": a static solve (Piro/Solver Type = NOX) has no increments to continue");
+    restart = readRestart(*comm, cl.restart, identity, problem.mesh.dimension);
+  }
+  // A continuation acts on stop signals at its next increment; a single solve has none, so it leaves them
+  // to their default action.
+  if (continuation) installStopSignalHandlers();
 
   // 2. Partition, model, output.
   const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
   auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, partition, linearSolver));
   // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
   solvers::provideNearNullSpace(*linearSolver, *model->ownedDofMap(), problem.mesh);
-  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description);
+  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description,
+                                cl.restart.empty() ? nullptr : &restart.historyRows);
+  const io::RestartRecords restartRecords(restart.content.records);
+  if (!cl.restart.empty()) agreeOnInput(*comm, [&] { model->restoreCommittedState(restartRecords); });
   if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
   requireHistoryColumns(problem, results.historyColumns());
   if (root && !cl.quiet)
@@ -151,25 +172,41 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     jacobianCheck = Teuchos::rcp(new solvers::JacobianCheckObserver(*model, cl.checkJacobianIncrements, results));
   solvers::IncrementObserver& observer = jacobianCheck.is_null() ? static_cast<solvers::IncrementObserver&>(results)
                                                                  : *jacobianCheck;
+  RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
+                             problem.maxWallSeconds, start, !cl.quiet);
   try {
-    summary = piro.get<std::string>("Solver Type") == "NOX"
-                  ? solvers::solveStatic(model, piro, observer, jacobianCheck)
-                  : solvers::ContinuationDriver(model, piro, observer, jacobianCheck).run();
+    if (!continuation) {
+      summary = solvers::solveStatic(model, piro, observer, jacobianCheck);
+    } else {
+      solvers::ContinuationDriver driver(model, piro, observer, jacobianCheck);
+      driver.setCheckpointControl(&checkpoints);
+      if (!cl.restart.empty()) driver.resumeFrom(restartRecords);
+      summary = driver.run();
+    }
   } catch (const std::exception&) {
-    if (results.failure().empty()) throw;
+    if (results.failure().empty() && checkpoints.failure().empty()) throw;
   }
   if (!results.failure().empty()) throw std::runtime_error(results.failure());
+  if (!checkpoints.failure().empty()) throw std::runtime_error(checkpoints.failure());
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
                 "load factor %.6g\n",
-                summary.finished ? "finished" : "STOPPED", summary.increments, summary.failedAttempts,
+                summary.finished ? "finished" : summary.checkpointed ? "stopped for a restart" : "STOPPED", summary.increments, summary.failedAttempts,
                 summary.newtonIterations, summary.linearSolves, summary.finalLambda);
     std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
     std::fflush(stdout);
   }
   timers::printTable(*Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm(), stdout);
   int exitStatus = 0;
-  if (!summary.finished) {
+  if (summary.checkpointed) {
+    // Not an error: the run can go on from its restart file (exit status 4, docs/user-guide.md).
+    if (root)
+      std::printf("contessa: stopped: %s; restart file %s holds step %d (load factor %.6g); continue with "
+                  "--restart %s\n",
+                  summary.message.c_str(), restartPath.c_str(), summary.increments, summary.finalLambda,
+                  restartPath.c_str());
+    exitStatus = 4;
+  } else if (!summary.finished) {
     if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
     exitStatus = 1;
   } else {
@@ -195,7 +232,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (root) {
     const std::string path = cl.outputDirectory + "/" + name + ".summary.json";
     std::printf("%s\n", summaryLine(report).c_str());
-    const std::string error = writeFileAtomically(path, summaryJson(report));
+    const std::string error = io::writeFileAtomically(path, summaryJson(report));
     if (!error.empty()) std::printf("contessa: warning: no run summary: %s\n", error.c_str());
     std::fflush(stdout);
   }

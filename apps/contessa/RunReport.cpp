@@ -95,22 +95,4 @@ std::string summaryJson(const RunReport& r) {
   return out.str();
 }
 
-std::string writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  std::FILE* file = std::fopen(temporary.c_str(), "w");
-  if (file == nullptr) return "cannot create " + temporary + ": " + std::strerror(errno);
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  const int savedErrno = errno;
-  if (std::fclose(file) != 0 || !written) {
-    std::remove(temporary.c_str());
-    return "cannot write " + temporary + ": " + std::strerror(written ? errno : savedErrno);
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    std::remove(temporary.c_str());
-    return "cannot rename " + temporary + " to " + path + ": " + why;
-  }
-  return "";
-}
-
 }  // namespace contessa::app

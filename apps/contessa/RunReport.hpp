@@ -35,8 +35,4 @@ std::string summaryLine(const RunReport& report);
 /// Rank 0: the JSON text of `<name>.summary.json`.
 std::string summaryJson(const RunReport& report);
 
-/// Rank 0: writes `text` to `path` through a temporary file and a rename, so a reader never sees half
-/// of it. Returns "" or why it failed.
-std::string writeFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace contessa::app

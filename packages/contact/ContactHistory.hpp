@@ -50,6 +50,8 @@ class ContactHistoryStore {
 
   /// The increment converged: the trial state becomes the committed state (ξ_n, t_Tα,n, g_T updated).
   void commit() { committed_ = trial_; }
+  /// A restarted run: the node's history as the restart file gives it, both copies.
+  void restore(std::size_t node, const ContactHistory<NXi>& history) { committed_[node] = trial_[node] = history; }
   /// The increment is restarted or cut back: forget every trial update.
   void rollback() { trial_ = committed_; }
 

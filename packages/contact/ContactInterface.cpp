@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/Error.hpp"
 #include "contact/BoundingBoxTree.hpp"
 #include "contact/FacetSelector.hpp"
 #include "contact/HistoryTransfer.hpp"
@@ -76,6 +77,10 @@ class ContactInterface final : public ContactInterfaceBase {
   std::vector<TunnellingNode> tunnellingNodes() const override;
   void commit() override;
   void rollback() override;
+  std::vector<double> committedSlaveRecord(std::size_t k) const override;
+  void restoreSlave(std::size_t k, const std::vector<double>& record) override;
+  std::vector<double> committedMasterRecord() const override;
+  void restoreMaster(const std::vector<double>& record) override;
 
  private:
   Point slavePosition(const NodePosition& position, std::size_t k) const {
@@ -354,6 +359,89 @@ void ContactInterface<Facet>::rollback() {
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+}
+
+// Record layout of a slave node: history (segment, ξ, t_T, status, slip), change (gaps, statuses,
+// indicators, reversal, facet), output (pressure, gap, status, slip), committed position.
+template <class Facet>
+std::vector<double> ContactInterface<Facet>::committedSlaveRecord(std::size_t k) const {
+  const auto& h = history_.committed(k);
+  std::vector<double> r = {static_cast<double>(h.segment)};
+  r.insert(r.end(), h.xi.begin(), h.xi.end());
+  r.insert(r.end(), h.tangentialTraction.begin(), h.tangentialTraction.end());
+  r.push_back(static_cast<double>(h.status));
+  r.push_back(h.accumulatedSlip);
+  const SlaveNodeChange& c = committedIncrement_[k];
+  r.insert(r.end(), {c.committedGap, c.trialGap, static_cast<double>(c.committedStatus),
+                     static_cast<double>(c.trialStatus), c.committedIndicator, c.trialIndicator,
+                     c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet)});
+  const SlaveNodeState& o = committedOutput_[k];
+  r.insert(r.end(), {o.pressure, o.gap, static_cast<double>(o.status), o.slip});
+  const Point x = committedSlave_.empty() ? Point{} : committedSlave_[k];
+  r.insert(r.end(), x.begin(), x.end());
+  return r;
+}
+
+template <class Facet>
+void ContactInterface<Facet>::restoreSlave(std::size_t k, const std::vector<double>& r) {
+  constexpr std::size_t size = 3 + 2 * kXi + 8 + 4 + kDim;
+  requireInput(r.size() == size, "restart file: slave node record of interface '" + spec_.label() + "' has " +
+                                     std::to_string(r.size()) + " values, " + std::to_string(size) + " expected");
+  std::size_t i = 0;
+  ContactHistory<kXi> h;
+  h.segment = static_cast<int>(r[i++]);
+  for (auto& v : h.xi) v = r[i++];
+  for (auto& v : h.tangentialTraction) v = r[i++];
+  h.status = static_cast<ContactStatus>(static_cast<int>(r[i++]));
+  h.accumulatedSlip = r[i++];
+  history_.restore(k, h);
+  SlaveNodeChange& c = committedIncrement_[k];
+  c.committedGap = r[i++];
+  c.trialGap = r[i++];
+  c.committedStatus = static_cast<ContactStatus>(static_cast<int>(r[i++]));
+  c.trialStatus = static_cast<ContactStatus>(static_cast<int>(r[i++]));
+  c.committedIndicator = r[i++];
+  c.trialIndicator = r[i++];
+  c.slipReversed = r[i++] != 0.0;
+  c.trialFacet = static_cast<int>(r[i++]);
+  SlaveNodeState& o = committedOutput_[k];
+  o.pressure = r[i++];
+  o.gap = r[i++];
+  o.status = static_cast<ContactStatus>(static_cast<int>(r[i++]));
+  o.slip = r[i++];
+  if (committedSlave_.size() != spec_.slaveNodes.size()) committedSlave_.assign(spec_.slaveNodes.size(), Point{});
+  for (auto& v : committedSlave_[k]) v = r[i++];
+  lastSlave_[k] = committedSlave_[k];
+  trialOutput_[k] = o;
+  trialChanges_[k] = unchanged(k);
+}
+
+template <class Facet>
+std::vector<double> ContactInterface<Facet>::committedMasterRecord() const {
+  std::vector<double> r;
+  for (const auto& m : committedMaster_) {
+    r.push_back(static_cast<double>(m.id));
+    for (int n : m.nodes) r.push_back(static_cast<double>(n));
+    for (const auto& x : m.x) r.insert(r.end(), x.begin(), x.end());
+  }
+  return r;
+}
+
+template <class Facet>
+void ContactInterface<Facet>::restoreMaster(const std::vector<double>& r) {
+  constexpr std::size_t perFacet = 1 + Facet::kNodes + Facet::kNodes * kDim;
+  requireInput(r.size() % perFacet == 0, "restart file: master record of interface '" + spec_.label() +
+                                             "' does not hold whole facets");
+  Facets facets(r.size() / perFacet);
+  std::size_t i = 0;
+  for (auto& m : facets) {
+    m.id = static_cast<int>(r[i++]);
+    for (auto& n : m.nodes) n = static_cast<int>(r[i++]);
+    for (auto& x : m.x)
+      for (auto& v : x) v = r[i++];
+  }
+  committedMaster_ = facets;
+  lastFacets_ = std::move(facets);
 }
 
 template class ContactInterface<Line2Facet>;

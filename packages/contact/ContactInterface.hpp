@@ -82,6 +82,17 @@ class ContactInterfaceBase {
   /// The increment is abandoned: back to the committed state.
   virtual void rollback() = 0;
 
+  // A restart file's records of the committed state (docs/architecture.md, "Checkpoint and restart").
+  /// Owned slave node k: its history (facet, ξ, tangential traction, status, slip), its change over the
+  /// last increment (Contact Beta reads it), its output and its committed position, as numbers.
+  virtual std::vector<double> committedSlaveRecord(std::size_t k) const = 0;
+  /// Puts slave node k's record back as the committed and trial state; InputError when its size is not
+  /// this interface's.
+  virtual void restoreSlave(std::size_t k, const std::vector<double>& record) = 0;
+  /// The master facets' committed positions (the same on every rank).
+  virtual std::vector<double> committedMasterRecord() const = 0;
+  virtual void restoreMaster(const std::vector<double>& record) = 0;
+
   /// The owned slave nodes: the last commit against the latest trial evaluation.
   std::vector<SlaveNodeChange> trialChanges() const { return owned(trialChanges_); }
   /// The owned slave nodes over the last converged increment: its start against its end.

@@ -80,6 +80,11 @@ class ContactBetaControl {
   /// Every Newton iterate: the release of new contacts concerns only the iterate it happened at.
   void nextIterate() { justReleased_ = false; }
 
+  // ---- Checkpoint and restart: everything the next decisions depend on, as numbers (a restart file's
+  // record), and putting it back. restoreState throws std::invalid_argument for a record of another size.
+  std::vector<double> state() const;
+  void restoreState(const std::vector<double>& state);
+
   // ---- Queries.
   const ContactBetaSettings& settings() const { return settings_; }
   bool checkPending() const { return checkPending_; }

@@ -26,6 +26,8 @@ class EventRateCorrection {
 
   /// c: multiply every predicted β^k by it (BetaOptions::eventRateScale).
   double scale() const { return scale_; }
+  /// A restarted run: c as it was learned.
+  void restoreScale(double scale) { scale_ = scale; }
 
   /// An increment converged. `predicted`: the unscaled β^k of the counted events predicted for it,
   /// as fractions of the step it finally took (any order); `observed`: the counted events that happened.

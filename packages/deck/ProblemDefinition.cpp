@@ -286,6 +286,16 @@ RCP<const ParameterList> problemValidParameters() {
             "Single File: <name>.exo, gathered to rank 0 and written there; Per Rank: each of the N ranks writes "
             "its own piece, <name>.exo.N.r (a spatially decomposed set: ParaView opens it as one data set, "
             "SEACAS epu joins it), nothing gathered");
+  auto& checkpoint = out.sublist("Checkpoint", false,
+                                 "Restart files: <name>.restart in the output directory, continued with --restart FILE "
+                                 "(also written on SIGTERM, SIGUSR1 and SIGINT, which stop the run with exit status 4)");
+  checkpoint.set("Every N Increments", 0,
+                 "Write the restart file after every N-th converged increment and go on (0: only when the run is "
+                 "stopped by a signal or Max Wall Time)");
+  checkpoint.set("Max Wall Time", 0.0,
+                 "Seconds the run may take (0: no limit): it writes the restart file and stops (exit status 4) "
+                 "after the increment at which the elapsed time plus 1.5 times the longest increment so far plus "
+                 "the time of the last restart-file write would pass it");
   p->sublist("Regression", false, "Expected answers (one sublist per check): Quantity, Step, Expected, tolerances");
   p->sublist("Contact", false, "One sublist per contact interface (any name): slave, master, penalties, friction");
   return p;
@@ -386,6 +396,15 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     def.reactionNodeSets.push_back(s);
   }
   def.exodusPerRank = problem.sublist("Output").get<std::string>("Exodus Layout") == "Per Rank";
+  const auto& checkpoint = problem.sublist("Output").sublist("Checkpoint");
+  def.checkpointEvery = checkpoint.get<int>("Every N Increments");
+  requireInput(def.checkpointEvery >= 0, "Problem/Output/Checkpoint/Every N Increments: expected an integer >= 0 (0: "
+                                         "only on signals and Max Wall Time), got " +
+                                             std::to_string(def.checkpointEvery));
+  def.maxWallSeconds = checkpoint.get<double>("Max Wall Time");
+  requireInput(std::isfinite(def.maxWallSeconds) && def.maxWallSeconds >= 0,
+               "Problem/Output/Checkpoint/Max Wall Time: expected seconds >= 0 (0: no limit), got " +
+                   std::to_string(def.maxWallSeconds));
 
   auto& contactList = problem.sublist("Contact");
   for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact"))

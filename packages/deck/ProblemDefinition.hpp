@@ -53,6 +53,8 @@ struct ProblemDefinition {
   std::vector<NodalForce> nodalForces;
   std::vector<std::string> reactionNodeSets;
   bool exodusPerRank = false;  ///< Problem/Output/Exodus Layout = Per Rank
+  int checkpointEvery = 0;      ///< Problem/Output/Checkpoint/Every N Increments (0: none)
+  double maxWallSeconds = 0;    ///< Problem/Output/Checkpoint/Max Wall Time (0: no limit)
   std::vector<RegressionCheck> regression;
   /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
   std::vector<contact::ContactInterfaceSpec> contacts;

@@ -10,7 +10,9 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "common/Error.hpp"
 #include "io/DiskSpace.hpp"
+#include "io/ExodusResults.hpp"
 #include "io/OutputWriteError.hpp"
 #include "mesh/ExodusFile.hpp"
 
@@ -429,6 +431,20 @@ void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>
   }
   stepBytes_ = std::max(stepBytes_, fileSize(spaceFd_) - before);
   steps_ = step;
+}
+
+void ExodusWriter::copySteps(const ExodusResults& source, int steps) {
+  requireInput(source.numSteps() >= steps, source.path() + ": holds " + std::to_string(source.numSteps()) +
+                                               " steps, the restart file's increment needs " + std::to_string(steps));
+  const auto times = source.times();
+  for (int step = 0; step < steps; ++step) {
+    std::vector<std::vector<double>> nodal, element;
+    std::vector<double> global;
+    for (const auto& name : fields_.nodal) nodal.push_back(source.nodal(name, step));
+    for (const auto& name : fields_.element) element.push_back(source.element(name, step));
+    for (const auto& name : fields_.global) global.push_back(source.global(name, step));
+    writeStep(times[static_cast<std::size_t>(step)], nodal, element, global);
+  }
 }
 
 }  // namespace contessa::io

@@ -12,6 +12,8 @@
 
 namespace contessa::io {
 
+class ExodusResults;
+
 struct ExodusFields {
   std::vector<std::string> nodal;    ///< e.g. displ_x, displ_y, contact_pressure
   std::vector<std::string> element;  ///< e.g. stress_xx, von_mises (defined on every mesh block)
@@ -91,6 +93,11 @@ class ExodusWriter {
   /// file keeps the steps written before (no step is written after a failure).
   void writeStep(double time, const std::vector<std::vector<double>>& nodal,
                  const std::vector<std::vector<double>>& element, const std::vector<double>& global);
+
+  /// Appends the first `steps` steps of `source` (a results file of the same mesh and variables, e.g. the
+  /// one a restarted run replaces): their times and every variable this file defines. Throws InputError
+  /// naming `source` when it has fewer steps or lacks a variable.
+  void copySteps(const ExodusResults& source, int steps);
 
   int stepsWritten() const { return steps_; }
   const std::string& path() const { return path_; }

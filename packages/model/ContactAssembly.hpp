@@ -11,6 +11,7 @@
 
 #include "contact/ContactInterface.hpp"
 #include "contact/CouplingReservation.hpp"
+#include "io/RestartFile.hpp"
 #include "model/DofLayout.hpp"
 #include "model/StiffnessScatter.hpp"
 
@@ -50,6 +51,10 @@ class ContactAssembly {
 
   void commit();
   void rollback();
+  /// This rank's records of the committed contact state (its slave nodes; rank `writer`: the masters).
+  void appendRecords(std::vector<io::RestartRecord>& out, bool writer) const;
+  /// The committed contact state from a restart file's records (this rank's slave nodes, the masters).
+  void restore(const io::RestartRecords& records);
   /// Contact Beta, Restart mode: nodes open at the last commit carry no force while frozen.
   void setNewContactsFrozen(bool frozen);
   bool newContactsFrozen() const { return frozen_; }

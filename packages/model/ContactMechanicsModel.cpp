@@ -251,6 +251,25 @@ void ContactMechanicsModel::rollbackState() {
   passServesReactions_ = false;
 }
 
+std::vector<io::RestartRecord> ContactMechanicsModel::committedStateRecords() const {
+  std::vector<io::RestartRecord> out;
+  const auto& elements = solids_->elements();
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    out.push_back({io::restart_kind::kElementState, elements[i], solids_->committedState(i)});
+  contact_->appendRecords(out, comm_->getRank() == 0);
+  return out;
+}
+
+void ContactMechanicsModel::restoreCommittedState(const io::RestartRecords& records) {
+  const auto& elements = solids_->elements();
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    solids_->restoreState(i, records.at(io::restart_kind::kElementState, elements[i],
+                                        "element " + std::to_string(elements[i] + 1)));
+  contact_->restore(records);
+  passServesEvaluations_ = false;
+  passServesReactions_ = false;
+}
+
 std::string ContactMechanicsModel::inadmissibleElement() const {
   // The lowest failed element id over all ranks, then its status from the rank that holds it.
   const long long none = std::numeric_limits<long long>::max();

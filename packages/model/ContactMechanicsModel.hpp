@@ -22,6 +22,7 @@
 #include "contact/ContactCounts.hpp"
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
+#include "io/RestartFile.hpp"
 #include "mesh/Partition.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/PostProcessing.hpp"
@@ -58,6 +59,11 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   // increment, rolled back when an increment is abandoned.
   void commitState() override;
   void rollbackState() override;
+  /// This rank's records of the committed state for a restart file: the states of its elements, its
+  /// contact slave nodes (and on rank 0 the master positions). Global ids: any rank count reads them.
+  std::vector<io::RestartRecord> committedStateRecords() const;
+  /// The committed (and trial) state from a restart file's records; InputError when one is missing.
+  void restoreCommittedState(const io::RestartRecords& records);
   /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
   double lastLoadFactor() const override { return lastLoadFactor_; }
 

@@ -1,5 +1,7 @@
 #include "model/SolidAssembler.hpp"
 
+#include "common/Error.hpp"
+
 #include <map>
 
 namespace contessa::model {
@@ -86,6 +88,19 @@ std::vector<mechanics::Tensor2> SolidAssembler::elementStresses(const double* u)
     out[k] = sigma;
   }
   return out;
+}
+
+std::vector<double> SolidAssembler::committedState(std::size_t i) const {
+  const auto begin = committed_.begin() + static_cast<std::ptrdiff_t>(data_[i].stateOffset);
+  return {begin, begin + static_cast<std::ptrdiff_t>(stateSize(i))};
+}
+
+void SolidAssembler::restoreState(std::size_t i, const std::vector<double>& values) {
+  requireInput(values.size() == stateSize(i), "restart file: element " + std::to_string(elements_[i] + 1) + " has " +
+                                                  std::to_string(values.size()) + " state values, its element type " +
+                                                  std::to_string(stateSize(i)));
+  std::copy(values.begin(), values.end(), committed_.begin() + static_cast<std::ptrdiff_t>(data_[i].stateOffset));
+  std::copy(values.begin(), values.end(), trial_.begin() + static_cast<std::ptrdiff_t>(data_[i].stateOffset));
 }
 
 }  // namespace contessa::model

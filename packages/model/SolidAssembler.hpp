@@ -52,6 +52,11 @@ class SolidAssembler {
 
   const std::vector<GlobalIndex>& elements() const { return elements_; }
 
+  /// Committed state of the element at index i of elements() (a restart file's record), and setting it
+  /// back as both copies (the restarted run continues from the commit). Sizes differ: InputError.
+  std::vector<double> committedState(std::size_t i) const;
+  void restoreState(std::size_t i, const std::vector<double>& values);
+
  private:
   /// The elements of one mesh block on this rank: one kernel and material; the reference geometry of
   /// all of them computed once, here (shape-function gradients, weights × det J, ...).
@@ -71,6 +76,9 @@ class SolidAssembler {
   std::vector<ElementData> data_;
   std::vector<int> dofs_;                // overlapped local DOF indices of all elements, concatenated
   std::vector<double> trial_, committed_;  // element states (internal variables and warm-start data)
+  std::size_t stateSize(std::size_t i) const {
+    return (i + 1 < data_.size() ? data_[i + 1].stateOffset : committed_.size()) - data_[i].stateOffset;
+  }
   int maxDofs_ = 0;
 };
 

@@ -5,11 +5,14 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
+#include <functional>
 
 #include <Teuchos_CommHelpers.hpp>
 
 #include "common/Error.hpp"
 #include "common/Version.hpp"
+#include "io/ExodusResults.hpp"
 #include "io/OutputWriteError.hpp"
 
 #include "common/PhaseTimers.hpp"
@@ -118,7 +121,7 @@ io::ExodusRecords runRecords(const std::string& title, const RunDescription& run
 
 ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model::ContactMechanicsModel& model,
                              const std::string& directory, const std::string& name, bool printTable,
-                             const RunDescription& run)
+                             const RunDescription& run, const std::vector<std::vector<double>>* restartRows)
     : problem_(problem), model_(model), printTable_(printTable) {
   const auto comm = model.ownedDofMap()->getComm();
   root_ = comm->getRank() == 0;
@@ -179,10 +182,33 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   // be plotted from the Exodus file alone, under the same names.
   fields.global = kGlobals;
   fields.global.insert(fields.global.end(), columns_.begin() + kFixedColumns.size(), columns_.end());
+  // A restart re-creates each Exodus file with the steps up to the restart file's increment, copied
+  // from the file it replaces (set aside until then, and put back if that fails).
+  const auto continuing = [&](const std::string& path, const std::function<void()>& create) {
+    if (restartRows == nullptr) return create();
+    const std::string old = path + ".before-restart";
+    requireInput(std::filesystem::exists(path) || std::filesystem::exists(old),
+                 path + ": the results file of the run to continue is missing (a restart appends to it; with Exodus "
+                        "Layout = Per Rank, run on as many ranks as before)");
+    std::error_code ec;
+    if (std::filesystem::exists(path)) std::filesystem::rename(path, old, ec);
+    requireInput(!ec, path + ": cannot set the results file aside for the restart (" + ec.message() + ")");
+    try {
+      create();
+      exodus_->copySteps(io::ExodusResults(old), static_cast<int>(restartRows->size()));
+    } catch (...) {
+      exodus_.reset();
+      std::filesystem::rename(old, path, ec);
+      throw;
+    }
+    std::filesystem::remove(old, ec);
+  };
   const auto createExodus = [&]() {
     if (!perRank_) {
-      exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
-                                                   runRecords(problem.title, run, ranks), surfaceBlocks);
+      continuing(exodusPath_, [&] {
+        exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
+                                                     runRecords(problem.title, run, ranks), surfaceBlocks);
+      });
       return;
     }
     // The rigid surfaces are drawn by rank 0's piece; the other pieces hold their blocks empty.
@@ -212,10 +238,11 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       decomposition.globalNumElements += elements;
     }
     if (!root_) rigidSurfaces_.clear();
-    exodus_ = std::make_unique<io::ExodusWriter>(directory + "/" + name + ".exo" +
-                                                     pieceSuffix(ranks, comm->getRank()),
-                                                 piece_->mesh, fields, runRecords(problem.title, run, ranks),
-                                                 pieceSurfaces, &decomposition);
+    const std::string piecePath = directory + "/" + name + ".exo" + pieceSuffix(ranks, comm->getRank());
+    continuing(piecePath, [&] {
+      exodus_ = std::make_unique<io::ExodusWriter>(piecePath, piece_->mesh, fields, runRecords(problem.title, run, ranks),
+                                                   pieceSurfaces, &decomposition);
+    });
   };
   // Rank 0 takes the lock before any file is created, so a second run on the same files stops before
   // it touches them; per rank, every rank creates its piece once the lock is held.
@@ -229,6 +256,8 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
                                                        "new_contacts", "new_events", "stick", "slip",
                                                        "linear_iterations"};
       history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
+      if (restartRows != nullptr)
+        for (const auto& row : *restartRows) history_->writeRow(row);
     } catch (const std::exception& e) {
       error = e.what();
       history_.reset();
@@ -251,6 +280,12 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       lock_.reset();
       throw InputError(error);
     }
+  }
+  if (restartRows != nullptr) {
+    for (const auto& row : *restartRows)
+      requireInput(row.size() == columns_.size(), "restart file: a history row has " + std::to_string(row.size()) +
+                                                      " columns, this deck's history " + std::to_string(columns_.size()));
+    rows_ = *restartRows;
   }
   if (root_ && printTable_) {
     std::printf("%5s %12s %12s %7s %4s %6s %7s %11s %9s\n", "incr", "lambda", "dlambda", "beta", "att", "newton",

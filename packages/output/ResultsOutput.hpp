@@ -33,9 +33,13 @@ class ResultsOutput : public solvers::IncrementObserver {
   /// of N, the rank zero-padded to the digits of N as SEACAS names them). Collective: when another run
   /// holds the lock or a file cannot be created, every rank throws InputError with the one-line reason
   /// of the lowest rank that failed.
+  /// A restarted run (`restartRows`: the history rows of steps 0..k from the restart file) continues the
+  /// files of the run it continues: each Exodus file is re-created with its first k + 1 steps copied from
+  /// the old one (so steps written after the restart file, before a kill, are gone) and the history is
+  /// re-written with those rows; the old Exodus file must be there (InputError otherwise).
   ResultsOutput(const deck::ProblemDefinition& problem, const model::ContactMechanicsModel& model,
                 const std::string& directory, const std::string& name, bool printTable,
-                const RunDescription& run = {});
+                const RunDescription& run = {}, const std::vector<std::vector<double>>* restartRows = nullptr);
 
   /// Collective. When a rank cannot write the increment, every rank throws std::runtime_error with
   /// the reason (also kept in failure()); the files keep every increment before it.

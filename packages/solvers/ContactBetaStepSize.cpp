@@ -1,6 +1,7 @@
 #include "solvers/ContactBetaStepSize.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <LOCA_MultiContinuation_AbstractStrategy.H>
 #include <LOCA_MultiContinuation_ExtendedVector.H>
@@ -97,6 +98,20 @@ NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
   if (plan.checkFirstIterate) events_.freezeNewContacts(true);
   previous_ = stepSize;
   return NOX::Abstract::Group::Ok;
+}
+
+std::vector<double> ContactBetaStepSize::saveState() const {
+  std::vector<double> s = {first_ ? 1.0 : 0.0, previous_};
+  const auto control = control_.state();
+  s.insert(s.end(), control.begin(), control.end());
+  return s;
+}
+
+void ContactBetaStepSize::restoreState(const std::vector<double>& s) {
+  if (s.size() < 2) throw std::invalid_argument("Contact Beta step size: state too short");
+  control_.restoreState(std::vector<double>(s.begin() + 2, s.end()));
+  first_ = s[0] != 0.0;
+  previous_ = s[1];
 }
 
 }  // namespace contessa::solvers

@@ -13,6 +13,7 @@
 
 #include "continuation/ContactBetaControl.hpp"
 #include "continuation/ContactEventSource.hpp"
+#include "solvers/ResumableStepSize.hpp"
 
 namespace contessa::solvers {
 
@@ -31,7 +32,7 @@ class ContactBetaRestartTest : public NOX::StatusTest::Generic {
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
-class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy {
+class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy, public ResumableStepSize {
  public:
   ContactBetaStepSize(continuation::ContactEventSource& events, continuation::ContactBetaControl& control)
       : events_(events), control_(control) {}
@@ -43,6 +44,9 @@ class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy {
                                                    const LOCA::Abstract::Iterator& stepper, double& stepSize) override;
   double getPrevStepSize() const override { return previous_; }
   double getStartStepSize() const override { return control_.settings().initialStep; }
+  /// First step or not, the previous step and the control's whole state.
+  std::vector<double> saveState() const override;
+  void restoreState(const std::vector<double>& state) override;
 
  private:
   /// Predictor mode: the slave nodes at x_t + Δλ dx/dλ.

@@ -8,10 +8,15 @@
 #include <cmath>
 
 #include <LOCA.H>
+#include <LOCA_Factory.H>
+#include <LOCA_MultiContinuation_AbstractStrategy.H>
+#include <LOCA_MultiContinuation_ExtendedVector.H>
+#include <LOCA_Parameter_SublistParser.H>
 #include <LOCA_Thyra.H>
 #include <LOCA_Thyra_SaveDataStrategy.H>
 #include <NOX_Observer.hpp>
 #include <NOX_Observer_Vector.hpp>
+#include <NOX_Solver_Factory.H>
 #include <NOX_Solver_LineSearchBased.H>
 #include <NOX_Thyra_Vector.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -19,7 +24,9 @@
 #include "solvers/ContactBetaStepSize.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "common/Error.hpp"
 #include "solvers/NewtonStatusTests.hpp"
+#include "solvers/ResumableStepSize.hpp"
 #include "solvers/StepSizeFactory.hpp"
 #include "solvers/StepSizeMethods.hpp"
 
@@ -116,6 +123,181 @@ class NewtonCounter : public NOX::Observer {
   std::size_t outputAtStart_ = 0;
 };
 
+// ---- Checkpoint and restart (docs/architecture.md, "Checkpoint and restart").
+
+// The continuation at a converged increment k, as the restart file keeps it: what LOCA's stepper, its
+// predictor and its step-size strategy need to take increment k + 1 exactly as the uninterrupted run does.
+struct ContinuationPoint {
+  int increments = 0, failedAttempts = 0;  ///< converged increments (k) and failed attempts so far
+  int newtonIterations = 0;                ///< of increment k's solve (what the step-size strategy reads)
+  double lambda = 0, previousLambda = 0;   ///< λ_k, λ_{k-1}
+  double stepSize = 0;                     ///< LOCA's step size of increment k (after its capping)
+  double wallSeconds = 0;                  ///< wall time of the run (all its parts) at increment k
+  std::vector<double> stepSizeState;       ///< a ResumableStepSize's state (empty for LOCA's own)
+  RCP<const model::Vector> x, previousX;   ///< x_k, x_{k-1}
+
+  static constexpr double kLayout = 1;
+  std::vector<double> record() const {
+    return {kLayout, static_cast<double>(increments), static_cast<double>(failedAttempts),
+            static_cast<double>(newtonIterations), lambda, previousLambda, stepSize, wallSeconds};
+  }
+  void read(const std::vector<double>& r) {
+    requireInput(r.size() == 8 && r[0] == kLayout, "restart file: the continuation record does not fit this Contessa");
+    increments = static_cast<int>(r[1]);
+    failedAttempts = static_cast<int>(r[2]);
+    newtonIterations = static_cast<int>(r[3]);
+    lambda = r[4];
+    previousLambda = r[5];
+    stepSize = r[6];
+    wallSeconds = r[7];
+  }
+};
+
+// A vector over the owned DOFs as one record per node (id: node, dim values): any rank count reads it.
+void appendNodeRecords(const model::Vector& v, int dim, std::int64_t kind, std::vector<io::RestartRecord>& out) {
+  const auto& map = *v.getMap();
+  const auto values = v.getData(0);
+  std::map<model::GO, std::vector<double>> nodes;
+  for (std::size_t i = 0; i < map.getNodeNumElements(); ++i) {
+    const model::GO dof = map.getGlobalElement(static_cast<model::LO>(i));
+    auto& node = nodes[dof / dim];
+    node.resize(static_cast<std::size_t>(dim), 0.0);
+    node[static_cast<std::size_t>(dof % dim)] = values[i];
+  }
+  for (auto& [node, vals] : nodes) out.push_back({kind, node, std::move(vals)});
+}
+
+RCP<model::Vector> vectorFromNodeRecords(const RCP<const model::Map>& map, int dim, std::int64_t kind,
+                                         const io::RestartRecords& records) {
+  auto v = rcp(new model::Vector(map));
+  auto values = v->getDataNonConst(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const model::GO dof = map->getGlobalElement(static_cast<model::LO>(i));
+    const auto& node = records.at(kind, dof / dim, "the displacement of node " + std::to_string(dof / dim + 1));
+    requireInput(node.size() == static_cast<std::size_t>(dim), "restart file: node " + std::to_string(dof / dim + 1) +
+                                                                   " has " + std::to_string(node.size()) +
+                                                                   " displacement components, the mesh " +
+                                                                   std::to_string(dim));
+    values[i] = node[static_cast<std::size_t>(dof % dim)];
+  }
+  return v;
+}
+
+// The solver LOCA's step-size strategy reads when the first increment after a restart is planned: the
+// new (unused) solver, reporting the Newton iterations of the increment the restart file was written at,
+// as the uninterrupted run's solver would.
+class ResumedSolver : public NOX::Solver::Generic {
+ public:
+  ResumedSolver(RCP<NOX::Solver::Generic> solver, int iterations) : solver_(std::move(solver)), iterations_(iterations) {}
+  void reset() override { solver_->reset(); }
+  void reset(const NOX::Abstract::Vector& x) override { solver_->reset(x); }
+  void reset(const NOX::Abstract::Vector& x, const RCP<NOX::StatusTest::Generic>& tests) override { solver_->reset(x, tests); }
+  NOX::StatusTest::StatusType step() override { return solver_->step(); }
+  NOX::StatusTest::StatusType solve() override { return solver_->solve(); }
+  const NOX::Abstract::Group& getSolutionGroup() const override { return solver_->getSolutionGroup(); }
+  const NOX::Abstract::Group& getPreviousSolutionGroup() const override { return solver_->getPreviousSolutionGroup(); }
+  NOX::StatusTest::StatusType getStatus() const override { return NOX::StatusTest::Converged; }
+  int getNumIterations() const override { return iterations_; }
+  const Teuchos::ParameterList& getList() const override { return solver_->getList(); }
+  RCP<const NOX::Abstract::Group> getSolutionGroupPtr() const override { return solver_->getSolutionGroupPtr(); }
+  RCP<const NOX::Abstract::Group> getPreviousSolutionGroupPtr() const override {
+    return solver_->getPreviousSolutionGroupPtr();
+  }
+  RCP<const Teuchos::ParameterList> getListPtr() const override { return solver_->getListPtr(); }
+  RCP<const NOX::SolverStats> getSolverStatistics() const override { return solver_->getSolverStatistics(); }
+
+ private:
+  RCP<NOX::Solver::Generic> solver_;
+  int iterations_;
+};
+
+// LOCA's stepper, able to continue from a converged increment (a restart file) instead of solving the
+// initial state, and to tell what a restart file must keep of it. LOCA 13.2 keeps that state in protected
+// members (Stepper, Iterator), so it is re-seeded here; every value is the uninterrupted run's, bit for
+// bit, so the restarted run takes the same increments.
+class ResumableStepper : public LOCA::Stepper {
+ public:
+  using LOCA::Stepper::Stepper;
+  /// Continue from `point` at run(): the group must hold x_k and λ_k already.
+  /// `quiet(true)` while start() re-creates LOCA's state: the step notifications it makes are not steps.
+  void resumeFrom(const ContinuationPoint& point, bool secantPredictor, std::function<void(bool)> quiet) {
+    resume_ = &point;
+    secant_ = secantPredictor;
+    quiet_ = std::move(quiet);
+  }
+  double currentStepSize() const { return stepSize; }
+  std::vector<double> stepSizeState() const {
+    const auto* resumable = dynamic_cast<const ResumableStepSize*>(stepSizeStrategyPtr.get());
+    return resumable != nullptr ? resumable->saveState() : std::vector<double>();
+  }
+
+ protected:
+  LOCA::Abstract::Iterator::IteratorStatus start() override {
+    if (resume_ == nullptr) return LOCA::Stepper::start();
+    const ContinuationPoint& p = *resume_;
+    struct Quiet {
+      const std::function<void(bool)>& set;
+      explicit Quiet(const std::function<void(bool)>& f) : set(f) { set(true); }
+      ~Quiet() { set(false); }
+    } quiet(quiet_);
+    // As LOCA::Stepper::start() after the initial solve, with x_k taken as converged (re-solving it would
+    // move it: Newton iterates at least once where only the absolute tolerance can pass).
+    auto underlying = curGroupPtr->getUnderlyingGroup();
+    curGroupPtr = globalData->locaFactory->createContinuationStrategy(parsedParams, stepperList, underlying, predictor,
+                                                                     conParamIDs);
+    stepSize = p.stepSize;
+    curGroupPtr->setStepSize(stepSize);
+    prevGroupPtr = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(curGroupPtr->clone());
+    if (secant_) {
+      // The secant predictor's first step is LOCA's first-step predictor; later ones are (x_k − x_{k−1})
+      // scaled. Its first-step flags are passed as in the run: one predictor at the start, then a
+      // completed step (which LOCA marks with postProcessContinuationStep), then the secant of x_k and
+      // x_{k−1} as the uninterrupted run computed it after increment k.
+      auto previous = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
+          curGroupPtr->getX().clone(NOX::DeepCopy), true);
+      auto thyraPrevious = Thyra::createConstVector(p.previousX);
+      *previous->getXVec() = NOX::Thyra::Vector(*thyraPrevious);
+      previous->getScalar(0) = p.previousLambda;
+      curGroupPtr->setPrevX(*previous);
+      globalData->locaErrorCheck->checkReturnType(curGroupPtr->computePredictor(), "contessa: resumed predictor");
+      curGroupPtr->postProcessContinuationStep(LOCA::Abstract::Iterator::Successful);
+    }
+    globalData->locaErrorCheck->checkReturnType(curGroupPtr->computePredictor(), "contessa: resumed predictor");
+    curPredictorPtr = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
+        curGroupPtr->getPredictorTangent()[0].clone(NOX::DeepCopy));
+    prevPredictorPtr = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
+        curGroupPtr->getPredictorTangent()[0].clone(NOX::ShapeCopy));
+    solverPtr = rcp(new ResumedSolver(
+        NOX::Solver::buildSolver(curGroupPtr, noxStatusTestPtr, parsedParams->getSublist("NOX")), p.newtonIterations));
+    // The step-size strategy past its first step: Contessa's restore their state; LOCA's Constant and
+    // Adaptive keep only whether the first step was taken, which one call with a unit predictor sets
+    // (their first call divides the start step by dλ/ds = 1: no change).
+    if (auto* resumable = dynamic_cast<ResumableStepSize*>(stepSizeStrategyPtr.get())) {
+      resumable->restoreState(p.stepSizeState);
+    } else {
+      auto unit = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(curPredictorPtr->clone(NOX::DeepCopy));
+      unit->getScalar(0) = 1.0;
+      double ignored = stepSize;
+      stepSizeStrategyPtr->computeStepSize(*curGroupPtr, *unit, *solverPtr, LOCA::Abstract::Iterator::Successful, *this,
+                                           ignored);
+    }
+    stepNumber = p.increments;
+    numFailedSteps = p.failedAttempts;
+    numTotalSteps = p.increments + p.failedAttempts;
+    return LOCA::Abstract::Iterator::NotFinished;
+  }
+
+ private:
+  const ContinuationPoint* resume_ = nullptr;
+  bool secant_ = false;
+  std::function<void(bool)> quiet_;
+};
+
+// Thrown at an increment boundary once the restart file is written, to leave LOCA's stepper.
+struct CheckpointStop {
+  std::string reason;
+};
+
 // LOCA tells the group about every step: commit or roll back the model state, report to the observer.
 class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
  public:
@@ -133,6 +315,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
         start_(Clock::now()) {}
 
   void postProcessContinuationStep(LOCA::Abstract::Iterator::StepStatus status) override {
+    if (resuming_) return;  // the resumed stepper re-creating LOCA's predictor state: the model's state stays
     if (status == LOCA::Abstract::Iterator::Successful) {
       state_.commitState();
       pendingSuccess_ = true;
@@ -149,6 +332,9 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
       r.betaRestart = contactBeta_ != nullptr && contactBeta_->restartRequested();
       if (r.betaRestart) r.beta = contactBeta_->beta();
       observer_.attemptFailed(r);
+      // A stop requested during failed attempts: the restart file of the last converged increment (the
+      // model is back at its state), from which the restarted run tries again.
+      if (increments > 0) checkpoint(false);
     }
   }
 
@@ -164,15 +350,68 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     r.dlambda = first_ ? 0.0 : lambda - lastLambda_;
     r.newEvents = first_ ? 0 : continuation::countEvents(events_.committedIncrement(), counted_);
     observer_.incrementConverged(*tpetraX, r);
+    const bool initial = first_;
     if (!first_) ++increments;
+    previousLambda_ = lastLambda_;
     lastLambda_ = lambda;
     first_ = false;
     pendingSuccess_ = false;
     attempts_ = 1;
+    if (checkpoint_ == nullptr) return;
+    // What a restart file of this increment needs (LOCA's state now is the uninterrupted run's).
+    previousX_ = currentX_;
+    currentX_ = rcp(new model::Vector(*tpetraX, Teuchos::Copy));
+    if (initial) return;
+    point_.increments = increments;
+    point_.failedAttempts = failedAttempts;
+    point_.newtonIterations = newton_.iterations;
+    point_.lambda = lambda;
+    point_.previousLambda = previousLambda_;
+    point_.stepSize = stepper_ != nullptr ? stepper_->currentStepSize() : 0.0;
+    point_.wallSeconds = r.wallSeconds;
+    point_.stepSizeState = stepper_ != nullptr ? stepper_->stepSizeState() : std::vector<double>();
+    point_.x = currentX_;
+    point_.previousX = previousX_;
+    // After the increment that reaches Max Value the run ends anyway.
+    if (lambda < finalLambda_ * (1.0 - 1.0e-15)) checkpoint(true);
   }
+
+  /// Restart files: `control` decides when; `stepper` is asked for LOCA's state.
+  void enableCheckpoints(CheckpointControl* control, double finalLambda, int dimension) {
+    checkpoint_ = control;
+    finalLambda_ = finalLambda;
+    dimension_ = dimension;
+  }
+  void setStepper(const ResumableStepper* stepper) { stepper_ = stepper; }
+  /// The run continues from a restart file's increment: counters, load factors and the vectors as they were.
+  void resumeAt(const ContinuationPoint& p) {
+    point_ = p;
+    increments = p.increments;
+    failedAttempts = p.failedAttempts;
+    lastLambda_ = p.lambda;
+    previousLambda_ = p.previousLambda;
+    currentX_ = p.x;
+    previousX_ = p.previousX;
+    first_ = false;
+    start_ = Clock::now() - std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(p.wallSeconds));
+  }
+  /// While the resumed stepper re-creates LOCA's state, LOCA's calls leave the model alone.
+  void setResuming(bool resuming) { resuming_ = resuming; }
 
   int increments = 0, failedAttempts = 0;
   double lastLambda() const { return lastLambda_; }
+  /// The restart file's scalars and vectors of the last converged increment.
+  std::vector<io::RestartRecord> restartRecords() const {
+    std::vector<io::RestartRecord> out;
+    const bool writer = currentX_->getMap()->getComm()->getRank() == 0;
+    if (writer) {
+      out.push_back({io::restart_kind::kRun, 0, point_.record()});
+      out.push_back({io::restart_kind::kStepSize, 0, point_.stepSizeState});
+    }
+    appendNodeRecords(*point_.x, dimension_, io::restart_kind::kDisplacement, out);
+    appendNodeRecords(*point_.previousX, dimension_, io::restart_kind::kPreviousDisplacement, out);
+    return out;
+  }
   bool initialStateSolved() const { return !first_; }
   bool lastAttemptFailed = false;  ///< the latest attempt failed (no converged increment since)
   SolveFailure lastFailure;        ///< why it failed
@@ -192,6 +431,21 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     return r;
   }
 
+  /// Asks the control after an increment (or a failed attempt); writes and stops as it says.
+  void checkpoint(bool converged) {
+    if (checkpoint_ == nullptr) return;
+    const auto decision = checkpoint_->decide(increments, converged);
+    if (decision.write) checkpoint_->write(restartRecords());
+    if (decision.stop) throw CheckpointStop{decision.reason};
+  }
+
+  CheckpointControl* checkpoint_ = nullptr;
+  const ResumableStepper* stepper_ = nullptr;
+  ContinuationPoint point_;
+  RCP<const model::Vector> currentX_, previousX_;
+  double previousLambda_ = 0, finalLambda_ = 1;
+  int dimension_ = 1;
+  bool resuming_ = false;
   model::IncrementalState& state_;
   const continuation::ContactEventSource& events_;
   IncrementObserver& observer_;
@@ -332,14 +586,33 @@ RunSummary ContinuationDriver::run() {
   auto params = locaParameters(piro_, observers, errors);
   auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(StepSizeContext{*model_, betaState})));
 
+  // A restarted run starts from the restart file's increment k: x_k and λ_k are the initial guess and
+  // LOCA's Initial Value (taken as converged, not solved again).
+  ContinuationPoint resumed;
+  if (resume_ != nullptr) {
+    resumed.read(resume_->at(io::restart_kind::kRun, 0, "the continuation"));
+    const auto* state = resume_->find(io::restart_kind::kStepSize, 0);
+    if (state != nullptr) resumed.stepSizeState = *state;
+    resumed.x = vectorFromNodeRecords(model_->ownedDofMap(), model_->dimension(), io::restart_kind::kDisplacement, *resume_);
+    resumed.previousX = vectorFromNodeRecords(model_->ownedDofMap(), model_->dimension(),
+                                              io::restart_kind::kPreviousDisplacement, *resume_);
+    params->sublist("LOCA").sublist("Stepper").set("Initial Value", resumed.lambda);
+  }
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
   LOCA::ParameterVector p;
   p.addParameter("Load Factor", lambda0);
-  auto x0 = model_->getNominalValues().get_x()->clone_v();
+  RCP<Thyra::VectorBase<double>> x0 =
+      resume_ != nullptr ? Thyra::createVector(Teuchos::rcp_const_cast<model::Vector>(resumed.x), model_->get_x_space())
+                               ->clone_v()
+                         : model_->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_, p, 0, true));
   auto bookkeeper = rcp(new IncrementBookkeeper(*model_, *model_, observer_, *newton, contactBeta ? &betaState : nullptr,
                                                 betaState.settings().counted, lambda0));
+  if (checkpoint_ != nullptr)
+    bookkeeper->enableCheckpoints(checkpoint_, piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value"),
+                                  model_->dimension());
+  if (resume_ != nullptr) bookkeeper->resumeAt(resumed);
   group->setSaveDataStrategy(bookkeeper);
 
   RunSummary summary;
@@ -347,7 +620,12 @@ RunSummary ContinuationDriver::run() {
   const int jacobiansBefore = model_->jacobianEvaluations();
   const long krylovBefore = iterativeSolveLog().iterations;
   try {
-    LOCA::Stepper stepper(globalData, group, newtonTests.test(), params);
+    ResumableStepper stepper(globalData, group, newtonTests.test(), params);
+    bookkeeper->setStepper(&stepper);
+    if (resume_ != nullptr) {
+      stepper.resumeFrom(resumed, piro_.sublist("LOCA").sublist("Predictor").get<std::string>("Method") == "Secant",
+                         [bookkeeper](bool resuming) { bookkeeper->setResuming(resuming); });
+    }
     const auto status = stepper.run();
     summary.finished = status == LOCA::Abstract::Iterator::Finished;
     if (!summary.finished) {
@@ -368,6 +646,9 @@ RunSummary ContinuationDriver::run() {
       cause.locaErrors = errors->str();
       summary.message = stopMessage(cause);
     }
+  } catch (const CheckpointStop& stop) {
+    summary.checkpointed = true;
+    summary.message = stop.reason;
   } catch (const std::exception& e) {
     summary.message = solverErrorMessage(newtonTests, bookkeeper->lastLambda(), e.what());
   } catch (const char* e) {

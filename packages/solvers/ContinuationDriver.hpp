@@ -8,6 +8,7 @@
 #include <NOX_Observer.hpp>
 #include <Teuchos_ParameterList.hpp>
 
+#include "io/RestartFile.hpp"
 #include "model/ContactMechanicsModel.hpp"
 
 namespace contessa::solvers {
@@ -37,8 +38,26 @@ class IncrementObserver {
   virtual void attemptFailed(const IncrementReport& /*report*/) {}
 };
 
+/// When the run writes a restart file and whether it stops after it (the app's policy: every N increments,
+/// signals, wall time; docs/user-guide.md, "Checkpoint and restart"). Both calls are collective.
+class CheckpointControl {
+ public:
+  struct Decision {
+    bool write = false, stop = false;
+    std::string reason;  ///< why it stops, for the log
+  };
+  virtual ~CheckpointControl() = default;
+  /// After converged increment `increments` (`converged`), or after a failed attempt that followed it: the
+  /// same answer on every rank.
+  virtual Decision decide(int increments, bool converged) = 0;
+  /// Writes the restart file of the last converged increment: the driver's records plus the model's
+  /// committed state (which is that increment's, also after a failed attempt rolled back).
+  virtual void write(std::vector<io::RestartRecord> driverRecords) = 0;
+};
+
 struct RunSummary {
   bool finished = false;  ///< reached the final load factor
+  bool checkpointed = false;  ///< stopped after writing a restart file (message: why)
   std::string message;    ///< why not, when not
   int increments = 0, failedAttempts = 0, newtonIterations = 0, linearSolves = 0;
   long linearIterations = 0;  ///< Krylov iterations of every linear solve (0 with a direct solver)
@@ -51,9 +70,16 @@ class ContinuationDriver {
   /// `iterationObserver` (optional) also sees every Newton solve (e.g. JacobianCheckObserver).
   ContinuationDriver(const Teuchos::RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
                      IncrementObserver& observer, Teuchos::RCP<NOX::Observer> iterationObserver = Teuchos::null);
+  /// Writes restart files and stops for them as `control` decides (it must outlive run()).
+  void setCheckpointControl(CheckpointControl* control) { checkpoint_ = control; }
+  /// Continues from a restart file instead of solving the initial state: the model's committed state must
+  /// be restored already (ContactMechanicsModel::restoreCommittedState).
+  void resumeFrom(const io::RestartRecords& records) { resume_ = &records; }
   RunSummary run();
 
  private:
+  CheckpointControl* checkpoint_ = nullptr;
+  const io::RestartRecords* resume_ = nullptr;
   Teuchos::RCP<model::ContactMechanicsModel> model_;
   Teuchos::ParameterList piro_;
   IncrementObserver& observer_;

@@ -147,3 +147,35 @@ TEST(ContactBetaControl, QuietGrowthByNewtonIterations) {
   // To the cap, here the final load: (1 − 0.125) / 0.125 = 7 < Max Growth Factor 8.
   EXPECT_EQ(capped.betaFor(nodesAt({5.0})).beta, 7.0);
 }
+
+// Checkpoint and restart: a control restored from another's state() decides every later attempt as the
+// original does (the learned event rate, the carried β, the counters), and a state of another size is
+// refused.
+TEST(ContactBetaControl, ARestoredStateDecidesAsTheOriginal) {
+  cb::ContactBetaControl original(settings(2));
+  original.firstAttempt(0.0);
+  original.restartAtFirstIterate(nodesAt({0.25, 0.5, 0.75}));
+  original.afterBetaRestart();
+  // A converged increment with 3 events where 2 were predicted: the event rate is learned.
+  original.afterConvergedIncrement(0.078125, nodesAt({0.25, 0.5, 0.75}), 5);
+  const auto state = original.state();
+
+  cb::ContactBetaControl restored(settings(2));
+  restored.restoreState(state);
+  EXPECT_EQ(restored.state(), state);
+  EXPECT_EQ(restored.eventRateScale(), original.eventRateScale());
+  EXPECT_EQ(restored.beta(), original.beta());
+  for (const auto& nodes : {nodesAt({0.5, 0.625, 2.0}), nodesAt({0.25, 0.375, 0.5, 4.0})}) {
+    EXPECT_EQ(restored.restartAtFirstIterate(nodes), original.restartAtFirstIterate(nodes));
+    EXPECT_EQ(restored.beta(), original.beta());
+    const auto a = original.afterBetaRestart(), b = restored.afterBetaRestart();
+    EXPECT_EQ(a.step, b.step);
+    EXPECT_EQ(a.checkFirstIterate, b.checkFirstIterate);
+    const auto c = original.afterConvergedIncrement(0.25, nodes, 4), d = restored.afterConvergedIncrement(0.25, nodes, 4);
+    EXPECT_EQ(c.step, d.step);
+    EXPECT_EQ(original.state(), restored.state());
+  }
+  auto shorter = state;
+  shorter.pop_back();
+  EXPECT_THROW(restored.restoreState(shorter), std::invalid_argument);
+}

@@ -1,0 +1,226 @@
+#include "Checkpoint.hpp"
+
+#include <csignal>
+#include <initializer_list>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <mpi.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+
+#include "StopSignals.hpp"
+#include "common/Error.hpp"
+
+namespace contessa::app {
+
+namespace {
+
+// Run-control parameters: a restarted run may change them.
+bool runControl(const std::string& path) {
+  for (const char* prefix : {"Problem/Title", "Problem/Output/Checkpoint/", "Problem/Regression/",
+                             "Piro/LOCA/Stepper/Max Steps", "Piro/NOX/Printing/"})
+    if (path.rfind(prefix, 0) == 0) return true;
+  return false;
+}
+
+void flatten(const Teuchos::ParameterList& list, const std::string& prefix, std::ostringstream& out) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string path = prefix + list.name(it);
+    const auto& entry = list.entry(it);
+    if (entry.isList()) {
+      flatten(Teuchos::getValue<Teuchos::ParameterList>(entry), path + "/", out);
+    } else if (!runControl(path)) {
+      std::ostringstream value;
+      value.precision(17);
+      value << entry.getAny(false);
+      out << path << " = " << value.str() << "\n";
+    }
+  }
+}
+
+std::string signalName(int signal) {
+  switch (signal) {
+    case SIGTERM: return "SIGTERM";
+    case SIGUSR1: return "SIGUSR1";
+    case SIGINT: return "SIGINT";
+    default: return "signal " + std::to_string(signal);
+  }
+}
+
+std::string shortSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", s);
+  return text;
+}
+
+}  // namespace
+
+std::string restartDeckText(const Teuchos::ParameterList& deck) {
+  std::ostringstream out;
+  flatten(deck, "", out);
+  return out.str();
+}
+
+io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::Mesh& mesh) {
+  io::RestartContent c;
+  c.deck = restartDeckText(deck);
+  c.nodes = mesh.numNodes();
+  c.elements = mesh.numElements();
+  std::uint64_t hash = io::fnv1a(mesh.coordinates.data(), mesh.coordinates.size() * sizeof(double));
+  for (const auto& block : mesh.blocks)
+    hash = io::fnv1a(block.connectivity.data(), block.connectivity.size() * sizeof(block.connectivity[0]), hash);
+  c.meshHash = hash;
+  return c;
+}
+
+RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity,
+                         int dimension) {
+  // Rank 0 reads the file; every rank decodes the same bytes, so every rank throws the same error.
+  std::string bytes, error;
+  if (comm.getRank() == 0) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      error = "--restart " + path + ": cannot open the restart file (no such file or no permission)";
+    } else {
+      std::ostringstream text;
+      text << in.rdbuf();
+      bytes = text.str();
+    }
+  }
+  long long sizes[2] = {static_cast<long long>(bytes.size()), static_cast<long long>(error.size())};
+  Teuchos::broadcast(comm, 0, 2, sizes);
+  bytes.resize(static_cast<std::size_t>(sizes[0]));
+  error.resize(static_cast<std::size_t>(sizes[1]));
+  if (sizes[0] > 0) Teuchos::broadcast(comm, 0, static_cast<int>(sizes[0]), bytes.data());
+  if (sizes[1] > 0) Teuchos::broadcast(comm, 0, static_cast<int>(sizes[1]), error.data());
+  requireInput(error.empty(), error);
+
+  RestartInput in;
+  in.content = io::decodeRestart(bytes, path);
+  const auto& c = in.content;
+  const std::string difference = io::deckDifference(c.deck, identity.deck);
+  requireInput(difference.empty(), "--restart " + path + ": written for another deck: " + difference);
+  requireInput(c.nodes == identity.nodes && c.elements == identity.elements,
+               "--restart " + path + ": written for another mesh (" + std::to_string(c.nodes) + " nodes and " +
+                   std::to_string(c.elements) + " elements there, " + std::to_string(identity.nodes) + " and " +
+                   std::to_string(identity.elements) + " here)");
+  requireInput(c.meshHash == identity.meshHash, "--restart " + path +
+                                                    ": written for another mesh (the same node and element counts, "
+                                                    "other coordinates or connectivity)");
+  for (const auto& r : c.records)
+    if (r.kind == io::restart_kind::kHistoryRow) {
+      requireInput(r.id == static_cast<std::int64_t>(in.historyRows.size()),
+                   "--restart " + path + ": corrupt restart file (history rows out of order)");
+      in.historyRows.push_back(r.values);
+    }
+  requireInput(!in.historyRows.empty(), "--restart " + path + ": corrupt restart file (no history rows)");
+  // Every rank reads its own nodes' displacements from it later: a file without all of them is refused
+  // here, on every rank alike.
+  const io::RestartRecords index(c.records);
+  requireInput(index.find(io::restart_kind::kRun, 0) != nullptr,
+               "--restart " + path + ": corrupt restart file (no continuation record)");
+  const auto dim = static_cast<std::size_t>(dimension);
+  for (std::int64_t node = 0; node < c.nodes; ++node)
+    for (const auto kind : {io::restart_kind::kDisplacement, io::restart_kind::kPreviousDisplacement}) {
+      const auto* r = index.find(kind, node);
+      requireInput(r != nullptr && r->size() == dim, "--restart " + path + ": corrupt restart file (node " +
+                                                          std::to_string(node + 1) + " has no displacement record)");
+    }
+  return in;
+}
+
+RunCheckpoints::RunCheckpoints(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const model::ContactMechanicsModel& model,
+                               const output::ResultsOutput& results, std::string path, io::RestartContent identity,
+                               int every, double maxWallSeconds, Clock::time_point runStart, bool verbose)
+    : comm_(comm),
+      model_(model),
+      results_(results),
+      path_(std::move(path)),
+      identity_(std::move(identity)),
+      every_(every),
+      maxWallSeconds_(maxWallSeconds),
+      runStart_(runStart),
+      lastIncrement_(Clock::now()),
+      verbose_(verbose) {}
+
+solvers::CheckpointControl::Decision RunCheckpoints::decide(int increments, bool converged) {
+  const auto now = Clock::now();
+  if (converged) {
+    longestIncrement_ = std::max(longestIncrement_, std::chrono::duration<double>(now - lastIncrement_).count());
+    lastIncrement_ = now;
+  }
+  // Rank 0's clock decides the wall time; any rank's signal counts (mpirun may deliver it to some only).
+  int local[2] = {pendingStopSignal(), 0}, agreed[2] = {0, 0};
+  const double elapsed = std::chrono::duration<double>(now - runStart_).count();
+  const double needed = 1.5 * longestIncrement_ + writeSeconds_;
+  if (comm_->getRank() == 0 && maxWallSeconds_ > 0 && elapsed + needed > maxWallSeconds_) local[1] = 1;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 2, local, agreed);
+  Decision d;
+  if (agreed[0] != 0) {
+    d.stop = true;
+    d.reason = signalName(agreed[0]) + " received";
+  } else if (agreed[1] != 0) {
+    d.stop = true;
+    d.reason = "Problem/Output/Checkpoint/Max Wall Time = " + shortSeconds(maxWallSeconds_) + " s would not hold another " +
+               "increment (" + shortSeconds(elapsed) + " s elapsed, the longest increment " +
+               shortSeconds(longestIncrement_) + " s)";
+  }
+  d.write = d.stop || (converged && every_ > 0 && increments % every_ == 0);
+  stopping_ = d.stop;
+  return d;
+}
+
+void RunCheckpoints::write(std::vector<io::RestartRecord> driverRecords) {
+  const auto start = Clock::now();
+  // Every rank's records (its elements, slave nodes, displacements), gathered to rank 0 as encoded
+  // pieces; rank 0 adds the history rows and writes the file.
+  io::RestartContent piece;
+  piece.records = model_.committedStateRecords();
+  piece.records.insert(piece.records.end(), std::make_move_iterator(driverRecords.begin()),
+                       std::make_move_iterator(driverRecords.end()));
+  const std::string bytes = io::encodeRestart(std::move(piece));
+  const int ranks = comm_->getSize();
+  const int mySize = static_cast<int>(bytes.size());
+  std::vector<int> sizes(static_cast<std::size_t>(ranks), 0), offsets(static_cast<std::size_t>(ranks), 0);
+  const MPI_Comm mpi = *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();
+  MPI_Gather(&mySize, 1, MPI_INT, sizes.data(), 1, MPI_INT, 0, mpi);
+  std::string all;
+  if (comm_->getRank() == 0) {
+    for (int r = 1; r < ranks; ++r) offsets[r] = offsets[r - 1] + sizes[r - 1];
+    all.resize(static_cast<std::size_t>(offsets[ranks - 1] + sizes[ranks - 1]));
+  }
+  MPI_Gatherv(bytes.data(), mySize, MPI_CHAR, all.data(), sizes.data(), offsets.data(), MPI_CHAR, 0, mpi);
+  std::string error;
+  if (comm_->getRank() == 0) {
+    io::RestartContent content = identity_;
+    for (int r = 0; r < ranks; ++r) {
+      auto part = io::decodeRestart(all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(sizes[r])),
+                                    path_);
+      content.records.insert(content.records.end(), std::make_move_iterator(part.records.begin()),
+                             std::make_move_iterator(part.records.end()));
+    }
+    const auto& rows = results_.historyRows();
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      content.records.push_back({io::restart_kind::kHistoryRow, static_cast<std::int64_t>(k), rows[k]});
+    error = io::writeFileAtomically(path_, io::encodeRestart(std::move(content)));
+  }
+  int size = static_cast<int>(error.size());
+  Teuchos::broadcast(*comm_, 0, &size);
+  error.resize(static_cast<std::size_t>(size));
+  if (size > 0) Teuchos::broadcast(*comm_, 0, size, error.data());
+  if (!error.empty()) {
+    failure_ = "cannot write the restart file " + error;
+    throw std::runtime_error(failure_);
+  }
+  writeSeconds_ = std::chrono::duration<double>(Clock::now() - start).count();
+  if (comm_->getRank() == 0 && verbose_ && !stopping_) {  // a stop says so in its own line
+    std::printf("contessa: checkpoint: wrote %s at step %lld\n", path_.c_str(),
+                static_cast<long long>(results_.historyRows().size()) - 1);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace contessa::app

@@ -1,0 +1,68 @@
+#pragma once
+// Checkpoint and restart for a run (docs/user-guide.md, "Checkpoint and restart"): when the restart file is
+// written (every N increments, a stop signal, Max Wall Time), writing it (every rank's records gathered to
+// rank 0, written atomically), and reading one back for --restart with the checks that it belongs to this
+// deck and mesh.
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_ParameterList.hpp>
+
+#include "deck/ProblemDefinition.hpp"
+#include "io/RestartFile.hpp"
+#include "model/ContactMechanicsModel.hpp"
+#include "output/ResultsOutput.hpp"
+#include "solvers/ContinuationDriver.hpp"
+
+namespace contessa::app {
+
+/// The deck as a restart must match it: "path = value" lines of the validated deck (defaults filled in),
+/// without the run-control parameters a restart may change: Problem/Title, Problem/Output/Checkpoint,
+/// Problem/Regression, Piro/LOCA/Stepper/Max Steps and Piro/NOX/Printing.
+std::string restartDeckText(const Teuchos::ParameterList& deck);
+
+/// What identifies the run in its restart file: the deck text above and the mesh (node and element
+/// counts, a hash of the coordinates and connectivity).
+io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::Mesh& mesh);
+
+/// A restart file read for --restart: its records and the history rows it keeps (steps 0..k).
+struct RestartInput {
+  io::RestartContent content;
+  std::vector<std::vector<double>> historyRows;
+};
+/// Collective: rank 0 reads `path`, every rank checks it against `identity` and throws InputError alike
+/// ("--restart PATH: written for another deck: ..."; missing, truncated or corrupt files too).
+/// `dimension`: the mesh's (each node's displacement record has as many values).
+RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity,
+                         int dimension);
+
+/// The run's policy: a restart file every `every` increments, and a stop (with one) on a signal or when
+/// the next increment would not fit in `maxWallSeconds` of the run.
+class RunCheckpoints : public solvers::CheckpointControl {
+ public:
+  RunCheckpoints(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const model::ContactMechanicsModel& model,
+                 const output::ResultsOutput& results, std::string path, io::RestartContent identity, int every,
+                 double maxWallSeconds, std::chrono::steady_clock::time_point runStart, bool verbose);
+  Decision decide(int increments, bool converged) override;
+  void write(std::vector<io::RestartRecord> driverRecords) override;
+  /// Why the restart file could not be written ("" while it could), on every rank.
+  const std::string& failure() const { return failure_; }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  const model::ContactMechanicsModel& model_;
+  const output::ResultsOutput& results_;
+  std::string path_;
+  io::RestartContent identity_;
+  int every_;
+  double maxWallSeconds_;
+  Clock::time_point runStart_, lastIncrement_;
+  double longestIncrement_ = 0, writeSeconds_ = 0;
+  bool verbose_, stopping_ = false;
+  std::string failure_;
+};
+
+}  // namespace contessa::app
