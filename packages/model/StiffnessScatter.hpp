@@ -39,7 +39,7 @@ class StiffnessScatter {
 
   /// Copies the assembled values into `W` (whose graph must be `ownedGraph`), adds the ghost rows of
   /// the other ranks to it (collective on several ranks), and makes `identityRows` (owned local rows)
-  /// rows of the identity. Fills `W` the first time; never again.
+  /// rows of the identity. Fills `W` the first time; never again (a rebuilt graph gets a new W).
   void copyTo(CrsMatrix& W, const std::vector<LO>& identityRows) const;
 
   /// Position of entry (row, col) (overlapped local DOFs) in the value arrays: ≥ 0 in the owned
