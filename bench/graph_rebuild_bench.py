@@ -37,11 +37,11 @@ def phase(log, name):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--reach", type=float, nargs="+", default=[0.0, 0.5, 2.5])
-    parser.add_argument("--ranks", type=int, default=1)
-    parser.add_argument("--work", default=None)
-    parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
+    options = {"--reach": dict(type=float, nargs="+", default=[0.0, 0.5, 2.5]), "--ranks": dict(type=int, default=1),
+               "--work": dict(default=None), "--contessa": dict(default=os.path.join(ROOT, "build", "bin", "contessa"))}
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    for name, option in options.items():
+        parser.add_argument(name, **option)
     args = parser.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="graph_rebuild_bench_")
     print(f"load average {os.getloadavg()[0]:.2f}; work directory {work}\n")
