@@ -146,6 +146,14 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // 2. Partition, model, output.
   const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
   auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, partition, linearSolver));
+  // A rebuild of the matrix graph (the contact left the couplings reserved for it) is a line in the log.
+  if (root && !cl.quiet)
+    model->onGraphRebuild([](const model::GraphRebuild& r) {
+      std::printf("contessa: matrix graph rebuilt (%d): %s; contact couplings reserved around the current "
+                  "configuration, %lld entries, %.3g s\n",
+                  r.count, r.reason.c_str(), r.entries, r.seconds);
+      std::fflush(stdout);
+    });
   // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
   solvers::provideNearNullSpace(*linearSolver, *model->ownedDofMap(), problem.mesh);
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description,
@@ -227,6 +235,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   report.exitStatus = exitStatus;
   report.directFactorizations = solvers::mumpsCounters().factorizations;
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
+  report.graphRebuilds = model->graphRebuilds();
+  report.graphRebuildSeconds = model->graphRebuildSeconds();
   report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   gatherPeakMemory(*comm, report);
   if (root) {

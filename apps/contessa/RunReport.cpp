@@ -88,6 +88,8 @@ std::string summaryJson(const RunReport& r) {
       << "  \"linear_iterations\": " << s.linearIterations << ",\n"
       << "  \"direct_factorizations\": " << r.directFactorizations << ",\n"
       << "  \"symmetric_factorizations\": " << r.symmetricFactorizations << ",\n"
+      << "  \"graph_rebuilds\": " << r.graphRebuilds << ",\n"
+      << "  \"graph_rebuild_seconds\": " << number(r.graphRebuildSeconds) << ",\n"
       << "  \"wall_seconds\": " << number(r.wallSeconds) << ",\n"
       << "  \"peak_memory_bytes\": {\"min\": " << lo << ", \"max\": " << hi << ", \"per_rank\": [";
   for (std::size_t k = 0; k < r.peakBytesPerRank.size(); ++k) out << (k ? ", " : "") << r.peakBytesPerRank[k];

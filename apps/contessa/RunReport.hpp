@@ -23,6 +23,8 @@ struct RunReport {
   double wallSeconds = 0;
   long directFactorizations = 0;     ///< MUMPS factorisations of the run
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
+  int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)
+  double graphRebuildSeconds = 0;    ///< their total time
   std::vector<long long> peakBytesPerRank;  ///< rank 0 only (gathered)
 };
 

@@ -84,6 +84,7 @@ const char* phaseName(Phase phase) {
     case Phase::ElementJacobian: return "element kernels, Jacobian passes";
     case Phase::Assembly: return "assembly: scatter, Dirichlet, Export";
     case Phase::Contact: return "contact: search, elements, scatter";
+    case Phase::GraphRebuild: return "matrix graph rebuilds (contact)";
     case Phase::MumpsInput: return "MUMPS input (pattern, values)";
     case Phase::MumpsAnalysis: return "MUMPS analysis (JOB=1)";
     case Phase::MumpsFactorization: return "MUMPS factorisation (JOB=2)";

@@ -20,6 +20,7 @@ enum class Phase : int {
   ElementJacobian,     ///< element kernels in passes with the tangent
   Assembly,            ///< zeroing, scatter outside the element loop, Dirichlet rows, Export to owned rows
   Contact,             ///< contact search, contact elements and their scatter
+  GraphRebuild,        ///< the matrix graph rebuilt when the contact left its reserved couplings
   MumpsInput,          ///< MUMPS' distributed input (pattern, values)
   MumpsAnalysis,       ///< MUMPS JOB=1 (ordering, symbolic)
   MumpsFactorization,  ///< MUMPS JOB=2

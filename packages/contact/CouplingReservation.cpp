@@ -10,29 +10,31 @@ namespace contessa::contact {
 namespace {
 
 template <int Dim>
-Vector<Dim> referencePoint(const std::vector<double>& X, GlobalIndex node) {
+Vector<Dim> pointOf(const ReservedPosition& position, GlobalIndex node) {
   Vector<Dim> p{};
-  for (int c = 0; c < Dim; ++c) p[c] = X[static_cast<std::size_t>(node) * Dim + c];
+  position(node, p.data());
   return p;
 }
 
-/// The search-based branch: master nodes of the facets whose reference box, enlarged by the reach,
-/// contains the slave node's reference position.
+/// The search-based branch: master nodes of the facets whose box, enlarged by the reach, contains the
+/// slave node, both in the configuration reserved around.
 template <int Dim>
-void reserveBySearch(const ContactInterfaceSpec& spec, const std::vector<double>& X, const std::vector<char>& slaves,
+void reserveBySearch(const ContactInterfaceSpec& spec, const ReservedPosition& position, const std::vector<char>& slaves,
                      CouplingReservation& out) {
   const std::size_t perFacet = static_cast<std::size_t>(spec.nodesPerFacet());
   const std::size_t numFacets = spec.numMasterFacets();
   // h: the largest master facet size, as the run-time search measures it (longest node-to-node distance).
   double h = 0;
   std::vector<BoundingBox<Dim>> boxes(numFacets);
-  for (std::size_t f = 0; f < numFacets; ++f)
+  std::vector<Vector<Dim>> x(perFacet);
+  for (std::size_t f = 0; f < numFacets; ++f) {
     for (std::size_t a = 0; a < perFacet; ++a) {
-      const auto xa = referencePoint<Dim>(X, spec.masterFacets[f * perFacet + a]);
-      boxes[f].include(xa);
-      for (std::size_t b = a + 1; b < perFacet; ++b)
-        h = std::max(h, norm(subtract(referencePoint<Dim>(X, spec.masterFacets[f * perFacet + b]), xa)));
+      x[a] = pointOf<Dim>(position, spec.masterFacets[f * perFacet + a]);
+      boxes[f].include(x[a]);
     }
+    for (std::size_t a = 0; a < perFacet; ++a)
+      for (std::size_t b = a + 1; b < perFacet; ++b) h = std::max(h, norm(subtract(x[b], x[a])));
+  }
   out.reach = CouplingReservation::kFacetSizes * h + std::max(0.0, spec.searchReach);
   for (auto& box : boxes) box.enlarge(out.reach);
   const BoundingBoxTree<Dim> tree(std::move(boxes));
@@ -43,7 +45,7 @@ void reserveBySearch(const ContactInterfaceSpec& spec, const std::vector<double>
   for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
     if (slaves[k]) {
       hits.clear();
-      tree.query(referencePoint<Dim>(X, spec.slaveNodes[k]), hits);
+      tree.query(pointOf<Dim>(position, spec.slaveNodes[k]), hits);
       nodes.clear();
       for (int f : hits)
         for (std::size_t a = 0; a < perFacet; ++a)
@@ -65,7 +67,7 @@ std::size_t CouplingReservation::numPairs(const std::vector<char>& slaves) const
   return pairs;
 }
 
-CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const std::vector<double>& referenceCoordinates,
+CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const ReservedPosition& position,
                                      const std::vector<char>& slaves, std::size_t wholeSurfacePairs) {
   CouplingReservation out;
   if (spec.rigidMaster) {
@@ -83,10 +85,19 @@ CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const std
     return out;
   }
   if (spec.dimension == 2)
-    reserveBySearch<2>(spec, referenceCoordinates, slaves, out);
+    reserveBySearch<2>(spec, position, slaves, out);
   else
-    reserveBySearch<3>(spec, referenceCoordinates, slaves, out);
+    reserveBySearch<3>(spec, position, slaves, out);
   return out;
+}
+
+CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const std::vector<double>& coordinates,
+                                     const std::vector<char>& slaves, std::size_t wholeSurfacePairs) {
+  const auto dim = static_cast<std::size_t>(spec.dimension);
+  const ReservedPosition position = [&](GlobalIndex node, double* x) {
+    for (std::size_t c = 0; c < dim; ++c) x[c] = coordinates[static_cast<std::size_t>(node) * dim + c];
+  };
+  return reserveCouplings(spec, position, slaves, wholeSurfacePairs);
 }
 
 bool isReserved(const CouplingReservation& reservation, std::size_t k, GlobalIndex node) {

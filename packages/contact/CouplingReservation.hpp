@@ -1,22 +1,27 @@
 #pragma once
 // Which contact couplings the matrix graph reserves: for each slave node, the deformable master nodes its
-// rows may ever couple to. The graph is built once (model::ContactMechanicsModel::buildGraph), so this set
-// must cover every master facet the run-time search (ContactInterface::evaluate) can pair the node with.
+// rows may couple to, around one configuration of the interface. The model reserves around the
+// reference configuration at set-up, and again around the current configuration whenever a Jacobian
+// evaluation pairs a slave node with a master facet outside the reservation: the contact part of the graph
+// is then rebuilt and the Jacobian re-created on it (model::ContactMechanicsModel::rebuildGraph), so the
+// graph follows the contact however far it slides.
 //
 // Reach rule (docs/user-guide.md, "Matrix graph of a contact interface"), deck parameter Search Reach:
 //   - automatic (Search Reach < 0, the default): a small interface (slave nodes × master nodes ≤
 //     kWholeSurfacePairs) reserves the whole master surface for every slave node, so a node may slide
-//     anywhere on it; a larger one is searched as below with Search Reach = 0;
-//   - search-based (any larger interface, or Search Reach ≥ 0 given) reserves, for slave node k, the nodes of the master facets whose reference bounding box
-//     enlarged by the reach r = kFacetSizes · h + Search Reach contains the node's reference position, h
-//     the largest master facet size (its longest node-to-node distance). One h is the run-time search's own
-//     enlargement of the current boxes; the other h plus Search Reach is the relative motion (sliding plus
-//     relative deformation, per component) a slave node may make against a master facet before the facet
-//     can become a candidate the graph does not hold. Found with a BoundingBoxTree: O((n + m) log m).
+//     anywhere on it and the graph is never rebuilt; a larger one is searched as below with Search Reach = 0;
+//   - search-based (any larger interface, or Search Reach ≥ 0 given) reserves, for slave node k, the nodes
+//     of the master facets whose bounding box in the configuration reserved around, enlarged by the reach
+//     r = kFacetSizes · h + Search Reach, contains the node's position there, h the largest master facet
+//     size (its longest node-to-node distance) in that configuration. One h is the run-time search's own
+//     enlargement of the current boxes (ContactInterface::evaluate), so every pairing the search can make
+//     in that configuration is reserved, and a rebuild around it always holds the pairing that asked for
+//     it; the other h plus Search Reach is the margin: the relative motion (sliding plus relative
+//     deformation, per component) a slave node may make against a master facet before the next rebuild.
+//     Found with a BoundingBoxTree: O((n + m) log m).
 //   - a rigid master has no unknowns: it needs no coupling beyond the slave node's own DOFs.
-// A pairing outside the reserved set at run time stops the run with a message naming the interface, the
-// slave node and Search Reach (ContactMechanicsModel::assemble).
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "contact/InterfaceSpec.hpp"
@@ -51,10 +56,18 @@ struct CouplingReservation {
   std::size_t numPairs(const std::vector<char>& slaves) const;
 };
 
-/// The couplings of interface `spec` for the slave nodes k with slaves[k] != 0 (a rank's owned ones), from
-/// the mesh's reference coordinates (spec.dimension values per node). `wholeSurfacePairs` is the rule's
+/// Position of a mesh node in the configuration reserved around: writes spec.dimension values to x.
+using ReservedPosition = std::function<void(GlobalIndex node, double* x)>;
+
+/// The couplings of interface `spec` for the slave nodes k with slaves[k] != 0 (a rank's owned ones),
+/// around the configuration `position` gives (the reference one at set-up, the current one at a rebuild;
+/// only the interface's slave and master nodes are asked for). `wholeSurfacePairs` is the rule's
 /// automatic threshold (a parameter so tests and benchmarks can vary it).
-CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const std::vector<double>& referenceCoordinates,
+CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const ReservedPosition& position,
+                                     const std::vector<char>& slaves,
+                                     std::size_t wholeSurfacePairs = CouplingReservation::kWholeSurfacePairs);
+/// The same around coordinates given for every mesh node (spec.dimension values per node).
+CouplingReservation reserveCouplings(const ContactInterfaceSpec& spec, const std::vector<double>& coordinates,
                                      const std::vector<char>& slaves,
                                      std::size_t wholeSurfacePairs = CouplingReservation::kWholeSurfacePairs);
 

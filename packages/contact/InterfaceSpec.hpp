@@ -36,7 +36,8 @@ struct ContactInterfaceSpec {
   RigidSurface rigidSurface;  ///< when rigidMaster
   ContactLawParameters law;
   /// Distance a slave node may move relative to the master beyond one master facet size before it needs a
-  /// matrix coupling that was not reserved; < 0: automatic (deck: Search Reach; CouplingReservation.hpp).
+  /// matrix coupling that was not reserved (the graph is then rebuilt around the current configuration);
+  /// < 0: automatic (deck: Search Reach; CouplingReservation.hpp).
   double searchReach = -1.0;
   /// Two Pass: this spec is the interface's second pass, slave and master swapped, with its own history;
   /// its force acts on the first pass's master body. `name` is the deck's name in both passes.

@@ -254,11 +254,13 @@ RCP<const ParameterList> contactValidParameters() {
   setChoice(*p, "Law", ContactLawFactory::defaultLaw(), ContactLawFactory::names(),
             "Contact law; its parameters are listed under Contact laws below");
   p->set("Search Reach", -1.0,
-         "Matrix graph of the interface (built once): a length >= 0 couples each slave node to the deformable "
-         "master facets within 2 x (largest master facet) + Search Reach of it, so slave nodes may move up to one "
-         "master facet + Search Reach relative to the master (sliding plus relative deformation, per "
-         "component); -1 = automatic: the whole master surface when slave x master nodes <= 250000, else as 0. "
-         "A run whose contact pairing leaves the reach stops with an error naming this parameter");
+         "Matrix graph of the interface: a length >= 0 couples each slave node to the deformable master facets "
+         "within 2 x (largest master facet) + Search Reach of it, in the reference configuration at the start and "
+         "in the current one whenever a slave node meets a facet beyond its reserved ones (the graph is then "
+         "rebuilt: a line in the log, graph_rebuilds in the run summary); Search Reach is the margin of sliding "
+         "and relative deformation (per component) beyond one master facet between rebuilds: larger, a bigger "
+         "graph and fewer rebuilds. -1 = automatic: the whole master surface when slave x master nodes <= "
+         "250000 (never rebuilt), else as 0");
   p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
   return p;
 }

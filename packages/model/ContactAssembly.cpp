@@ -18,6 +18,10 @@ ContactAssembly::ContactAssembly(const std::vector<contact::ContactInterfaceSpec
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) evaluates[k] = partition.nodeOwner[spec.slaveNodes[k]] == rank;
     interfaces_.push_back(contact::makeContactInterface(spec, evaluates));
   }
+  // The first reservation, around the reference configuration.
+  for (const auto& interface : interfaces_)
+    reservations_.push_back(contact::reserveCouplings(interface->spec(), mesh.coordinates, interface->evaluatesSlave()));
+  outsideByInterface_.assign(interfaces_.size(), 0);
 }
 
 std::vector<mesh::GlobalIndex> ContactAssembly::surfaceNodes(const std::vector<contact::ContactInterfaceSpec>& specs) {
@@ -29,18 +33,16 @@ std::vector<mesh::GlobalIndex> ContactAssembly::surfaceNodes(const std::vector<c
   return nodes;
 }
 
-void ContactAssembly::reserveCouplings(std::vector<std::vector<LO>>& rows) {
-  // Contact couplings are reserved once, by the reach rule of contact::CouplingReservation: the whole
-  // master surface for a small interface, else the master facets within reach of the slave node found by
-  // a box search in the reference configuration, so the graph grows with the surface, not its square.
-  // A rigid master has no unknowns: its slave nodes need only their own DOFs, which their elements hold.
+void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) const {
+  // The reach rule of contact::CouplingReservation: the whole master surface for a small interface, else
+  // the master facets within reach of the slave node found by a box search, so the graph grows with the
+  // surface, not its square. A rigid master has no unknowns: its slave nodes need only their own DOFs,
+  // which their elements hold.
   const int dim = layout_.dimension();
-  reservations_.clear();
-  for (const auto& interface : interfaces_) {
-    const auto& spec = interface->spec();
-    const auto& evaluates = interface->evaluatesSlave();
-    reservations_.push_back(contact::reserveCouplings(spec, mesh_.coordinates, evaluates));
-    const auto& reservation = reservations_.back();
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    const auto& spec = interfaces_[i]->spec();
+    const auto& evaluates = interfaces_[i]->evaluatesSlave();
+    const auto& reservation = reservations_[i];
     if (spec.rigidMaster) continue;
     const auto dofsOf = [&](GO node, LO* out) {
       for (int c = 0; c < dim; ++c) out[c] = layout_.overlapDof(node, c);
@@ -72,6 +74,16 @@ void ContactAssembly::reserveCouplings(std::vector<std::vector<LO>>& rows) {
   }
 }
 
+void ContactAssembly::reserveAround(const double* u) {
+  // Every rank holds every contact surface node in its overlap (DofLayout's replicated nodes), so each
+  // rank reserves for its own slave nodes without communication; the search's boxes are those of the
+  // current configuration, as the run-time search's are.
+  const auto position = positions(u);
+  for (std::size_t i = 0; i < interfaces_.size(); ++i)
+    if (outsideByInterface_[i] != 0)
+      reservations_[i] = contact::reserveCouplings(interfaces_[i]->spec(), position, interfaces_[i]->evaluatesSlave());
+}
+
 contact::ContactInterfaceBase::NodePosition ContactAssembly::positions(const double* u) const {
   const int dim = layout_.dimension();
   const auto& X = mesh_.coordinates;
@@ -80,7 +92,7 @@ contact::ContactInterfaceBase::NodePosition ContactAssembly::positions(const dou
   };
 }
 
-void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial, double* fo, double* dl,
+bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial, double* fo, double* dl,
                                StiffnessScatter* scatter) {
   // Each slave node's owner adds its contact element; rigid masters have no DOFs.
   const int dim = layout_.dimension();
@@ -93,6 +105,7 @@ void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
   const long long none = std::numeric_limits<long long>::max();
   const long long numNodes = mesh_.numNodes();
   long long outsideReach = none;
+  std::vector<int> outside(interfaces_.size(), 0);
   std::string missingCoupling;
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
     const auto& reservation = reservations_[i];
@@ -113,8 +126,8 @@ void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                }
                                if (!withStiffness) return;
                                // dofs: the slave node's, then the master facet's nodes'. A master node beyond the
-                               // reserved reach has no place in the graph; it is agreed on below so that no rank
-                               // leaves the pass while the others wait in its exports.
+                               // reserved reach has no place in the graph: the pairing is agreed on below, so that
+                               // every rank asks for the same rebuild.
                                const GlobalIndex slave = dofs[0] / dim;
                                const auto& slaves = interfaces_[i]->spec().slaveNodes;
                                const std::size_t slaveIndex = static_cast<std::size_t>(
@@ -122,6 +135,7 @@ void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                for (int a = dim; a < n; a += dim)
                                  if (dofs[a] >= 0 && !contact::isReserved(reservation, slaveIndex, dofs[a] / dim)) {
                                    outsideReach = std::min(outsideReach, static_cast<long long>(i) * numNodes + slave);
+                                   outside[i] = 1;
                                    return;
                                  }
                                block.resize(static_cast<std::size_t>(m) * m);
@@ -134,7 +148,7 @@ void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                }
                              });
   }
-  if (!withStiffness) return;
+  if (!withStiffness) return true;
   const Comm& comm = *layout_.comm();
   int mine = missingCoupling.empty() ? 0 : 1, any = mine;
   if (comm.getSize() > 1) Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &mine, &any);
@@ -144,19 +158,23 @@ void ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                : missingCoupling);
   long long first = outsideReach;
   if (comm.getSize() > 1) Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &outsideReach, &first);
-  if (first != none) {
-    // The graph is built once and the solver holds the Jacobian made on it: the evaluation fails on every
-    // rank with the same words. The continuation cuts the step back (each attempt fails at its first
-    // Jacobian, at once) and stops with this reason (exit 1); the user raises Search Reach.
-    const std::size_t i = static_cast<std::size_t>(first / numNodes);
-    const auto& spec = interfaces_[i]->spec();
-    std::ostringstream message;
-    message << "contact interface '" << spec.name << "': slave node " << first % numNodes + 1
-            << " met a master facet beyond the matrix graph's reach " << reservations_[i].reach
-            << " (2 x largest master facet + Search Reach); raise Problem/Contact/" << spec.name
-            << "/Search Reach to how far slave nodes slide on the master";
-    throw std::runtime_error(message.str());
+  outside_.clear();
+  if (first == none) {
+    std::fill(outsideByInterface_.begin(), outsideByInterface_.end(), 0);
+    return true;
   }
+  // Which interfaces reserve again: those where any rank met a pairing outside.
+  outsideByInterface_ = outside;
+  if (comm.getSize() > 1)
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, static_cast<int>(outside.size()), outside.data(),
+                       outsideByInterface_.data());
+  const std::size_t i = static_cast<std::size_t>(first / numNodes);
+  std::ostringstream message;
+  // Node numbers are Exodus ids (1-based), as in the output file.
+  message << "contact interface '" << interfaces_[i]->spec().label() << "': slave node " << first % numNodes + 1
+          << " met a master facet beyond the reserved reach " << reservations_[i].reach;
+  outside_ = message.str();
+  return false;
 }
 
 template <class Changes>

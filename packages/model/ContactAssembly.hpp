@@ -3,8 +3,9 @@
 // contact::ContactInterfaceBase per interface and pass, whatever the dimension) over the slave nodes this
 // rank owns, adds their forces and ∂r_c/∂λ to the overlapped force arrays, and their tangents to the
 // Jacobian through StiffnessScatter (positions cached per coupling). It reserves the contact couplings of
-// the graph once (contact::reserveCouplings) and reports, on every rank with the same words, a pairing
-// outside them. Holds the interfaces' committed and trial contact history.
+// the graph (contact::reserveCouplings: around the reference configuration at set-up), notices, agreed on
+// every rank, a pairing outside them, and reserves them again around the current configuration for the
+// model's graph rebuild. Holds the interfaces' committed and trial contact history.
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,17 +30,25 @@ class ContactAssembly {
   /// them (DofLayout's replicated nodes).
   static std::vector<mesh::GlobalIndex> surfaceNodes(const std::vector<contact::ContactInterfaceSpec>& specs);
 
-  /// Adds to `rows` (per overlapped row, its columns) the couplings the graph reserves for contact, by
-  /// the reach rule of contact::CouplingReservation, and remembers them.
-  void reserveCouplings(std::vector<std::vector<LO>>& rows);
+  /// Adds to `rows` (per overlapped row, its columns) the couplings reserved for contact (by the reach
+  /// rule of contact::CouplingReservation, around the reference configuration until reserveAround).
+  void addReservedCouplings(std::vector<std::vector<LO>>& rows) const;
 
   /// Adds every owned slave node's contact force and ∂r_c/∂λ at the overlapped displacement `u` and load
   /// factor λ to `force` and `dForcedLambda` (overlapped arrays); with `scatter`, its tangent. With
-  /// `updateTrial`, stores the trial history. Collective with `scatter`: throws std::runtime_error on
-  /// every rank when a slave node meets a master facet beyond the reserved couplings (the user raises
-  /// Search Reach), std::logic_error when a reserved coupling is missing from the graph (a defect).
-  void assemble(const double* u, double lambda, bool updateTrial, double* force, double* dForcedLambda,
+  /// `updateTrial`, stores the trial history. Collective with `scatter`: returns false on every rank when
+  /// a slave node (of any rank) met a master facet outside the reserved couplings — their tangents are
+  /// then incomplete, and the caller reserves again (reserveAround), rebuilds the graph and assembles
+  /// again; throws std::logic_error when a reserved coupling is missing from the graph (a defect).
+  bool assemble(const double* u, double lambda, bool updateTrial, double* force, double* dForcedLambda,
                 StiffnessScatter* scatter);
+  /// After assemble() returned false: the first pairing outside the reservation (the same words on every
+  /// rank), e.g. "contact interface 'strip': slave node 80 met a master facet beyond the reserved reach 0.5".
+  const std::string& outsideReservation() const { return outside_; }
+  /// Collective, after assemble() returned false: reserves the couplings of the interfaces that met a
+  /// pairing outside their reservation again, around the current configuration (reference + overlapped
+  /// displacement `u`), by the same reach rule. Every pairing the last pass made is then reserved.
+  void reserveAround(const double* u);
 
   /// The owned slave nodes at the overlapped displacement `u` and load factor λ against the last commit
   /// (no force, no history stored).
@@ -81,6 +90,8 @@ class ContactAssembly {
   const DofLayout& layout_;
   Interfaces interfaces_;
   std::vector<contact::CouplingReservation> reservations_;  ///< per interface: the couplings the graph holds
+  std::vector<int> outsideByInterface_;  ///< per interface: the last stiffness pass met a pairing outside (all ranks)
+  std::string outside_;                  ///< the first of them, in words
   bool frozen_ = false;
 };
 

@@ -1,11 +1,13 @@
 #include "model/ContactMechanicsModel.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <limits>
 #include <optional>
 
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_DetachedVectorView.hpp>
+#include <Thyra_TpetraLinearOp.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "common/PhaseTimers.hpp"
@@ -33,7 +35,18 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const 
   overlapX_ = rcp(new Vector(layout_->overlapMap()));
   overlapForce_ = rcp(new Vector(layout_->overlapMap()));
   overlapDfdLambda_ = rcp(new Vector(layout_->overlapMap()));
+  // The element couplings, once: the assembler runs at u = 0 (before any state matters) to name each
+  // element's DOFs.
+  solids_->assemble(std::vector<double>(layout_->numOverlapDofs(), 0.0).data(), false,
+                    [&](const int* dofs, int n, const double*, const double*) {
+                      elementDofBegin_.push_back(elementDofs_.size());
+                      elementDofs_.insert(elementDofs_.end(), dofs, dofs + n);
+                    });
+  elementDofBegin_.push_back(elementDofs_.size());
   buildGraph();
+  passX_ = rcp(new Vector(layout_->ownedMap()));
+  passForce_ = rcp(new Vector(layout_->ownedMap()));
+  passDfdLambda_ = rcp(new Vector(layout_->ownedMap()));
   conditions_ = std::make_unique<BoundaryConditions>(problem_, *layout_);
   results_ = std::make_unique<PostProcessing>(problem_, *layout_, *solids_, *contact_);
 
@@ -57,27 +70,39 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const 
 
 ContactMechanicsModel::~ContactMechanicsModel() = default;
 
-void ContactMechanicsModel::buildGraph() {
-  // Element couplings, gathered per overlapped row, and the contact couplings reserved by search, inserted
-  // once; the owned graph receives them through the exporter and is never rebuilt.
-  const LO numOverlap = layout_->numOverlapDofs();
-  std::vector<std::vector<LO>> rows(numOverlap);
-  std::vector<std::vector<int>> elementDofs;
-  solids_->assemble(std::vector<double>(numOverlap, 0.0).data(), false,
-                    [&](const int* dofs, int n, const double*, const double*) {
-                      elementDofs.emplace_back(dofs, dofs + n);
-                      for (int i = 0; i < n; ++i)
-                        for (int j = 0; j < n; ++j) rows[dofs[i]].push_back(dofs[j]);
-                    });
-  contact_->reserveCouplings(rows);
+void ContactMechanicsModel::buildGraph() const {
+  // Element couplings, gathered per overlapped row, and the contact couplings reserved by search; the
+  // owned graph receives them through the exporter.
+  std::vector<std::vector<LO>> rows(layout_->numOverlapDofs());
+  const std::size_t numElements = elementDofBegin_.size() - 1;
+  for (std::size_t e = 0; e < numElements; ++e) {
+    const int* dofs = elementDofs_.data() + elementDofBegin_[e];
+    const int n = static_cast<int>(elementDofBegin_[e + 1] - elementDofBegin_[e]);
+    for (int i = 0; i < n; ++i) rows[dofs[i]].insert(rows[dofs[i]].end(), dofs, dofs + n);
+  }
+  contact_->addReservedCouplings(rows);
   layout_->buildGraph(rows);
-  // Where each element's stiffness goes in the Jacobian's values, once (the element loop visits the
-  // elements in the same order at every pass).
+  // Where each element's stiffness goes in the Jacobian's values, once per graph (the element loop visits
+  // the elements in the same order at every pass).
   scatter_ = std::make_unique<StiffnessScatter>(layout_->ownedGraph(), layout_->overlapMap(), rows);
-  for (const auto& dofs : elementDofs) scatter_->addElement(dofs.data(), static_cast<int>(dofs.size()));
-  passX_ = rcp(new Vector(layout_->ownedMap()));
-  passForce_ = rcp(new Vector(layout_->ownedMap()));
-  passDfdLambda_ = rcp(new Vector(layout_->ownedMap()));
+  for (std::size_t e = 0; e < numElements; ++e)
+    scatter_->addElement(elementDofs_.data() + elementDofBegin_[e],
+                         static_cast<int>(elementDofBegin_[e + 1] - elementDofBegin_[e]));
+}
+
+void ContactMechanicsModel::rebuildGraph(const double* u) const {
+  timers::Scope scope(timers::Phase::GraphRebuild);
+  const auto start = std::chrono::steady_clock::now();
+  GraphRebuild rebuild;
+  rebuild.reason = contact_->outsideReservation();
+  contact_->reserveAround(u);
+  buildGraph();
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &seconds, &rebuild.seconds);
+  rebuild.count = ++graphRebuilds_;
+  rebuild.entries = static_cast<long long>(layout_->ownedGraph()->getGlobalNumEntries());
+  graphRebuildSeconds_ += rebuild.seconds;
+  if (rebuildObserver_) rebuildObserver_(rebuild);
 }
 
 const RCP<const Map>& ContactMechanicsModel::ownedDofMap() const { return layout_->ownedMap(); }
@@ -150,8 +175,8 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   elementScope.reset();
   {
     timers::Scope contactScope(phase(Phase::Contact));
-    contact_->assemble(u.getRawPtr(), lambda, updateTrial, fo.getRawPtr(), dl.getRawPtr(),
-                       withStiffness ? scatter_.get() : nullptr);
+    contactFitsGraph_ = contact_->assemble(u.getRawPtr(), lambda, updateTrial, fo.getRawPtr(), dl.getRawPtr(),
+                                           withStiffness ? scatter_.get() : nullptr);
   }
   fo = Teuchos::null;
   dl = Teuchos::null;
@@ -164,6 +189,17 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
 
 void ContactMechanicsModel::evaluatePass(const Vector& x, double lambda, bool withStiffness) const {
   passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+  if (withStiffness && !contactFitsGraph_) {
+    // A contact pairing outside the reserved couplings (every rank agrees): reserve around the current
+    // configuration, rebuild the graph and assemble the pass again on it. The new reservation holds
+    // every pairing the run-time search can make at this x (CouplingReservation.hpp), so the second
+    // pass fits; a residual-only pass never rebuilds (the next Jacobian does).
+    rebuildGraph(overlapped(x).getRawPtr());
+    passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+    if (!contactFitsGraph_)
+      throw std::logic_error("ContactMechanicsModel: the rebuilt matrix graph does not hold the contact pairing (" +
+                             contact_->outsideReservation() + ")");
+  }
   passHasStiffness_ = withStiffness;
   passX_->assign(x);
   passLambda_ = lambda;
@@ -228,6 +264,13 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
   if (!W.is_null()) {
     // The stiffness of the pass, with the rows of other ranks added; prescribed rows become identity rows.
     timers::Scope scope(timers::Phase::Assembly);
+    if (W->getCrsGraph() != layout_->ownedGraph()) {
+      // W was made on a graph since rebuilt: the operator the caller holds (NOX's groups share it, and
+      // re-initialise their solver from it after every Jacobian evaluation) is pointed at a new matrix on
+      // the current graph, over the same maps; the old matrix goes when its last holder lets it go.
+      W = rcp(new CrsMatrix(layout_->ownedGraph()));
+      Teuchos::rcp_dynamic_cast<Thyra::TpetraLinearOp<double, LO, GO, Node>>(wOut, true)->initialize(xSpace_, xSpace_, W);
+    }
     scatter_->copyTo(*W, conditions_->prescribedRows());
   }
   if (!dfdp.is_null()) {

@@ -3,7 +3,8 @@
 // x = nodal displacements and one parameter, the load factor λ. It evaluates the residual
 // f(x, λ) = f_int(x) + r_c(x, λ) − λ f_ext on free DOFs and x − λ ū on prescribed DOFs, the Jacobian
 // W = ∂f/∂x and ∂f/∂λ. It composes parts with one job each and keeps only the evaluation bookkeeping:
-//   DofLayout           maps, Import/Export, the graph (built once)
+//   DofLayout           maps, Import/Export, the graph (built at set-up; its contact part rebuilt when
+//                       the contact leaves the couplings reserved for it)
 //   SolidAssembler      continuum elements
 //   ContactAssembly     contact interfaces, their reserved couplings and history
 //   StiffnessScatter    element and contact blocks into the Jacobian's values, at precomputed positions
@@ -11,6 +12,7 @@
 //   PostProcessing      stresses, reactions, contact fields and forces, slave-node gathers
 // The solvers see it through Thyra, IncrementalState (commit/rollback) and continuation::ContactEventSource
 // (Contact Beta); this header names no contact type.
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -35,6 +37,14 @@ class DofLayout;
 class ContactAssembly;
 class BoundaryConditions;
 class StiffnessScatter;
+
+/// One rebuild of the matrix graph (ContactMechanicsModel::onGraphRebuild).
+struct GraphRebuild {
+  int count = 0;            ///< rebuilds so far in the run, this one included
+  std::string reason;       ///< the pairing outside the old reservation, in words
+  double seconds = 0;       ///< reservation, graph, scatter positions (the slowest rank)
+  long long entries = 0;    ///< entries of the new graph (global)
+};
 
 class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public IncrementalState,
@@ -113,6 +123,13 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// rank) in words: which blocks are free to move, and how (FreeMotion.hpp).
   std::string describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const;
 
+  /// Number of rebuilds of the matrix graph so far (a Jacobian evaluation met a contact pairing outside
+  /// the reserved couplings) and their total time (the slowest rank's).
+  int graphRebuilds() const { return graphRebuilds_; }
+  double graphRebuildSeconds() const { return graphRebuildSeconds_; }
+  /// Called on every rank after each rebuild (e.g. for a line in the log).
+  void onGraphRebuild(std::function<void(const GraphRebuild&)> observer) { rebuildObserver_ = std::move(observer); }
+
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const { return jacobianEvaluations_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
@@ -135,7 +152,11 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                      const Thyra::ModelEvaluatorBase::OutArgs<double>& outArgs) const override;
 
   /// The graph from the element couplings and the contact reservations, and the scatter positions.
-  void buildGraph();
+  void buildGraph() const;
+  /// The contact couplings reserved again around the overlapped displacement `u` (after a stiffness pass
+  /// met a pairing outside them), the graph and the scatter built again; collective. A Jacobian on the old
+  /// graph is re-pointed at a new matrix when it is next evaluated (evalModelImpl).
+  void rebuildGraph(const double* u) const;
   /// One assembly pass at owned x and load factor λ: internal and contact forces and their ∂/∂λ,
   /// exported to owned rows, before boundary conditions; with `withStiffness`, the stiffness into
   /// scatter_. `updateTrial` stores the trial state. Returns the first element that failed, if any.
@@ -151,13 +172,17 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
 
   Teuchos::RCP<const Comm> comm_;
   const deck::ProblemDefinition& problem_;
+  // Each owned element's DOFs (overlapped local numbering, in the element loop's order), flattened: the
+  // element part of the graph, kept for rebuilds (the element loop itself would move the trial state).
+  std::vector<int> elementDofs_;
+  std::vector<std::size_t> elementDofBegin_;
   int dim_;
-  std::unique_ptr<DofLayout> layout_;
+  std::unique_ptr<DofLayout> layout_;  ///< its graph is replaced by a rebuild
   // The parts an evaluation changes (trial states, the scatter's values): Thyra evaluates through a
   // const method, so they are held by pointer and changed from it.
   std::unique_ptr<SolidAssembler> solids_;
   std::unique_ptr<ContactAssembly> contact_;
-  std::unique_ptr<StiffnessScatter> scatter_;
+  mutable std::unique_ptr<StiffnessScatter> scatter_;  ///< made again by a rebuild
   std::unique_ptr<BoundaryConditions> conditions_;
   std::unique_ptr<PostProcessing> results_;
   Teuchos::RCP<const Map> paramMap_;
@@ -175,6 +200,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
   mutable bool passServesReactions_ = false;    ///< until the state is rolled back
   mutable int jacobianEvaluations_ = 0, elementPasses_ = 0, stiffnessPasses_ = 0;
+  mutable bool contactFitsGraph_ = true;  ///< the latest stiffness pass found every contact pairing in the graph
+  mutable int graphRebuilds_ = 0;
+  mutable double graphRebuildSeconds_ = 0;
+  std::function<void(const GraphRebuild&)> rebuildObserver_;
   mutable double lastLoadFactor_ = 0;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank
 };

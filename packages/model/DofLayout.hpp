@@ -1,8 +1,9 @@
 #pragma once
 // Where the unknowns live on each rank: the owned and overlapped DOF maps (node·dim + c, every component
 // of a node on the node's owner), the element and node maps of the output, the Import/Export between
-// owned and overlapped vectors, and the Jacobian's graph, built once from the couplings the assemblers
-// declare (SolidAssembler's elements, ContactAssembly's reserved contact couplings). No physics here.
+// owned and overlapped vectors, and the Jacobian's graph, built from the couplings the assemblers declare
+// (SolidAssembler's elements, ContactAssembly's reserved contact couplings) at set-up and again when the
+// contact leaves its reserved couplings (the maps never change). No physics here.
 #include <vector>
 
 #include "mesh/Mesh.hpp"
@@ -33,7 +34,8 @@ class DofLayout {
 
   /// Builds the owned graph from `rows` (per overlapped row, the overlapped columns it couples to; each
   /// row is sorted and made unique here, for StiffnessScatter to read). Rows shared between ranks receive
-  /// the entries of each. Once: the graph never changes during the run.
+  /// the entries of each. Collective. A new graph object each time: whoever holds the old one (a Jacobian
+  /// made on it, MUMPS' analysed pattern) tells them apart by identity.
   void buildGraph(std::vector<std::vector<LO>>& rows);
   const Teuchos::RCP<const CrsGraph>& ownedGraph() const { return ownedGraph_; }
 

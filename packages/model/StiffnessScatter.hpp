@@ -1,6 +1,7 @@
 #pragma once
 // Sums element and contact stiffness blocks straight into the value array of the Jacobian, at positions
-// computed once: the graph never changes, so a block's entries always land in the same places.
+// computed once per graph: one scatter serves one graph (a rebuild of the graph makes a new scatter), so a
+// block's entries always land in the same places.
 //
 // Rows this rank owns go into a value array laid out exactly as the Jacobian's (its graph is
 // `ownedGraph`); the few overlapped rows owned by another rank (shared element nodes, contact
@@ -38,7 +39,7 @@ class StiffnessScatter {
 
   /// Copies the assembled values into `W` (whose graph must be `ownedGraph`), adds the ghost rows of
   /// the other ranks to it (collective on several ranks), and makes `identityRows` (owned local rows)
-  /// rows of the identity. Fills `W` the first time; never again.
+  /// rows of the identity. Fills `W` the first time; never again (a rebuilt graph gets a new W).
   void copyTo(CrsMatrix& W, const std::vector<LO>& identityRows) const;
 
   /// Position of entry (row, col) (overlapped local DOFs) in the value arrays: ≥ 0 in the owned

@@ -2,8 +2,9 @@
 // MUMPS' assembled input of a Tpetra CrsMatrix: each rank gives its own rows as (row, column, value)
 // triplets with global 1-based indices (distributed input, ICNTL(18) = 3; on one rank the same triplets
 // are the centralised input, ICNTL(18) = 0). The pattern depends only on the
-// matrix graph, which a Newton run never changes, so it is built once per graph; afterwards only the
-// values are copied, in the graph's own order (no index lookup, no pattern comparison).
+// matrix graph, which changes only when the model rebuilds it (contact beyond its reserved couplings: a
+// new graph object, and a matrix on it), so it is built once per graph, recognised by identity; afterwards
+// only the values are copied, in the graph's own order (no index lookup, no pattern comparison).
 #include <dmumps_c.h>
 #include <mpi.h>
 

@@ -23,6 +23,11 @@ increment i) every increment is classified by the contact states it converged to
 nodes), slip (only slipping nodes), mixed, or none; --require-states stick,slip demands at least one
 checked pair in increments of each of these kinds (a deck whose stick phase converges below the floor in
 one iterate would otherwise pass on slip alone).
+
+With --min-rebuilds N (the command run without --quiet) at least N rebuilds of the matrix graph must be
+logged ("contessa: matrix graph rebuilt (k): ..."), as many as --summary JSON's graph_rebuilds when given,
+and with --newton-rate at least N asymptotic pairs must be checked after a rebuild within its attempt
+(Newton on the rebuilt graph).
 Exit 0 when everything holds."""
 import argparse
 import csv
@@ -42,6 +47,8 @@ parser.add_argument("--quadratic-constant", type=float, default=0.1)
 parser.add_argument("--min-pairs", type=int, default=20)
 parser.add_argument("--history")
 parser.add_argument("--require-states", default="")
+parser.add_argument("--min-rebuilds", type=int)
+parser.add_argument("--summary")
 parser.add_argument("command", nargs=argparse.REMAINDER)
 args = parser.parse_args()
 command = args.command[1:] if args.command and args.command[0] == "--" else args.command
@@ -67,11 +74,25 @@ else:
         if bound is not None and value > bound:
             failures.append(f"{value} {name}, at most {bound} allowed")
 
+rebuilds = [line for line in out.splitlines() if line.startswith("contessa: matrix graph rebuilt (")]
+if args.min_rebuilds is not None:
+    print(f"{len(rebuilds)} matrix graph rebuilds logged")
+    if len(rebuilds) < args.min_rebuilds:
+        failures.append(f"{len(rebuilds)} matrix graph rebuilds, at least {args.min_rebuilds} expected")
+    if args.summary:
+        import json
+        counted = json.load(open(args.summary)).get("graph_rebuilds")
+        if counted != len(rebuilds):
+            failures.append(f"summary graph_rebuilds {counted}, {len(rebuilds)} logged")
+
 if args.newton_rate:
     attempts = []
+    rebuilt_after = {}  # attempt -> number of residual norms printed before its first rebuild
     for line in out.splitlines():
         if "Start of Continuation Step" in line:
             attempts.append([])
+        if line.startswith("contessa: matrix graph rebuilt (") and attempts:
+            rebuilt_after.setdefault(len(attempts) - 1, len(attempts[-1]))
         m = re.search(r"\|\|F\|\| = (\S+)", line)
         if m and attempts:
             attempts[-1].append(float(m.group(1)))
@@ -85,7 +106,7 @@ if args.newton_rate:
                 kind = "mixed" if stick and slip else "stick" if stick else "slip" if slip else "none"
                 states[int(float(row["step"]))] = f"{kind} ({stick} stick, {slip} slip)"
     checked = {}
-    pairs = increases = 0
+    pairs = increases = after_rebuild = 0
     for i, norms in enumerate(attempts):
         for k in range(1, len(norms)):
             a, b = norms[k - 1], norms[k]
@@ -95,6 +116,9 @@ if args.newton_rate:
                 increases += 1
                 continue
             pairs += 1
+            # The step r_k-1 -> r_k solves with the Jacobian at iterate k - 1, evaluated after r_k-1 was printed.
+            rebuilt = i in rebuilt_after and k >= rebuilt_after[i]
+            after_rebuild += rebuilt
             state = states.get(i, "")
             kind = state.split(" ")[0]
             checked[kind] = checked.get(kind, 0) + 1
@@ -103,7 +127,7 @@ if args.newton_rate:
             if k >= 2 and args.floor <= norms[k - 2] <= args.asymptotic and norms[k - 2] > a:
                 order = f"  order {math.log(b / a) / math.log(a / norms[k - 2]):.2f}"
             print(f"attempt {i}{' ' + state if state else ''}: ||F|| {a:.3e} -> {b:.3e}  "
-                  f"r_k+1 / r_k^2 = {c:.3e}{order}")
+                  f"r_k+1 / r_k^2 = {c:.3e}{order}{'  (after a graph rebuild)' if rebuilt else ''}")
             if c > args.quadratic_constant:
                 failures.append(f"attempt {i}: {a:.3e} -> {b:.3e} is not quadratic (r_k+1 / r_k^2 = {c:.3e} > "
                                 f"{args.quadratic_constant})")
@@ -112,6 +136,11 @@ if args.newton_rate:
         failures.append(f"only {pairs} asymptotic pairs (at least {args.min_pairs}): is Newton Details on?")
     if checked:
         print("pairs checked per kind of increment: " + ", ".join(f"{k} {n}" for k, n in sorted(checked.items())))
+    if args.min_rebuilds is not None:
+        print(f"{after_rebuild} asymptotic pairs after a graph rebuild in their attempt")
+        if after_rebuild < args.min_rebuilds:
+            failures.append(f"{after_rebuild} asymptotic pairs checked after a graph rebuild, at least "
+                            f"{args.min_rebuilds} expected")
     for kind in filter(None, args.require_states.split(",")):
         if not checked.get(kind):
             failures.append(f"no asymptotic pair checked in a {kind} increment")

@@ -21,6 +21,7 @@ PHASES = [
     "element kernels, Jacobian passes",
     "assembly: scatter, Dirichlet, Export",
     "contact: search, elements, scatter",
+    "matrix graph rebuilds (contact)",
     "MUMPS input (pattern, values)",
     "MUMPS analysis (JOB=1)",
     "MUMPS factorisation (JOB=2)",

@@ -139,3 +139,53 @@ TEST(CouplingReservation, RigidMasterReservesNothing) {
   EXPECT_EQ(r.numPairs(all), 0u);
   EXPECT_TRUE(cc::isReserved(r, 0, -1));  // rigid points (negative ids) are not unknowns
 }
+
+TEST(CouplingReservation, AroundTheCurrentConfiguration) {
+  // The rebuild's reservation (ContactMechanicsModel::rebuildGraph): the slave grid slid 6.3 facets along x
+  // and 2.2 along y over a master stretched by 10 % in x. Around the current positions, every facet whose
+  // current box, enlarged by the current h as the run-time search does, contains a slave node's current
+  // position is reserved for it; around the reference positions most of them are not; and h (so the
+  // reach) is the current one.
+  const auto s = makeSurface(24, 0.0);
+  const std::vector<char> all(s.spec.slaveNodes.size(), 1);
+  const std::size_t numMaster = 25 * 25;
+  std::vector<double> current = s.X;
+  for (std::size_t node = 0; node < current.size() / 3; ++node) {
+    if (node < numMaster) {
+      current[3 * node] *= 1.1;
+    } else {
+      current[3 * node] += 6.3;
+      current[3 * node + 1] += 2.2;
+    }
+  }
+  const auto atReference = cc::reserveCouplings(s.spec, s.X, all);
+  const auto atCurrent = cc::reserveCouplings(s.spec, current, all);
+  ASSERT_FALSE(atCurrent.wholeSurface);
+  const double h = std::sqrt(1.1 * 1.1 + 1.0);  // the stretched quad's diagonal
+  EXPECT_DOUBLE_EQ(atReference.reach, 2.0 * std::sqrt(2.0));
+  EXPECT_NEAR(atCurrent.reach, 2.0 * h, 1e-12);
+  std::vector<cc::BoundingBox<3>> boxes(s.spec.numMasterFacets());
+  for (std::size_t f = 0; f < boxes.size(); ++f) {
+    for (int a = 0; a < 4; ++a) {
+      const auto node = static_cast<std::size_t>(s.spec.masterFacets[4 * f + a]);
+      boxes[f].include({current[3 * node], current[3 * node + 1], current[3 * node + 2]});
+    }
+    boxes[f].enlarge(h);
+  }
+  std::size_t found = 0, missingAtReference = 0;
+  for (std::size_t k = 0; k < s.spec.slaveNodes.size(); ++k) {
+    const auto node = static_cast<std::size_t>(s.spec.slaveNodes[k]);
+    const cc::Vector<3> x{current[3 * node], current[3 * node + 1], current[3 * node + 2]};
+    for (std::size_t f = 0; f < boxes.size(); ++f)
+      if (boxes[f].contains(x))
+        for (int a = 0; a < 4; ++a) {
+          ++found;
+          ASSERT_TRUE(cc::isReserved(atCurrent, k, s.spec.masterFacets[4 * f + a])) << "slave " << k << " facet " << f;
+          missingAtReference += cc::isReserved(atReference, k, s.spec.masterFacets[4 * f + a]) ? 0 : 1;
+        }
+  }
+  EXPECT_GT(found, 10000u);
+  EXPECT_GT(missingAtReference, found / 2);  // what the rebuild is for
+  // Still a bounded patch per slave node (the graph stays linear in the surface).
+  for (std::size_t k = 0; k < s.spec.slaveNodes.size(); ++k) EXPECT_LE(atCurrent.end(k) - atCurrent.begin(k), 64) << k;
+}

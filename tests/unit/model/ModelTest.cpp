@@ -455,6 +455,94 @@ TEST_P(ContactModelTest, SameResidualAndJacobianOnOneRankAndAllRanks) {
   }
 }
 
+// The top block of makeContactProblem's deformable pair moved rigidly by (dx, dy): its nodes (y > 0) only.
+RCP<Thyra::VectorBase<double>> translatedTop(const model::ContactMechanicsModel& m, const deck::ProblemDefinition& problem,
+                                             double dx, double dy) {
+  auto x = Thyra::createMember(m.get_x_space());
+  auto tx = Extract::getTpetraVector(x);
+  auto v = tx->getDataNonConst(0);
+  for (Teuchos::ArrayRCP<double>::size_type i = 0; i < v.size(); ++i) {
+    const auto gid = tx->getMap()->getGlobalElement(i);
+    const bool top = problem.mesh.coordinates[static_cast<std::size_t>(gid / 2) * 2 + 1] > 0.0;
+    v[i] = top ? (gid % 2 == 0 ? dx : dy) : 0.0;
+  }
+  return x;
+}
+
+// The matrix graph follows the contact: with Search Reach = 0 (reach 2 h = 1.2 around the reference
+// positions) the top block slid 1.5 along the base (segments 0.6 long) pairs its slave nodes with base segments the graph
+// never reserved. A residual alone does not rebuild; the first Jacobian re-reserves around the current
+// configuration, rebuilds the graph and re-points the W operator the caller made on the old graph, and
+// gives the same residual and Jacobian as the whole-surface reservation (Search Reach = -1, small
+// interface: nothing to rebuild); any other W made before the rebuild is re-pointed when evaluated. On
+// any number of ranks.
+TEST(GraphRebuild, TheJacobianFollowsTheContactBeyondTheReservedReach) {
+  auto comm = Tpetra::getDefaultComm();
+  auto reach0 = makeContactProblem(0.0, true, false);
+  reach0.contacts.at(0).searchReach = 0.0;
+  auto whole = makeContactProblem(0.0, true, false);
+  ASSERT_LT(whole.contacts.at(0).searchReach, 0.0);
+  auto m = makeModel(comm, reach0);
+  auto reference = makeModel(comm, whole);
+  auto Wbefore = m->create_W_op();
+  auto Wother = m->create_W_op();
+  const auto x = translatedTop(*m, reach0, 1.5, -0.01);
+  const auto xr = translatedTop(*reference, whole, 1.5, -0.01);
+
+  const auto residualOnly = evaluate(*m, *x, 1.0, false);
+  EXPECT_EQ(m->graphRebuilds(), 0);
+  int rebuildsSeen = 0;
+  m->onGraphRebuild([&](const model::GraphRebuild& r) {
+    ++rebuildsSeen;
+    EXPECT_EQ(r.count, 1);
+    EXPECT_NE(r.reason.find("contact interface 'base': slave node"), std::string::npos) << r.reason;
+    EXPECT_GT(r.entries, 0);
+  });
+  auto in = m->createInArgs();
+  auto p = Thyra::createMember(m->get_p_space(0));
+  Thyra::set_ele(0, 1.0, p.ptr());
+  in.set_x(x);
+  in.set_p(0, p);
+  auto f = Thyra::createMember(m->get_f_space());
+  auto out = m->createOutArgs();
+  out.set_f(f);
+  out.set_W_op(Wbefore);
+  m->evalModel(in, out);
+  EXPECT_EQ(m->graphRebuilds(), 1);
+  EXPECT_EQ(rebuildsSeen, 1);
+
+  const auto e = evaluate(*reference, *xr, 1.0, true);
+  EXPECT_EQ(reference->graphRebuilds(), 0);
+  const auto v = deformedState(*m, 1.0);
+  const auto vr = deformedState(*reference, 1.0);
+  auto Wv = Thyra::createMember(m->get_f_space());
+  auto Wvr = Thyra::createMember(reference->get_f_space());
+  Thyra::apply(*Wbefore, Thyra::NOTRANS, *v, Wv.ptr());
+  Thyra::apply(*e.W, Thyra::NOTRANS, *vr, Wvr.ptr());
+  // Every contact coupling is in the rebuilt W (a dropped one would change W v).
+  const double fScale = Thyra::norm_inf(*e.f), WScale = Thyra::norm_inf(*Wvr);
+  ASSERT_GT(fScale, 0.0);
+  // Same maps (one partition of the same mesh): compare entry by entry.
+  const auto fa = Extract::getConstTpetraVector(f)->getData(0), fb = Extract::getConstTpetraVector(e.f)->getData(0);
+  const auto wa = Extract::getConstTpetraVector(Wv)->getData(0), wb = Extract::getConstTpetraVector(Wvr)->getData(0);
+  const auto ra = Extract::getConstTpetraVector(residualOnly.f)->getData(0);
+  for (Teuchos::ArrayRCP<double>::size_type i = 0; i < fa.size(); ++i) {
+    EXPECT_NEAR(fa[i], fb[i], 1e-10 * fScale) << "residual row " << i;
+    EXPECT_NEAR(ra[i], fb[i], 1e-10 * fScale) << "residual-only row " << i;
+    EXPECT_NEAR(wa[i], wb[i], 1e-10 * WScale) << "Jacobian row " << i;
+  }
+
+  // A W op made before the rebuild and evaluated after it: re-pointed, no second rebuild.
+  auto out2 = m->createOutArgs();
+  out2.set_W_op(Wother);
+  m->evalModel(in, out2);
+  EXPECT_EQ(m->graphRebuilds(), 1);
+  auto Wv2 = Thyra::createMember(m->get_f_space());
+  Thyra::apply(*Wother, Thyra::NOTRANS, *v, Wv2.ptr());
+  const auto w2 = Extract::getConstTpetraVector(Wv2)->getData(0);
+  for (Teuchos::ArrayRCP<double>::size_type i = 0; i < w2.size(); ++i) EXPECT_EQ(w2[i], wa[i]) << "row " << i;
+}
+
 INSTANTIATE_TEST_SUITE_P(Contact, ContactModelTest,
                          ::testing::Values(ContactCase{"RigidStick", 1.0, false, false},
                                            ContactCase{"RigidSlip", 0.05, false, false},
