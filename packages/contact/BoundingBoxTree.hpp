@@ -94,18 +94,23 @@ class BoundingBoxTree {
     BoundingBox<Dim> box;
     int left = -1;  ///< child indices, −1 for a leaf
     int right = -1;
-    int begin = 0;  ///< leaf: boxes order_[begin, end)
+    int begin = 0;  ///< leaf: boxes_[begin, end), whose indices are order_[begin, end)
     int end = 0;
   };
 
-  int build(int begin, int end, int level);
+  /// A box with its centre and its index in the constructor's vector, moved as one during the build.
+  struct Item {
+    BoundingBox<Dim> box;
+    Vector<Dim> center;
+    int id = 0;
+  };
+  int build(std::vector<Item>& items, int begin, int end, int level);
   /// Depth-first search for the boxes a predicate accepts (on tree nodes and on items alike).
   template <class Accepts>
   void search(const Accepts& accepts, std::vector<int>& hits, std::size_t* visitedNodes) const;
 
-  std::vector<BoundingBox<Dim>> boxes_;
-  std::vector<Vector<Dim>> centers_;
-  std::vector<int> order_;
+  std::vector<BoundingBox<Dim>> boxes_;  ///< in tree order: a leaf holds boxes_[begin, end)
+  std::vector<int> order_;               ///< the constructor's index of each box of boxes_
   std::vector<Node> nodes_;
   int leafSize_;
   int depth_ = 0;
