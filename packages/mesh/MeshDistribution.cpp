@@ -1,0 +1,379 @@
+#include "mesh/MeshDistribution.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+
+#include "common/Error.hpp"
+#include "mesh/Partition.hpp"
+
+namespace contessa::mesh {
+
+namespace {
+
+// A part as bytes: plain values and vectors of them, lengths first.
+class Packer {
+ public:
+  template <class T>
+  void put(const T& value) {
+    static_assert(std::is_trivially_copyable<T>::value, "plain values only");
+    const auto* p = reinterpret_cast<const char*>(&value);
+    bytes_.insert(bytes_.end(), p, p + sizeof(T));
+  }
+  template <class T>
+  void put(const std::vector<T>& values) {
+    put(static_cast<std::uint64_t>(values.size()));
+    if constexpr (std::is_trivially_copyable<T>::value) {
+      const auto* p = reinterpret_cast<const char*>(values.data());
+      bytes_.insert(bytes_.end(), p, p + values.size() * sizeof(T));
+    } else {
+      for (const T& v : values) put(v);
+    }
+  }
+  void put(const std::string& s) { put(std::vector<char>(s.begin(), s.end())); }
+  std::vector<char>& bytes() { return bytes_; }
+
+ private:
+  std::vector<char> bytes_;
+};
+
+class Unpacker {
+ public:
+  explicit Unpacker(const std::vector<char>& bytes) : bytes_(bytes) {}
+  template <class T>
+  void get(T& value) {
+    static_assert(std::is_trivially_copyable<T>::value, "plain values only");
+    take(&value, sizeof(T));
+  }
+  template <class T>
+  void get(std::vector<T>& values) {
+    std::uint64_t size = 0;
+    get(size);
+    values.resize(static_cast<std::size_t>(size));
+    if constexpr (std::is_trivially_copyable<T>::value) {
+      take(values.data(), values.size() * sizeof(T));
+    } else {
+      for (T& v : values) get(v);
+    }
+  }
+  void get(std::string& s) {
+    std::vector<char> chars;
+    get(chars);
+    s.assign(chars.begin(), chars.end());
+  }
+
+ private:
+  void take(void* out, std::size_t size) {
+    if (size > bytes_.size() - at_) throw std::logic_error("mesh part message shorter than its contents");
+    if (size > 0) std::memcpy(out, bytes_.data() + at_, size);
+    at_ += size;
+  }
+  const std::vector<char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+std::vector<char> pack(const DistributedMesh& part) {
+  Packer out;
+  out.put(part.rank);
+  out.put(part.numRanks);
+  out.put(part.numGlobalNodes);
+  out.put(part.numGlobalElements);
+  out.put(part.globalBlockSizes);
+  out.put(part.globalNodeSetSizes);
+  out.put(part.globalSideSetSizes);
+  out.put(part.nodeOwner);
+  out.put(part.sideSetPositions);
+  out.put(part.part.globalNodes);
+  out.put(part.part.globalElements);
+  out.put(part.part.sharedWith);
+  const Mesh& mesh = part.part.mesh;
+  out.put(mesh.dimension);
+  out.put(mesh.coordinates);
+  out.put(static_cast<std::uint64_t>(mesh.blocks.size()));
+  for (const auto& b : mesh.blocks) {
+    out.put(b.name);
+    out.put(static_cast<int>(b.cellType));
+    out.put(b.elements);
+    out.put(b.connectivity);
+  }
+  out.put(static_cast<std::uint64_t>(mesh.nodeSets.size()));
+  for (const auto& s : mesh.nodeSets) {
+    out.put(s.name);
+    out.put(s.nodes);
+  }
+  out.put(static_cast<std::uint64_t>(mesh.sideSets.size()));
+  for (const auto& s : mesh.sideSets) {
+    out.put(s.name);
+    out.put(s.elements);
+    out.put(s.sides);
+  }
+  return std::move(out.bytes());
+}
+
+DistributedMesh unpack(const std::vector<char>& bytes) {
+  Unpacker in(bytes);
+  DistributedMesh part;
+  in.get(part.rank);
+  in.get(part.numRanks);
+  in.get(part.numGlobalNodes);
+  in.get(part.numGlobalElements);
+  in.get(part.globalBlockSizes);
+  in.get(part.globalNodeSetSizes);
+  in.get(part.globalSideSetSizes);
+  in.get(part.nodeOwner);
+  in.get(part.sideSetPositions);
+  in.get(part.part.globalNodes);
+  in.get(part.part.globalElements);
+  in.get(part.part.sharedWith);
+  Mesh& mesh = part.part.mesh;
+  in.get(mesh.dimension);
+  in.get(mesh.coordinates);
+  std::uint64_t count = 0;
+  in.get(count);
+  mesh.blocks.resize(static_cast<std::size_t>(count));
+  for (auto& b : mesh.blocks) {
+    int type = 0;
+    in.get(b.name);
+    in.get(type);
+    b.cellType = static_cast<CellType>(type);
+    in.get(b.elements);
+    in.get(b.connectivity);
+  }
+  in.get(count);
+  mesh.nodeSets.resize(static_cast<std::size_t>(count));
+  for (auto& s : mesh.nodeSets) {
+    in.get(s.name);
+    in.get(s.nodes);
+  }
+  in.get(count);
+  mesh.sideSets.resize(static_cast<std::size_t>(count));
+  for (auto& s : mesh.sideSets) {
+    in.get(s.name);
+    in.get(s.elements);
+    in.get(s.sides);
+  }
+  return part;
+}
+
+// MPI counts are ints: large messages go in pieces of at most 1 GiB.
+constexpr std::size_t kChunk = std::size_t(1) << 30;
+constexpr int kTagSize = 7101, kTagBytes = 7102;
+
+void sendBytes(const std::vector<char>& bytes, int to) {
+  const std::uint64_t size = bytes.size();
+  MPI_Send(&size, 1, MPI_UINT64_T, to, kTagSize, MPI_COMM_WORLD);
+  for (std::size_t at = 0; at < bytes.size(); at += kChunk)
+    MPI_Send(bytes.data() + at, static_cast<int>(std::min(kChunk, bytes.size() - at)), MPI_CHAR, to, kTagBytes,
+             MPI_COMM_WORLD);
+}
+
+std::vector<char> receiveBytes(int from) {
+  std::uint64_t size = 0;
+  MPI_Recv(&size, 1, MPI_UINT64_T, from, kTagSize, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::vector<char> bytes(static_cast<std::size_t>(size));
+  for (std::size_t at = 0; at < bytes.size(); at += kChunk)
+    MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kChunk, bytes.size() - at)), MPI_CHAR, from, kTagBytes,
+             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return bytes;
+}
+
+// What rank 0 tells the others about its attempt: 0 = it worked, 1 = an InputError, 2 = another error.
+void shareOutcome(int& status, std::string& message) {
+  MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  if (status == 0) return;
+  int length = static_cast<int>(message.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
+  message.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(message.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
+}
+
+int worldRank() {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank;
+}
+
+int worldSize() {
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  return size;
+}
+
+}  // namespace
+
+DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
+  const int rank = worldRank(), size = worldSize();
+  if (rank != 0) {
+    int status = 0;
+    std::string message;
+    shareOutcome(status, message);
+    if (status == 1) throw InputError(message);
+    if (status != 0) throw std::runtime_error(message);
+    return unpack(receiveBytes(0));
+  }
+
+  // Rank 0: read and partition; whatever fails is told to the others before it is thrown here.
+  Mesh mesh;
+  Partition partition;
+  int status = 0;
+  std::string message;
+  std::exception_ptr failure;
+  try {
+    mesh = readOnRoot();
+    partition = partitionMesh(mesh, size);
+  } catch (const InputError& e) {
+    status = 1;
+    message = e.what();
+    failure = std::current_exception();
+  } catch (const std::exception& e) {
+    status = 2;
+    message = e.what();
+    failure = std::current_exception();
+  }
+  shareOutcome(status, message);
+  if (failure) std::rethrow_exception(failure);
+
+  const PartExtractor extractor(mesh, std::move(partition.elementOwner), size);
+  partition = Partition{};
+  for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to);
+  return extractor.part(0);
+}
+
+std::size_t ReplicatedSurface::bytes() const {
+  return elements.size() * sizeof(GlobalIndex) + sides.size() * sizeof(int) +
+         facetNodes.size() * sizeof(GlobalIndex) + nodes.size() * sizeof(GlobalIndex) +
+         coordinates.size() * sizeof(double);
+}
+
+namespace {
+
+// The facets of a side set whose entries are (element, side) of `mesh` in local numbering, written
+// as global ids through globalNode/globalElement, each with its position and its nodes' coordinates:
+// one record of integers (position, element, side, nodes...) and one of coordinates per facet.
+struct FacetRecords {
+  int nodesPerFacet = 2;
+  std::vector<GlobalIndex> integers;
+  std::vector<double> coordinates;
+};
+
+template <class GlobalNode, class GlobalElement, class Position>
+FacetRecords facetRecords(const Mesh& mesh, const SideSet& set, GlobalNode&& globalNode,
+                          GlobalElement&& globalElement, Position&& position) {
+  FacetRecords records;
+  records.nodesPerFacet = mesh.dimension == 2 ? 2 : 4;
+  const int dim = mesh.dimension;
+  for (std::size_t k = 0; k < set.elements.size(); ++k) {
+    const auto where = mesh.locate(set.elements[k]);
+    const ElementBlock& block = mesh.blocks[where.block];
+    const int npe = nodesPerCell(block.cellType);
+    records.integers.push_back(position(k));
+    records.integers.push_back(globalElement(set.elements[k]));
+    records.integers.push_back(set.sides[k]);
+    for (int a : sideNodes(block.cellType, set.sides[k])) {
+      const GlobalIndex node = block.connectivity[where.local * npe + a];
+      records.integers.push_back(globalNode(node));
+      for (int d = 0; d < dim; ++d) records.coordinates.push_back(mesh.coordinates[node * dim + d]);
+    }
+  }
+  return records;
+}
+
+// The surface from every facet record (any order), placed by position.
+ReplicatedSurface assemble(const std::string& name, int dim, const FacetRecords& all, std::size_t numFacets) {
+  ReplicatedSurface surface;
+  surface.name = name;
+  surface.dimension = dim;
+  const int npf = all.nodesPerFacet;
+  surface.nodesPerFacet = npf;
+  surface.elements.assign(numFacets, -1);
+  surface.sides.assign(numFacets, -1);
+  surface.facetNodes.assign(numFacets * npf, -1);
+  std::vector<double> facetCoordinates(numFacets * npf * dim);
+  const std::size_t stride = 3 + static_cast<std::size_t>(npf);
+  for (std::size_t f = 0; f * stride < all.integers.size(); ++f) {
+    const GlobalIndex* record = &all.integers[f * stride];
+    const auto at = static_cast<std::size_t>(record[0]);
+    if (at >= numFacets || surface.elements[at] != -1)
+      throw std::logic_error("side set '" + name + "': facet positions do not cover the set once");
+    surface.elements[at] = record[1];
+    surface.sides[at] = static_cast<int>(record[2]);
+    std::copy(record + 3, record + stride, surface.facetNodes.begin() + at * npf);
+    std::copy(all.coordinates.begin() + f * npf * dim, all.coordinates.begin() + (f + 1) * npf * dim,
+              facetCoordinates.begin() + at * npf * dim);
+  }
+  std::vector<std::size_t> order(surface.facetNodes.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return surface.facetNodes[a] < surface.facetNodes[b]; });
+  for (std::size_t k : order) {
+    if (!surface.nodes.empty() && surface.nodes.back() == surface.facetNodes[k]) continue;
+    surface.nodes.push_back(surface.facetNodes[k]);
+    surface.coordinates.insert(surface.coordinates.end(), facetCoordinates.begin() + k * dim,
+                               facetCoordinates.begin() + (k + 1) * dim);
+  }
+  return surface;
+}
+
+std::size_t setIndex(const Mesh& mesh, const std::string& name) {
+  const SideSet& set = mesh.sideSet(name);  // InputError naming the known side sets
+  return static_cast<std::size_t>(&set - mesh.sideSets.data());
+}
+
+template <class T>
+std::vector<T> allGather(const std::vector<T>& mine, MPI_Datatype type) {
+  const int size = worldSize();
+  const std::size_t count = mine.size();
+  if (count > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::runtime_error("gathering a contact surface: more than 2^31 values on one rank");
+  const int myCount = static_cast<int>(count);
+  std::vector<int> counts(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size) + 1, 0);
+  MPI_Allgather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  std::vector<long long> total(1, 0);
+  for (int r = 0; r < size; ++r) {
+    total[0] += counts[r];
+    if (total[0] > std::numeric_limits<int>::max())
+      throw std::runtime_error("gathering a contact surface: more than 2^31 values in all");
+    offsets[r + 1] = static_cast<int>(total[0]);
+  }
+  std::vector<T> all(static_cast<std::size_t>(total[0]));
+  MPI_Allgatherv(mine.data(), myCount, type, all.data(), counts.data(), offsets.data(), type, MPI_COMM_WORLD);
+  return all;
+}
+
+}  // namespace
+
+ReplicatedSurface surfaceOfSideSet(const Mesh& mesh, const std::string& name) {
+  const SideSet& set = mesh.sideSets[setIndex(mesh, name)];
+  const auto same = [](GlobalIndex id) { return id; };
+  const FacetRecords records =
+      facetRecords(mesh, set, same, same, [](std::size_t k) { return static_cast<GlobalIndex>(k); });
+  return assemble(name, mesh.dimension, records, set.elements.size());
+}
+
+ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& name) {
+  const Mesh& local = part.local();
+  const std::size_t s = setIndex(local, name);
+  const auto& positions = part.sideSetPositions[s];
+  FacetRecords records = facetRecords(
+      local, local.sideSets[s], [&](GlobalIndex n) { return part.part.globalNodes[n]; },
+      [&](GlobalIndex e) { return part.part.globalElements[e]; }, [&](std::size_t k) { return positions[k]; });
+  static_assert(sizeof(GlobalIndex) == sizeof(long long), "GlobalIndex travels as MPI_LONG_LONG");
+  records.integers = allGather(records.integers, MPI_LONG_LONG);
+  records.coordinates = allGather(records.coordinates, MPI_DOUBLE);
+  return assemble(name, local.dimension, records, static_cast<std::size_t>(part.globalSideSetSizes[s]));
+}
+
+RankFigures overRanks(double value) {
+  RankFigures figures;
+  MPI_Allreduce(&value, &figures.max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  MPI_Allreduce(&value, &figures.sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return figures;
+}
+
+}  // namespace contessa::mesh
