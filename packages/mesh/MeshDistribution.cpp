@@ -183,16 +183,6 @@ std::vector<char> receiveBytes(int from) {
   return bytes;
 }
 
-// What rank 0 tells the others about its attempt: 0 = it worked, 1 = an InputError, 2 = another error.
-void shareOutcome(int& status, std::string& message) {
-  MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  if (status == 0) return;
-  int length = static_cast<int>(message.size());
-  MPI_Bcast(&length, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  message.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(message.data(), length, MPI_CHAR, 0, MPI_COMM_WORLD);
-}
-
 int worldRank() {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -207,37 +197,56 @@ int worldSize() {
 
 }  // namespace
 
+void throwIfAnyRankFailed(std::exception_ptr failure) {
+  // The lowest failing rank speaks for all: 1 = an InputError, 2 = another error.
+  const int rank = worldRank(), size = worldSize();
+  int status = 0;
+  std::string message;
+  if (failure) {
+    try {
+      std::rethrow_exception(failure);
+    } catch (const InputError& e) {
+      status = 1;
+      message = e.what();
+    } catch (const std::exception& e) {
+      status = 2;
+      message = e.what();
+    } catch (...) {
+      status = 2;
+      message = "unknown error";
+    }
+  }
+  int speaker = status != 0 ? rank : size;
+  MPI_Allreduce(MPI_IN_PLACE, &speaker, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  if (speaker == size) return;
+  int length = static_cast<int>(message.size());
+  MPI_Bcast(&status, 1, MPI_INT, speaker, MPI_COMM_WORLD);
+  MPI_Bcast(&length, 1, MPI_INT, speaker, MPI_COMM_WORLD);
+  message.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(message.data(), length, MPI_CHAR, speaker, MPI_COMM_WORLD);
+  if (rank == speaker) std::rethrow_exception(failure);
+  if (status == 1) throw InputError(message);
+  throw std::runtime_error(message);
+}
+
 DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
   const int rank = worldRank(), size = worldSize();
   if (rank != 0) {
-    int status = 0;
-    std::string message;
-    shareOutcome(status, message);
-    if (status == 1) throw InputError(message);
-    if (status != 0) throw std::runtime_error(message);
+    throwIfAnyRankFailed(nullptr);
     return unpack(receiveBytes(0));
   }
 
   // Rank 0: read and partition; whatever fails is told to the others before it is thrown here.
   Mesh mesh;
   Partition partition;
-  int status = 0;
-  std::string message;
   std::exception_ptr failure;
   try {
     mesh = readOnRoot();
     partition = partitionMesh(mesh, size);
-  } catch (const InputError& e) {
-    status = 1;
-    message = e.what();
-    failure = std::current_exception();
-  } catch (const std::exception& e) {
-    status = 2;
-    message = e.what();
+  } catch (...) {
     failure = std::current_exception();
   }
-  shareOutcome(status, message);
-  if (failure) std::rethrow_exception(failure);
+  throwIfAnyRankFailed(failure);
 
   const PartExtractor extractor(mesh, std::move(partition.elementOwner), size);
   partition = Partition{};
@@ -326,11 +335,11 @@ std::size_t setIndex(const Mesh& mesh, const std::string& name) {
 }
 
 template <class T>
-std::vector<T> allGather(const std::vector<T>& mine, MPI_Datatype type) {
+std::vector<T> allGatherOf(const std::vector<T>& mine, MPI_Datatype type) {
   const int size = worldSize();
   const std::size_t count = mine.size();
   if (count > static_cast<std::size_t>(std::numeric_limits<int>::max()))
-    throw std::runtime_error("gathering a contact surface: more than 2^31 values on one rank");
+    throw std::runtime_error("all-gather: more than 2^31 values on one rank");
   const int myCount = static_cast<int>(count);
   std::vector<int> counts(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size) + 1, 0);
   MPI_Allgather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
@@ -338,7 +347,7 @@ std::vector<T> allGather(const std::vector<T>& mine, MPI_Datatype type) {
   for (int r = 0; r < size; ++r) {
     total[0] += counts[r];
     if (total[0] > std::numeric_limits<int>::max())
-      throw std::runtime_error("gathering a contact surface: more than 2^31 values in all");
+      throw std::runtime_error("all-gather: more than 2^31 values in all");
     offsets[r + 1] = static_cast<int>(total[0]);
   }
   std::vector<T> all(static_cast<std::size_t>(total[0]));
@@ -363,10 +372,14 @@ ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& 
   FacetRecords records = facetRecords(
       local, local.sideSets[s], [&](GlobalIndex n) { return part.part.globalNodes[n]; },
       [&](GlobalIndex e) { return part.part.globalElements[e]; }, [&](std::size_t k) { return positions[k]; });
-  static_assert(sizeof(GlobalIndex) == sizeof(long long), "GlobalIndex travels as MPI_LONG_LONG");
-  records.integers = allGather(records.integers, MPI_LONG_LONG);
-  records.coordinates = allGather(records.coordinates, MPI_DOUBLE);
+  records.integers = allGather(records.integers);
+  records.coordinates = allGatherOf(records.coordinates, MPI_DOUBLE);
   return assemble(name, local.dimension, records, static_cast<std::size_t>(part.globalSideSetSizes[s]));
+}
+
+std::vector<GlobalIndex> allGather(const std::vector<GlobalIndex>& values) {
+  static_assert(sizeof(GlobalIndex) == sizeof(long long), "GlobalIndex travels as MPI_LONG_LONG");
+  return allGatherOf(values, MPI_LONG_LONG);
 }
 
 RankFigures overRanks(double value) {

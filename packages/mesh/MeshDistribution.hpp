@@ -4,6 +4,7 @@
 // it; and the replicated contact surfaces gathered from the parts (an all-gather of the side-set
 // facets contact needs: the surface is O(n^(2/3)) of a 3D mesh, the volume stays distributed).
 #include <cstddef>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +20,12 @@ namespace contessa::mesh {
 /// part. An error on rank 0 (an unreadable file: InputError; anything else: runtime_error) is thrown
 /// on every rank with the same message, so none is left waiting.
 DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot);
+
+/// Collective: every rank throws the error of the lowest rank whose `failure` is set (null on a rank
+/// that did not fail), with its message: an InputError as an InputError, anything else as a
+/// runtime_error. Returns on every rank when none failed. What a step that one rank alone may fail
+/// (reading its file) calls before the next collective, so that no rank is left waiting.
+void throwIfAnyRankFailed(std::exception_ptr failure);
 
 /// A side set of the whole mesh as contact needs it on every rank: its entries (element, side) in the
 /// side set's order, each facet's global nodes (Exodus side order), and the coordinates of the nodes
@@ -42,6 +49,10 @@ ReplicatedSurface surfaceOfSideSet(const Mesh& mesh, const std::string& name);
 /// (with their positions in the whole side set) and their coordinates, all-gathered. Throws InputError
 /// naming the side set and the known ones when the mesh has no side set `name` (every rank alike).
 ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& name);
+
+/// Collective: every rank's `values` concatenated in rank order, on every rank (surface-sized data:
+/// at most 2^31 values in all).
+std::vector<GlobalIndex> allGather(const std::vector<GlobalIndex>& values);
 
 /// Collective: the largest and the sum over the ranks of `value` (the memory figures).
 struct RankFigures {

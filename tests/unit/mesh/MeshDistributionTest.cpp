@@ -12,6 +12,7 @@
 
 #include "common/Error.hpp"
 #include "io/ExodusWriter.hpp"
+#include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/MeshDistribution.hpp"
@@ -75,9 +76,9 @@ void expectSameSurface(const ReplicatedSurface& a, const ReplicatedSurface& b) {
   EXPECT_EQ(a.coordinates, b.coordinates);
 }
 
-// Two boxes one above the other (two blocks), with the upper one's bottom side set listed backwards:
-// a file's side sets need not be in element order.
-Mesh twoBodies() {
+// Two boxes one above the other (two blocks), maybe with the upper one's bottom side set listed
+// backwards: a file's side sets need not be in element order.
+Mesh twoBodies(bool reversedSideSet = true) {
   BoxSpec lower, upper;
   lower.nx = 4;
   lower.ny = 2;
@@ -89,7 +90,7 @@ Mesh twoBodies() {
   upper.biasX = 2;
   Mesh mesh = mergeMeshes({{"lower", generateBox(lower)}, {"upper", generateBox(upper)}});
   for (auto& set : mesh.sideSets)
-    if (set.name == "upper_bottom") {
+    if (set.name == "upper_bottom" && reversedSideSet) {
       std::reverse(set.elements.begin(), set.elements.end());
       std::reverse(set.sides.begin(), set.sides.end());
     }
@@ -202,6 +203,122 @@ TEST(MeshDistribution, AnUnknownSideSetIsAnInputErrorNamingTheKnownOnes) {
     EXPECT_NE(std::string(e.what()).find("nowhere"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("top"), std::string::npos) << e.what();
   }
+}
+
+namespace {
+
+// This rank's file of `part`'s set, as the per-rank output writes it (Nemesis records, id maps);
+// `processors` as written in the file.
+void writeDecomposedFile(const std::string& base, const DistributedMesh& part, int processors) {
+  contessa::io::ExodusDecomposition d;
+  d.processor = part.rank;
+  d.processors = processors;
+  d.globalNodes = part.part.globalNodes;
+  d.globalElements = part.part.globalElements;
+  d.globalNumNodes = part.numGlobalNodes;
+  d.globalNumElements = part.numGlobalElements;
+  d.globalBlockSizes = part.globalBlockSizes;
+  d.sharedWith = part.part.sharedWith;
+  contessa::io::ExodusWriter(decomposedFileName(base, part.numRanks, part.rank), part.local(), {}, {}, {}, &d);
+}
+
+// `part` with its local nodes listed backwards (decomp tools need not number them in global order).
+DistributedMesh nodesReversed(DistributedMesh part) {
+  const std::size_t n = part.part.globalNodes.size();
+  const int dim = part.local().dimension;
+  Mesh& mesh = part.part.mesh;
+  std::vector<double> coordinates(mesh.coordinates.size());
+  for (std::size_t k = 0; k < n; ++k)
+    std::copy(mesh.coordinates.begin() + k * dim, mesh.coordinates.begin() + (k + 1) * dim,
+              coordinates.begin() + (n - 1 - k) * dim);
+  mesh.coordinates = coordinates;
+  for (auto& b : mesh.blocks)
+    for (GlobalIndex& node : b.connectivity) node = static_cast<GlobalIndex>(n - 1) - node;
+  for (auto& set : mesh.nodeSets) {
+    for (GlobalIndex& node : set.nodes) node = static_cast<GlobalIndex>(n - 1) - node;
+    std::reverse(set.nodes.begin(), set.nodes.end());
+  }
+  std::reverse(part.part.globalNodes.begin(), part.part.globalNodes.end());
+  std::reverse(part.part.sharedWith.begin(), part.part.sharedWith.end());
+  return part;
+}
+
+void removeDecomposedFile(const std::string& base) {
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::remove(decomposedFileName(base, ranks(), rank()).c_str());
+}
+
+}  // namespace
+
+TEST(DecomposedExodus, FileNamesPadTheRankToTheDigitsOfTheCount) {
+  EXPECT_EQ(decomposedFileName("a.exo", 4, 3), "a.exo.4.3");
+  EXPECT_EQ(decomposedFileName("a.exo", 12, 3), "a.exo.12.03");
+  EXPECT_EQ(decomposedFileName("a.exo", 100, 7), "a.exo.100.007");
+}
+
+TEST(DecomposedExodus, EachRankReadsItsOwnFileAndGetsTheReplicatedPathsPart) {
+  const Mesh mesh = twoBodies(false);  // side sets in element order: the order a file set can give back
+  const Partition partition = partitionMesh(mesh, ranks());
+  const DistributedMesh expected = PartExtractor(mesh, partition.elementOwner, ranks()).part(rank());
+  const std::string base = sharedPath("split");
+  writeDecomposedFile(base, expected, ranks());
+  MPI_Barrier(MPI_COMM_WORLD);
+  const DistributedMesh part = readDecomposedExodus(base);
+  expectSameParts(part, expected);
+  expectConsistentOwnership(part);
+  for (const auto& set : mesh.sideSets) expectSameSurface(gatherSurface(part, set.name), surfaceOfSideSet(mesh, set.name));
+  removeDecomposedFile(base);
+
+  // Nodes not in global order in the file: renumbered on reading, the same part.
+  writeDecomposedFile(base, nodesReversed(expected), ranks());
+  MPI_Barrier(MPI_COMM_WORLD);
+  expectSameParts(readDecomposedExodus(base), expected);
+  removeDecomposedFile(base);
+}
+
+TEST(DecomposedExodus, AMissingFileIsAnInputErrorNamingItOnEveryRank) {
+  const std::string base = sharedPath("absent");
+  try {
+    readDecomposedExodus(base);
+    FAIL() << "expected an InputError";
+  } catch (const contessa::InputError& e) {
+    // Every rank reports rank 0's file: the lowest failing rank speaks for all.
+    EXPECT_EQ(std::string(e.what()).rfind(decomposedFileName(base, ranks(), 0), 0), 0u) << e.what();
+  }
+}
+
+TEST(DecomposedExodus, ASetSplitForAnotherRankCountIsAnInputErrorOnEveryRank) {
+  BoxSpec box;
+  box.nx = 3;
+  const DistributedMesh part = generateBoxPart(box, rank(), ranks());
+  const std::string base = sharedPath("other_count");
+  writeDecomposedFile(base, part, ranks() + 1);
+  MPI_Barrier(MPI_COMM_WORLD);
+  try {
+    readDecomposedExodus(base);
+    FAIL() << "expected an InputError";
+  } catch (const contessa::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("split for " + std::to_string(ranks() + 1) + " ranks; the run has " +
+                                         std::to_string(ranks())),
+              std::string::npos)
+        << e.what();
+  }
+  removeDecomposedFile(base);
+}
+
+TEST(DecomposedExodus, AnUndecomposedFileIsAnInputErrorSayingSo) {
+  BoxSpec box;
+  box.nx = 3;
+  const std::string base = sharedPath("plain");
+  contessa::io::ExodusWriter(decomposedFileName(base, ranks(), rank()), generateBox(box), {});
+  MPI_Barrier(MPI_COMM_WORLD);
+  try {
+    readDecomposedExodus(base);
+    FAIL() << "expected an InputError";
+  } catch (const contessa::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a file of a decomposed mesh"), std::string::npos) << e.what();
+  }
+  removeDecomposedFile(base);
 }
 
 int main(int argc, char** argv) {
