@@ -145,9 +145,8 @@ std::vector<GlobalIndex> summed(std::vector<GlobalIndex> values) {
 }  // namespace
 
 DistributedMesh readDecomposedExodus(const std::string& base) {
-  int rank = 0, numRanks = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &numRanks);
+  const WorldRanks world = worldRanks();
+  const int rank = world.rank, numRanks = world.size;
   const std::string path = decomposedFileName(base, numRanks, rank);
   DistributedMesh part;
   std::exception_ptr failure;

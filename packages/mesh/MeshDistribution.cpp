@@ -183,17 +183,9 @@ std::vector<char> receiveBytes(int from) {
   return bytes;
 }
 
-int worldRank() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank;
-}
+int worldRank() { return worldRanks().rank; }
 
-int worldSize() {
-  int size = 1;
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return size;
-}
+int worldSize() { return worldRanks().size; }
 
 }  // namespace
 
@@ -252,6 +244,18 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
   partition = Partition{};
   for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to);
   return extractor.part(0);
+}
+
+WorldRanks worldRanks() {
+  int initialised = 0, finalised = 0;
+  MPI_Initialized(&initialised);
+  MPI_Finalized(&finalised);
+  WorldRanks world;
+  if (initialised && !finalised) {
+    MPI_Comm_rank(MPI_COMM_WORLD, &world.rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &world.size);
+  }
+  return world;
 }
 
 std::size_t ReplicatedSurface::bytes() const {

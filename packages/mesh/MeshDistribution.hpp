@@ -14,6 +14,12 @@
 
 namespace contessa::mesh {
 
+/// This process's rank in MPI_COMM_WORLD and its size (0 and 1 without MPI initialised).
+struct WorldRanks {
+  int rank = 0, size = 1;
+};
+WorldRanks worldRanks();
+
 /// Collective. Rank 0 calls `readOnRoot` (e.g. readExodusMesh on a file), partitions the mesh as
 /// partitionMesh does (METIS, same seed, same node owners), and sends every other rank its part
 /// (PartExtractor), keeping its own; the whole mesh is freed before returning. Every rank returns its

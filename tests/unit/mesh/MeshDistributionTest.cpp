@@ -16,6 +16,7 @@
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/MeshDistribution.hpp"
+#include "mesh/MeshFactory.hpp"
 #include "mesh/MeshMerge.hpp"
 #include "mesh/Partition.hpp"
 #include "DistributedMeshChecks.hpp"
@@ -319,6 +320,62 @@ TEST(DecomposedExodus, AnUndecomposedFileIsAnInputErrorSayingSo) {
     EXPECT_NE(std::string(e.what()).find("not a file of a decomposed mesh"), std::string::npos) << e.what();
   }
   removeDecomposedFile(base);
+}
+
+TEST(MeshFactoryPart, EveryGeneratorsPartIsThePartOfItsWholeMesh) {
+  for (const std::string& type :
+       {std::string("Rectangle"), std::string("Annulus Sector"), std::string("Box"),
+        std::string("Hollow Cylinder Sector"), std::string("Sphere Octant")}) {
+    SCOPED_TRACE(type);
+    Teuchos::ParameterList list = *MeshFactory::validParameters(type);
+    if (type == "Rectangle" || type == "Box") {
+      list.set("Elements X", 4);
+      list.set("Elements Y", 3);
+      if (type == "Box") list.set("Elements Z", 2);
+    }
+    if (type == "Annulus Sector" || type == "Hollow Cylinder Sector") list.set("Elements Around Arc", 7);
+    const Mesh whole = MeshFactory::create(type, list, "Problem/Mesh", "");
+    const DistributedMesh part = MeshFactory::createPart(type, list, "Problem/Mesh", "");
+    expectSameParts(part,
+                    PartExtractor(whole, ElementRanges{whole.numElements(), ranks()}.owners(), ranks()).part(rank()));
+  }
+}
+
+TEST(MeshFactoryPart, AMeshFileIsReadOnRankZeroAndPartitionedByMetis) {
+  const Mesh mesh = twoBodies();
+  const std::string path = sharedPath("factory");
+  if (rank() == 0) contessa::io::ExodusWriter(path, mesh, {});
+  MPI_Barrier(MPI_COMM_WORLD);
+  Teuchos::ParameterList list = *MeshFactory::validParameters("Mesh File");
+  list.set("File Name", path);
+  const DistributedMesh part = MeshFactory::createPart("Mesh File", list, "Problem/Mesh", "");
+  const Mesh replicated = MeshFactory::create("Mesh File", list, "Problem/Mesh", "");
+  expectSameParts(part, PartExtractor(replicated, partitionMesh(replicated, ranks()).elementOwner, ranks()).part(rank()));
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (rank() == 0) std::remove(path.c_str());
+}
+
+TEST(MeshFactoryPart, AMissingMeshFileIsTheDeckErrorOnEveryRank) {
+  Teuchos::ParameterList list = *MeshFactory::validParameters("Exodus File");
+  list.set("File Name", std::string("no_such_mesh.exo"));
+  try {
+    MeshFactory::createPart("Exodus File", list, "Problem/Mesh", "/nonexistent");
+    FAIL() << "expected an InputError";
+  } catch (const contessa::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "Problem/Mesh/File Name: mesh file '/nonexistent/no_such_mesh.exo' does not exist");
+  }
+}
+
+TEST(MeshFactoryPart, AGeneratorsErrorNamesTheDeckParameterOnEveryRank) {
+  Teuchos::ParameterList list = *MeshFactory::validParameters("Annulus Sector");
+  list.set("End Angle", -10.0);
+  try {
+    MeshFactory::createPart("Annulus Sector", list, "Problem/Mesh", "");
+    FAIL() << "expected an InputError";
+  } catch (const contessa::InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("Problem/Mesh/End Angle: expected an angle greater than Start Angle", 0), 0u)
+        << e.what();
+  }
 }
 
 int main(int argc, char** argv) {
