@@ -3,8 +3,11 @@
 // generates only its part; rank 0 reads the file once and sends the parts out), and the size of the
 // replicated contact surfaces gathered from the parts. Run by bench/distributed_mesh_bench.py, or:
 //   build/bin/distributed_mesh_bench write N FILE        a box of N^3 Hex8 written as Exodus (1 rank)
-//   mpiexec -n P build/bin/distributed_mesh_bench MODE N|FILE
-// MODE: replicated-box N, generated-box N, replicated-exodus FILE, distributed-exodus FILE.
+//   mpiexec -n P build/bin/distributed_mesh_bench split N BASE   the same box as a set BASE.P.r, one
+//                                                               file per rank (each writes its part)
+//   mpiexec -n P build/bin/distributed_mesh_bench MODE N|FILE|BASE
+// MODE: replicated-box N, generated-box N, replicated-exodus FILE, distributed-exodus FILE,
+// decomposed-exodus BASE (each rank reads its own file of the set).
 // Prints one line: mode, ranks, the largest and summed peak resident memory of the ranks (VmHWM) and
 // the same above the process's start (MPI and libraries loaded; also rank 0's alone and the largest of
 // the other ranks', since rank 0 alone reads a file on the distributed path), the mesh containers held afterwards
@@ -18,6 +21,7 @@
 #include <string>
 
 #include "io/ExodusWriter.hpp"
+#include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/Generators.hpp"
@@ -66,6 +70,21 @@ int main(int argc, char** argv) {
     MPI_Finalize();
     return 0;
   }
+  if (mode == "split") {
+    const DistributedMesh part = generateBoxPart(cube(std::atoi(arg.c_str())), rank, ranks);
+    contessa::io::ExodusDecomposition d;
+    d.processor = rank;
+    d.processors = ranks;
+    d.globalNodes = part.part.globalNodes;
+    d.globalElements = part.part.globalElements;
+    d.globalNumNodes = part.numGlobalNodes;
+    d.globalNumElements = part.numGlobalElements;
+    d.globalBlockSizes = part.globalBlockSizes;
+    d.sharedWith = part.part.sharedWith;
+    contessa::io::ExodusWriter(decomposedFileName(argv[3], ranks, rank), part.local(), {}, {}, {}, &d);
+    MPI_Finalize();
+    return 0;
+  }
 
   const double start = peakResident();
   const auto t0 = std::chrono::steady_clock::now();
@@ -83,6 +102,9 @@ int main(int argc, char** argv) {
     held = static_cast<double>(part.bytes());
   } else if (mode == "distributed-exodus") {
     part = distributeMesh([&] { return readExodusMesh(arg); });
+    held = static_cast<double>(part.bytes());
+  } else if (mode == "decomposed-exodus") {
+    part = readDecomposedExodus(arg);
     held = static_cast<double>(part.bytes());
   } else {
     if (rank == 0) std::fprintf(stderr, "distributed_mesh_bench: unknown mode '%s'\n", mode.c_str());

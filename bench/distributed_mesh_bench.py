@@ -7,6 +7,8 @@ for 1, 2 and 4 ranks runs each path in its own mpiexec and prints one Markdown t
   generated-box       every rank generates only its part (contiguous element ranges)
   replicated-exodus   every rank reads the whole file and partitions it, as runs do today
   distributed-exodus  rank 0 reads the file, partitions it (METIS) and sends each rank its part
+  decomposed-exodus   each rank reads its own file of a pre-split set (written beforehand by the ranks,
+                      one file each: contiguous element ranges)
 Columns: peak resident memory (VmHWM) of the largest rank, the same above the process's start (MPI
 and libraries loaded: what the mesh path itself took) for rank 0 and the largest other rank, the mesh containers each rank keeps for the
 run (largest rank), the replicated contact surfaces gathered from the parts (the box's top face, and
@@ -21,7 +23,7 @@ import subprocess
 import sys
 import tempfile
 
-MODES = ["replicated-box", "generated-box", "replicated-exodus", "distributed-exodus"]
+MODES = ["replicated-box", "generated-box", "replicated-exodus", "distributed-exodus", "decomposed-exodus"]
 LINE = re.compile(r"^(\S+)\s+ranks (\d+)\s+nodes (\d+)\s+peak/rank max ([\d.]+) MiB \(sum ([\d.]+)\)\s+"
                   r"above start max ([\d.]+) MiB \(sum ([\d.]+), rank 0 ([\d.]+), others max ([\d.]+)\)\s+held/rank max ([\d.]+) MiB\s+part max ([\d.]+) MiB\s+"
                   r"surface top ([\d.]+) MiB, all ([\d.]+) MiB\s+time ([\d.]+) s")
@@ -54,6 +56,9 @@ def main():
         for ranks in args.ranks:
             for mode in MODES:
                 arg = path if mode.endswith("exodus") else str(args.n)
+                if mode == "decomposed-exodus":
+                    arg = os.path.join(work, f"split{args.n}.exo")
+                    subprocess.run(mpiexec(ranks) + [program, "split", str(args.n), arg], check=True)
                 run = subprocess.run(mpiexec(ranks) + [program, mode, arg], capture_output=True, text=True)
                 match = LINE.search(run.stdout)
                 if run.returncode != 0 or not match:

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "common/Error.hpp"
+#include "contact/ContactSurface.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/ExodusMeshReader.hpp"
@@ -178,6 +179,27 @@ TEST(MeshDistribution, GatheredSurfacesAreTheReplicatedMeshs) {
   const DistributedMesh generated = generateHollowCylinderSectorPart(tube, rank(), ranks());
   for (const auto& set : whole.sideSets)
     expectSameSurface(gatherSurface(generated, set.name), surfaceOfSideSet(whole, set.name));
+}
+
+// Contact's view of a side set (slave nodes, tributary areas, facet sizes, master facets) built from the
+// surface gathered from the parts is the one built from the replicated mesh, bit for bit.
+TEST(MeshDistribution, ContactSurfacesFromGatheredFacetsAreTheReplicatedOnes) {
+  RectangleSpec rectangle;
+  rectangle.nx = 6;
+  rectangle.ny = 2;
+  rectangle.biasX = 3;
+  for (const Mesh& mesh : {twoBodies(), generateRectangle(rectangle)}) {
+    const DistributedMesh part = distributeMesh([&] { return mesh; });
+    for (const auto& set : mesh.sideSets) {
+      const auto expected = contessa::contact::ContactSurface::fromSideSet(mesh, set, "test");
+      const auto gathered = contessa::contact::ContactSurface::fromSurface(gatherSurface(part, set.name), "test");
+      EXPECT_EQ(gathered.nodesPerFacet, expected.nodesPerFacet);
+      EXPECT_EQ(gathered.nodes, expected.nodes);
+      EXPECT_EQ(gathered.areas, expected.areas);
+      EXPECT_EQ(gathered.facetLengths, expected.facetLengths);
+      EXPECT_EQ(gathered.facets, expected.facets);
+    }
+  }
 }
 
 TEST(MeshDistribution, ASurfaceHoldsItsFacetsNodesAndCoordinates) {
