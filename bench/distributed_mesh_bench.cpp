@@ -20,6 +20,7 @@
 #include <fstream>
 #include <string>
 
+#include "io/DecomposedMesh.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/DistributedMesh.hpp"
@@ -72,15 +73,7 @@ int main(int argc, char** argv) {
   }
   if (mode == "split") {
     const DistributedMesh part = generateBoxPart(cube(std::atoi(arg.c_str())), rank, ranks);
-    contessa::io::ExodusDecomposition d;
-    d.processor = rank;
-    d.processors = ranks;
-    d.globalNodes = part.part.globalNodes;
-    d.globalElements = part.part.globalElements;
-    d.globalNumNodes = part.numGlobalNodes;
-    d.globalNumElements = part.numGlobalElements;
-    d.globalBlockSizes = part.globalBlockSizes;
-    d.sharedWith = part.part.sharedWith;
+    const contessa::io::ExodusDecomposition d = contessa::io::decompositionOf(part);
     contessa::io::ExodusWriter(decomposedFileName(argv[3], ranks, rank), part.local(), {}, {}, {}, &d);
     MPI_Finalize();
     return 0;

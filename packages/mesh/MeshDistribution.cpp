@@ -17,26 +17,73 @@ namespace contessa::mesh {
 
 namespace {
 
-// A part as bytes: plain values and vectors of them, lengths first.
+// A part as bytes. One list of its fields (describe) serves both directions: the Packer reads them,
+// the Unpacker writes them. Plain values are copied, vectors go length first, structures field by field.
+template <class Io>
+void describe(Io& io, ElementBlock& b) {
+  io(b.name);
+  io(b.cellType);
+  io(b.elements);
+  io(b.connectivity);
+}
+
+template <class Io>
+void describe(Io& io, NodeSet& s) {
+  io(s.name);
+  io(s.nodes);
+}
+
+template <class Io>
+void describe(Io& io, SideSet& s) {
+  io(s.name);
+  io(s.elements);
+  io(s.sides);
+}
+
+template <class Io>
+void describe(Io& io, DistributedMesh& part) {
+  io(part.rank);
+  io(part.numRanks);
+  io(part.numGlobalNodes);
+  io(part.numGlobalElements);
+  io(part.globalBlockSizes);
+  io(part.globalNodeSetSizes);
+  io(part.globalSideSetSizes);
+  io(part.nodeOwner);
+  io(part.sideSetPositions);
+  io(part.part.globalNodes);
+  io(part.part.globalElements);
+  io(part.part.sharedWith);
+  Mesh& mesh = part.part.mesh;
+  io(mesh.dimension);
+  io(mesh.coordinates);
+  io(mesh.blocks);
+  io(mesh.nodeSets);
+  io(mesh.sideSets);
+}
+
 class Packer {
  public:
   template <class T>
-  void put(const T& value) {
-    static_assert(std::is_trivially_copyable<T>::value, "plain values only");
-    const auto* p = reinterpret_cast<const char*>(&value);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
+  void operator()(const T& value) {
+    if constexpr (std::is_trivially_copyable<T>::value) {
+      const auto* p = reinterpret_cast<const char*>(&value);
+      bytes_.insert(bytes_.end(), p, p + sizeof(T));
+    } else {
+      describe(*this, const_cast<T&>(value));  // describe only reads through a Packer
+    }
   }
   template <class T>
-  void put(const std::vector<T>& values) {
-    put(static_cast<std::uint64_t>(values.size()));
+  void operator()(const std::vector<T>& values) {
+    (*this)(static_cast<std::uint64_t>(values.size()));
     if constexpr (std::is_trivially_copyable<T>::value) {
       const auto* p = reinterpret_cast<const char*>(values.data());
       bytes_.insert(bytes_.end(), p, p + values.size() * sizeof(T));
     } else {
-      for (const T& v : values) put(v);
+      for (const T& v : values) (*this)(v);
     }
   }
-  void put(const std::string& s) { put(std::vector<char>(s.begin(), s.end())); }
+  void operator()(const std::string& s) { (*this)(std::vector<char>(s.begin(), s.end())); }
   std::vector<char>& bytes() { return bytes_; }
 
  private:
@@ -47,24 +94,26 @@ class Unpacker {
  public:
   explicit Unpacker(const std::vector<char>& bytes) : bytes_(bytes) {}
   template <class T>
-  void get(T& value) {
-    static_assert(std::is_trivially_copyable<T>::value, "plain values only");
-    take(&value, sizeof(T));
+  void operator()(T& value) {
+    if constexpr (std::is_trivially_copyable<T>::value)
+      take(&value, sizeof(T));
+    else
+      describe(*this, value);
   }
   template <class T>
-  void get(std::vector<T>& values) {
+  void operator()(std::vector<T>& values) {
     std::uint64_t size = 0;
-    get(size);
+    (*this)(size);
     values.resize(static_cast<std::size_t>(size));
     if constexpr (std::is_trivially_copyable<T>::value) {
       take(values.data(), values.size() * sizeof(T));
     } else {
-      for (T& v : values) get(v);
+      for (T& v : values) (*this)(v);
     }
   }
-  void get(std::string& s) {
+  void operator()(std::string& s) {
     std::vector<char> chars;
-    get(chars);
+    (*this)(chars);
     s.assign(chars.begin(), chars.end());
   }
 
@@ -80,84 +129,14 @@ class Unpacker {
 
 std::vector<char> pack(const DistributedMesh& part) {
   Packer out;
-  out.put(part.rank);
-  out.put(part.numRanks);
-  out.put(part.numGlobalNodes);
-  out.put(part.numGlobalElements);
-  out.put(part.globalBlockSizes);
-  out.put(part.globalNodeSetSizes);
-  out.put(part.globalSideSetSizes);
-  out.put(part.nodeOwner);
-  out.put(part.sideSetPositions);
-  out.put(part.part.globalNodes);
-  out.put(part.part.globalElements);
-  out.put(part.part.sharedWith);
-  const Mesh& mesh = part.part.mesh;
-  out.put(mesh.dimension);
-  out.put(mesh.coordinates);
-  out.put(static_cast<std::uint64_t>(mesh.blocks.size()));
-  for (const auto& b : mesh.blocks) {
-    out.put(b.name);
-    out.put(static_cast<int>(b.cellType));
-    out.put(b.elements);
-    out.put(b.connectivity);
-  }
-  out.put(static_cast<std::uint64_t>(mesh.nodeSets.size()));
-  for (const auto& s : mesh.nodeSets) {
-    out.put(s.name);
-    out.put(s.nodes);
-  }
-  out.put(static_cast<std::uint64_t>(mesh.sideSets.size()));
-  for (const auto& s : mesh.sideSets) {
-    out.put(s.name);
-    out.put(s.elements);
-    out.put(s.sides);
-  }
+  out(part);
   return std::move(out.bytes());
 }
 
 DistributedMesh unpack(const std::vector<char>& bytes) {
   Unpacker in(bytes);
   DistributedMesh part;
-  in.get(part.rank);
-  in.get(part.numRanks);
-  in.get(part.numGlobalNodes);
-  in.get(part.numGlobalElements);
-  in.get(part.globalBlockSizes);
-  in.get(part.globalNodeSetSizes);
-  in.get(part.globalSideSetSizes);
-  in.get(part.nodeOwner);
-  in.get(part.sideSetPositions);
-  in.get(part.part.globalNodes);
-  in.get(part.part.globalElements);
-  in.get(part.part.sharedWith);
-  Mesh& mesh = part.part.mesh;
-  in.get(mesh.dimension);
-  in.get(mesh.coordinates);
-  std::uint64_t count = 0;
-  in.get(count);
-  mesh.blocks.resize(static_cast<std::size_t>(count));
-  for (auto& b : mesh.blocks) {
-    int type = 0;
-    in.get(b.name);
-    in.get(type);
-    b.cellType = static_cast<CellType>(type);
-    in.get(b.elements);
-    in.get(b.connectivity);
-  }
-  in.get(count);
-  mesh.nodeSets.resize(static_cast<std::size_t>(count));
-  for (auto& s : mesh.nodeSets) {
-    in.get(s.name);
-    in.get(s.nodes);
-  }
-  in.get(count);
-  mesh.sideSets.resize(static_cast<std::size_t>(count));
-  for (auto& s : mesh.sideSets) {
-    in.get(s.name);
-    in.get(s.elements);
-    in.get(s.sides);
-  }
+  in(part);
   return part;
 }
 

@@ -12,6 +12,7 @@
 
 #include "common/Error.hpp"
 #include "contact/ContactSurface.hpp"
+#include "io/DecomposedMesh.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/ExodusMeshReader.hpp"
@@ -233,15 +234,8 @@ namespace {
 // This rank's file of `part`'s set, as the per-rank output writes it (Nemesis records, id maps);
 // `processors` as written in the file.
 void writeDecomposedFile(const std::string& base, const DistributedMesh& part, int processors) {
-  contessa::io::ExodusDecomposition d;
-  d.processor = part.rank;
+  contessa::io::ExodusDecomposition d = contessa::io::decompositionOf(part);
   d.processors = processors;
-  d.globalNodes = part.part.globalNodes;
-  d.globalElements = part.part.globalElements;
-  d.globalNumNodes = part.numGlobalNodes;
-  d.globalNumElements = part.numGlobalElements;
-  d.globalBlockSizes = part.globalBlockSizes;
-  d.sharedWith = part.part.sharedWith;
   contessa::io::ExodusWriter(decomposedFileName(base, part.numRanks, part.rank), part.local(), {}, {}, {}, &d);
 }
 
