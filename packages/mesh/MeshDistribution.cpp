@@ -144,23 +144,36 @@ DistributedMesh unpack(const std::vector<char>& bytes) {
 constexpr std::size_t kChunk = std::size_t(1) << 30;
 constexpr int kTagSize = 7101, kTagBytes = 7102;
 
-void sendBytes(const std::vector<char>& bytes, int to) {
+void sendBytes(const std::vector<char>& bytes, int to, MPI_Comm comm) {
   const std::uint64_t size = bytes.size();
-  MPI_Send(&size, 1, MPI_UINT64_T, to, kTagSize, MPI_COMM_WORLD);
+  MPI_Send(&size, 1, MPI_UINT64_T, to, kTagSize, comm);
   for (std::size_t at = 0; at < bytes.size(); at += kChunk)
-    MPI_Send(bytes.data() + at, static_cast<int>(std::min(kChunk, bytes.size() - at)), MPI_CHAR, to, kTagBytes,
-             MPI_COMM_WORLD);
+    MPI_Send(bytes.data() + at, static_cast<int>(std::min(kChunk, bytes.size() - at)), MPI_CHAR, to, kTagBytes, comm);
 }
 
-std::vector<char> receiveBytes(int from) {
+std::vector<char> receiveBytes(int from, MPI_Comm comm) {
   std::uint64_t size = 0;
-  MPI_Recv(&size, 1, MPI_UINT64_T, from, kTagSize, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  MPI_Recv(&size, 1, MPI_UINT64_T, from, kTagSize, comm, MPI_STATUS_IGNORE);
   std::vector<char> bytes(static_cast<std::size_t>(size));
   for (std::size_t at = 0; at < bytes.size(); at += kChunk)
     MPI_Recv(bytes.data() + at, static_cast<int>(std::min(kChunk, bytes.size() - at)), MPI_CHAR, from, kTagBytes,
-             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+             comm, MPI_STATUS_IGNORE);
   return bytes;
 }
+
+// The parts travel on a communicator of their own, so that no other point-to-point traffic on
+// MPI_COMM_WORLD (Tpetra's) can match their tags.
+class PrivateComm {
+ public:
+  PrivateComm() { MPI_Comm_dup(MPI_COMM_WORLD, &comm_); }
+  ~PrivateComm() { MPI_Comm_free(&comm_); }
+  PrivateComm(const PrivateComm&) = delete;
+  PrivateComm& operator=(const PrivateComm&) = delete;
+  MPI_Comm get() const { return comm_; }
+
+ private:
+  MPI_Comm comm_;
+};
 
 int worldRank() { return worldRanks().rank; }
 
@@ -204,7 +217,8 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
   const int rank = worldRank(), size = worldSize();
   if (rank != 0) {
     throwIfAnyRankFailed(nullptr);
-    return unpack(receiveBytes(0));
+    const PrivateComm comm;
+    return unpack(receiveBytes(0, comm.get()));
   }
 
   // Rank 0: read and partition; whatever fails is told to the others before it is thrown here.
@@ -221,7 +235,8 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
 
   const PartExtractor extractor(mesh, std::move(partition.elementOwner), size);
   partition = Partition{};
-  for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to);
+  const PrivateComm comm;
+  for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to, comm.get());
   return extractor.part(0);
 }
 

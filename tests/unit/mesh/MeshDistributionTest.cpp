@@ -371,6 +371,15 @@ TEST(MeshFactoryPart, AMeshFileIsReadOnRankZeroAndPartitionedByMetis) {
   if (rank() == 0) std::remove(path.c_str());
 }
 
+TEST(MeshFactoryPart, AGmshFileIsReadOnRankZeroAndPartitionedByMetis) {
+  Teuchos::ParameterList list = *MeshFactory::validParameters("Gmsh File");
+  list.set("File Name", std::string(CONTESSA_TEST_MESHES "/two_blocks.msh"));
+  const DistributedMesh part = MeshFactory::createPart("Gmsh File", list, "Problem/Mesh", "");
+  const Mesh replicated = MeshFactory::create("Gmsh File", list, "Problem/Mesh", "");
+  expectSameParts(part, PartExtractor(replicated, partitionMesh(replicated, ranks()).elementOwner, ranks()).part(rank()));
+  expectConsistentOwnership(part);
+}
+
 TEST(MeshFactoryPart, AMissingMeshFileIsTheDeckErrorOnEveryRank) {
   Teuchos::ParameterList list = *MeshFactory::validParameters("Exodus File");
   list.set("File Name", std::string("no_such_mesh.exo"));
