@@ -7,7 +7,8 @@
 //                                                               file per rank (each writes its part)
 //   mpiexec -n P build/bin/distributed_mesh_bench MODE N|FILE|BASE
 // MODE: replicated-box N, generated-box N, replicated-exodus FILE, distributed-exodus FILE,
-// decomposed-exodus BASE (each rank reads its own file of the set).
+// decomposed-exodus BASE (each rank reads its own file of the set), replicated-octant N and
+// generated-octant N (the sphere octant, N elements along each edge and through the shell).
 // Prints one line: mode, ranks, the largest and summed peak resident memory of the ranks (VmHWM) and
 // the same above the process's start (MPI and libraries loaded; also rank 0's alone and the largest of
 // the other ranks', since rank 0 alone reads a file on the distributed path), the mesh containers held afterwards
@@ -90,6 +91,19 @@ int main(int argc, char** argv) {
     held = static_cast<double>(meshBytes(mesh)) +
            static_cast<double>((partition.elementOwner.size() + partition.nodeOwner.size()) * sizeof(int));
     part = PartExtractor(mesh, partition.elementOwner, ranks).part(rank);  // what the rank works on
+  } else if (mode == "replicated-octant") {
+    SphereOctantSpec spec;
+    spec.elementsAlongEdge = spec.elementsThroughShell = std::atoi(arg.c_str());
+    const Mesh mesh = generateSphereOctant(spec);
+    const Partition partition = partitionMesh(mesh, ranks);
+    held = static_cast<double>(meshBytes(mesh)) +
+           static_cast<double>((partition.elementOwner.size() + partition.nodeOwner.size()) * sizeof(int));
+    part = PartExtractor(mesh, partition.elementOwner, ranks).part(rank);
+  } else if (mode == "generated-octant") {
+    SphereOctantSpec spec;
+    spec.elementsAlongEdge = spec.elementsThroughShell = std::atoi(arg.c_str());
+    part = generateSphereOctantPart(spec, rank, ranks);
+    held = static_cast<double>(part.bytes());
   } else if (mode == "generated-box") {
     part = generateBoxPart(cube(std::atoi(arg.c_str())), rank, ranks);
     held = static_cast<double>(part.bytes());

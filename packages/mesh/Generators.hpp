@@ -108,8 +108,10 @@ Mesh generateSphereOctant(const SphereOctantSpec& spec);
 /// the rank, their nodes (bit-identical coordinates), the sets restricted to them, and each node's
 /// owner and sharing ranks from the owners of the cells around it. Equal, field by field, to
 /// PartExtractor(whole mesh, ElementRanges owners).part(rank). The same checks and errors as the
-/// whole-mesh generator, plus requirePartsFit (at most one rank per element). The sphere octant is not
-/// yet built part by part: it builds the whole octant and keeps the part (memory as the replicated mesh).
+/// whole-mesh generator, plus requirePartsFit (at most one rank per element). The sphere octant (not
+/// one structured grid) finds the ranks of its part's nodes and the sets' global order in one pass
+/// over every element's corners, computed and dropped one at a time: memory of the part plus its
+/// surfaces, time of the whole mesh's connectivity.
 DistributedMesh generateRectanglePart(const RectangleSpec& spec, int rank, int numRanks);
 DistributedMesh generateAnnulusSectorPart(const AnnulusSectorSpec& spec, int rank, int numRanks);
 DistributedMesh generateBoxPart(const BoxSpec& spec, int rank, int numRanks);

@@ -124,6 +124,17 @@ TEST(MeshDistribution, GeneratedPartsAgreeOnOwnershipAcrossRanks) {
   rectangle.nx = 7;
   rectangle.ny = 2;
   expectConsistentOwnership(generateRectanglePart(rectangle, rank(), ranks()));
+
+  SphereOctantSpec octant;
+  octant.elementsAlongEdge = 3;
+  octant.elementsThroughShell = 2;
+  const Mesh ball = generateSphereOctant(octant);
+  const DistributedMesh octantPart = generateSphereOctantPart(octant, rank(), ranks());
+  expectSameParts(octantPart,
+                  PartExtractor(ball, ElementRanges{ball.numElements(), ranks()}.owners(), ranks()).part(rank()));
+  expectConsistentOwnership(octantPart);
+  for (const auto& set : ball.sideSets)
+    expectSameSurface(gatherSurface(octantPart, set.name), surfaceOfSideSet(ball, set.name));
 }
 
 TEST(MeshDistribution, AnExodusFileReadOnRankZeroArrivesAsTheReplicatedPathsParts) {
