@@ -1,5 +1,6 @@
 #include "contact/ContactSurface.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -36,20 +37,18 @@ std::array<double, Facet::kNodes> nodalAreas(const std::array<typename Facet::Po
 }
 
 template <class Facet>
-void addFacets(const mesh::Mesh& mesh, const mesh::SideSet& set, ContactSurface& surface) {
+void addFacets(const mesh::ReplicatedSurface& facets, ContactSurface& surface) {
   constexpr int n = Facet::kNodes, dim = Facet::kSpaceDim;
   std::map<GlobalIndex, double> area, size;
   std::map<GlobalIndex, int> count;
-  for (std::size_t i = 0; i < set.elements.size(); ++i) {
-    const auto loc = mesh.locate(set.elements[i]);
-    const auto& block = mesh.blocks[loc.block];
-    const int nn = mesh::nodesPerCell(block.cellType);
-    const auto local = mesh::sideNodes(block.cellType, set.sides[i]);
+  for (std::size_t i = 0; i < facets.elements.size(); ++i) {
     std::array<typename Facet::Point, n> x{};
     std::array<GlobalIndex, n> nodes{};
     for (int a = 0; a < n; ++a) {
-      nodes[a] = block.connectivity[loc.local * nn + local[a]];
-      for (int c = 0; c < dim; ++c) x[a][c] = mesh.coordinates[nodes[a] * dim + c];
+      nodes[a] = facets.facetNodes[i * n + a];
+      const auto at = static_cast<std::size_t>(
+          std::lower_bound(facets.nodes.begin(), facets.nodes.end(), nodes[a]) - facets.nodes.begin());
+      for (int c = 0; c < dim; ++c) x[a][c] = facets.coordinates[at * dim + c];
       surface.facets.push_back(nodes[a]);
     }
     double facetArea = 0;
@@ -74,12 +73,18 @@ void addFacets(const mesh::Mesh& mesh, const mesh::SideSet& set, ContactSurface&
 ContactSurface ContactSurface::fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where) {
   requireInput(mesh.dimension == 2 || mesh.dimension == 3, where + ": contact needs a 2D or 3D mesh");
   requireInput(!set.elements.empty(), where + ": side set '" + set.name + "' is empty");
+  return fromSurface(mesh::surfaceOfSideSet(mesh, set.name), where);
+}
+
+ContactSurface ContactSurface::fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where) {
+  requireInput(facets.dimension == 2 || facets.dimension == 3, where + ": contact needs a 2D or 3D mesh");
+  requireInput(!facets.elements.empty(), where + ": side set '" + facets.name + "' is empty");
   ContactSurface surface;
-  surface.nodesPerFacet = mesh.dimension == 2 ? 2 : 4;
-  if (mesh.dimension == 2)
-    addFacets<Line2Facet>(mesh, set, surface);
+  surface.nodesPerFacet = facets.dimension == 2 ? 2 : 4;
+  if (facets.dimension == 2)
+    addFacets<Line2Facet>(facets, surface);
   else
-    addFacets<Quad4Facet>(mesh, set, surface);
+    addFacets<Quad4Facet>(facets, surface);
   return surface;
 }
 

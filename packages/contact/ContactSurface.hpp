@@ -7,6 +7,7 @@
 
 #include "contact/ContactInterface.hpp"
 #include "mesh/Mesh.hpp"
+#include "mesh/MeshDistribution.hpp"
 
 namespace contessa::contact {
 
@@ -25,6 +26,9 @@ struct ContactSurface {
 
   /// Throws InputError starting with `where` for a side set that is not a surface of the mesh's dimension.
   static ContactSurface fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where);
+  /// The same from the side set's facets alone (mesh::surfaceOfSideSet of a replicated mesh, or
+  /// mesh::gatherSurface from the ranks' parts of a distributed one): identical, bit for bit.
+  static ContactSurface fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where);
 };
 
 /// Checks a rigid master surface of the given dimension (one-line InputError naming `where`/Points,

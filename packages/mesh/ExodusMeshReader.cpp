@@ -136,7 +136,10 @@ class Reader {
       check(ex_get_block_param(id(), &param), "element block '" + blockNames[b] + "'");
       ElementBlock block;
       block.name = blockNames[b];
-      block.cellType = cellType(block.name, param.topology, param.num_nodes_per_entry);
+      // An empty block (a piece of a decomposed set where the rank has none of its elements) is
+      // written with topology "NULL": its cells are the mesh dimension's.
+      block.cellType = param.num_entry == 0 ? (mesh.dimension == 2 ? CellType::Quad4 : CellType::Hex8)
+                                            : cellType(block.name, param.topology, param.num_nodes_per_entry);
       requireInput(cellDimension(block.cellType) == mesh.dimension,
                    path() + ": element block '" + block.name + "' has " + exodusCellName(block.cellType) +
                        " cells in a " + std::to_string(mesh.dimension) + "D mesh");

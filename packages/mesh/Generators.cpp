@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <new>
 #include <tuple>
 #include <utility>
@@ -10,6 +11,7 @@
 
 #include "common/Error.hpp"
 #include "mesh/MemoryEstimate.hpp"
+#include "mesh/Partition.hpp"
 
 namespace contessa::mesh {
 
@@ -67,7 +69,7 @@ std::string requireGridFits(const std::vector<std::pair<std::string, int>>& coun
 }
 
 template <class Generate>
-Mesh guardAllocation(const std::string& outOfMemoryMessage, Generate&& generate) {
+auto guardAllocation(const std::string& outOfMemoryMessage, Generate&& generate) {
   try {
     return generate();
   } catch (const std::bad_alloc&) {
@@ -218,38 +220,173 @@ class StructuredGrid {
   std::vector<int> n_;
 };
 
-// The allocating part of the generators, once their specs are checked and known to fit.
-Mesh buildRectangle(const RectangleSpec& spec) {
-  // Positions are computed per node (not by summing steps), and the last one is set to x0 + lx.
-  const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
-  const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
-  const StructuredGrid grid({spec.nx, spec.ny});
-  Mesh mesh;
-  grid.setCoordinates(mesh, [&](int i, int j, int, double* x) {
-    x[0] = xs[i];
-    x[1] = ys[j];
-  });
-  mesh.blocks.push_back(grid.block(spec.blockName));
-  grid.addSets(mesh, {"left", "right", "bottom", "top"});
-  mesh.validate("rectangle mesh");
-  return mesh;
+// What a structured generator makes, before it makes it: the grid, the position of each grid node
+// (point(i, j, k, x) writes dimension() values at x), the block's and the faces' names, and the name
+// its checks give the mesh. The whole mesh and any rank's part come from the same recipe.
+struct GridRecipe {
+  StructuredGrid grid;
+  std::function<void(int, int, int, double*)> point;
+  std::string blockName;
+  std::vector<std::string> faceNames;  ///< min0, max0, min1, max1[, min2, max2]
+  std::string source;
+
+  Mesh whole() const {
+    Mesh mesh;
+    grid.setCoordinates(mesh, point);
+    mesh.blocks.push_back(grid.block(blockName));
+    grid.addSets(mesh, faceNames);
+    mesh.validate(source);
+    return mesh;
+  }
+
+  DistributedMesh part(int rank, int numRanks) const;
+};
+
+// Rank `rank`'s part under ElementRanges: the cells of its id range, the nodes they use, each node's
+// ranks found from the (up to 2^d) cells around it, whose owners every rank computes alone. Nothing of
+// the rest of the grid is built; the node ids scanned span the part's plus one layer of nodes.
+DistributedMesh GridRecipe::part(int rank, int numRanks) const {
+  const int dim = grid.dimension();
+  const int n[3] = {grid.count(0), grid.count(1), dim == 2 ? 1 : grid.count(2)};
+  const GlobalIndex numElements = grid.numElements();
+  requirePartsFit(numElements, numRanks);
+  const ElementRanges ranges{numElements, numRanks};
+  const GlobalIndex first = ranges.begin(rank), last = ranges.begin(rank + 1);  // cells [first, last)
+
+  DistributedMesh result;
+  result.rank = rank;
+  result.numRanks = numRanks;
+  result.numGlobalNodes = grid.numNodes();
+  result.numGlobalElements = numElements;
+  MeshPiece& piece = result.part;
+  piece.mesh.dimension = dim;
+
+  auto cellIndex = [&](GlobalIndex e, int idx[3]) {
+    idx[0] = static_cast<int>(e % n[0]);
+    idx[1] = static_cast<int>(e / n[0] % n[1]);
+    idx[2] = static_cast<int>(e / (static_cast<GlobalIndex>(n[0]) * n[1]));
+  };
+  int lo[3], hi[3];
+  cellIndex(first, lo);
+  cellIndex(last - 1, hi);
+  const GlobalIndex nodeBegin = grid.node(lo[0], lo[1], lo[2]);
+  const GlobalIndex nodeEnd = grid.node(hi[0] + 1, hi[1] + 1, dim == 2 ? 0 : hi[2] + 1) + 1;
+  std::vector<GlobalIndex> local(static_cast<std::size_t>(nodeEnd - nodeBegin), -1);
+  const int nodeRow = grid.count(0) + 1, nodeLayer = nodeRow * (grid.count(1) + 1);
+  std::vector<int> ranks;
+  std::vector<int> nodeIndex;  // i, j, k of each part node
+  for (GlobalIndex node = nodeBegin; node < nodeEnd; ++node) {
+    const int idx[3] = {static_cast<int>(node % nodeRow), static_cast<int>(node / nodeRow % (grid.count(1) + 1)),
+                        static_cast<int>(node / nodeLayer)};
+    ranks.clear();
+    for (int dk = dim == 2 ? 0 : -1; dk <= 0; ++dk)
+      for (int dj = -1; dj <= 0; ++dj)
+        for (int di = -1; di <= 0; ++di) {
+          const int c[3] = {idx[0] + di, idx[1] + dj, idx[2] + dk};
+          if (c[0] < 0 || c[0] >= n[0] || c[1] < 0 || c[1] >= n[1] || c[2] < 0 || c[2] >= n[2]) continue;
+          ranks.push_back(ranges.owner(grid.element(c[0], c[1], c[2])));
+        }
+    std::sort(ranks.begin(), ranks.end());
+    ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+    if (!std::binary_search(ranks.begin(), ranks.end(), rank)) continue;
+    local[node - nodeBegin] = static_cast<GlobalIndex>(piece.globalNodes.size());
+    piece.globalNodes.push_back(node);
+    nodeIndex.insert(nodeIndex.end(), idx, idx + 3);
+    double x[3];
+    point(idx[0], idx[1], idx[2], x);
+    piece.mesh.coordinates.insert(piece.mesh.coordinates.end(), x, x + dim);
+    result.nodeOwner.push_back(ranks.front());
+    std::vector<int> others;
+    for (int r : ranks)
+      if (r != rank) others.push_back(r);
+    piece.sharedWith.push_back(std::move(others));
+  }
+
+  ElementBlock block;
+  block.name = blockName;
+  block.cellType = dim == 2 ? CellType::Quad4 : CellType::Hex8;
+  std::vector<GlobalIndex> corners;
+  std::vector<int> cells;  // i, j, k of each part cell
+  for (GlobalIndex e = first; e < last; ++e) {
+    int c[3];
+    cellIndex(e, c);
+    cells.insert(cells.end(), c, c + 3);
+    block.elements.push_back(e - first);
+    piece.globalElements.push_back(e);
+    corners.clear();
+    grid.cellNodes(c[0], c[1], c[2], corners);
+    for (GlobalIndex node : corners) block.connectivity.push_back(local[node - nodeBegin]);
+  }
+  piece.mesh.blocks.push_back(std::move(block));
+  result.globalBlockSizes.push_back(numElements);
+
+  // The sets of the whole mesh (StructuredGrid::addSets) restricted to the part, in the same order:
+  // a face's nodes and cells ascending, then "all"; a side's position in the whole set is its cell's
+  // rank among the face's cells (the axes other than the face's, lowest fastest).
+  for (int f = 0; f < 2 * dim; ++f) {
+    const int axis = f / 2, at = f % 2 == 1 ? grid.count(axis) : 0;
+    NodeSet set{faceNames[f], {}};
+    GlobalIndex size = 1;
+    for (int a = 0; a < dim; ++a)
+      if (a != axis) size *= grid.count(a) + 1;
+    for (std::size_t k = 0; k < piece.globalNodes.size(); ++k)
+      if (nodeIndex[3 * k + axis] == at) set.nodes.push_back(static_cast<GlobalIndex>(k));
+    piece.mesh.nodeSets.push_back(std::move(set));
+    result.globalNodeSetSizes.push_back(size);
+  }
+  NodeSet all{"all", std::vector<GlobalIndex>(piece.globalNodes.size())};
+  for (std::size_t k = 0; k < all.nodes.size(); ++k) all.nodes[k] = static_cast<GlobalIndex>(k);
+  piece.mesh.nodeSets.push_back(std::move(all));
+  result.globalNodeSetSizes.push_back(grid.numNodes());
+  for (int f = 0; f < 2 * dim; ++f) {
+    const int axis = f / 2, at = f % 2 == 1 ? n[axis] - 1 : 0;
+    SideSet set{faceNames[f], {}, {}};
+    std::vector<GlobalIndex> positions;
+    GlobalIndex size = 1;
+    for (int a = 0; a < dim; ++a)
+      if (a != axis) size *= n[a];
+    for (std::size_t e = 0; e < piece.globalElements.size(); ++e) {
+      if (cells[3 * e + axis] != at) continue;
+      set.elements.push_back(static_cast<GlobalIndex>(e));
+      set.sides.push_back(sideOfFace(axis, f % 2 == 1));
+      GlobalIndex position = 0, stride = 1;
+      for (int a = 0; a < dim; ++a) {
+        if (a == axis) continue;
+        position += cells[3 * e + a] * stride;
+        stride *= n[a];
+      }
+      positions.push_back(position);
+    }
+    piece.mesh.sideSets.push_back(std::move(set));
+    result.sideSetPositions.push_back(std::move(positions));
+    result.globalSideSetSizes.push_back(size);
+  }
+  piece.mesh.validate(source + " (part of rank " + std::to_string(rank) + ")");
+  return result;
 }
 
-Mesh buildBox(const BoxSpec& spec) {
+GridRecipe rectangleRecipe(const RectangleSpec& spec) {
+  const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
+  const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
+  return {StructuredGrid({spec.nx, spec.ny}),
+          [xs, ys](int i, int j, int, double* x) {
+            x[0] = xs[i];
+            x[1] = ys[j];
+          },
+          spec.blockName, {"left", "right", "bottom", "top"}, "rectangle mesh"};
+}
+
+GridRecipe boxRecipe(const BoxSpec& spec) {
   const std::vector<double> xs = gradedPositions(spec.x0, spec.lx, spec.nx, spec.biasX, "Bias X");
   const std::vector<double> ys = gradedPositions(spec.y0, spec.ly, spec.ny, spec.biasY, "Bias Y");
   const std::vector<double> zs = gradedPositions(spec.z0, spec.lz, spec.nz, spec.biasZ, "Bias Z");
-  const StructuredGrid grid({spec.nx, spec.ny, spec.nz});
-  Mesh mesh;
-  grid.setCoordinates(mesh, [&](int i, int j, int k, double* x) {
-    x[0] = xs[i];
-    x[1] = ys[j];
-    x[2] = zs[k];
-  });
-  mesh.blocks.push_back(grid.block(spec.blockName));
-  grid.addSets(mesh, {"left", "right", "bottom", "top", "back", "front"});
-  mesh.validate("box mesh");
-  return mesh;
+  return {StructuredGrid({spec.nx, spec.ny, spec.nz}),
+          [xs, ys, zs](int i, int j, int k, double* x) {
+            x[0] = xs[i];
+            x[1] = ys[j];
+            x[2] = zs[k];
+          },
+          spec.blockName, {"left", "right", "bottom", "top", "back", "front"}, "box mesh"};
 }
 
 // The annulus sector's radii and angles (degrees). Angles are graded in degrees, so the last one is
@@ -271,31 +408,23 @@ struct AnnulusPositions {
   }
 };
 
-Mesh buildAnnulusSector(const AnnulusSectorSpec& spec) {
+GridRecipe annulusSectorRecipe(const AnnulusSectorSpec& spec) {
   const AnnulusPositions annulus(spec);
-  const StructuredGrid grid({spec.elementsThroughThickness, spec.elementsAroundArc});
-  Mesh mesh;
-  grid.setCoordinates(mesh, [&](int i, int j, int, double* x) { annulus.point(i, j, x); });
-  mesh.blocks.push_back(grid.block(spec.blockName));
-  grid.addSets(mesh, {"inner", "outer", "start", "end"});
-  mesh.validate("annulus sector mesh");
-  return mesh;
+  return {StructuredGrid({spec.elementsThroughThickness, spec.elementsAroundArc}),
+          [annulus](int i, int j, int, double* x) { annulus.point(i, j, x); }, spec.blockName,
+          {"inner", "outer", "start", "end"}, "annulus sector mesh"};
 }
 
-Mesh buildHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
+GridRecipe hollowCylinderSectorRecipe(const HollowCylinderSectorSpec& spec) {
   const AnnulusPositions annulus(spec.section);
   const std::vector<double> zs = gradedPositions(spec.z0, spec.length, spec.layers, spec.axialBias, "Bias Z");
-  const StructuredGrid grid({spec.section.elementsThroughThickness, spec.section.elementsAroundArc, spec.layers});
-  Mesh mesh;
   // (r, θ, z) → (x, y, z) has Jacobian r > 0: right-handed cells.
-  grid.setCoordinates(mesh, [&](int i, int j, int k, double* x) {
-    annulus.point(i, j, x);
-    x[2] = zs[k];
-  });
-  mesh.blocks.push_back(grid.block(spec.section.blockName));
-  grid.addSets(mesh, {"inner", "outer", "start", "end", "back", "front"});
-  mesh.validate("hollow cylinder sector mesh");
-  return mesh;
+  return {StructuredGrid({spec.section.elementsThroughThickness, spec.section.elementsAroundArc, spec.layers}),
+          [annulus, zs](int i, int j, int k, double* x) {
+            annulus.point(i, j, x);
+            x[2] = zs[k];
+          },
+          spec.section.blockName, {"inner", "outer", "start", "end", "back", "front"}, "hollow cylinder sector mesh"};
 }
 
 // The sphere octant in local coordinates (u, v, w) ≥ 0 about the centre, w towards the pole, then
@@ -320,7 +449,10 @@ class SphereOctant {
     // Shell nodes sit on rays through the cube's outer-boundary nodes: number those.
     boundaryIndex_.assign(static_cast<size_t>(cube_.numNodes()), -1);
     cube_.forNodes([&](int i, int j, int k) {
-      if (i == n_ || j == n_ || k == n_) boundaryIndex_[cube_.node(i, j, k)] = boundaryCount_++;
+      if (i == n_ || j == n_ || k == n_) {
+        boundaryIndex_[cube_.node(i, j, k)] = boundaryCount_++;
+        boundaryNode_.push_back(cube_.node(i, j, k));
+      }
     });
   }
 
@@ -335,72 +467,37 @@ class SphereOctant {
     return s;
   }
 
+  GlobalIndex numNodes() const { return cube_.numNodes() + m_ * boundaryCount_; }
+  GlobalIndex numElements() const { return cube_.numElements() + 3 * static_cast<GlobalIndex>(n_) * n_ * m_; }
+
+  // The whole octant, element by element and node by node through the same functions a part uses.
   Mesh build() const {
     Mesh mesh;
     mesh.dimension = 3;
-    const GlobalIndex cubeNodes = cube_.numNodes();
-    mesh.coordinates.resize(3 * static_cast<size_t>(cubeNodes + m_ * boundaryCount_));
-    cube_.forNodes([&](int i, int j, int k) {
-      const double local[3] = {axis_[0][i], axis_[1][j], axis_[2][k]};
-      place(local, &mesh.coordinates[3 * static_cast<size_t>(cube_.node(i, j, k))]);
-      if (boundaryIndex_[cube_.node(i, j, k)] < 0) return;
-      // Shell layer l: (1 − ρ_l)·P + ρ_l·R·P/|P|, along the ray from the centre through P.
-      const double norm = std::sqrt(local[0] * local[0] + local[1] * local[1] + local[2] * local[2]);
-      for (int l = 1; l <= m_; ++l) {
-        const double scale = (1 - layers_[l]) + layers_[l] * spec_.radius / norm;
-        const double p[3] = {scale * local[0], scale * local[1], scale * local[2]};
-        place(p, &mesh.coordinates[3 * static_cast<size_t>(shellNode(l, cube_.node(i, j, k)))]);
-      }
-    });
+    mesh.coordinates.resize(3 * static_cast<size_t>(numNodes()));
+    for (GlobalIndex node = 0; node < numNodes(); ++node) nodePoint(node, &mesh.coordinates[3 * static_cast<size_t>(node)]);
 
     ElementBlock block;
     block.name = spec_.blockName;
     block.cellType = CellType::Hex8;
-    SideSet surface{"surface", {}, {}}, equator{"equator", {}, {}}, symmetry[2];
-    auto addSide = [&block](SideSet& set, int side) {
-      set.elements.push_back(block.numElements() - 1);
-      set.sides.push_back(side);
-    };
-    // The inner cube: the box numbering; its faces at u = 0, v = 0, w = 0 are symmetry and equator.
-    cube_.forCells([&](int i, int j, int k) {
-      block.elements.push_back(block.numElements());
-      cube_.cellNodes(i, j, k, block.connectivity);
-      if (i == 0) addSide(symmetry[0], sideOfFace(0, false));
-      if (j == 0) addSide(symmetry[1], sideOfFace(1, false));
-      if (k == 0) addSide(equator, sideOfFace(2, false));
-    });
-    // The shells over the cube faces u = a, v = a, w = a. Each spans two cube axes (p, q) with
-    // p × q = the face's outward normal, so (p, q, outwards) is right-handed: the face's quad at
-    // layer l, then at l + 1, is an Exodus-ordered Hex8 with reference axes (p, q, radial).
-    for (int normal = 0; normal < 3; ++normal) {
-      const int p = (normal + 1) % 3, q = (normal + 2) % 3;
-      for (int b = 0; b < n_; ++b)
-        for (int a = 0; a < n_; ++a)
-          for (int l = 0; l < m_; ++l) {
-            block.elements.push_back(block.numElements());
-            for (int layer = l; layer <= l + 1; ++layer)
-              for (auto [da, db] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-                int index[3];
-                index[normal] = n_;
-                index[p] = a + da;
-                index[q] = b + db;
-                block.connectivity.push_back(shellNode(layer, cube_.node(index[0], index[1], index[2])));
-              }
-            // Faces on the planes p = 0, q = 0 (symmetry or equator), and the sphere.
-            for (auto [axis, index, side] : {std::tuple{p, a, sideOfFace(0, false)}, {q, b, sideOfFace(1, false)}})
-              if (index == 0) addSide(axis == 2 ? equator : symmetry[axis], side);
-            if (l == m_ - 1) addSide(surface, sideOfFace(2, true));
-          }
+    std::vector<SideSet> sets = emptySideSets();
+    std::vector<std::pair<int, int>> faces;
+    for (GlobalIndex e = 0; e < numElements(); ++e) {
+      block.elements.push_back(e);
+      elementNodes(e, block.connectivity);
+      faces.clear();
+      elementFaces(e, faces);
+      for (const auto& [set, side] : faces) {
+        sets[set].elements.push_back(e);
+        sets[set].sides.push_back(side);
+      }
     }
     mesh.blocks.push_back(std::move(block));
-
-    symmetry[0].name = "symmetry_" + std::string(1, "xyz"[globalAxis_[0]]);
-    symmetry[1].name = "symmetry_" + std::string(1, "xyz"[globalAxis_[1]]);
-    for (const SideSet* s : {&surface, &equator, &symmetry[0], &symmetry[1]}) {
-      mesh.sideSets.push_back(*s);
-      mesh.nodeSets.push_back(nodesOf(mesh, *s));
+    for (const SideSet& s : sets) {
+      mesh.sideSets.push_back(s);
+      mesh.nodeSets.push_back(nodesOf(mesh, s));
     }
-    mesh.nodeSets.push_back({"pole", {shellNode(m_, cube_.node(0, 0, n_))}});
+    mesh.nodeSets.push_back({"pole", {poleNode()}});
     NodeSet all{"all", std::vector<GlobalIndex>(static_cast<size_t>(mesh.numNodes()))};
     for (size_t k = 0; k < all.nodes.size(); ++k) all.nodes[k] = static_cast<GlobalIndex>(k);
     mesh.nodeSets.push_back(std::move(all));
@@ -408,7 +505,190 @@ class SphereOctant {
     return mesh;
   }
 
+  // Rank `rank`'s part under ElementRanges, without the rest of the mesh: the part's elements and
+  // nodes, then one pass over every element's corners and faces, computed and dropped one element at
+  // a time, for the ranks holding each part node and the sets' global order and sizes. Memory: the
+  // part plus the sets' nodes (surfaces); time: the whole mesh's connectivity, once.
+  DistributedMesh part(int rank, int numRanks) const {
+    const GlobalIndex numCells = numElements();
+    requirePartsFit(numCells, numRanks);
+    const ElementRanges ranges{numCells, numRanks};
+    const GlobalIndex first = ranges.begin(rank), last = ranges.begin(rank + 1);
+    DistributedMesh result;
+    result.rank = rank;
+    result.numRanks = numRanks;
+    result.numGlobalNodes = numNodes();
+    result.numGlobalElements = numCells;
+    MeshPiece& piece = result.part;
+    piece.mesh.dimension = 3;
+
+    std::vector<GlobalIndex> corners;  // of the part's elements, in order
+    for (GlobalIndex e = first; e < last; ++e) elementNodes(e, corners);
+    piece.globalNodes = corners;
+    std::sort(piece.globalNodes.begin(), piece.globalNodes.end());
+    piece.globalNodes.erase(std::unique(piece.globalNodes.begin(), piece.globalNodes.end()), piece.globalNodes.end());
+    auto localOf = [&](GlobalIndex node) -> GlobalIndex {
+      const auto it = std::lower_bound(piece.globalNodes.begin(), piece.globalNodes.end(), node);
+      return it != piece.globalNodes.end() && *it == node ? it - piece.globalNodes.begin() : -1;
+    };
+
+    std::vector<std::vector<int>> users(piece.globalNodes.size());
+    std::vector<SideSet> sets = emptySideSets();
+    std::vector<std::vector<GlobalIndex>> positions(sets.size()), setNodes(sets.size());
+    std::vector<GlobalIndex> counts(sets.size(), 0), cell;
+    std::vector<std::pair<int, int>> faces;
+    int owner = 0;
+    for (GlobalIndex e = 0; e < numCells; ++e) {
+      while (ranges.begin(owner + 1) <= e) ++owner;  // owners grow with e: users come out sorted
+      cell.clear();
+      elementNodes(e, cell);
+      for (GlobalIndex node : cell) {
+        const GlobalIndex local = localOf(node);
+        if (local >= 0 && (users[local].empty() || users[local].back() != owner)) users[local].push_back(owner);
+      }
+      faces.clear();
+      elementFaces(e, faces);
+      for (const auto& [set, side] : faces) {
+        if (e >= first && e < last) {
+          sets[set].elements.push_back(e - first);
+          sets[set].sides.push_back(side);
+          positions[set].push_back(counts[set]);
+        }
+        ++counts[set];
+        for (int a : sideNodes(CellType::Hex8, side)) setNodes[set].push_back(cell[a]);
+      }
+    }
+    for (std::size_t k = 0; k < piece.globalNodes.size(); ++k) {
+      double x[3];
+      nodePoint(piece.globalNodes[k], x);
+      piece.mesh.coordinates.insert(piece.mesh.coordinates.end(), x, x + 3);
+      result.nodeOwner.push_back(users[k].front());
+      std::vector<int> others;
+      for (int r : users[k])
+        if (r != rank) others.push_back(r);
+      piece.sharedWith.push_back(std::move(others));
+    }
+
+    ElementBlock block;
+    block.name = spec_.blockName;
+    block.cellType = CellType::Hex8;
+    for (GlobalIndex e = first; e < last; ++e) {
+      block.elements.push_back(e - first);
+      piece.globalElements.push_back(e);
+    }
+    for (GlobalIndex node : corners) block.connectivity.push_back(localOf(node));
+    piece.mesh.blocks.push_back(std::move(block));
+    result.globalBlockSizes.push_back(numCells);
+
+    // The sets in build()'s order: a node set per side set (its faces' nodes), "pole", "all".
+    auto addNodeSet = [&](const std::string& name, std::vector<GlobalIndex> nodes) {
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      NodeSet set{name, {}};
+      for (GlobalIndex node : nodes)
+        if (localOf(node) >= 0) set.nodes.push_back(localOf(node));
+      piece.mesh.nodeSets.push_back(std::move(set));
+      result.globalNodeSetSizes.push_back(static_cast<GlobalIndex>(nodes.size()));
+    };
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+      addNodeSet(sets[s].name, std::move(setNodes[s]));
+      result.globalSideSetSizes.push_back(counts[s]);
+    }
+    addNodeSet("pole", {poleNode()});
+    NodeSet all{"all", std::vector<GlobalIndex>(piece.globalNodes.size())};
+    for (std::size_t k = 0; k < all.nodes.size(); ++k) all.nodes[k] = static_cast<GlobalIndex>(k);
+    piece.mesh.nodeSets.push_back(std::move(all));
+    result.globalNodeSetSizes.push_back(numNodes());
+    piece.mesh.sideSets = std::move(sets);
+    result.sideSetPositions = std::move(positions);
+    piece.mesh.validate("sphere octant mesh (part of rank " + std::to_string(rank) + ")");
+    return result;
+  }
+
  private:
+  // Element e's corners in Exodus order. The cube's cells first (numbered as the box), then the
+  // shells over the cube faces u = a, v = a, w = a, each spanning two cube axes (p, q) with p × q = the
+  // face's outward normal, so (p, q, outwards) is right-handed: the face's quad at layer l, then at
+  // l + 1, is an Exodus-ordered Hex8 with reference axes (p, q, radial). Shell element ids run over
+  // (normal, b, a, l), l fastest.
+  void elementNodes(GlobalIndex e, std::vector<GlobalIndex>& out) const {
+    if (e < cube_.numElements()) {
+      cube_.cellNodes(static_cast<int>(e % n_), static_cast<int>(e / n_ % n_), static_cast<int>(e / n_ / n_), out);
+      return;
+    }
+    int normal, a, b, l;
+    shellCell(e, normal, a, b, l);
+    const int p = (normal + 1) % 3, q = (normal + 2) % 3;
+    for (int layer = l; layer <= l + 1; ++layer)
+      for (auto [da, db] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        int index[3];
+        index[normal] = n_;
+        index[p] = a + da;
+        index[q] = b + db;
+        out.push_back(shellNode(layer, cube_.node(index[0], index[1], index[2])));
+      }
+  }
+
+  // The side sets element e has a face in, as (set, side): set 0 "surface", 1 "equator", 2 and 3 the
+  // symmetry planes of the local axes u and v. The cube's faces at u = 0, v = 0, w = 0 are symmetry
+  // and equator; a shell's faces on the planes p = 0, q = 0 too, and its outermost layer the sphere.
+  void elementFaces(GlobalIndex e, std::vector<std::pair<int, int>>& out) const {
+    auto plane = [](int axis) { return axis == 2 ? 1 : 2 + axis; };
+    if (e < cube_.numElements()) {
+      const int index[3] = {static_cast<int>(e % n_), static_cast<int>(e / n_ % n_), static_cast<int>(e / n_ / n_)};
+      for (int axis = 0; axis < 3; ++axis)
+        if (index[axis] == 0) out.emplace_back(plane(axis), sideOfFace(axis, false));
+      return;
+    }
+    int normal, a, b, l;
+    shellCell(e, normal, a, b, l);
+    const int p = (normal + 1) % 3, q = (normal + 2) % 3;
+    if (a == 0) out.emplace_back(plane(p), sideOfFace(0, false));
+    if (b == 0) out.emplace_back(plane(q), sideOfFace(1, false));
+    if (l == m_ - 1) out.emplace_back(0, sideOfFace(2, true));
+  }
+
+  void shellCell(GlobalIndex e, int& normal, int& a, int& b, int& l) const {
+    GlobalIndex s = e - cube_.numElements();
+    l = static_cast<int>(s % m_);
+    s /= m_;
+    a = static_cast<int>(s % n_);
+    s /= n_;
+    b = static_cast<int>(s % n_);
+    normal = static_cast<int>(s / n_);
+  }
+
+  // A cube node sits at its axis coordinates; shell layer l's node on the ray from the centre through
+  // cube boundary node P at (1 − ρ_l)·P + ρ_l·R·P/|P|.
+  void nodePoint(GlobalIndex node, double* x) const {
+    GlobalIndex cubeNode = node;
+    int layer = 0;
+    if (node >= cube_.numNodes()) {
+      const GlobalIndex s = node - cube_.numNodes();
+      layer = static_cast<int>(s / boundaryCount_) + 1;
+      cubeNode = boundaryNode_[static_cast<size_t>(s % boundaryCount_)];
+    }
+    const GlobalIndex row = n_ + 1;
+    const double local[3] = {axis_[0][cubeNode % row], axis_[1][cubeNode / row % row], axis_[2][cubeNode / row / row]};
+    if (layer == 0) {
+      place(local, x);
+      return;
+    }
+    const double norm = std::sqrt(local[0] * local[0] + local[1] * local[1] + local[2] * local[2]);
+    const double scale = (1 - layers_[layer]) + layers_[layer] * spec_.radius / norm;
+    const double p[3] = {scale * local[0], scale * local[1], scale * local[2]};
+    place(p, x);
+  }
+
+  GlobalIndex poleNode() const { return shellNode(m_, cube_.node(0, 0, n_)); }
+
+  std::vector<SideSet> emptySideSets() const {
+    return {{"surface", {}, {}},
+            {"equator", {}, {}},
+            {"symmetry_" + std::string(1, "xyz"[globalAxis_[0]]), {}, {}},
+            {"symmetry_" + std::string(1, "xyz"[globalAxis_[1]]), {}, {}}};
+  }
+
   // Layer 0 of the shell is the cube's boundary itself.
   GlobalIndex shellNode(int layer, GlobalIndex cubeNode) const {
     if (layer == 0) return cubeNode;
@@ -449,13 +729,11 @@ class SphereOctant {
   StructuredGrid cube_;
   std::vector<double> axis_[3], layers_;
   int globalAxis_[3] = {0, 1, 2}, sign_[3] = {1, 1, 1};
-  std::vector<GlobalIndex> boundaryIndex_;
+  std::vector<GlobalIndex> boundaryIndex_, boundaryNode_;  // cube node → boundary index, and back
   GlobalIndex boundaryCount_ = 0;
 };
 
-}  // namespace
-
-Mesh generateRectangle(const RectangleSpec& spec) {
+std::string checkRectangle(const RectangleSpec& spec) {
   requireFinite(spec.x0, "X0");
   requireFinite(spec.y0, "Y0");
   requirePositive(spec.lx, "Length X");
@@ -464,11 +742,8 @@ Mesh generateRectangle(const RectangleSpec& spec) {
   requirePositiveCount(spec.ny, "Elements Y");
   requireBias(spec.biasX, "Bias X");
   requireBias(spec.biasY, "Bias Y");
-  const std::string outOfMemory = requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}});
-  return guardAllocation(outOfMemory, [&spec] { return buildRectangle(spec); });
+  return requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}});
 }
-
-namespace {
 
 void requireAnnulusSector(const AnnulusSectorSpec& spec) {
   requirePositive(spec.innerRadius, "Inner Radius");
@@ -487,16 +762,13 @@ void requireAnnulusSector(const AnnulusSectorSpec& spec) {
   requireBias(spec.arcBias, "Arc Bias");
 }
 
-}  // namespace
-
-Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
+std::string checkAnnulusSector(const AnnulusSectorSpec& spec) {
   requireAnnulusSector(spec);
-  const std::string outOfMemory = requireGridFits(
+  return requireGridFits(
       {{"Elements Through Thickness", spec.elementsThroughThickness}, {"Elements Around Arc", spec.elementsAroundArc}});
-  return guardAllocation(outOfMemory, [&spec] { return buildAnnulusSector(spec); });
 }
 
-Mesh generateBox(const BoxSpec& spec) {
+std::string checkBox(const BoxSpec& spec) {
   requireFinite(spec.x0, "X Origin");
   requireFinite(spec.y0, "Y Origin");
   requireFinite(spec.z0, "Z Origin");
@@ -509,24 +781,21 @@ Mesh generateBox(const BoxSpec& spec) {
   requireBias(spec.biasX, "Bias X");
   requireBias(spec.biasY, "Bias Y");
   requireBias(spec.biasZ, "Bias Z");
-  const std::string outOfMemory =
-      requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}, {"Elements Z", spec.nz}});
-  return guardAllocation(outOfMemory, [&spec] { return buildBox(spec); });
+  return requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}, {"Elements Z", spec.nz}});
 }
 
-Mesh generateHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
+std::string checkHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
   requireAnnulusSector(spec.section);
   requireFinite(spec.z0, "Z Origin");
   requirePositive(spec.length, "Length Z");
   requirePositiveCount(spec.layers, "Elements Z");
   requireBias(spec.axialBias, "Bias Z");
-  const std::string outOfMemory = requireGridFits({{"Elements Through Thickness", spec.section.elementsThroughThickness},
-                                                   {"Elements Around Arc", spec.section.elementsAroundArc},
-                                                   {"Elements Z", spec.layers}});
-  return guardAllocation(outOfMemory, [&spec] { return buildHollowCylinderSector(spec); });
+  return requireGridFits({{"Elements Through Thickness", spec.section.elementsThroughThickness},
+                          {"Elements Around Arc", spec.section.elementsAroundArc},
+                          {"Elements Z", spec.layers}});
 }
 
-Mesh generateSphereOctant(const SphereOctantSpec& spec) {
+std::string checkSphereOctant(const SphereOctantSpec& spec) {
   requirePositive(spec.radius, "Radius");
   requireFinite(spec.center[0], "X Center");
   requireFinite(spec.center[1], "Y Center");
@@ -543,10 +812,60 @@ Mesh generateSphereOctant(const SphereOctantSpec& spec) {
                "fraction < 1/sqrt(3)), got " + format(spec.innerCubeFraction));
   requireBias(spec.poleBias, "Pole Bias");
   requireBias(spec.radialBias, "Radial Bias");
-  const std::string outOfMemory =
-      requireFits(SphereOctant::size(spec.elementsAlongEdge, spec.elementsThroughShell),
-                  {{"Elements Along Edge", spec.elementsAlongEdge}, {"Elements Through Shell", spec.elementsThroughShell}});
+  return requireFits(SphereOctant::size(spec.elementsAlongEdge, spec.elementsThroughShell),
+                     {{"Elements Along Edge", spec.elementsAlongEdge}, {"Elements Through Shell", spec.elementsThroughShell}});
+}
+
+}  // namespace
+
+Mesh generateRectangle(const RectangleSpec& spec) {
+  const std::string outOfMemory = checkRectangle(spec);
+  return guardAllocation(outOfMemory, [&spec] { return rectangleRecipe(spec).whole(); });
+}
+
+DistributedMesh generateRectanglePart(const RectangleSpec& spec, int rank, int numRanks) {
+  const std::string outOfMemory = checkRectangle(spec);
+  return guardAllocation(outOfMemory, [&] { return rectangleRecipe(spec).part(rank, numRanks); });
+}
+
+Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
+  const std::string outOfMemory = checkAnnulusSector(spec);
+  return guardAllocation(outOfMemory, [&spec] { return annulusSectorRecipe(spec).whole(); });
+}
+
+DistributedMesh generateAnnulusSectorPart(const AnnulusSectorSpec& spec, int rank, int numRanks) {
+  const std::string outOfMemory = checkAnnulusSector(spec);
+  return guardAllocation(outOfMemory, [&] { return annulusSectorRecipe(spec).part(rank, numRanks); });
+}
+
+Mesh generateBox(const BoxSpec& spec) {
+  const std::string outOfMemory = checkBox(spec);
+  return guardAllocation(outOfMemory, [&spec] { return boxRecipe(spec).whole(); });
+}
+
+DistributedMesh generateBoxPart(const BoxSpec& spec, int rank, int numRanks) {
+  const std::string outOfMemory = checkBox(spec);
+  return guardAllocation(outOfMemory, [&] { return boxRecipe(spec).part(rank, numRanks); });
+}
+
+Mesh generateHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
+  const std::string outOfMemory = checkHollowCylinderSector(spec);
+  return guardAllocation(outOfMemory, [&spec] { return hollowCylinderSectorRecipe(spec).whole(); });
+}
+
+DistributedMesh generateHollowCylinderSectorPart(const HollowCylinderSectorSpec& spec, int rank, int numRanks) {
+  const std::string outOfMemory = checkHollowCylinderSector(spec);
+  return guardAllocation(outOfMemory, [&] { return hollowCylinderSectorRecipe(spec).part(rank, numRanks); });
+}
+
+Mesh generateSphereOctant(const SphereOctantSpec& spec) {
+  const std::string outOfMemory = checkSphereOctant(spec);
   return guardAllocation(outOfMemory, [&spec] { return SphereOctant(spec).build(); });
+}
+
+DistributedMesh generateSphereOctantPart(const SphereOctantSpec& spec, int rank, int numRanks) {
+  const std::string outOfMemory = checkSphereOctant(spec);
+  return guardAllocation(outOfMemory, [&] { return SphereOctant(spec).part(rank, numRanks); });
 }
 
 }  // namespace contessa::mesh

@@ -7,6 +7,7 @@
 // InputErrors whose message starts with the deck parameter's name ("Elements X: ...").
 #include <string>
 
+#include "mesh/DistributedMesh.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace contessa::mesh {
@@ -101,5 +102,20 @@ struct SphereOctantSpec {
   std::string blockName = "block_1";
 };
 Mesh generateSphereOctant(const SphereOctantSpec& spec);
+
+/// Rank `rank`'s part (of `numRanks`) of the mesh the generator of the same name makes, built alone
+/// without communication and without the rest of the mesh: the elements of ElementRanges' range for
+/// the rank, their nodes (bit-identical coordinates), the sets restricted to them, and each node's
+/// owner and sharing ranks from the owners of the cells around it. Equal, field by field, to
+/// PartExtractor(whole mesh, ElementRanges owners).part(rank). The same checks and errors as the
+/// whole-mesh generator, plus requirePartsFit (at most one rank per element). The sphere octant (not
+/// one structured grid) finds the ranks of its part's nodes and the sets' global order in one pass
+/// over every element's corners, computed and dropped one at a time: memory of the part plus its
+/// surfaces, time of the whole mesh's connectivity.
+DistributedMesh generateRectanglePart(const RectangleSpec& spec, int rank, int numRanks);
+DistributedMesh generateAnnulusSectorPart(const AnnulusSectorSpec& spec, int rank, int numRanks);
+DistributedMesh generateBoxPart(const BoxSpec& spec, int rank, int numRanks);
+DistributedMesh generateHollowCylinderSectorPart(const HollowCylinderSectorSpec& spec, int rank, int numRanks);
+DistributedMesh generateSphereOctantPart(const SphereOctantSpec& spec, int rank, int numRanks);
 
 }  // namespace contessa::mesh

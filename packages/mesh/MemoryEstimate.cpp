@@ -183,6 +183,12 @@ void agreeOnMachineMemory() {
   memory.agreed = true;
 }
 
+void skipRunMemoryCheck() {
+  MachineMemory& memory = machineMemory();
+  memory.available = -1;  // unknown: runSizeProblem checks the index limits only
+  memory.agreed = true;
+}
+
 void requireRunFits(const MeshSize& size, const std::string& what, const std::string& advice) {
   const MachineMemory& agreed = machineMemory();
   const double available = agreed.agreed ? agreed.available : availableMemory().value_or(-1);

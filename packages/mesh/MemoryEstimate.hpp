@@ -60,6 +60,11 @@ std::optional<double> availableMemory(const std::string& procRoot = "/proc",
 /// collective call and a rank that fails early (a missing file) cannot leave another waiting in it.
 void agreeOnMachineMemory();
 
+/// For programs that build meshes without solving on them (benchmarks of the mesh containers, e.g.
+/// bench/distributed_mesh_bench): the size checks keep the index limits but no longer estimate the
+/// memory of a run that will not happen. Not collective; call it before any mesh is built.
+void skipRunMemoryCheck();
+
 /// Throws InputError "<what>: <runSizeProblem>; <advice>" when a run of `size` will not fit, with the
 /// figures agreed by agreeOnMachineMemory (this process's own view, one rank, when it was not called).
 /// No collective call: ranks that check the same size reach the same answer.

@@ -1,6 +1,7 @@
 #pragma once
 // The mesh as read or generated: replicated on every rank (surfaces and 2D meshes are small); the
-// partition (Partition.hpp) decides which rank assembles which element. Dimension-general: 2D
+// partition (Partition.hpp) decides which rank assembles which element. One rank's part of a mesh
+// no rank holds whole: DistributedMesh.hpp (a Mesh in local numbering with global ids beside). Dimension-general: 2D
 // quadrilaterals now, 3D hexahedra later use the same containers.
 #include <string>
 #include <vector>

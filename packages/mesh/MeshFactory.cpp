@@ -11,6 +11,7 @@
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/GmshMeshReader.hpp"
 #include "mesh/Generators.hpp"
+#include "mesh/MeshDistribution.hpp"
 
 namespace contessa::mesh {
 namespace {
@@ -43,12 +44,26 @@ void setChoice(ParameterList& p, const std::string& name, const std::string& val
 
 // Generators say which parameter is wrong; the deck path is added here.
 template <class F>
-Mesh generate(const std::string& where, F&& make) {
+auto generate(const std::string& where, F&& make) {
   try {
     return make();
   } catch (const InputError& e) {
     throw InputError(where + "/" + e.what());
   }
+}
+
+// A generator's row builds, from the spec its deck list gives, the whole mesh or this rank's part.
+template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&)>
+Mesh createGenerated(const ParameterList& list, const std::string& where, const std::string&) {
+  const Spec spec = read(list);
+  return generate(where, [&] { return whole(spec); });
+}
+
+template <class Spec, Spec (*read)(const ParameterList&), DistributedMesh (*part)(const Spec&, int, int)>
+DistributedMesh createGeneratedPart(const ParameterList& list, const std::string& where, const std::string&) {
+  const Spec spec = read(list);
+  const WorldRanks world = worldRanks();
+  return generate(where, [&] { return part(spec, world.rank, world.size); });
 }
 
 // ---- Rectangle (Quad4) ----
@@ -67,7 +82,7 @@ RCP<ParameterList> rectangleParameters() {
   return p;
 }
 
-Mesh createRectangle(const ParameterList& list, const std::string& where, const std::string&) {
+RectangleSpec rectangleSpec(const ParameterList& list) {
   RectangleSpec s;
   s.x0 = list.get<double>("X Origin");
   s.y0 = list.get<double>("Y Origin");
@@ -78,7 +93,7 @@ Mesh createRectangle(const ParameterList& list, const std::string& where, const 
   s.biasX = list.get<double>("Bias X");
   s.biasY = list.get<double>("Bias Y");
   s.blockName = list.get<std::string>("Block Name");
-  return generate(where, [&] { return generateRectangle(s); });
+  return s;
 }
 
 // ---- Annulus Sector (Quad4) and its extrusion, Hollow Cylinder Sector (Hex8) ----
@@ -119,11 +134,6 @@ RCP<ParameterList> annulusSectorParameters() {
   return p;
 }
 
-Mesh createAnnulusSector(const ParameterList& list, const std::string& where, const std::string&) {
-  const AnnulusSectorSpec s = annulusSectorSpec(list);
-  return generate(where, [&] { return generateAnnulusSector(s); });
-}
-
 RCP<ParameterList> hollowCylinderSectorParameters() {
   auto p = rcp(new ParameterList("Hollow Cylinder Sector"));
   addAnnulusSectorParameters(*p);
@@ -135,14 +145,14 @@ RCP<ParameterList> hollowCylinderSectorParameters() {
   return p;
 }
 
-Mesh createHollowCylinderSector(const ParameterList& list, const std::string& where, const std::string&) {
+HollowCylinderSectorSpec hollowCylinderSectorSpec(const ParameterList& list) {
   HollowCylinderSectorSpec s;
   s.section = annulusSectorSpec(list);
   s.z0 = list.get<double>("Z Origin");
   s.length = list.get<double>("Length Z");
   s.layers = list.get<int>("Elements Z");
   s.axialBias = list.get<double>("Bias Z");
-  return generate(where, [&] { return generateHollowCylinderSector(s); });
+  return s;
 }
 
 // ---- Box (Hex8) ----
@@ -166,7 +176,7 @@ RCP<ParameterList> boxParameters() {
   return p;
 }
 
-Mesh createBox(const ParameterList& list, const std::string& where, const std::string&) {
+BoxSpec boxSpec(const ParameterList& list) {
   BoxSpec s;
   s.x0 = list.get<double>("X Origin");
   s.y0 = list.get<double>("Y Origin");
@@ -181,7 +191,7 @@ Mesh createBox(const ParameterList& list, const std::string& where, const std::s
   s.biasY = list.get<double>("Bias Y");
   s.biasZ = list.get<double>("Bias Z");
   s.blockName = list.get<std::string>("Block Name");
-  return generate(where, [&] { return generateBox(s); });
+  return s;
 }
 
 // ---- Sphere Octant (Hex8) ----
@@ -209,7 +219,7 @@ RCP<ParameterList> sphereOctantParameters() {
   return p;
 }
 
-Mesh createSphereOctant(const ParameterList& list, const std::string& where, const std::string&) {
+SphereOctantSpec sphereOctantSpec(const ParameterList& list) {
   SphereOctantSpec s;
   s.radius = list.get<double>("Radius");
   s.center[0] = list.get<double>("X Center");
@@ -222,7 +232,7 @@ Mesh createSphereOctant(const ParameterList& list, const std::string& where, con
   s.poleBias = list.get<double>("Pole Bias");
   s.radialBias = list.get<double>("Radial Bias");
   s.blockName = list.get<std::string>("Block Name");
-  return generate(where, [&] { return generateSphereOctant(s); });
+  return s;
 }
 
 // ---- Mesh files ----
@@ -285,22 +295,31 @@ struct MeshSourceEntry {
   const char* description;
   RCP<ParameterList> (*validParameters)();
   Mesh (*create)(const ParameterList&, const std::string& where, const std::string& directory);
+  /// This rank's part built alone; null: rank 0 creates the whole mesh and sends the parts out.
+  DistributedMesh (*createPart)(const ParameterList&, const std::string& where, const std::string& directory) = nullptr;
 };
 
 const std::array<MeshSourceEntry, 8> kRegistry = {{
-    {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters, &createRectangle},
+    {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters,
+     &createGenerated<RectangleSpec, &rectangleSpec, &generateRectangle>,
+     &createGeneratedPart<RectangleSpec, &rectangleSpec, &generateRectanglePart>},
     {"Annulus Sector",
      "A ring segment of QUAD4 (2D) centred at the origin, graded through the wall and along the arc",
-     &annulusSectorParameters, &createAnnulusSector},
-    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &boxParameters, &createBox},
+     &annulusSectorParameters, &createGenerated<AnnulusSectorSpec, &annulusSectorSpec, &generateAnnulusSector>,
+     &createGeneratedPart<AnnulusSectorSpec, &annulusSectorSpec, &generateAnnulusSectorPart>},
+    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &boxParameters,
+     &createGenerated<BoxSpec, &boxSpec, &generateBox>, &createGeneratedPart<BoxSpec, &boxSpec, &generateBoxPart>},
     {"Hollow Cylinder Sector",
      "The Annulus Sector extruded along z into layers of HEX8 (3D); its first layer of nodes is the Annulus "
      "Sector's (same numbers, same x and y), so one layer with u_z = 0 reproduces a plane-strain 2D run",
-     &hollowCylinderSectorParameters, &createHollowCylinderSector},
+     &hollowCylinderSectorParameters,
+     &createGenerated<HollowCylinderSectorSpec, &hollowCylinderSectorSpec, &generateHollowCylinderSector>,
+     &createGeneratedPart<HollowCylinderSectorSpec, &hollowCylinderSectorSpec, &generateHollowCylinderSectorPart>},
     {"Sphere Octant",
      "One eighth of a ball on HEX8 (3D) without degenerate elements (an inner cube and three shells reaching "
      "the sphere, as a cube-sphere), for Hertz contact at its pole",
-     &sphereOctantParameters, &createSphereOctant},
+     &sphereOctantParameters, &createGenerated<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctant>,
+     &createGeneratedPart<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctantPart>},
     {"Exodus File",
      "An Exodus II mesh: QUAD4 or HEX8 element blocks, node sets and side sets with their names",
      &exodusFileParameters, &createExodusFile},
@@ -335,6 +354,13 @@ RCP<const ParameterList> MeshFactory::validParameters(const std::string& type) {
 Mesh MeshFactory::create(const std::string& type, const ParameterList& params, const std::string& where,
                          const std::string& directory) {
   return lookup(type, where).create(params, where, directory);
+}
+
+DistributedMesh MeshFactory::createPart(const std::string& type, const ParameterList& params, const std::string& where,
+                                        const std::string& directory) {
+  const MeshSourceEntry& entry = lookup(type, where);
+  if (entry.createPart) return entry.createPart(params, where, directory);
+  return distributeMesh([&] { return entry.create(params, where, directory); });
 }
 
 }  // namespace contessa::mesh

@@ -9,6 +9,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "mesh/DistributedMesh.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace contessa::mesh {
@@ -30,6 +31,13 @@ class MeshFactory {
   /// the file. Relative file names are taken from `directory` (the deck's). The mesh is validated.
   static Mesh create(const std::string& type, const Teuchos::ParameterList& params, const std::string& where,
                      const std::string& directory);
+
+  /// This rank's part of the same mesh, collective over MPI_COMM_WORLD (DistributedMesh.hpp): the
+  /// generators build only the rank's part (generate*Part: contiguous element ranges, no
+  /// communication); the file readers read on rank 0, which partitions with METIS and sends the parts
+  /// out (distributeMesh). Errors as create's, on every rank.
+  static DistributedMesh createPart(const std::string& type, const Teuchos::ParameterList& params,
+                                    const std::string& where, const std::string& directory);
 };
 
 }  // namespace contessa::mesh

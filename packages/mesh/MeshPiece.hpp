@@ -21,6 +21,8 @@ struct MeshPiece {
 /// The piece of `mesh` made of the elements with elementRank[e] == rank (elementRank: the owner of
 /// every global element, the same on every rank). Blocks keep their order and names (empty when the
 /// rank owns none of their elements), node sets keep the piece's nodes, side sets the piece's sides.
+/// A node of no element is in rank 0's piece (it owns it, as in mesh::Partition). The piece of
+/// PartExtractor (DistributedMesh.hpp), which a distributed mesh holds.
 MeshPiece extractPiece(const Mesh& mesh, const std::vector<int>& elementRank, int rank);
 
 }  // namespace contessa::mesh

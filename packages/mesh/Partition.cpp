@@ -68,12 +68,16 @@ void fillEmptyParts(std::vector<int>& owner, int numParts) {
 
 }  // namespace
 
-Partition partitionMesh(const Mesh& mesh, int numParts) {
-  const GlobalIndex numElements = mesh.numElements();
+void requirePartsFit(GlobalIndex numElements, int numParts) {
   requireInput(numParts >= 1, "number of partitions must be at least 1, got " + std::to_string(numParts));
   requireInput(numParts == 1 || numParts <= numElements, "cannot split a mesh of " + std::to_string(numElements) +
                                             " elements over " + std::to_string(numParts) +
                                             " ranks: use at most one rank per element");
+}
+
+Partition partitionMesh(const Mesh& mesh, int numParts) {
+  const GlobalIndex numElements = mesh.numElements();
+  requirePartsFit(numElements, numParts);
 
   Partition partition;
   partition.numParts = numParts;

@@ -21,4 +21,8 @@ struct Partition {
 /// METIS_PartMeshDual with a fixed seed; one part gives everything to rank 0.
 Partition partitionMesh(const Mesh& mesh, int numParts);
 
+/// Throws InputError unless a mesh of `numElements` elements can be split over `numParts` ranks (at
+/// least one part, at most one rank per element): every partition's precondition.
+void requirePartsFit(GlobalIndex numElements, int numParts);
+
 }  // namespace contessa::mesh

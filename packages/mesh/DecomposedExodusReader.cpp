@@ -1,0 +1,199 @@
+#include "mesh/DecomposedExodusReader.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <utility>
+#include <vector>
+
+#include "common/Error.hpp"
+#include "mesh/ExodusFile.hpp"
+#include "mesh/ExodusMeshReader.hpp"
+#include "mesh/MeshDistribution.hpp"
+
+namespace contessa::mesh {
+
+std::string decomposedFileName(const std::string& base, int numFiles, int rank) {
+  const std::string r = std::to_string(rank), n = std::to_string(numFiles);
+  return base + "." + n + "." + std::string(n.size() - std::min(n.size(), r.size()), '0') + r;
+}
+
+namespace {
+
+using detail::ExodusFile;
+
+// What the Nemesis records and id maps of one file say: global ids and, per local node, the other
+// files holding it.
+struct Decomposition {
+  std::vector<GlobalIndex> globalNodes, globalElements;
+  std::vector<std::vector<int>> sharedWith;
+};
+
+Decomposition readDecomposition(const std::string& path, GlobalIndex numNodes, GlobalIndex numElements, int rank,
+                                int numRanks) {
+  ex_opts(EX_DEFAULT);
+  int cpuWordSize = 8, ioWordSize = 0;
+  float version = 0;
+  ExodusFile file(path, ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize, &version));
+  requireInput(file.id() >= 0, path + ": not a readable Exodus file (" + ExodusFile::lastError() + ")");
+  auto check = [&](int status, const std::string& what) {
+    requireInput(status >= 0, path + ": not a file of a decomposed mesh (cannot read " + what + ": " +
+                                  ExodusFile::lastError() + ")");
+  };
+  int processors = 0, processorsInFile = 0;
+  char type[2] = {};
+  check(ex_get_init_info(file.id(), &processors, &processorsInFile, type), "its decomposition records");
+  requireInput(processors == numRanks, path + ": a file of a mesh split for " + std::to_string(processors) +
+                                           " ranks; the run has " + std::to_string(numRanks));
+
+  Decomposition d;
+  std::vector<int64_t> ids(static_cast<std::size_t>(numNodes));
+  if (numNodes > 0) check(ex_get_id_map(file.id(), EX_NODE_MAP, ids.data()), "the global node ids");
+  for (int64_t id : ids) d.globalNodes.push_back(id - 1);
+  ids.assign(static_cast<std::size_t>(numElements), 0);
+  if (numElements > 0) check(ex_get_id_map(file.id(), EX_ELEM_MAP, ids.data()), "the global element ids");
+  for (int64_t id : ids) d.globalElements.push_back(id - 1);
+
+  int64_t interiorNodes = 0, borderNodes = 0, externalNodes = 0, interiorElements = 0, borderElements = 0,
+          nodeMaps = 0, elementMaps = 0;
+  check(ex_get_loadbal_param(file.id(), &interiorNodes, &borderNodes, &externalNodes, &interiorElements,
+                             &borderElements, &nodeMaps, &elementMaps, rank),
+        "its load balance records");
+  d.sharedWith.assign(static_cast<std::size_t>(numNodes), {});
+  if (nodeMaps > 0) {
+    std::vector<int64_t> mapIds(static_cast<std::size_t>(nodeMaps)), mapSizes(mapIds.size());
+    std::vector<int64_t> elementMapIds(static_cast<std::size_t>(std::max<int64_t>(elementMaps, 1))),
+        elementMapSizes(elementMapIds.size());
+    check(ex_get_cmap_params(file.id(), mapIds.data(), mapSizes.data(), elementMapIds.data(), elementMapSizes.data(),
+                             rank),
+          "its communication maps");
+    for (std::size_t m = 0; m < mapIds.size(); ++m) {
+      std::vector<int64_t> nodes(static_cast<std::size_t>(mapSizes[m])), procs(nodes.size());
+      if (nodes.empty()) continue;
+      check(ex_get_node_cmap(file.id(), mapIds[m], nodes.data(), procs.data(), rank), "a communication map");
+      for (std::size_t k = 0; k < nodes.size(); ++k) {
+        requireInput(nodes[k] >= 1 && nodes[k] <= numNodes && procs[k] >= 0 && procs[k] < numRanks,
+                     path + ": communication map " + std::to_string(mapIds[m]) + " names node " +
+                         std::to_string(nodes[k]) + " of rank " + std::to_string(procs[k]) + ", out of range");
+        if (procs[k] != rank) d.sharedWith[nodes[k] - 1].push_back(static_cast<int>(procs[k]));
+      }
+    }
+  }
+  for (auto& s : d.sharedWith) {
+    std::sort(s.begin(), s.end());
+    s.erase(std::unique(s.begin(), s.end()), s.end());
+  }
+  check(file.close(), "the file (close)");
+  return d;
+}
+
+// The file's mesh and decomposition as this rank's part, nodes renumbered in increasing global id.
+DistributedMesh readPart(const std::string& path, int rank, int numRanks) {
+  Mesh mesh = readExodusMesh(path);
+  Decomposition d = readDecomposition(path, mesh.numNodes(), mesh.numElements(), rank, numRanks);
+  const int dim = mesh.dimension;
+  const auto numNodes = static_cast<std::size_t>(mesh.numNodes());
+
+  std::vector<std::size_t> order(numNodes);
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d.globalNodes[a] < d.globalNodes[b]; });
+  std::vector<GlobalIndex> renumbered(numNodes);
+  DistributedMesh part;
+  part.rank = rank;
+  part.numRanks = numRanks;
+  MeshPiece& piece = part.part;
+  piece.mesh.dimension = dim;
+  for (std::size_t k = 0; k < numNodes; ++k) {
+    const std::size_t old = order[k];
+    requireInput(k == 0 || d.globalNodes[old] != piece.globalNodes.back(),
+                 path + ": global node id " + std::to_string(d.globalNodes[old] + 1) + " given to two nodes");
+    renumbered[old] = static_cast<GlobalIndex>(k);
+    piece.globalNodes.push_back(d.globalNodes[old]);
+    piece.mesh.coordinates.insert(piece.mesh.coordinates.end(), mesh.coordinates.begin() + old * dim,
+                                  mesh.coordinates.begin() + (old + 1) * dim);
+    piece.sharedWith.push_back(std::move(d.sharedWith[old]));
+    // Partition's rule: the lowest rank among the files (so the elements) that hold the node.
+    const auto& others = piece.sharedWith.back();
+    part.nodeOwner.push_back(others.empty() ? rank : std::min(rank, others.front()));
+  }
+  mesh.coordinates.clear();
+  for (auto& block : mesh.blocks)
+    for (GlobalIndex& node : block.connectivity) node = renumbered[node];
+  for (auto& set : mesh.nodeSets) {
+    for (GlobalIndex& node : set.nodes) node = renumbered[node];
+    std::sort(set.nodes.begin(), set.nodes.end());
+  }
+  piece.mesh.blocks = std::move(mesh.blocks);
+  piece.mesh.nodeSets = std::move(mesh.nodeSets);
+  piece.mesh.sideSets = std::move(mesh.sideSets);
+  piece.globalElements = std::move(d.globalElements);
+  return part;
+}
+
+int worldInt(int value, MPI_Op op) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, op, MPI_COMM_WORLD);
+  return value;
+}
+
+std::vector<GlobalIndex> summed(std::vector<GlobalIndex> values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  return values;
+}
+
+}  // namespace
+
+DistributedMesh readDecomposedExodus(const std::string& base) {
+  const WorldRanks world = worldRanks();
+  const int rank = world.rank, numRanks = world.size;
+  const std::string path = decomposedFileName(base, numRanks, rank);
+  DistributedMesh part;
+  std::exception_ptr failure;
+  try {
+    part = readPart(path, rank, numRanks);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  throwIfAnyRankFailed(failure);
+
+  // The files must list the same blocks and sets (empty where a file has none of them).
+  const Mesh& local = part.local();
+  const int counts[3] = {static_cast<int>(local.blocks.size()), static_cast<int>(local.nodeSets.size()),
+                         static_cast<int>(local.sideSets.size())};
+  for (int c : counts)
+    requireInput(worldInt(c, MPI_MIN) == worldInt(c, MPI_MAX),
+                 decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different numbers of "
+                                                         "element blocks, node sets or side sets");
+
+  // Global sizes: each element is in one file, each node owned by one.
+  std::vector<GlobalIndex> sizes{static_cast<GlobalIndex>(part.ownedNodes().size()), local.numElements()};
+  for (const auto& b : local.blocks) sizes.push_back(b.numElements());
+  for (const auto& s : local.nodeSets)
+    sizes.push_back(std::count_if(s.nodes.begin(), s.nodes.end(), [&](GlobalIndex n) { return part.nodeOwner[n] == rank; }));
+  for (const auto& s : local.sideSets) sizes.push_back(static_cast<GlobalIndex>(s.elements.size()));
+  sizes = summed(std::move(sizes));
+  part.numGlobalNodes = sizes[0];
+  part.numGlobalElements = sizes[1];
+  auto next = sizes.begin() + 2;
+  part.globalBlockSizes.assign(next, next + counts[0]);
+  next += counts[0];
+  part.globalNodeSetSizes.assign(next, next + counts[1]);
+  next += counts[1];
+  part.globalSideSetSizes.assign(next, next + counts[2]);
+
+  // The files do not say where an entry sits in the whole side set: (global element, side) order.
+  for (const auto& set : local.sideSets) {
+    std::vector<GlobalIndex> mine;
+    for (std::size_t k = 0; k < set.elements.size(); ++k)
+      mine.push_back(part.part.globalElements[set.elements[k]] * 8 + set.sides[k]);  // sides < 6
+    std::vector<GlobalIndex> all = allGather(mine);
+    std::sort(all.begin(), all.end());
+    std::vector<GlobalIndex> positions;
+    for (GlobalIndex key : mine) positions.push_back(std::lower_bound(all.begin(), all.end(), key) - all.begin());
+    part.sideSetPositions.push_back(std::move(positions));
+  }
+  return part;
+}
+
+}  // namespace contessa::mesh

@@ -1,0 +1,26 @@
+#pragma once
+// A pre-split mesh: a set of per-rank Exodus files `base.N.r` (N files, rank r's zero-padded to the
+// digits of N, as SEACAS decomp / nem_spread write them and as Contessa's per-rank output does), read
+// with each rank opening only its own file. The files' global node and element id maps and their
+// Nemesis node communication maps (which other files hold each border node) give the part's global
+// ids and halo; the part is the DistributedMesh the file's elements make.
+#include <string>
+
+#include "mesh/DistributedMesh.hpp"
+
+namespace contessa::mesh {
+
+/// "base.N.r": rank r's file of a set of N (the rank zero-padded to the digits of N).
+std::string decomposedFileName(const std::string& base, int numFiles, int rank);
+
+/// Collective over MPI_COMM_WORLD (N = its size). Every rank reads decomposedFileName(base, N, rank):
+/// its mesh (as readExodusMesh: checked the same way), its global node and element ids (Exodus id
+/// maps, 1-based in the file) and its node communication maps. Nodes are renumbered in increasing
+/// global id; a node's owner is the lowest rank among the files that hold it (Partition's rule, the
+/// file's rank owning its elements); global sizes are summed over the ranks; a side set's entries
+/// are placed in the whole set in (global element, side) order. Any rank's failure (a missing or
+/// unreadable file, a set written for another number of ranks) is an InputError naming the file on
+/// every rank.
+DistributedMesh readDecomposedExodus(const std::string& base);
+
+}  // namespace contessa::mesh

@@ -1,0 +1,69 @@
+#pragma once
+// Moving distributed-mesh parts between ranks (MPI, over MPI_COMM_WORLD): a mesh read once on rank 0
+// and sent out part by part, so that only rank 0 holds the whole mesh, and only while it distributes
+// it; and the replicated contact surfaces gathered from the parts (an all-gather of the side-set
+// facets contact needs: the surface is O(n^(2/3)) of a 3D mesh, the volume stays distributed).
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesh/DistributedMesh.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace contessa::mesh {
+
+/// This process's rank in MPI_COMM_WORLD and its size (0 and 1 without MPI initialised).
+struct WorldRanks {
+  int rank = 0, size = 1;
+};
+WorldRanks worldRanks();
+
+/// Collective. Rank 0 calls `readOnRoot` (e.g. readExodusMesh on a file), partitions the mesh as
+/// partitionMesh does (METIS, same seed, same node owners), and sends every other rank its part
+/// (PartExtractor), keeping its own; the whole mesh is freed before returning. Every rank returns its
+/// part. An error on rank 0 (an unreadable file: InputError; anything else: runtime_error) is thrown
+/// on every rank with the same message, so none is left waiting.
+DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot);
+
+/// Collective: every rank throws the error of the lowest rank whose `failure` is set (null on a rank
+/// that did not fail), with its message: an InputError as an InputError, anything else as a
+/// runtime_error. Returns on every rank when none failed. What a step that one rank alone may fail
+/// (reading its file) calls before the next collective, so that no rank is left waiting.
+void throwIfAnyRankFailed(std::exception_ptr failure);
+
+/// A side set of the whole mesh as contact needs it on every rank: its entries (element, side) in the
+/// side set's order, each facet's global nodes (Exodus side order), and the coordinates of the nodes
+/// it touches.
+struct ReplicatedSurface {
+  std::string name;
+  int dimension = 2;
+  int nodesPerFacet = 2;                  ///< 2 (Quad4 edges), 4 (Hex8 faces)
+  std::vector<GlobalIndex> elements;      ///< global element of each facet
+  std::vector<int> sides;                 ///< its local side (0-based)
+  std::vector<GlobalIndex> facetNodes;    ///< global node ids, nodesPerFacet per facet
+  std::vector<GlobalIndex> nodes;         ///< the surface's nodes, ascending
+  std::vector<double> coordinates;        ///< of `nodes`, node-major
+  std::size_t bytes() const;
+};
+
+/// The surface of side set `name` from a replicated mesh (the reference: what contact reads today).
+ReplicatedSurface surfaceOfSideSet(const Mesh& mesh, const std::string& name);
+
+/// Collective. The same surface from the ranks' parts: each contributes the facets of its elements
+/// (with their positions in the whole side set) and their coordinates, all-gathered. Throws InputError
+/// naming the side set and the known ones when the mesh has no side set `name` (every rank alike).
+ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& name);
+
+/// Collective: every rank's `values` concatenated in rank order, on every rank (surface-sized data:
+/// at most 2^31 values in all).
+std::vector<GlobalIndex> allGather(const std::vector<GlobalIndex>& values);
+
+/// Collective: the largest and the sum over the ranks of `value` (the memory figures).
+struct RankFigures {
+  double max = 0, sum = 0;
+};
+RankFigures overRanks(double value);
+
+}  // namespace contessa::mesh
