@@ -3,6 +3,7 @@
 #include <csignal>
 #include <initializer_list>
 #include <cstdio>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
@@ -183,6 +184,15 @@ void RunCheckpoints::write(std::vector<io::RestartRecord> driverRecords) {
                        std::make_move_iterator(driverRecords.end()));
   const std::string bytes = io::encodeRestart(std::move(piece));
   const int ranks = comm_->getSize();
+  // MPI_Gatherv counts and offsets are int: refused alike on every rank beyond 2 GiB in all.
+  const long long mine = static_cast<long long>(bytes.size());
+  long long total = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &mine, &total);
+  if (total > static_cast<long long>(std::numeric_limits<int>::max())) {
+    failure_ = "cannot write the restart file " + path_ + ": its " + std::to_string(total) +
+               " bytes exceed the 2 GiB one gather to rank 0 can carry (not supported yet)";
+    throw std::runtime_error(failure_);
+  }
   const int mySize = static_cast<int>(bytes.size());
   std::vector<int> sizes(static_cast<std::size_t>(ranks), 0), offsets(static_cast<std::size_t>(ranks), 0);
   const MPI_Comm mpi = *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm_, true)->getRawMpiComm();

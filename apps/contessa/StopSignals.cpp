@@ -12,7 +12,11 @@ volatile std::sig_atomic_t pending = 0;
 extern "C" void recordStopSignal(int signal) {
   if (pending == signal) {
     // Asked twice: leave as the signal's default action would (status 128 + N for the scheduler).
-    std::signal(signal, SIG_DFL);
+    // sigaction and raise are async-signal-safe (std::signal is not listed by POSIX).
+    struct sigaction fallback {};
+    fallback.sa_handler = SIG_DFL;
+    sigemptyset(&fallback.sa_mask);
+    sigaction(signal, &fallback, nullptr);
     std::raise(signal);
     return;
   }

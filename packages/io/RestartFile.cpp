@@ -163,7 +163,8 @@ std::string writeFileAtomically(const std::string& path, const std::string& byte
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      const std::string reason = std::strerror(errno);
+      // write() returning 0 sets no errno.
+      const std::string reason = n == 0 ? std::string("short write (the disk accepted no more bytes)") : std::strerror(errno);
       ::close(fd);
       ::unlink(temporary.c_str());
       return temporary + ": " + reason;
@@ -171,8 +172,11 @@ std::string writeFileAtomically(const std::string& path, const std::string& byte
     done += static_cast<std::size_t>(n);
   }
   // On disk before the rename makes it the restart file: a crash leaves the old file or the new one.
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const std::string reason = std::strerror(errno);
+  const bool synced = ::fsync(fd) == 0;
+  const int syncError = errno;
+  const bool closed = ::close(fd) == 0;  // always closed, even when fsync failed
+  if (!synced || !closed) {
+    const std::string reason = std::strerror(synced ? errno : syncError);
     ::unlink(temporary.c_str());
     return temporary + ": " + reason;
   }
@@ -180,6 +184,15 @@ std::string writeFileAtomically(const std::string& path, const std::string& byte
     const std::string reason = std::strerror(errno);
     ::unlink(temporary.c_str());
     return path + ": " + reason;
+  }
+  // The rename itself is on disk once the directory is: without this a power loss may bring back the old
+  // file (never a torn one). A directory that cannot be opened or synced leaves that weaker guarantee.
+  const std::string::size_type slash = path.find_last_of('/');
+  const std::string directory = slash == std::string::npos ? std::string(".") : path.substr(0, slash == 0 ? 1 : slash);
+  const int dir = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
   }
   return "";
 }
