@@ -14,6 +14,7 @@
 #include "common/Version.hpp"
 #include "io/ExodusResults.hpp"
 #include "io/OutputWriteError.hpp"
+#include "mesh/DecomposedExodusReader.hpp"
 
 #include "common/PhaseTimers.hpp"
 
@@ -80,12 +81,6 @@ std::vector<int> elementOwners(const model::Map& ownedElements, model::GO numEle
   const auto values = everywhere.getData(0);
   for (model::GO e = 0; e < numElements; ++e) ranks[e] = static_cast<int>(values[e]);
   return ranks;
-}
-
-// SEACAS' name of rank r's file in a set of n: the rank zero-padded to the digits of n.
-std::string pieceSuffix(int n, int r) {
-  const std::string rank = std::to_string(r), count = std::to_string(n);
-  return "." + count + "." + std::string(count.size() - std::min(count.size(), rank.size()), '0') + rank;
 }
 
 std::string formatTime(const char* format) {
@@ -238,7 +233,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       decomposition.globalNumElements += elements;
     }
     if (!root_) rigidSurfaces_.clear();
-    const std::string piecePath = directory + "/" + name + ".exo" + pieceSuffix(ranks, comm->getRank());
+    const std::string piecePath = mesh::decomposedFileName(directory + "/" + name + ".exo", ranks, comm->getRank());
     continuing(piecePath, [&] {
       exodus_ = std::make_unique<io::ExodusWriter>(piecePath, piece_->mesh, fields, runRecords(problem.title, run, ranks),
                                                    pieceSurfaces, &decomposition);
