@@ -65,15 +65,32 @@ std::string restartDeckText(const Teuchos::ParameterList& deck) {
   return out.str();
 }
 
-io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::Mesh& mesh) {
+io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::DistributedMesh& part) {
   io::RestartContent c;
   c.deck = restartDeckText(deck);
-  c.nodes = mesh.numNodes();
-  c.elements = mesh.numElements();
-  std::uint64_t hash = io::fnv1a(mesh.coordinates.data(), mesh.coordinates.size() * sizeof(double));
-  for (const auto& block : mesh.blocks)
-    hash = io::fnv1a(block.connectivity.data(), block.connectivity.size() * sizeof(block.connectivity[0]), hash);
-  c.meshHash = hash;
+  c.nodes = part.numGlobalNodes;
+  c.elements = part.numGlobalElements;
+  // The same on any rank count and partition: a sum (mod 2^64) over nodes and elements, each hashed
+  // with its global id, of every node once (by its owner) and every element once (by its part).
+  const mesh::Mesh& local = part.local();
+  const int dim = local.dimension;
+  std::uint64_t sums[2] = {0, 0}, total[2] = {0, 0};
+  for (std::size_t n = 0; n < part.nodeOwner.size(); ++n) {
+    if (part.nodeOwner[n] != part.rank) continue;
+    const std::uint64_t id = io::fnv1a(&part.part.globalNodes[n], sizeof(mesh::GlobalIndex));
+    sums[0] += io::fnv1a(&local.coordinates[n * dim], dim * sizeof(double), id);
+  }
+  for (const auto& block : local.blocks) {
+    const int npe = mesh::nodesPerCell(block.cellType);
+    std::vector<mesh::GlobalIndex> nodes(static_cast<std::size_t>(npe));
+    for (std::size_t k = 0; k < block.elements.size(); ++k) {
+      for (int a = 0; a < npe; ++a) nodes[a] = part.part.globalNodes[block.connectivity[k * npe + a]];
+      const std::uint64_t id = io::fnv1a(&part.part.globalElements[block.elements[k]], sizeof(mesh::GlobalIndex));
+      sums[1] += io::fnv1a(nodes.data(), nodes.size() * sizeof(mesh::GlobalIndex), id);
+    }
+  }
+  MPI_Allreduce(sums, total, 2, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+  c.meshHash = io::fnv1a(total, sizeof total);
   return c;
 }
 

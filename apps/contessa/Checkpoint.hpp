@@ -24,8 +24,9 @@ namespace contessa::app {
 std::string restartDeckText(const Teuchos::ParameterList& deck);
 
 /// What identifies the run in its restart file: the deck text above and the mesh (node and element
-/// counts, a hash of the coordinates and connectivity).
-io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::Mesh& mesh);
+/// counts, a hash of the coordinates and connectivity by global id, the same on every rank count).
+/// Collective.
+io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::DistributedMesh& part);
 
 /// A restart file read for --restart: its records and the history rows it keeps (steps 0..k).
 struct RestartInput {

@@ -22,7 +22,6 @@
 #include "io/ExodusWriter.hpp"
 #include "io/RestartFile.hpp"
 #include "mesh/MemoryEstimate.hpp"
-#include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "output/DeckText.hpp"
 #include "output/ResultsOutput.hpp"
@@ -137,15 +136,14 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (!cl.restart.empty()) {
     requireInput(continuation, "--restart " + cl.restart +
                                    ": a static solve (Piro/Solver Type = NOX) has no increments to continue");
-    restart = readRestart(*comm, cl.restart, identity, problem.mesh.dimension);
+    restart = readRestart(*comm, cl.restart, identity, problem.dimension());
   }
   // A continuation acts on stop signals at its next increment; a single solve has none, so it leaves them
   // to their default action.
   if (continuation) installStopSignalHandlers();
 
-  // 2. Partition, model, output.
-  const mesh::Partition partition = mesh::partitionMesh(problem.mesh, comm->getSize());
-  auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, partition, linearSolver));
+  // 2. Model and output on this rank's part of the mesh (partitioned as it was made, deck/ProblemDefinition).
+  auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, linearSolver));
   // A rebuild of the matrix graph (the contact left the couplings reserved for it) is a line in the log.
   if (root && !cl.quiet)
     model->onGraphRebuild([](const model::GraphRebuild& r) {
@@ -164,8 +162,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   requireHistoryColumns(problem, results.historyColumns());
   if (root && !cl.quiet)
     std::printf("contessa: %s on %d rank(s): %lld nodes, %lld elements, %lld unknowns\n", cl.deck.c_str(),
-                comm->getSize(), static_cast<long long>(problem.mesh.numNodes()),
-                static_cast<long long>(problem.mesh.numElements()),
+                comm->getSize(), static_cast<long long>(problem.mesh.numGlobalNodes),
+                static_cast<long long>(problem.mesh.numGlobalElements),
                 static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
 
   // 3. Continuation in the load factor.

@@ -10,6 +10,7 @@
 #include "deck/ContactLawFactory.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "contact/ContactSurface.hpp"
+#include "mesh/MeshDistribution.hpp"
 #include "mesh/MeshFactory.hpp"
 #include "mesh/MeshMerge.hpp"
 
@@ -29,8 +30,8 @@ std::string joinNames(const std::vector<std::string>& names) {
   return out;
 }
 
-mesh::Mesh buildSingleMesh(ParameterList& list, const std::string& where, const std::string& deckDirectory,
-                           bool isPart) {
+// A mesh list's parameters validated (defaults filled in) on every rank; returns its type.
+std::string validateMeshList(ParameterList& list, const std::string& where, bool isPart) {
   std::vector<std::string> types = mesh::MeshFactory::names();  // "Parts" do not nest
   requireInput(list.isParameter("Type") && list.isType<std::string>("Type"),
                where + "/Type: required; expected one of " + joinNames(isPart ? types : meshTypes()));
@@ -39,40 +40,58 @@ mesh::Mesh buildSingleMesh(ParameterList& list, const std::string& where, const 
   auto valid = Teuchos::rcp(new ParameterList(*meshValidParameters(type)));
   if (isPart) valid->set("Offset", Teuchos::Array<double>(), "Translation of this part (x, y[, z]); empty = none");
   validateAndSetDefaults(list, *valid, where);
+  return type;
+}
 
+// One part of a "Parts" mesh, whole (on rank 0, which merges and distributes them).
+mesh::Mesh buildWholePart(const ParameterList& list, const std::string& type, const std::string& where,
+                          const std::string& deckDirectory) {
   mesh::Mesh mesh = mesh::MeshFactory::create(type, list, where, deckDirectory);
-  if (isPart) {
-    const auto& offset = list.get<Teuchos::Array<double>>("Offset");
-    if (!offset.empty()) {
-      requireInput(static_cast<int>(offset.size()) == mesh.dimension,
-                   where + "/Offset: expected " + std::to_string(mesh.dimension) + " values");
-      mesh = mesh::translateMesh(std::move(mesh), std::vector<double>(offset.begin(), offset.end()));
-    }
+  const auto& offset = list.get<Teuchos::Array<double>>("Offset");
+  if (!offset.empty()) {
+    requireInput(static_cast<int>(offset.size()) == mesh.dimension,
+                 where + "/Offset: expected " + std::to_string(mesh.dimension) + " values");
+    mesh = mesh::translateMesh(std::move(mesh), std::vector<double>(offset.begin(), offset.end()));
   }
   return mesh;
 }
 
-mesh::Mesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
+// This rank's part of the deck's mesh. Every rank checks its part (the part's elements, sets and
+// coordinates; the lowest failing rank's message on every rank), so a generated mesh that no rank
+// holds whole is checked as the whole mesh was.
+mesh::DistributedMesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
   const std::string where = "Problem/Mesh";
-  mesh::Mesh mesh;
+  mesh::DistributedMesh part;
   if (list.isType<std::string>("Type") && list.get<std::string>("Type") == "Parts") {
     // Separate bodies (contact): each named sublist is a mesh of its own; blocks and sets get the
-    // part's name as a prefix (mergeMeshes).
-    std::vector<std::pair<std::string, mesh::Mesh>> parts;
+    // part's name as a prefix (mergeMeshes). Rank 0 builds and merges them and sends the parts out.
+    std::vector<std::pair<std::string, std::string>> parts;  // name, type
     for (auto it = list.begin(); it != list.end(); ++it) {
       const std::string& name = list.name(it);
       if (name == "Type") continue;
       requireInput(list.isSublist(name), where + "/" + name + ": expected a sublist (one per part) besides Type");
-      parts.emplace_back(name, mesh::Mesh());
+      parts.emplace_back(name, "");
     }
     requireInput(!parts.empty(), where + ": Type Parts needs at least one part sublist");
-    for (auto& [name, part] : parts) part = buildSingleMesh(list.sublist(name), where + "/" + name, deckDirectory, true);
-    mesh = mesh::mergeMeshes(parts);
+    for (auto& [name, type] : parts) type = validateMeshList(list.sublist(name), where + "/" + name, true);
+    part = mesh::distributeMesh([&] {
+      std::vector<std::pair<std::string, mesh::Mesh>> meshes;
+      for (const auto& [name, type] : parts)
+        meshes.emplace_back(name, buildWholePart(list.sublist(name), type, where + "/" + name, deckDirectory));
+      return mesh::mergeMeshes(meshes);
+    });
   } else {
-    mesh = buildSingleMesh(list, where, deckDirectory, false);
+    const std::string type = validateMeshList(list, where, false);
+    part = mesh::MeshFactory::createPart(type, list, where, deckDirectory);
   }
-  mesh.validate(where);
-  return mesh;
+  std::exception_ptr failure;
+  try {
+    part.local().validate(where, part.part.globalNodes, part.part.globalElements);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  mesh::throwIfAnyRankFailed(failure);
+  return part;
 }
 
 // The valid parameters of one child of an open list (the child and its deck path given).
@@ -126,8 +145,24 @@ void requireSideSet(const mesh::Mesh& mesh, const std::string& name, const std::
   throw InputError(where + ": side set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
 }
 
+// The reference coordinates of contact-surface nodes, gathered from the parts (ProblemDefinition::contactNodes).
+using SurfaceCoordinates = std::map<GlobalIndex, std::vector<double>>;
+
+// A side set's contact surface, gathered from every rank's part (collective); its nodes' coordinates kept.
+contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const std::string& set,
+                                        const std::string& where, SurfaceCoordinates& coordinates) {
+  const mesh::ReplicatedSurface facets = mesh::gatherSurface(part, set);
+  const int dim = facets.dimension;
+  for (std::size_t k = 0; k < facets.nodes.size(); ++k)
+    coordinates[facets.nodes[k]].assign(facets.coordinates.begin() + static_cast<std::ptrdiff_t>(k * dim),
+                                        facets.coordinates.begin() + static_cast<std::ptrdiff_t>((k + 1) * dim));
+  return contact::ContactSurface::fromSurface(facets, where);
+}
+
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
-                                                        const mesh::Mesh& mesh) {
+                                                        const mesh::DistributedMesh& part,
+                                                        SurfaceCoordinates& coordinates) {
+  const mesh::Mesh& mesh = part.local();
   const std::string where = "Problem/Contact/" + name;
   contact::ContactInterfaceSpec spec;
   spec.name = name;
@@ -149,7 +184,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   requireInput(rigid != points.empty(),
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
-  const auto slave = contact::ContactSurface::fromSideSet(mesh, mesh.sideSet(slaveSet), where + "/Slave Side Set");
+  const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates);
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
   spec.slaveFacetLengths = slave.facetLengths;
@@ -170,7 +205,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
                where + "/Rigid Surface: Facets and Motion belong to a rigid master (no Master Side Set)");
   requireSideSet(mesh, masterSet, where + "/Master Side Set");
   requireInput(masterSet != slaveSet, where + "/Master Side Set: must differ from the Slave Side Set");
-  const auto master = contact::ContactSurface::fromSideSet(mesh, mesh.sideSet(masterSet), where + "/Master Side Set");
+  const auto master = gatheredSurface(part, masterSet, where + "/Master Side Set", coordinates);
   spec.masterFacets = master.facets;
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
@@ -316,7 +351,7 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
                          std::set<std::string>(std::begin(kOpenLists), std::end(kOpenLists)));
   def.title = problem.get<std::string>("Title");
   def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory);
-  const mesh::Mesh& mesh = def.mesh;
+  const mesh::Mesh& mesh = def.mesh.local();
 
   // Materials: the valid list depends on the model name.
   std::map<std::string, std::shared_ptr<const mechanics::Material>> materials;
@@ -409,8 +444,14 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
                    std::to_string(def.maxWallSeconds));
 
   auto& contactList = problem.sublist("Contact");
+  SurfaceCoordinates surfaceCoordinates;
   for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact"))
-    for (auto& spec : buildContact(contactList.sublist(name), name, mesh)) def.contacts.push_back(std::move(spec));
+    for (auto& spec : buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates))
+      def.contacts.push_back(std::move(spec));
+  for (const auto& [node, x] : surfaceCoordinates) {
+    def.contactNodes.push_back(node);
+    def.contactNodeCoordinates.insert(def.contactNodeCoordinates.end(), x.begin(), x.end());
+  }
 
   auto& regressionList = problem.sublist("Regression");
   for (const auto& name : validateChildren(regressionList, *regressionValidParameters(), "Problem/Regression")) {

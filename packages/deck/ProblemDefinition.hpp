@@ -13,6 +13,7 @@
 #include "contact/InterfaceSpec.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
+#include "mesh/DistributedMesh.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace contessa::deck {
@@ -47,7 +48,16 @@ struct RegressionCheck {
 
 struct ProblemDefinition {
   std::string title;
-  mesh::Mesh mesh;
+  /// This rank's part of the mesh (no rank holds the whole mesh): generated meshes are built part by
+  /// part, files read on rank 0 and sent out (mesh::MeshFactory::createPart). Block and set names are
+  /// the whole mesh's on every rank; sizes of the whole mesh in numGlobalNodes and the global*Sizes.
+  mesh::DistributedMesh mesh;
+  /// Reference coordinates of every contact-surface node (slave and deformable master nodes of all
+  /// interfaces, ascending), the same on every rank: the contact surfaces are replicated (the owner of a
+  /// slave node sees its master facet wherever it slides), the volume is not.
+  std::vector<mesh::GlobalIndex> contactNodes;
+  std::vector<double> contactNodeCoordinates;  ///< dimension values per contactNodes entry
+  int dimension() const { return mesh.local().dimension; }
   std::vector<BlockPhysics> blocks;  ///< in mesh block order
   std::vector<DirichletCondition> dirichlet;
   std::vector<NodalForce> nodalForces;
@@ -74,7 +84,8 @@ Teuchos::RCP<const Teuchos::ParameterList> contactValidParameters();
 Teuchos::RCP<const Teuchos::ParameterList> contactValidParameters(const std::string& law);
 
 /// Validates the "Problem" list in place (defaults filled in) and builds the problem; mesh file
-/// names are relative to `deckDirectory`. Throws InputError with the deck path on any problem.
+/// names are relative to `deckDirectory`. Throws InputError with the deck path on any problem, the
+/// same on every rank. Collective over MPI_COMM_WORLD (the mesh parts, the contact surfaces).
 ProblemDefinition buildProblem(Teuchos::ParameterList& problem, const std::string& deckDirectory);
 
 /// Component index of "x", "y", "z" (InputError naming `where` otherwise, or when ≥ dimension).

@@ -184,7 +184,8 @@ void disableHdf5FileLocking() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
 ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
                            const ExodusRecords& records, const std::vector<ExodusSurfaceBlock>& surfaceBlocks,
                            const ExodusDecomposition* decomposition)
-    : path_(path), mesh_(mesh), fields_(fields) {
+    : path_(path), numElements_(mesh.numElements()), fields_(fields) {
+  for (const auto& block : mesh.blocks) blocks_.push_back({block.name, block.elements});
   const int dim = mesh.dimension;
   numNodes_ = mesh.numNodes();
   for (const auto& surface : surfaceBlocks) numNodes_ += static_cast<GlobalIndex>(surface.points.size()) / dim;
@@ -387,7 +388,7 @@ ExodusWriter::~ExodusWriter() {
 void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>& nodal,
                              const std::vector<std::vector<double>>& element, const std::vector<double>& global) {
   checkSizes(path_, "nodal", nodal, fields_.nodal, numNodes_);
-  checkSizes(path_, "element", element, fields_.element, mesh_.numElements());
+  checkSizes(path_, "element", element, fields_.element, numElements_);
   if (global.size() != fields_.global.size())
     throw std::runtime_error(path_ + ": " + std::to_string(global.size()) + " global variables given, " +
                                 std::to_string(fields_.global.size()) + " declared");
@@ -399,7 +400,7 @@ void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>
   // up then stops the run between steps, with the file intact.
   const long long raw =
       8 * (static_cast<long long>(nodal.size()) * numNodes_ +
-           static_cast<long long>(element.size()) * mesh_.numElements() + static_cast<long long>(global.size()) + 1);
+           static_cast<long long>(element.size()) * numElements_ + static_cast<long long>(global.size()) + 1);
   const long long before = fileSize(spaceFd_);
   if (const int error = reserveAfterEnd(spaceFd_, 2 * std::max(raw, stepBytes_) + kMargin))
     throw OutputWriteError(path_, action, systemMessage(error));
@@ -413,13 +414,13 @@ void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>
             "nodal variable '" + fields_.nodal[v] + "'");
     std::vector<double> blockValues;
     for (size_t v = 0; v < element.size(); ++v)
-      for (size_t b = 0; b < mesh_.blocks.size(); ++b) {
-        const auto& block = mesh_.blocks[b];
-        if (block.numElements() == 0) continue;
+      for (size_t b = 0; b < blocks_.size(); ++b) {
+        const auto& block = blocks_[b];
+        if (block.elements.empty()) continue;
         blockValues.clear();
         for (GlobalIndex e : block.elements) blockValues.push_back(element[v][e]);
-        check(ex_put_elem_var(id_, step, static_cast<int>(v) + 1, static_cast<int64_t>(b) + 1, block.numElements(),
-                              blockValues.data()),
+        check(ex_put_elem_var(id_, step, static_cast<int>(v) + 1, static_cast<int64_t>(b) + 1,
+                              static_cast<int64_t>(block.elements.size()), blockValues.data()),
               "element variable '" + fields_.element[v] + "' on block '" + block.name + "'");
       }
     if (!global.empty())

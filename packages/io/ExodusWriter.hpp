@@ -106,7 +106,14 @@ class ExodusWriter {
 
  private:
   std::string path_;
-  const mesh::Mesh& mesh_;
+  /// Per mesh block: its name and the elements' indices into an element variable (the mesh itself is not
+  /// kept: the caller may free it once the file is created).
+  struct BlockElements {
+    std::string name;
+    std::vector<mesh::GlobalIndex> elements;
+  };
+  std::vector<BlockElements> blocks_;
+  mesh::GlobalIndex numElements_ = 0;
   ExodusFields fields_;
   mesh::GlobalIndex numNodes_ = 0;
   int id_ = -1;          ///< Exodus file id

@@ -31,7 +31,8 @@ struct RestartContent {
   std::vector<RestartRecord> records;  ///< any order; written sorted by (kind, id)
 };
 
-constexpr std::uint32_t kRestartFormatVersion = 1;
+// 2: the mesh fingerprint sums per-node and per-element hashes by global id (any partition alike).
+constexpr std::uint32_t kRestartFormatVersion = 2;
 
 /// What a record holds (RestartRecord::kind), and what its id counts.
 namespace restart_kind {

@@ -80,6 +80,11 @@ class Mesh {
   /// - names of blocks, node sets and side sets unique.
   /// Cost O(n log n) in the mesh size: 0.06 s for 10^6 Quad4, 0.15 s for 10^6 Hex8 (bench/mesh_check_bench).
   void validate(const std::string& source) const;
+  /// The same for one rank's part of a distributed mesh (local numbering): messages name the whole
+  /// mesh's numbers, `globalNodes[n]` and `globalElements[e]` (DistributedMesh.hpp). A side set's side
+  /// shared with an element of another rank's part is not seen here.
+  void validate(const std::string& source, const std::vector<GlobalIndex>& globalNodes,
+                const std::vector<GlobalIndex>& globalElements) const;
 };
 
 }  // namespace contessa::mesh

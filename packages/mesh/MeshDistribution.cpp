@@ -7,6 +7,7 @@
 #include <cstring>
 #include <exception>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <type_traits>
 
@@ -184,6 +185,10 @@ int worldSize() { return worldRanks().size; }
 void throwIfAnyRankFailed(std::exception_ptr failure) {
   // The lowest failing rank speaks for all: 1 = an InputError, 2 = another error.
   const int rank = worldRank(), size = worldSize();
+  if (size == 1) {  // one process (MPI perhaps not even initialised): nobody to tell
+    if (failure) std::rethrow_exception(failure);
+    return;
+  }
   int status = 0;
   std::string message;
   if (failure) {
@@ -235,9 +240,82 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
 
   const PartExtractor extractor(mesh, std::move(partition.elementOwner), size);
   partition = Partition{};
-  const PrivateComm comm;
-  for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to, comm.get());
+  if (size > 1) {
+    const PrivateComm comm;
+    for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to, comm.get());
+  }
   return extractor.part(0);
+}
+
+Mesh gatherMeshOnRoot(const DistributedMesh& part) {
+  const int rank = worldRank(), size = worldSize();
+  std::unique_ptr<PrivateComm> comm = size > 1 ? std::make_unique<PrivateComm>() : nullptr;
+  if (rank != 0) {
+    sendBytes(pack(part), 0, comm->get());
+    return Mesh{};
+  }
+  const int dim = part.local().dimension;
+  Mesh whole;
+  whole.dimension = dim;
+  whole.coordinates.assign(static_cast<std::size_t>(part.numGlobalNodes) * dim, 0.0);
+  const std::size_t numBlocks = part.local().blocks.size();
+  // Per block, (global element, global nodes) of every part; blocks list their elements in increasing
+  // global id, as every reader and generator numbers them (the parts' union is then the whole block).
+  std::vector<std::vector<std::pair<GlobalIndex, std::vector<GlobalIndex>>>> blockElements(numBlocks);
+  std::vector<std::vector<GlobalIndex>> nodeSets(part.local().nodeSets.size());
+  std::vector<SideSet> sideSets(part.local().sideSets.size());
+  for (std::size_t s = 0; s < sideSets.size(); ++s) {
+    sideSets[s].elements.resize(static_cast<std::size_t>(part.globalSideSetSizes[s]));
+    sideSets[s].sides.resize(static_cast<std::size_t>(part.globalSideSetSizes[s]));
+  }
+  const auto add = [&](const DistributedMesh& p) {
+    const Mesh& local = p.local();
+    const auto& gn = p.part.globalNodes;
+    const auto& ge = p.part.globalElements;
+    for (std::size_t n = 0; n < gn.size(); ++n)
+      for (int c = 0; c < dim; ++c) whole.coordinates[gn[n] * dim + c] = local.coordinates[n * dim + c];
+    for (std::size_t b = 0; b < numBlocks; ++b) {
+      const auto& block = local.blocks[b];
+      const int npe = nodesPerCell(block.cellType);
+      for (std::size_t k = 0; k < block.elements.size(); ++k) {
+        std::vector<GlobalIndex> nodes(static_cast<std::size_t>(npe));
+        for (int a = 0; a < npe; ++a) nodes[a] = gn[block.connectivity[k * npe + a]];
+        blockElements[b].emplace_back(ge[block.elements[k]], std::move(nodes));
+      }
+    }
+    for (std::size_t s = 0; s < nodeSets.size(); ++s)
+      for (GlobalIndex n : local.nodeSets[s].nodes) nodeSets[s].push_back(gn[n]);
+    for (std::size_t s = 0; s < sideSets.size(); ++s)
+      for (std::size_t k = 0; k < local.sideSets[s].elements.size(); ++k) {
+        const auto at = static_cast<std::size_t>(p.sideSetPositions[s][k]);
+        sideSets[s].elements[at] = ge[local.sideSets[s].elements[k]];
+        sideSets[s].sides[at] = local.sideSets[s].sides[k];
+      }
+  };
+  add(part);
+  for (int from = 1; from < size; ++from) add(unpack(receiveBytes(from, comm->get())));
+  for (std::size_t b = 0; b < numBlocks; ++b) {
+    auto& elements = blockElements[b];
+    std::sort(elements.begin(), elements.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    ElementBlock block{part.local().blocks[b].name, part.local().blocks[b].cellType, {}, {}};
+    for (const auto& [element, nodes] : elements) {
+      block.elements.push_back(element);
+      block.connectivity.insert(block.connectivity.end(), nodes.begin(), nodes.end());
+    }
+    whole.blocks.push_back(std::move(block));
+  }
+  for (std::size_t s = 0; s < nodeSets.size(); ++s) {
+    auto& nodes = nodeSets[s];
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    whole.nodeSets.push_back({part.local().nodeSets[s].name, std::move(nodes)});
+  }
+  for (std::size_t s = 0; s < sideSets.size(); ++s) {
+    sideSets[s].name = part.local().sideSets[s].name;
+    whole.sideSets.push_back(std::move(sideSets[s]));
+  }
+  return whole;
 }
 
 WorldRanks worldRanks() {
@@ -335,6 +413,7 @@ std::size_t setIndex(const Mesh& mesh, const std::string& name) {
 template <class T>
 std::vector<T> allGatherOf(const std::vector<T>& mine, MPI_Datatype type) {
   const int size = worldSize();
+  if (size == 1) return mine;  // one process (MPI perhaps not even initialised)
   const std::size_t count = mine.size();
   if (count > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw std::runtime_error("all-gather: more than 2^31 values on one rank");

@@ -27,6 +27,11 @@ WorldRanks worldRanks();
 /// on every rank with the same message, so none is left waiting.
 DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot);
 
+/// Collective: the whole mesh assembled on rank 0 from every rank's part (an empty Mesh elsewhere), as
+/// the replicated mesh was: blocks list their elements in increasing global id, node sets sorted, side
+/// sets in their original order (sideSetPositions). For output gathered into one file, which rank 0
+/// writes whole.
+Mesh gatherMeshOnRoot(const DistributedMesh& part);
 /// Collective: every rank throws the error of the lowest rank whose `failure` is set (null on a rank
 /// that did not fail), with its message: an InputError as an InputError, anything else as a
 /// runtime_error. Returns on every rank when none failed. What a step that one rank alone may fail

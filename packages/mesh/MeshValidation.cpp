@@ -27,6 +27,19 @@ constexpr int kMaxDimension = 3;
 // Entities are numbered from 1 in messages, as in the Exodus file (and in ParaView's ids).
 std::string number(GlobalIndex zeroBased) { return std::to_string(zeroBased + 1); }
 
+// One rank's part of a distributed mesh is checked in its local numbering; its messages name the
+// whole mesh's numbers (global ids), which the user's files and ParaView show.
+struct Numbering {
+  const std::vector<GlobalIndex>* nodes = nullptr;
+  const std::vector<GlobalIndex>* elements = nullptr;
+  std::string node(GlobalIndex n) const {
+    return number(nodes && n >= 0 && n < static_cast<GlobalIndex>(nodes->size()) ? (*nodes)[n] : n);
+  }
+  std::string element(GlobalIndex e) const {
+    return number(elements && e >= 0 && e < static_cast<GlobalIndex>(elements->size()) ? (*elements)[e] : e);
+  }
+};
+
 std::string format(double value) {
   std::ostringstream out;
   out.precision(10);
@@ -36,7 +49,8 @@ std::string format(double value) {
 
 class Validator {
  public:
-  Validator(const Mesh& mesh, const std::string& source) : mesh_(mesh), where_(source + ": ") {}
+  Validator(const Mesh& mesh, const std::string& source, Numbering numbering = {})
+      : mesh_(mesh), where_(source + ": "), numbering_(numbering) {}
 
   void run() {
     structure();
@@ -53,7 +67,7 @@ class Validator {
   void fail(const std::string& message) const { throw InputError(where_ + message); }
 
   std::string elementName(GlobalIndex e, int block) const {
-    return "element " + number(e) + " of block '" + mesh_.blocks[block].name + "'";
+    return "element " + numbering_.element(e) + " of block '" + mesh_.blocks[block].name + "'";
   }
 
   // Sizes and ids: what the other checks index by.
@@ -94,7 +108,7 @@ class Validator {
     const char* axis[3] = {"x", "y", "z"};
     for (size_t k = 0; k < mesh_.coordinates.size(); ++k)
       if (!std::isfinite(mesh_.coordinates[k]))
-        fail("node " + number(static_cast<GlobalIndex>(k / dim)) + " has a non-finite coordinate (" +
+        fail("node " + numbering_.node(static_cast<GlobalIndex>(k / dim)) + " has a non-finite coordinate (" +
              axis[k % dim] + " = " + format(mesh_.coordinates[k]) + ")");
   }
 
@@ -114,11 +128,11 @@ class Validator {
         const GlobalIndex* nodes = &b.connectivity[k * npe];
         for (int a = 0; a < npe; ++a) {
           if (nodes[a] < 0 || nodes[a] >= numNodes_)
-            fail(elementName(b.elements[k], bi) + " refers to node " + number(nodes[a]) + ", but the mesh has " +
+            fail(elementName(b.elements[k], bi) + " refers to node " + numbering_.node(nodes[a]) + ", but the mesh has " +
                  std::to_string(numNodes_) + " nodes");
           for (int c = 0; c < a; ++c)
             if (nodes[c] == nodes[a])
-              fail(elementName(b.elements[k], bi) + " lists node " + number(nodes[a]) +
+              fail(elementName(b.elements[k], bi) + " lists node " + numbering_.node(nodes[a]) +
                    " twice (a collapsed element): give it " + std::to_string(npe) + " distinct nodes");
           for (int i = 0; i < dim; ++i) x[a * dim + i] = mesh_.coordinates[nodes[a] * dim + i];
         }
@@ -153,10 +167,10 @@ class Validator {
       return std::string("is degenerate (zero ") + (twoD ? "area" : "volume") +
              "): its nodes lie on one " + (twoD ? "line" : "plane");
     if (negative > 0)
-      return "is tangled (its Jacobian is negative at node " + number(nodes[firstNegative]) + "): " +
+      return "is tangled (its Jacobian is negative at node " + numbering_.node(nodes[firstNegative]) + "): " +
              (twoD ? "a self-intersecting or non-convex quadrilateral" : "a self-intersecting or non-convex hexahedron") +
              "; check its node order and coordinates";
-    return "is degenerate at node " + number(nodes[firstZero]) + " (zero Jacobian: " +
+    return "is degenerate at node " + numbering_.node(nodes[firstZero]) + " (zero Jacobian: " +
            (twoD ? "the two edges there are in line" : "the three edges there lie in one plane") +
            "): move the node or split the element";
   }
@@ -165,7 +179,7 @@ class Validator {
     for (const auto& s : mesh_.nodeSets) {
       for (GlobalIndex n : s.nodes)
         if (n < 0 || n >= numNodes_)
-          fail("node set '" + s.name + "' refers to node " + number(n) + ", but the mesh has " +
+          fail("node set '" + s.name + "' refers to node " + numbering_.node(n) + ", but the mesh has " +
                std::to_string(numNodes_) + " nodes");
       if (!std::is_sorted(s.nodes.begin(), s.nodes.end()) ||
           std::adjacent_find(s.nodes.begin(), s.nodes.end()) != s.nodes.end())
@@ -204,11 +218,11 @@ class Validator {
       for (size_t k = 0; k < s.elements.size(); ++k) {
         const GlobalIndex e = s.elements[k];
         if (e < 0 || e >= numElements_)
-          fail(set + "refers to element " + number(e) + ", but the mesh has " + std::to_string(numElements_) +
+          fail(set + "refers to element " + numbering_.element(e) + ", but the mesh has " + std::to_string(numElements_) +
                " elements");
         const CellType type = mesh_.blocks[blockOf_[e]].cellType;
         if (s.sides[k] < 0 || s.sides[k] >= numSides(type))
-          fail(set + "refers to side " + std::to_string(s.sides[k] + 1) + " of element " + number(e) + ", but a " +
+          fail(set + "refers to side " + std::to_string(s.sides[k] + 1) + " of element " + numbering_.element(e) + ", but a " +
                exodusCellName(type) + " has sides 1 to " + std::to_string(numSides(type)));
         entries.push_back({sideKey(blockOf_[e], localOf_[e], s.sides[k]), e, -1, si, static_cast<int>(k)});
       }
@@ -247,7 +261,7 @@ class Validator {
       if (entry.neighbour >= 0)
         fail("side set '" + mesh_.sideSets[entry.set].name + "' holds side " +
              std::to_string(mesh_.sideSets[entry.set].sides[entry.position] + 1) + " of element " +
-             number(entry.element) + ", which element " + number(entry.neighbour) +
+             numbering_.element(entry.element) + ", which element " + numbering_.element(entry.neighbour) +
              " shares: an interior side, not on the boundary of the mesh");
   }
 
@@ -262,6 +276,7 @@ class Validator {
 
   const Mesh& mesh_;
   const std::string where_;
+  const Numbering numbering_;
   GlobalIndex numNodes_ = 0, numElements_ = 0;
   std::vector<int> blockOf_;
   std::vector<GlobalIndex> localOf_;
@@ -270,5 +285,10 @@ class Validator {
 }  // namespace
 
 void Mesh::validate(const std::string& source) const { Validator(*this, source).run(); }
+
+void Mesh::validate(const std::string& source, const std::vector<GlobalIndex>& globalNodes,
+                    const std::vector<GlobalIndex>& globalElements) const {
+  Validator(*this, source, Numbering{&globalNodes, &globalElements}).run();
+}
 
 }  // namespace contessa::mesh

@@ -3,24 +3,44 @@
 #include <map>
 #include <string>
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include "common/Error.hpp"
 
 namespace contessa::model {
 
 BoundaryConditions::BoundaryConditions(const deck::ProblemDefinition& problem, const DofLayout& layout) {
-  const mesh::Mesh& mesh = problem.mesh;
+  const mesh::DistributedMesh& part = problem.mesh;  // node sets hold the part's nodes, owned or not
+  const auto nodesOf = [&](const std::string& set) {
+    std::vector<GO> nodes;
+    for (mesh::GlobalIndex n : part.local().nodeSet(set).nodes) nodes.push_back(part.part.globalNodes[n]);
+    return nodes;
+  };
   const int dim = layout.dimension();
   const Map& owned = *layout.ownedMap();
   // Dirichlet: one value per DOF; the same DOF prescribed twice with different values is an input error.
+  // A rank sees the nodes of its part only: the lowest rank that finds a conflict names it on every rank.
   std::map<GO, std::pair<double, std::string>> prescribed;
+  std::string conflict;
   for (const auto& bc : problem.dirichlet) {
-    for (GO node : mesh.nodeSet(bc.nodeSet).nodes) {
+    for (GO node : nodesOf(bc.nodeSet)) {
       const GO dof = node * dim + bc.component;
       auto [it, inserted] = prescribed.emplace(dof, std::make_pair(bc.value, bc.name));
-      requireInput(inserted || it->second.first == bc.value,
-                   "Problem/Dirichlet Conditions/" + bc.name + ": prescribes node " + std::to_string(node) +
-                       " differently from '" + it->second.second + "'");
+      if (conflict.empty() && !inserted && it->second.first != bc.value)
+        conflict = "Problem/Dirichlet Conditions/" + bc.name + ": prescribes node " + std::to_string(node + 1) +
+                   " differently from '" + it->second.second + "'";
     }
+  }
+  const Comm& comm = *layout.comm();
+  const int mine = conflict.empty() ? comm.getSize() : comm.getRank();
+  int speaker = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &mine, &speaker);
+  if (speaker < comm.getSize()) {
+    int length = static_cast<int>(conflict.size());
+    Teuchos::broadcast(comm, speaker, &length);
+    conflict.resize(static_cast<std::size_t>(length));
+    Teuchos::broadcast(comm, speaker, length, conflict.data());
+    throw InputError(conflict);
   }
   for (const auto& [dof, value] : prescribed) {
     const LO lo = owned.getLocalElement(dof);
@@ -29,14 +49,15 @@ BoundaryConditions::BoundaryConditions(const deck::ProblemDefinition& problem, c
       prescribedValues_.push_back(value.first);
     }
   }
-  // Nodal forces: shared equally by the set's nodes; only the owner adds a node's share.
+  // Nodal forces: shared equally by the whole set's nodes; only the owner adds a node's share.
   externalForce_ = Teuchos::rcp(new Vector(layout.ownedMap()));
   auto f = externalForce_->getDataNonConst(0);
   for (const auto& force : problem.nodalForces) {
-    const auto& nodes = mesh.nodeSet(force.nodeSet).nodes;
-    for (GO node : nodes) {
+    const auto set = &part.local().nodeSet(force.nodeSet) - part.local().nodeSets.data();
+    const double setSize = static_cast<double>(part.globalNodeSetSizes[static_cast<std::size_t>(set)]);
+    for (GO node : nodesOf(force.nodeSet)) {
       const LO lo = owned.getLocalElement(node * dim + force.component);
-      if (lo != Teuchos::OrdinalTraits<LO>::invalid()) f[lo] += force.totalForce / static_cast<double>(nodes.size());
+      if (lo != Teuchos::OrdinalTraits<LO>::invalid()) f[lo] += force.totalForce / setSize;
     }
   }
 }

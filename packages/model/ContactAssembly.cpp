@@ -9,18 +9,26 @@ namespace contessa::model {
 
 using contact::GlobalIndex;
 
-ContactAssembly::ContactAssembly(const std::vector<contact::ContactInterfaceSpec>& specs, const mesh::Mesh& mesh,
-                                 const mesh::Partition& partition, const DofLayout& layout)
-    : mesh_(mesh), layout_(layout) {
-  const int rank = layout.comm()->getRank();
-  for (const auto& spec : specs) {
+ContactAssembly::ContactAssembly(const deck::ProblemDefinition& problem, const DofLayout& layout)
+    : layout_(layout), numGlobalNodes_(problem.mesh.numGlobalNodes) {
+  const mesh::DistributedMesh& part = problem.mesh;
+  const int dim = layout.dimension();
+  for (const auto& spec : problem.contacts) {
     std::vector<char> evaluates(spec.slaveNodes.size());
-    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) evaluates[k] = partition.nodeOwner[spec.slaveNodes[k]] == rank;
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      const mesh::GlobalIndex local = part.localNode(spec.slaveNodes[k]);
+      evaluates[k] = local >= 0 && part.nodeOwner[static_cast<std::size_t>(local)] == part.rank;
+    }
     interfaces_.push_back(contact::makeContactInterface(spec, evaluates));
   }
+  referenceX_.assign(static_cast<std::size_t>(layout.numOverlapDofs()), 0.0);
+  for (std::size_t k = 0; k < problem.contactNodes.size(); ++k)
+    for (int c = 0; c < dim; ++c)
+      referenceX_[layout.overlapDof(problem.contactNodes[k], c)] = problem.contactNodeCoordinates[k * dim + c];
   // The first reservation, around the reference configuration.
+  const std::vector<double> zero(referenceX_.size(), 0.0);
   for (const auto& interface : interfaces_)
-    reservations_.push_back(contact::reserveCouplings(interface->spec(), mesh.coordinates, interface->evaluatesSlave()));
+    reservations_.push_back(contact::reserveCouplings(interface->spec(), positions(zero.data()), interface->evaluatesSlave()));
   outsideByInterface_.assign(interfaces_.size(), 0);
 }
 
@@ -86,9 +94,11 @@ void ContactAssembly::reserveAround(const double* u) {
 
 contact::ContactInterfaceBase::NodePosition ContactAssembly::positions(const double* u) const {
   const int dim = layout_.dimension();
-  const auto& X = mesh_.coordinates;
-  return [this, u, dim, &X](GlobalIndex node, double* p) {
-    for (int c = 0; c < dim; ++c) p[c] = X[node * dim + c] + u[layout_.overlapDof(node, c)];
+  return [this, u, dim](GlobalIndex node, double* p) {
+    for (int c = 0; c < dim; ++c) {
+      const LO dof = layout_.overlapDof(node, c);
+      p[c] = referenceX_[dof] + u[dof];
+    }
   };
 }
 
@@ -103,7 +113,7 @@ bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
   std::vector<double> block;
   // The first contact pairing (this rank) outside the couplings the graph reserved: (interface, slave node).
   const long long none = std::numeric_limits<long long>::max();
-  const long long numNodes = mesh_.numNodes();
+  const long long numNodes = numGlobalNodes_;
   long long outsideReach = none;
   std::vector<int> outside(interfaces_.size(), 0);
   std::string missingCoupling;
@@ -239,7 +249,7 @@ std::string ContactAssembly::tunnelling() const {
   // The lowest (interface, node) over all ranks names the case; the count says how many there are.
   const Comm& comm = *layout_.comm();
   const long long none = std::numeric_limits<long long>::max();
-  const long long numNodes = mesh_.numNodes();
+  const long long numNodes = numGlobalNodes_;
   long long local = none, first = none;
   int localCount = 0, count = 0;
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {

@@ -12,6 +12,7 @@
 
 #include "contact/ContactInterface.hpp"
 #include "contact/CouplingReservation.hpp"
+#include "deck/ProblemDefinition.hpp"
 #include "io/RestartFile.hpp"
 #include "model/DofLayout.hpp"
 #include "model/StiffnessScatter.hpp"
@@ -22,9 +23,10 @@ class ContactAssembly {
  public:
   using Interfaces = std::vector<std::unique_ptr<contact::ContactInterfaceBase>>;
 
-  /// One interface per spec; each slave node is evaluated by the rank that owns it.
-  ContactAssembly(const std::vector<contact::ContactInterfaceSpec>& specs, const mesh::Mesh& mesh,
-                  const mesh::Partition& partition, const DofLayout& layout);
+  /// One interface per spec of `problem`; each slave node is evaluated by the rank that owns it (in its
+  /// part of the mesh). Positions come from the contact surfaces' replicated reference coordinates
+  /// (problem.contactNodes), which `layout`'s overlap holds.
+  ContactAssembly(const deck::ProblemDefinition& problem, const DofLayout& layout);
 
   /// The nodes of every contact surface (slave nodes and deformable master nodes): every rank holds
   /// them (DofLayout's replicated nodes).
@@ -86,8 +88,9 @@ class ContactAssembly {
   template <class Changes>
   std::vector<contact::SlaveNodeChange> collect(const Changes& changesOf) const;
 
-  const mesh::Mesh& mesh_;
   const DofLayout& layout_;
+  mesh::GlobalIndex numGlobalNodes_;
+  std::vector<double> referenceX_;  ///< per overlapped DOF: the reference coordinate (surface nodes; else 0)
   Interfaces interfaces_;
   std::vector<contact::CouplingReservation> reservations_;  ///< per interface: the couplings the graph holds
   std::vector<int> outsideByInterface_;  ///< per interface: the last stiffness pass met a pairing outside (all ranks)

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 #include <Thyra_DetachedVectorView.hpp>
@@ -11,6 +12,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "common/PhaseTimers.hpp"
+#include "mesh/MeshDistribution.hpp"
 #include "model/BoundaryConditions.hpp"
 #include "model/ContactAssembly.hpp"
 #include "model/DofLayout.hpp"
@@ -25,13 +27,15 @@ using MEB = Thyra::ModelEvaluatorBase;
 using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
 
 ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
-                                             const mesh::Partition& partition,
                                              const RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory)
-    : comm_(comm), problem_(problem), dim_(problem.mesh.dimension), solverFactory_(solverFactory) {
-  layout_ = std::make_unique<DofLayout>(comm_, problem_.mesh, partition, ContactAssembly::surfaceNodes(problem_.contacts));
-  contact_ = std::make_unique<ContactAssembly>(problem_.contacts, problem_.mesh, partition, *layout_);
-  solids_ = std::make_unique<SolidAssembler>(problem_, partition.ownedElements(comm_->getRank()),
-                                             [this](GlobalIndex dof) { return layout_->overlapMap()->getLocalElement(dof); });
+    : comm_(comm), problem_(problem), dim_(problem.dimension()), solverFactory_(solverFactory) {
+  if (problem.mesh.rank != comm->getRank() || problem.mesh.numRanks != comm->getSize())
+    throw std::logic_error("ContactMechanicsModel: the mesh part was made for rank " + std::to_string(problem.mesh.rank) +
+                           " of " + std::to_string(problem.mesh.numRanks) + ", not for this communicator");
+  layout_ = std::make_unique<DofLayout>(comm_, problem_.mesh, ContactAssembly::surfaceNodes(problem_.contacts));
+  contact_ = std::make_unique<ContactAssembly>(problem_, *layout_);
+  solids_ = std::make_unique<SolidAssembler>(
+      problem_, [this](GlobalIndex dof) { return layout_->overlapMap()->getLocalElement(dof); });
   overlapX_ = rcp(new Vector(layout_->overlapMap()));
   overlapForce_ = rcp(new Vector(layout_->overlapMap()));
   overlapDfdLambda_ = rcp(new Vector(layout_->overlapMap()));
@@ -320,9 +324,23 @@ std::string ContactMechanicsModel::inadmissibleElement() const {
   long long element = none;
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &local, &element);
   if (element == none) return "";
-  int localCode = local == element ? static_cast<int>(lastElementStatus_.status) : 0, code = 0;
+  // Its block from the rank whose part holds it (the part's elements are numbered block by block).
+  int localCode = 0, localBlock = -1, code = 0, blockIndex = -1;
+  if (local == element) {
+    localCode = static_cast<int>(lastElementStatus_.status);
+    const auto& globalElements = problem_.mesh.part.globalElements;
+    const auto at = static_cast<GlobalIndex>(std::find(globalElements.begin(), globalElements.end(), element) -
+                                             globalElements.begin());
+    GlobalIndex end = 0;
+    for (const auto& b : problem_.mesh.local().blocks) {
+      ++localBlock;
+      end += b.numElements();
+      if (at < end) break;
+    }
+  }
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &localCode, &code);
-  const std::string block = problem_.blocks[problem_.mesh.locate(element).block].block;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &localBlock, &blockIndex);
+  const std::string block = problem_.blocks[static_cast<std::size_t>(blockIndex)].block;
   // Element numbers are Exodus ids (1-based), as in the output file.
   const std::string which = "element " + std::to_string(element + 1) + " of block '" + block + "'";
   switch (static_cast<mechanics::ElementStatus>(code)) {
@@ -338,7 +356,17 @@ std::string ContactMechanicsModel::inadmissibleElement() const {
 std::string ContactMechanicsModel::contactTunnelling() const { return contact_->tunnelling(); }
 
 std::string ContactMechanicsModel::describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const {
-  return model::describeFreeMotion(problem_.mesh, nullSpace);
+  // A diagnostic of a failed run: rank 0 gathers the whole mesh (the null space is over all DOFs on
+  // every rank already) and tells every rank the sentence.
+  // (On one rank the part is the whole mesh, numbered as the whole.)
+  if (comm_->getSize() == 1) return model::describeFreeMotion(problem_.mesh.local(), nullSpace);
+  const mesh::Mesh whole = mesh::gatherMeshOnRoot(problem_.mesh);
+  std::string text = comm_->getRank() == 0 ? model::describeFreeMotion(whole, nullSpace) : std::string();
+  int length = static_cast<int>(text.size());
+  Teuchos::broadcast(*comm_, 0, &length);
+  text.resize(static_cast<std::size_t>(length));
+  if (length > 0) Teuchos::broadcast(*comm_, 0, length, text.data());
+  return text;
 }
 
 bool ContactMechanicsModel::hasContact() const { return !contact_->empty(); }

@@ -25,7 +25,6 @@
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "io/RestartFile.hpp"
-#include "mesh/Partition.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/PostProcessing.hpp"
 #include "model/SolidAssembler.hpp"
@@ -50,8 +49,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public IncrementalState,
                               public continuation::ContactEventSource {
  public:
+  /// The model of this rank's part of `problem`'s mesh (problem.mesh, made for `comm`'s rank and size).
   ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
-                        const mesh::Partition& partition,
                         const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory);
   ~ContactMechanicsModel() override;
 

@@ -64,14 +64,17 @@ void ContactMechanicsModel::restoreEvaluationState(const EvaluationState& s) con
 std::string ContactMechanicsModel::describeCoupling(GO rowDof, GO columnDof) const {
   const GlobalIndex a = rowDof / dim_, b = columnDof / dim_;
   std::vector<std::string> who;
-  // The first solid element holding both nodes (Exodus numbering, 1-based).
-  for (std::size_t k = 0; k < problem_.mesh.blocks.size() && who.empty(); ++k) {
-    const auto& block = problem_.mesh.blocks[k];
+  // The first solid element of this rank's part holding both nodes (Exodus numbering, 1-based).
+  const mesh::DistributedMesh& part = problem_.mesh;
+  const GlobalIndex localA = part.localNode(a), localB = part.localNode(b);
+  for (std::size_t k = 0; k < part.local().blocks.size() && who.empty() && localA >= 0 && localB >= 0; ++k) {
+    const auto& block = part.local().blocks[k];
     const int n = mesh::nodesPerCell(block.cellType);
     for (GlobalIndex e = 0; e < block.numElements(); ++e) {
       const auto first = block.connectivity.begin() + e * n, last = first + n;
-      if (std::find(first, last, a) != last && std::find(first, last, b) != last) {
-        who.push_back("element " + std::to_string(block.elements[e] + 1) + " of block '" + problem_.blocks[k].block + "'");
+      if (std::find(first, last, localA) != last && std::find(first, last, localB) != last) {
+        who.push_back("element " + std::to_string(part.part.globalElements[block.elements[e]] + 1) + " of block '" +
+                      problem_.blocks[k].block + "'");
         break;
       }
     }

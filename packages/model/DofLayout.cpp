@@ -6,12 +6,11 @@ namespace contessa::model {
 
 using Teuchos::rcp;
 
-DofLayout::DofLayout(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, const mesh::Partition& partition,
+DofLayout::DofLayout(const Teuchos::RCP<const Comm>& comm, const mesh::DistributedMesh& part,
                      const std::vector<mesh::GlobalIndex>& replicatedNodes)
-    : comm_(comm), dim_(mesh.dimension) {
-  const int rank = comm_->getRank();
-  const auto owned = partition.ownedNodes(rank);
-  auto overlap = partition.overlapNodes(mesh, rank);
+    : comm_(comm), dim_(part.local().dimension) {
+  const auto owned = part.ownedNodes();
+  auto overlap = part.part.globalNodes;
   overlap.insert(overlap.end(), replicatedNodes.begin(), replicatedNodes.end());
   std::sort(overlap.begin(), overlap.end());
   overlap.erase(std::unique(overlap.begin(), overlap.end()), overlap.end());
@@ -23,7 +22,8 @@ DofLayout::DofLayout(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mes
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   ownedMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(ownedDofs), 0, comm_));
   overlapMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(overlapDofs), 0, comm_));
-  const auto elements = partition.ownedElements(rank);
+  // The part's elements in its order (block by block), which the element loop and the output follow.
+  const auto& elements = part.part.globalElements;
   std::vector<GO> elementIds(elements.begin(), elements.end());
   elementMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(elementIds), 0, comm_));
   nodeMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(std::vector<GO>(owned.begin(), owned.end())), 0, comm_));

@@ -6,18 +6,18 @@
 // contact leaves its reserved couplings (the maps never change). No physics here.
 #include <vector>
 
-#include "mesh/Mesh.hpp"
-#include "mesh/Partition.hpp"
+#include "mesh/DistributedMesh.hpp"
 #include "model/TpetraTypes.hpp"
 
 namespace contessa::model {
 
 class DofLayout {
  public:
-  /// `replicatedNodes`: nodes every rank holds in its overlap besides its elements' nodes (contact
+  /// From this rank's part of the mesh: its owned nodes, its elements and their nodes, and
+  /// `replicatedNodes`, nodes every rank holds in its overlap besides its elements' nodes (contact
   /// surfaces are replicated, docs/design.md: the owner of a slave node sees its master facet wherever it
   /// slides).
-  DofLayout(const Teuchos::RCP<const Comm>& comm, const mesh::Mesh& mesh, const mesh::Partition& partition,
+  DofLayout(const Teuchos::RCP<const Comm>& comm, const mesh::DistributedMesh& part,
             const std::vector<mesh::GlobalIndex>& replicatedNodes);
 
   int dimension() const { return dim_; }

@@ -45,9 +45,10 @@ std::vector<NodeSetReaction> PostProcessing::reactions(const Vector& netForce) c
   std::vector<NodeSetReaction> out;
   for (const auto& name : problem_.reactionNodeSets) {
     std::vector<double> local(dim, 0.0), global(dim, 0.0);
-    for (GO node : problem_.mesh.nodeSet(name).nodes)
+    // The part's nodes of the set (owned or not): each owned node's row counted once, by its owner.
+    for (GO localNode : problem_.mesh.local().nodeSet(name).nodes)
       for (int c = 0; c < dim; ++c) {
-        const LO lo = owned.getLocalElement(node * dim + c);
+        const LO lo = owned.getLocalElement(problem_.mesh.part.globalNodes[localNode] * dim + c);
         if (lo != Teuchos::OrdinalTraits<LO>::invalid()) local[c] += fv[lo];
       }
     Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_SUM, dim, local.data(), global.data());

@@ -2,45 +2,43 @@
 
 #include "common/Error.hpp"
 
-#include <map>
-
 namespace contessa::model {
 
-SolidAssembler::SolidAssembler(const deck::ProblemDefinition& problem, std::vector<GlobalIndex> elements,
-                               const std::function<int(GlobalIndex)>& localDof)
-    : elements_(std::move(elements)) {
-  const mesh::Mesh& mesh = problem.mesh;
+SolidAssembler::SolidAssembler(const deck::ProblemDefinition& problem, const std::function<int(GlobalIndex)>& localDof)
+    : elements_(problem.mesh.part.globalElements) {
+  const mesh::Mesh& mesh = problem.mesh.local();  // local numbering; global ids beside
+  const auto& globalNodes = problem.mesh.part.globalNodes;
   const int dim = mesh.dimension;
-  std::map<int, int> setOfBlock;           // mesh block → index into sets_
-  std::vector<std::vector<double>> setX;   // reference coordinates of each set's elements
+  std::vector<std::vector<double>> setX;  // reference coordinates of each set's elements
   std::size_t stateSize = 0;
   data_.reserve(elements_.size());
-  for (GlobalIndex e : elements_) {
-    const auto loc = mesh.locate(e);
-    const mesh::ElementBlock& block = mesh.blocks[loc.block];
-    const deck::BlockPhysics& physics = problem.blocks[loc.block];
-    const auto [it, added] = setOfBlock.emplace(static_cast<int>(loc.block), static_cast<int>(sets_.size()));
-    if (added) {
-      sets_.push_back({&physics, nullptr});
-      setX.emplace_back();
-    }
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const mesh::ElementBlock& block = mesh.blocks[b];
+    if (block.elements.empty()) continue;
+    const deck::BlockPhysics& physics = problem.blocks[b];
+    const int set = static_cast<int>(sets_.size());
+    sets_.push_back({&physics, nullptr});
+    setX.emplace_back();
     const int nn = mesh::nodesPerCell(block.cellType);
-    ElementData d;
-    d.set = it->second;
-    d.indexInSet = static_cast<int>(setX[d.set].size() / (nn * dim));
-    d.numDofs = nn * dim;
-    d.dofOffset = dofs_.size();
-    d.stateOffset = stateSize;
-    for (int a = 0; a < nn; ++a) {
-      const GlobalIndex node = block.connectivity[loc.local * nn + a];
-      for (int c = 0; c < dim; ++c) {
-        setX[d.set].push_back(mesh.coordinates[node * dim + c]);
-        dofs_.push_back(localDof(node * dim + c));
+    for (GlobalIndex k = 0; k < block.numElements(); ++k) {
+      ElementData d;
+      d.set = set;
+      d.indexInSet = static_cast<int>(k);
+      d.numDofs = nn * dim;
+      d.dofOffset = dofs_.size();
+      d.stateOffset = stateSize;
+      for (int a = 0; a < nn; ++a) {
+        const GlobalIndex node = block.connectivity[k * nn + a];
+        const GlobalIndex globalNode = globalNodes[node];
+        for (int c = 0; c < dim; ++c) {
+          setX[set].push_back(mesh.coordinates[node * dim + c]);
+          dofs_.push_back(localDof(globalNode * dim + c));
+        }
       }
+      stateSize += physics.element->numStateValues();
+      maxDofs_ = std::max(maxDofs_, d.numDofs);
+      data_.push_back(d);
     }
-    stateSize += physics.element->numStateValues();
-    maxDofs_ = std::max(maxDofs_, d.numDofs);
-    data_.push_back(d);
   }
   for (std::size_t s = 0; s < sets_.size(); ++s) {
     const auto& element = *sets_[s].physics->element;

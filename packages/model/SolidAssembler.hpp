@@ -18,10 +18,9 @@ using mesh::GlobalIndex;
 
 class SolidAssembler {
  public:
-  /// `elements`: the global ids this rank assembles. `localDof` maps a global DOF (node·dim + c)
-  /// to its index in the rank's overlapped displacement array.
-  SolidAssembler(const deck::ProblemDefinition& problem, std::vector<GlobalIndex> elements,
-                 const std::function<int(GlobalIndex)>& localDof);
+  /// Assembles the elements of this rank's part of the mesh (problem.mesh), block by block. `localDof`
+  /// maps a global DOF (node·dim + c) to its index in the rank's overlapped displacement array.
+  SolidAssembler(const deck::ProblemDefinition& problem, const std::function<int(GlobalIndex)>& localDof);
 
   /// Receives one element's local DOF indices (overlapped numbering), internal force and, when
   /// requested, stiffness (row-major).
@@ -50,6 +49,7 @@ class SolidAssembler {
   const std::vector<double>& trialState() const { return trial_; }
   void restoreTrialState(const std::vector<double>& state) { trial_ = state; }
 
+  /// Global ids of the elements, in the loop's order (the part's: block by block).
   const std::vector<GlobalIndex>& elements() const { return elements_; }
 
   /// Committed state of the element at index i of elements() (a restart file's record), and setting it

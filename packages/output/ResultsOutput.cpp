@@ -15,6 +15,7 @@
 #include "io/ExodusResults.hpp"
 #include "io/OutputWriteError.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
+#include "mesh/MeshDistribution.hpp"
 
 #include "common/PhaseTimers.hpp"
 
@@ -68,21 +69,6 @@ std::string agree(const model::Comm& comm, std::string message) {
   return message;
 }
 
-// The owner of every element, on every rank.
-std::vector<int> elementOwners(const model::Map& ownedElements, model::GO numElements) {
-  const auto comm = ownedElements.getComm();
-  std::vector<model::GO> all(static_cast<std::size_t>(numElements));
-  for (model::GO e = 0; e < numElements; ++e) all[e] = e;
-  model::Vector owner(rcpFromRef(ownedElements));
-  owner.putScalar(static_cast<double>(comm->getRank()));
-  model::Vector everywhere(mapOf(all, comm));
-  everywhere.doImport(owner, model::Import(rcpFromRef(ownedElements), everywhere.getMap()), Tpetra::INSERT);
-  std::vector<int> ranks(static_cast<std::size_t>(numElements));
-  const auto values = everywhere.getData(0);
-  for (model::GO e = 0; e < numElements; ++e) ranks[e] = static_cast<int>(values[e]);
-  return ranks;
-}
-
 std::string formatTime(const char* format) {
   const std::time_t t = std::time(nullptr);
   char text[64] = {};
@@ -120,12 +106,12 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     : problem_(problem), model_(model), printTable_(printTable) {
   const auto comm = model.ownedDofMap()->getComm();
   root_ = comm->getRank() == 0;
-  const int dim = problem.mesh.dimension;
+  const int dim = problem.dimension();
+  const mesh::DistributedMesh& part = problem.mesh;
   perRank_ = problem.exodusPerRank;
   if (perRank_) {
-    piece_ = std::make_unique<mesh::MeshPiece>(
-        mesh::extractPiece(problem.mesh, elementOwners(*model.ownedElementMap(), problem.mesh.numElements()),
-                           comm->getRank()));
+    // Each rank's file is its part of the mesh: the elements it assembles and the nodes they use.
+    piece_ = &part.part;
     std::vector<model::GO> dofs;
     for (model::GO node : piece_->globalNodes)
       for (int c = 0; c < dim; ++c) dofs.push_back(node * dim + c);
@@ -133,9 +119,9 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     fileElementMap_ = mapOf(piece_->globalElements, comm);
     fileNodeMap_ = mapOf(piece_->globalNodes, comm);
   } else {
-    fileDofMap_ = rootMap(problem.mesh.numNodes() * dim, comm);
-    fileElementMap_ = rootMap(problem.mesh.numElements(), comm);
-    fileNodeMap_ = rootMap(problem.mesh.numNodes(), comm);
+    fileDofMap_ = rootMap(part.numGlobalNodes * dim, comm);
+    fileElementMap_ = rootMap(part.numGlobalElements, comm);
+    fileNodeMap_ = rootMap(part.numGlobalNodes, comm);
   }
   dofToFile_ = rcp(new model::Import(model.ownedDofMap(), fileDofMap_));
   elementToFile_ = rcp(new model::Import(model.ownedElementMap(), fileElementMap_));
@@ -155,7 +141,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
   for (const auto& contact : problem.contacts) {
     if (!contact.rigidMaster) continue;
     std::string blockName = contact.name;
-    if (problem.mesh.hasBlock(blockName)) blockName += "_rigid";
+    if (part.local().hasBlock(blockName)) blockName += "_rigid";
     const auto& surface = contact.rigidSurface;
     io::ExodusSurfaceBlock block{blockName, surface.points, contact.nodesPerFacet(),
                                  {surface.facets.begin(), surface.facets.end()}};
@@ -198,11 +184,13 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     }
     std::filesystem::remove(old, ec);
   };
+  // One file: rank 0 writes the whole mesh, gathered from the parts for the writer only.
+  const mesh::Mesh whole = perRank_ ? mesh::Mesh{} : mesh::gatherMeshOnRoot(part);
   const auto createExodus = [&]() {
     if (!perRank_) {
       continuing(exodusPath_, [&] {
-        exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, problem.mesh, fields,
-                                                     runRecords(problem.title, run, ranks), surfaceBlocks);
+        exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, whole, fields, runRecords(problem.title, run, ranks),
+                                                     surfaceBlocks);
       });
       return;
     }
@@ -213,9 +201,9 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     decomposition.globalNodes = piece_->globalNodes;
     decomposition.globalElements = piece_->globalElements;
     decomposition.sharedWith = piece_->sharedWith;
-    decomposition.globalNumNodes = problem.mesh.numNodes();
-    decomposition.globalNumElements = problem.mesh.numElements();
-    for (const auto& block : problem.mesh.blocks) decomposition.globalBlockSizes.push_back(block.numElements());
+    decomposition.globalNumNodes = part.numGlobalNodes;
+    decomposition.globalNumElements = part.numGlobalElements;
+    decomposition.globalBlockSizes = part.globalBlockSizes;
     std::vector<io::ExodusSurfaceBlock> pieceSurfaces = surfaceBlocks;
     for (auto& surface : pieceSurfaces) {
       const auto points = static_cast<mesh::GlobalIndex>(surface.points.size()) / dim;
@@ -291,7 +279,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
 
 void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) {
   timers::Scope timed(timers::Phase::Output);
-  const int dim = problem_.mesh.dimension;
+  const int dim = problem_.dimension();
   const auto& comm = *model_.ownedDofMap()->getComm();
   // Collective part: every rank computes and sends what the Exodus files show (to rank 0's file, or
   // to each rank's piece).

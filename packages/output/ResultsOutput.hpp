@@ -79,7 +79,7 @@ class ResultsOutput : public solvers::IncrementObserver {
   // What this rank's Exodus file shows (Single File: the whole mesh on rank 0, nothing elsewhere; Per
   // Rank: this rank's piece), as maps numbered in the file's order, and the imports of the owned values.
   bool perRank_ = false;
-  std::unique_ptr<mesh::MeshPiece> piece_;
+  const mesh::MeshPiece* piece_ = nullptr;  ///< per-rank output: this rank's part of the mesh
   Teuchos::RCP<const model::Map> fileDofMap_, fileElementMap_, fileNodeMap_;
   Teuchos::RCP<const model::Import> dofToFile_, elementToFile_, nodeToFile_;
 };

@@ -9,7 +9,10 @@
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_MueLuPreconditionerFactory.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
+
+#include <array>
 
 #include "common/Error.hpp"
 #include "common/ErrorText.hpp"
@@ -275,12 +278,21 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
 }
 
 void provideNearNullSpace(Thyra::LinearOpWithSolveFactoryBase<double>& factory, const model::Map& ownedDofMap,
-                          const mesh::Mesh& mesh) {
+                          const mesh::DistributedMesh& part) {
   auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(unmonitored(factory.getPreconditionerFactory()));
   if (muelu.is_null()) return;
-  const int dim = mesh.dimension;
-  // The centroid of the whole mesh, the same on every rank (the mesh is replicated).
-  const auto center = centroid(dim, mesh.coordinates);
+  const mesh::Mesh& local = part.local();
+  const int dim = local.dimension;
+  // The centroid of the whole mesh, the same on every rank: the sum over every rank's owned nodes.
+  std::array<double, 4> sum{}, total{};  // Σx, Σy, Σz, count
+  for (std::size_t n = 0; n < part.nodeOwner.size(); ++n) {
+    if (part.nodeOwner[n] != part.rank) continue;
+    for (int k = 0; k < dim; ++k) sum[k] += local.coordinates[n * dim + k];
+    sum[3] += 1.0;
+  }
+  Teuchos::reduceAll(*ownedDofMap.getComm(), Teuchos::REDUCE_SUM, 4, sum.data(), total.data());
+  std::array<double, 3> center{};
+  for (int k = 0; k < dim; ++k) center[k] = total[3] > 0 ? total[k] / total[3] : 0.0;
   const int modes = rigidBodyModeCount(dim);
   auto nullspace = Teuchos::rcp(new model::MultiVector(Teuchos::rcpFromRef(ownedDofMap), modes));
   std::vector<double> nodeCoordinates(dim);
@@ -288,7 +300,8 @@ void provideNearNullSpace(Thyra::LinearOpWithSolveFactoryBase<double>& factory, 
     const model::GO dof = ownedDofMap.getGlobalElement(static_cast<model::LO>(i));
     const model::GO node = dof / dim;
     const int component = static_cast<int>(dof % dim);
-    for (int k = 0; k < dim; ++k) nodeCoordinates[k] = mesh.coordinates[static_cast<std::size_t>(node * dim + k)];
+    const auto localNode = static_cast<std::size_t>(part.localNode(node));
+    for (int k = 0; k < dim; ++k) nodeCoordinates[k] = local.coordinates[localNode * dim + k];
     const auto nodeModes = rigidBodyModes(dim, nodeCoordinates, center);
     for (int m = 0; m < modes; ++m)
       nullspace->replaceLocalValue(static_cast<model::LO>(i), m, nodeModes[static_cast<std::size_t>(m * dim + component)]);

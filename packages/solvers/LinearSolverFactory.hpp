@@ -4,7 +4,7 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
-#include "mesh/Mesh.hpp"
+#include "mesh/DistributedMesh.hpp"
 #include "model/TpetraTypes.hpp"
 
 namespace contessa::solvers {
@@ -15,10 +15,11 @@ namespace contessa::solvers {
 Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFactory(Teuchos::ParameterList& stratimikos);
 
 /// With MueLu as the preconditioner: gives it the rigid-body modes of the owned nodes (reference
-/// coordinates; RigidBodyModes.hpp) as its near-null space, and the number of DOFs per node (the mesh
-/// dimension) as its "number of equations" unless the deck sets it. Nothing for other solvers.
+/// coordinates from this rank's part of the mesh, about the whole mesh's centroid; RigidBodyModes.hpp)
+/// as its near-null space, and the number of DOFs per node (the mesh dimension) as its "number of
+/// equations" unless the deck sets it. Nothing for other solvers. Collective.
 void provideNearNullSpace(Thyra::LinearOpWithSolveFactoryBase<double>& factory, const model::Map& ownedDofMap,
-                          const mesh::Mesh& mesh);
+                          const mesh::DistributedMesh& part);
 
 /// The valid Stratimikos list (with MUMPS and Ifpack2), for the deck reference.
 Teuchos::RCP<const Teuchos::ParameterList> stratimikosValidParameters();

@@ -67,7 +67,7 @@ void expectProblemError(ParameterList& problem, const std::string& expected) {
 TEST(DeckValidation, GoodDeckBuildsAndFillsDefaults) {
   auto p = goodProblem();
   const auto def = contessa::deck::buildProblem(*p, "");
-  EXPECT_EQ(def.mesh.numElements(), 2);
+  EXPECT_EQ(def.mesh.numGlobalElements, 2);
   ASSERT_EQ(def.blocks.size(), 1u);
   EXPECT_EQ(def.blocks[0].elementName, "Q4 Enhanced");
   EXPECT_EQ(def.dirichlet.size(), 1u);
@@ -179,7 +179,7 @@ TEST(DeckOverrides, NewParameterIsTypedByValidation) {
   auto p = goodProblem();
   contessa::deck::applyOverrides(*p, {"Mesh/Elements Y=3", "Mesh/Length Y=0.5"});
   const auto def = contessa::deck::buildProblem(*p, "");
-  EXPECT_EQ(def.mesh.numElements(), 6);
+  EXPECT_EQ(def.mesh.numGlobalElements, 6);
   EXPECT_DOUBLE_EQ(p->sublist("Mesh").get<double>("Length Y"), 0.5);
 }
 

@@ -67,7 +67,7 @@ TEST(RestartFile, DamagedFilesAreRefusedInOneLine) {
   EXPECT_EQ(errorOf(good + "x"), "--restart out/tube.restart: corrupt restart file (1 bytes past its end)");
   std::string version = good;
   version[16] = 9;
-  EXPECT_EQ(errorOf(version), "--restart out/tube.restart: restart file format version 9, this Contessa reads version 1");
+  EXPECT_EQ(errorOf(version), "--restart out/tube.restart: restart file format version 9, this Contessa reads version 2");
   for (const std::string& e : {errorOf(changed), errorOf(good.substr(0, 40))}) EXPECT_EQ(e.find('\n'), std::string::npos);
 }
 

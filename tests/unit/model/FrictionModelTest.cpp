@@ -17,7 +17,6 @@
 
 #include "deck/DeckReader.hpp"
 #include "deck/ProblemDefinition.hpp"
-#include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "ModelHarness.hpp"

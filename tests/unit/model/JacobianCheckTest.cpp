@@ -11,7 +11,6 @@
 #include <Tpetra_Core.hpp>
 
 #include "deck/ProblemDefinition.hpp"
-#include "mesh/Partition.hpp"
 #include "model/JacobianCheck.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 
@@ -114,8 +113,7 @@ struct Fixture {
     auto comm = Tpetra::getDefaultComm();
     Teuchos::ParameterList strat("Stratimikos");
     strat.set("Linear Solver Type", std::string("MUMPS"));
-    model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, mesh::partitionMesh(problem.mesh, comm->getSize()),
-                                                          solvers::createLinearSolverFactory(strat)));
+    model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, solvers::createLinearSolverFactory(strat)));
     // Every DOF moved by a smooth field, the bottom pushed into the base (the same on every partition).
     x = Thyra::createMember(model->get_x_space());
     auto tx = Extract::getTpetraVector(x);

@@ -12,7 +12,7 @@
 #include <Tpetra_Core.hpp>
 
 #include "deck/ProblemDefinition.hpp"
-#include "mesh/Partition.hpp"
+#include "mesh/MeshDistribution.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 
@@ -24,8 +24,16 @@ inline Teuchos::RCP<model::ContactMechanicsModel> makeModel(
     const Teuchos::RCP<const Teuchos::Comm<int>>& comm = Tpetra::getDefaultComm()) {
   Teuchos::ParameterList strat("Stratimikos");
   strat.set("Linear Solver Type", std::string("MUMPS"));
-  return Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, mesh::partitionMesh(problem.mesh, comm->getSize()),
-                                                       solvers::createLinearSolverFactory(strat)));
+  return Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, solvers::createLinearSolverFactory(strat)));
+}
+
+/// The same problem with the whole mesh as one part (for a model on MPI_COMM_SELF beside the model on
+/// every rank): collective, meaningful on rank 0 only.
+inline deck::ProblemDefinition onOneRank(const deck::ProblemDefinition& problem) {
+  deck::ProblemDefinition whole = problem;
+  const mesh::Mesh mesh = mesh::gatherMeshOnRoot(problem.mesh);
+  whole.mesh = mesh::PartExtractor(mesh, std::vector<int>(static_cast<std::size_t>(mesh.numElements()), 0), 1).part(0);
+  return whole;
 }
 
 struct Evaluation {

@@ -12,7 +12,6 @@
 #include <Tpetra_Core.hpp>
 
 #include "deck/ProblemDefinition.hpp"
-#include "mesh/Partition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "ModelHarness.hpp"
@@ -170,8 +169,9 @@ TEST_P(ModelTest, SameAnswerOnOneRankAndAllRanks) {
   const auto reactionsAll = m->reactions(*Extract::getConstTpetraVector(x), 1.0);
 
   auto self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  const auto wholeProblem = test::onOneRank(problem);
   if (comm->getRank() == 0) {
-    auto serial = makeModel(self, problem);
+    auto serial = makeModel(self, wholeProblem);
     RCP<Thyra::VectorBase<double>> xs;
     newtonResiduals(*serial, xs);
     EXPECT_NEAR(Thyra::norm_2(*xs), normAll, 1e-10 * normAll);
@@ -439,9 +439,10 @@ TEST_P(ContactModelTest, SameResidualAndJacobianOnOneRankAndAllRanks) {
   fRoot.doImport(*Extract::getConstTpetraVector(e.f), toRoot, Tpetra::INSERT);
   WvRoot.doImport(*Extract::getConstTpetraVector(Wv), toRoot, Tpetra::INSERT);
   const auto fAll = fRoot.getData(0), WvAll = WvRoot.getData(0);
+  const auto wholeProblem = test::onOneRank(problem);
   if (comm->getRank() == 0) {
     auto self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-    auto serial = makeModel(self, problem);
+    auto serial = makeModel(self, wholeProblem);
     auto xs = deformedState(*serial, 0.01);
     const auto es = evaluate(*serial, *xs, 1.0, true);
     auto vs = deformedState(*serial, 1.0);
@@ -463,7 +464,8 @@ RCP<Thyra::VectorBase<double>> translatedTop(const model::ContactMechanicsModel&
   auto v = tx->getDataNonConst(0);
   for (Teuchos::ArrayRCP<double>::size_type i = 0; i < v.size(); ++i) {
     const auto gid = tx->getMap()->getGlobalElement(i);
-    const bool top = problem.mesh.coordinates[static_cast<std::size_t>(gid / 2) * 2 + 1] > 0.0;
+    const auto node = static_cast<std::size_t>(problem.mesh.localNode(gid / 2));  // owned: in the part
+    const bool top = problem.mesh.local().coordinates[node * 2 + 1] > 0.0;
     v[i] = top ? (gid % 2 == 0 ? dx : dy) : 0.0;
   }
   return x;
