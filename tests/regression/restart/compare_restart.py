@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""compare_restart.py FULL_DIR RESTARTED_DIR NAME [--rtol R]
+"""compare_restart.py FULL_DIR RESTARTED_DIR NAME [--rtol R] [--pieces N]
 
 A restarted run against the uninterrupted one (docs/user-guide.md, "Checkpoint and restart"): the history
 CSV row by row (every column but wall_s; the CSV prints 12 significant digits), and the Exodus files at
 full precision: the same time steps, every global variable (the history's columns: load factor, step size,
 beta, contact counts, reactions, contact forces) and every nodal and element variable at every step.
 Prints the largest relative difference |a - b| / max(|a|, |b|) (0 for exact agreement) and exits 1 when it
-exceeds the tolerance (default 1e-12) or the files differ in shape."""
+exceeds the tolerance (default 1e-12) or the files differ in shape. With --pieces N, the Exodus output is the
+per-rank set NAME.exo.N.r of both runs (the same rank count, so the same parts), compared piece by piece."""
 import argparse
 import csv
 import sys
@@ -22,6 +23,7 @@ parser.add_argument("--rtol", type=float, default=1e-12)
 parser.add_argument("--atol", type=float, default=0.0,
                     help="absolute tolerance besides the relative one: |a - b| <= atol + rtol max(|a|, |b|) (for runs "
                          "that are not reproducible bit for bit, e.g. on several ranks)")
+parser.add_argument("--pieces", type=int, default=0, help="per-rank Exodus output of N ranks (NAME.exo.N.r)")
 parser.add_argument("--residual-rtol", type=float, default=None,
                     help="tolerance of residual_norm (the Newton residual at convergence, round-off noise of the "
                          "penalty; on several ranks MUMPS' parallel factorisation makes it vary from run to run)")
@@ -65,29 +67,36 @@ for i, (ra, rb) in enumerate(zip(rows_a, rows_b)):
         if r > args.rtol:
             fail(f"history row {i} column {c}: {ra[c]} uninterrupted, {rb[c]} restarted")
 
-a = netCDF4.Dataset(f"{args.full}/{args.name}.exo")
-b = netCDF4.Dataset(f"{args.restarted}/{args.name}.exo")
-for ds in (a, b):
-    ds.set_auto_mask(False)
-ta, tb = a.variables["time_whole"][:], b.variables["time_whole"][:]
-if len(ta) != len(tb):
-    fail(f"{len(ta)} Exodus steps uninterrupted, {len(tb)} restarted")
-worst["exodus"] = relative(ta, tb)
-names = sorted(v for v in a.variables if v.startswith("vals_"))
-globals_a = [n.tobytes().decode().strip("\x00 ") for n in a.variables["name_glo_var"][:]] if "name_glo_var" in a.variables else []
-if names != sorted(v for v in b.variables if v.startswith("vals_")):
-    fail("different Exodus variables")
-for v in names:
-    va, vb = a.variables[v][:], b.variables[v][:]
-    if v == "vals_glo_var" and args.residual_rtol is not None and "residual_norm" in globals_a:
-        keep = [i for i, n in enumerate(globals_a) if n != "residual_norm"]
-        va, vb = va[:, keep], vb[:, keep]
-    r = relative(va, vb)
-    worst["exodus"] = max(worst["exodus"], r)
-    if r > args.rtol:
-        fail(f"Exodus {v}: relative difference {r:.3e}")
+def compare_exodus(path_a, path_b):
+    a = netCDF4.Dataset(path_a)
+    b = netCDF4.Dataset(path_b)
+    for ds in (a, b):
+        ds.set_auto_mask(False)
+    ta, tb = a.variables["time_whole"][:], b.variables["time_whole"][:]
+    if len(ta) != len(tb):
+        fail(f"{path_b}: {len(ta)} Exodus steps uninterrupted, {len(tb)} restarted")
+    worst["exodus"] = max(worst["exodus"], relative(ta, tb))
+    names = sorted(v for v in a.variables if v.startswith("vals_"))
+    globals_a = [n.tobytes().decode().strip("\x00 ") for n in a.variables["name_glo_var"][:]] if "name_glo_var" in a.variables else []
+    if names != sorted(v for v in b.variables if v.startswith("vals_")):
+        fail(f"{path_b}: different Exodus variables")
+    for v in names:
+        va, vb = a.variables[v][:], b.variables[v][:]
+        if v == "vals_glo_var" and args.residual_rtol is not None and "residual_norm" in globals_a:
+            keep = [i for i, n in enumerate(globals_a) if n != "residual_norm"]
+            va, vb = va[:, keep], vb[:, keep]
+        r = relative(va, vb)
+        worst["exodus"] = max(worst["exodus"], r)
+        if r > args.rtol:
+            fail(f"{path_b}: Exodus {v}: relative difference {r:.3e}")
+    return len(ta)
+
+
+files = [f"{args.name}.exo"] if args.pieces == 0 else [f"{args.name}.exo.{args.pieces}.{r}" for r in range(args.pieces)]
+for f in files:
+    steps = compare_exodus(f"{args.full}/{f}", f"{args.restarted}/{f}")
 residual = f", residual_norm {worst['residual']:.3e}" if "residual" in worst else ""
 print(f"max relative difference: history {worst['history']:.3e}, Exodus {worst['exodus']:.3e}{residual} "
-      f"({len(rows_a)} rows, {len(ta)} steps)")
+      f"({len(rows_a)} rows, {steps} steps, {len(files)} Exodus file(s))")
 if max(worst["history"], worst["exodus"]) > args.rtol:
     fail("above the tolerance")
