@@ -84,13 +84,7 @@ mesh::DistributedMesh buildMesh(ParameterList& list, const std::string& deckDire
     const std::string type = validateMeshList(list, where, false);
     part = mesh::MeshFactory::createPart(type, list, where, deckDirectory);
   }
-  std::exception_ptr failure;
-  try {
-    part.local().validate(where, part.part.globalNodes, part.part.globalElements);
-  } catch (...) {
-    failure = std::current_exception();
-  }
-  mesh::throwIfAnyRankFailed(failure);
+  mesh::validatePart(part, where);
   return part;
 }
 

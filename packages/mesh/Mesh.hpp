@@ -81,10 +81,12 @@ class Mesh {
   /// Cost O(n log n) in the mesh size: 0.06 s for 10^6 Quad4, 0.15 s for 10^6 Hex8 (bench/mesh_check_bench).
   void validate(const std::string& source) const;
   /// The same for one rank's part of a distributed mesh (local numbering): messages name the whole
-  /// mesh's numbers, `globalNodes[n]` and `globalElements[e]` (DistributedMesh.hpp). A side set's side
-  /// shared with an element of another rank's part is not seen here.
+  /// mesh's numbers, `globalNodes[n]` and `globalElements[e]` (DistributedMesh.hpp), and the number of
+  /// badly shaped elements goes to `badShapes` instead of the message (the caller sums it over the
+  /// parts: validatePart, MeshDistribution.hpp). A side set's side shared with an element of another
+  /// rank's part is not seen here.
   void validate(const std::string& source, const std::vector<GlobalIndex>& globalNodes,
-                const std::vector<GlobalIndex>& globalElements) const;
+                const std::vector<GlobalIndex>& globalElements, GlobalIndex& badShapes) const;
 };
 
 }  // namespace contessa::mesh

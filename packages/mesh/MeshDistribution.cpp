@@ -247,6 +247,25 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
   return extractor.part(0);
 }
 
+void validatePart(const DistributedMesh& part, const std::string& source) {
+  GlobalIndex badShapes = 0;
+  std::exception_ptr failure;
+  std::string message;
+  try {
+    part.local().validate(source, part.part.globalNodes, part.part.globalElements, badShapes);
+  } catch (const InputError& e) {
+    failure = std::current_exception();
+    message = e.what();
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  long long total = badShapes;
+  if (worldSize() > 1) MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  if (badShapes > 0 && total > 1)
+    failure = std::make_exception_ptr(InputError(message + " (" + std::to_string(total) + " elements fail this check)"));
+  throwIfAnyRankFailed(failure);
+}
+
 Mesh gatherMeshOnRoot(const DistributedMesh& part) {
   const int rank = worldRank(), size = worldSize();
   std::unique_ptr<PrivateComm> comm = size > 1 ? std::make_unique<PrivateComm>() : nullptr;

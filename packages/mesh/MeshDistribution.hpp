@@ -32,6 +32,10 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot);
 /// sets in their original order (sideSetPositions). For output gathered into one file, which rank 0
 /// writes whole.
 Mesh gatherMeshOnRoot(const DistributedMesh& part);
+/// Collective: every rank checks its part (Mesh::validate in the part's numbering, messages in the whole
+/// mesh's numbers) and all throw the lowest failing rank's InputError, with the number of badly shaped
+/// elements summed over the parts, as the check of the whole mesh words it.
+void validatePart(const DistributedMesh& part, const std::string& source);
 /// Collective: every rank throws the error of the lowest rank whose `failure` is set (null on a rank
 /// that did not fail), with its message: an InputError as an InputError, anything else as a
 /// runtime_error. Returns on every rank when none failed. What a step that one rank alone may fail

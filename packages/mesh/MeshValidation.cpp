@@ -32,6 +32,7 @@ std::string number(GlobalIndex zeroBased) { return std::to_string(zeroBased + 1)
 struct Numbering {
   const std::vector<GlobalIndex>* nodes = nullptr;
   const std::vector<GlobalIndex>* elements = nullptr;
+  GlobalIndex* badShapes = nullptr;  ///< set: the count of badly shaped elements goes here, not into the message
   std::string node(GlobalIndex n) const {
     return number(nodes && n >= 0 && n < static_cast<GlobalIndex>(nodes->size()) ? (*nodes)[n] : n);
   }
@@ -141,6 +142,10 @@ class Validator {
         if (problem.empty()) continue;
         if (badShapes++ == 0) firstBadShape = elementName(b.elements[k], bi) + " " + problem;
       }
+    }
+    if (badShapes > 0 && numbering_.badShapes != nullptr) {
+      *numbering_.badShapes = badShapes;  // the caller counts over every part
+      fail(firstBadShape);
     }
     if (badShapes == 1) fail(firstBadShape);
     if (badShapes > 1) fail(firstBadShape + " (" + std::to_string(badShapes) + " elements fail this check)");
@@ -287,8 +292,9 @@ class Validator {
 void Mesh::validate(const std::string& source) const { Validator(*this, source).run(); }
 
 void Mesh::validate(const std::string& source, const std::vector<GlobalIndex>& globalNodes,
-                    const std::vector<GlobalIndex>& globalElements) const {
-  Validator(*this, source, Numbering{&globalNodes, &globalElements}).run();
+                    const std::vector<GlobalIndex>& globalElements, GlobalIndex& badShapes) const {
+  badShapes = 0;
+  Validator(*this, source, Numbering{&globalNodes, &globalElements, &badShapes}).run();
 }
 
 }  // namespace contessa::mesh

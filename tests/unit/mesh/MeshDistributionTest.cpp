@@ -429,3 +429,78 @@ int main(int argc, char** argv) {
   MPI_Finalize();
   return worst;
 }
+
+namespace {
+
+void expectSameMesh(const Mesh& a, const Mesh& b) {
+  EXPECT_EQ(a.dimension, b.dimension);
+  EXPECT_EQ(a.coordinates, b.coordinates);
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
+    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
+    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements) << a.blocks[k].name;
+    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity) << a.blocks[k].name;
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (std::size_t k = 0; k < a.nodeSets.size(); ++k) {
+    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
+    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes) << a.nodeSets[k].name;
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (std::size_t k = 0; k < a.sideSets.size(); ++k) {
+    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
+    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements) << a.sideSets[k].name;
+    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides) << a.sideSets[k].name;
+  }
+}
+
+}  // namespace
+
+// The single-file output's view: the parts gathered on rank 0 are the whole mesh again (coordinates,
+// blocks, node sets, side sets in their order), for generated parts and for a file's METIS parts.
+TEST(MeshDistribution, PartsGatheredOnRankZeroAreTheWholeMesh) {
+  HollowCylinderSectorSpec tube;
+  tube.section.elementsThroughThickness = 2;
+  tube.section.elementsAroundArc = 7;
+  tube.layers = 3;
+  SphereOctantSpec ball;
+  ball.elementsAlongEdge = 3;
+  ball.elementsThroughShell = 2;
+  const Mesh wholeTube = generateHollowCylinderSector(tube), wholeBall = generateSphereOctant(ball);
+  const Mesh bodies = twoBodies();
+  const std::vector<std::pair<const Mesh*, DistributedMesh>> cases = {
+      {&wholeTube, generateHollowCylinderSectorPart(tube, rank(), ranks())},
+      {&wholeBall, generateSphereOctantPart(ball, rank(), ranks())},
+      {&bodies, distributeMesh([&] { return bodies; })}};
+  for (const auto& [whole, part] : cases) {
+    const Mesh gathered = gatherMeshOnRoot(part);
+    if (rank() == 0) expectSameMesh(gathered, *whole);
+    else EXPECT_EQ(gathered.numNodes(), 0);
+  }
+}
+
+// Every rank checks its own part; a bad element is named with the whole mesh's numbers, by the lowest
+// rank that holds one, exactly as the check of the whole mesh names it.
+TEST(MeshDistribution, APartsCheckNamesTheWholeMeshsNumbers) {
+  RectangleSpec spec;
+  spec.nx = 9;
+  spec.ny = 3;
+  Mesh mesh = generateRectangle(spec);
+  const GlobalIndex node = 2 * (spec.nx + 1) + 7;  // an interior node near the right end, moved far left
+  mesh.coordinates[2 * node] = -5.0;
+  std::string whole;
+  try {
+    mesh.validate("Problem/Mesh");
+  } catch (const contessa::InputError& e) {
+    whole = e.what();
+  }
+  ASSERT_NE(whole.find("element"), std::string::npos) << whole;
+  const DistributedMesh part =
+      PartExtractor(mesh, ElementRanges{mesh.numElements(), ranks()}.owners(), ranks()).part(rank());
+  try {
+    validatePart(part, "Problem/Mesh");
+    ADD_FAILURE() << "no rank found the tangled element";
+  } catch (const contessa::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), whole);
+  }
+}
