@@ -237,6 +237,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   report.graphRebuildSeconds = model->graphRebuildSeconds();
   report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   gatherPeakMemory(*comm, report);
+  gatherMeshParts(*comm, problem.mesh, report);
   if (root) {
     const std::string path = cl.outputDirectory + "/" + name + ".summary.json";
     std::printf("%s\n", summaryLine(report).c_str());

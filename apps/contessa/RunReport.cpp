@@ -55,6 +55,23 @@ void gatherPeakMemory(const Teuchos::Comm<int>& comm, RunReport& report) {
   report.peakBytesPerRank = all;
 }
 
+void gatherMeshParts(const Teuchos::Comm<int>& comm, const mesh::DistributedMesh& part, RunReport& report) {
+  const long long mine[3] = {static_cast<long long>(part.part.globalElements.size()),
+                             static_cast<long long>(part.part.globalNodes.size()), static_cast<long long>(part.bytes())};
+  std::vector<long long> all(3 * static_cast<std::size_t>(comm.getSize()), 0);
+  Teuchos::gatherAll(comm, 3, mine, static_cast<int>(all.size()), all.data());
+  report.partElements.clear();
+  report.partNodes.clear();
+  report.partBytes.clear();
+  for (std::size_t r = 0; r < all.size(); r += 3) {
+    report.partElements.push_back(all[r]);
+    report.partNodes.push_back(all[r + 1]);
+    report.partBytes.push_back(all[r + 2]);
+  }
+  report.meshElements = part.numGlobalElements;
+  report.meshNodes = part.numGlobalNodes;
+}
+
 std::string summaryLine(const RunReport& r) {
   const auto& s = r.summary;
   const auto [lo, hi] = std::minmax_element(r.peakBytesPerRank.begin(), r.peakBytesPerRank.end());
@@ -93,7 +110,19 @@ std::string summaryJson(const RunReport& r) {
       << "  \"wall_seconds\": " << number(r.wallSeconds) << ",\n"
       << "  \"peak_memory_bytes\": {\"min\": " << lo << ", \"max\": " << hi << ", \"per_rank\": [";
   for (std::size_t k = 0; k < r.peakBytesPerRank.size(); ++k) out << (k ? ", " : "") << r.peakBytesPerRank[k];
-  out << "]}\n}\n";
+  out << "]},\n";
+  const auto list = [&out](const std::vector<long long>& values) {
+    out << "[";
+    for (std::size_t k = 0; k < values.size(); ++k) out << (k ? ", " : "") << values[k];
+    out << "]";
+  };
+  out << "  \"mesh\": {\"elements\": " << r.meshElements << ", \"nodes\": " << r.meshNodes << ", \"part_elements\": ";
+  list(r.partElements);
+  out << ", \"part_nodes\": ";
+  list(r.partNodes);
+  out << ", \"part_bytes\": ";
+  list(r.partBytes);
+  out << "}\n}\n";
   return out.str();
 }
 

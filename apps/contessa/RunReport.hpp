@@ -7,6 +7,7 @@
 
 #include <Teuchos_Comm.hpp>
 
+#include "mesh/DistributedMesh.hpp"
 #include "solvers/ContinuationDriver.hpp"
 
 namespace contessa::app {
@@ -26,10 +27,16 @@ struct RunReport {
   int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)
   double graphRebuildSeconds = 0;    ///< their total time
   std::vector<long long> peakBytesPerRank;  ///< rank 0 only (gathered)
+  /// Each rank's part of the mesh (rank 0 only, gathered): elements, nodes held (owned and halo), and the
+  /// bytes of its containers (mesh::DistributedMesh::bytes), beside the whole mesh's counts.
+  std::vector<long long> partElements, partNodes, partBytes;
+  long long meshElements = 0, meshNodes = 0;
 };
 
 /// Collective: gathers every rank's peak memory to rank 0 into `report`.
 void gatherPeakMemory(const Teuchos::Comm<int>& comm, RunReport& report);
+/// Collective: gathers the sizes of every rank's part of the mesh into `report`.
+void gatherMeshParts(const Teuchos::Comm<int>& comm, const mesh::DistributedMesh& part, RunReport& report);
 
 /// Rank 0: the log line ("contessa: summary: ...").
 std::string summaryLine(const RunReport& report);

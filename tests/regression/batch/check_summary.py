@@ -5,7 +5,8 @@ Runs COMMAND (a contessa run writing into OUTDIR) and checks the run's summary (
 "Batch runs"): the log line `contessa: summary: ...` on stdout and `<name>.summary.json` beside the
 history agree with each other and with the history: increments, Newton iterations, linear iterations
 (at least those of the history's converged solves), the exit status, and one memory high-water mark per
-rank, each plausible (more than the 20 MiB any MPI process needs, less than the machine's memory)."""
+rank, each plausible (more than the 20 MiB any MPI process needs, less than the machine's memory); and the
+mesh parts: every element in exactly one rank's part, and on several ranks no rank holding the whole mesh."""
 import csv
 import json
 import os
@@ -52,6 +53,16 @@ if not problems:
     check(len(per_rank) == ranks, f"{len(per_rank)} memory figures for {ranks} ranks")
     check(all(20 * 2**20 < m < total for m in per_rank), f"implausible peak memory per rank: {per_rank}")
     check(memory["min"] == min(per_rank) and memory["max"] == max(per_rank), f"min/max {memory} disagree with per_rank")
+    # The mesh in parts (issue 11): each element in one part; on several ranks no part is the whole mesh.
+    mesh = s["mesh"]
+    for key in ("part_elements", "part_nodes", "part_bytes"):
+        check(len(mesh[key]) == ranks, f"{len(mesh[key])} {key} for {ranks} ranks")
+    check(sum(mesh["part_elements"]) == mesh["elements"], f"parts hold {mesh['part_elements']} elements of {mesh['elements']}")
+    check(all(0 < n <= mesh["nodes"] for n in mesh["part_nodes"]), f"part nodes {mesh['part_nodes']} of {mesh['nodes']}")
+    check(all(b > 0 for b in mesh["part_bytes"]), f"part bytes {mesh['part_bytes']}")
+    if ranks > 1:
+        check(max(mesh["part_elements"]) < mesh["elements"] and max(mesh["part_nodes"]) < mesh["nodes"],
+              f"a rank holds the whole mesh: {mesh}")
     # The log line says the same.
     line = [l for l in run.stdout.splitlines() if l.startswith("contessa: summary:")]
     check(len(line) == 1, f"{len(line)} 'contessa: summary:' lines on stdout")
