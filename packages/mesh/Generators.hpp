@@ -107,8 +107,9 @@ Mesh generateSphereOctant(const SphereOctantSpec& spec);
 /// without communication and without the rest of the mesh: the elements of ElementRanges' range for
 /// the rank, their nodes (bit-identical coordinates), the sets restricted to them, and each node's
 /// owner and sharing ranks from the owners of the cells around it. Equal, field by field, to
-/// PartExtractor(whole mesh, ElementRanges owners).part(rank). The same checks and errors as the
-/// whole-mesh generator, plus requirePartsFit (at most one rank per element). The sphere octant (not
+/// PartExtractor(whole mesh, ElementRanges owners).part(rank). The same parameter errors as the
+/// whole-mesh generator, plus requirePartsFit (at most one rank per element); the part's mesh check is
+/// the caller's, on every rank at once (validatePart, MeshDistribution.hpp). The sphere octant (not
 /// one structured grid) finds the ranks of its part's nodes and the sets' global order in one pass
 /// over every element's corners, computed and dropped one at a time: memory of the part plus its
 /// surfaces, time of the whole mesh's connectivity.
