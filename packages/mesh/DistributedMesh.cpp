@@ -73,6 +73,80 @@ std::vector<int> ElementRanges::owners() const {
   return result;
 }
 
+GridPartition::GridPartition(int n0, int n1, int n2, int numRanks)
+    : n_{n0, n1, n2}, ranges_{static_cast<GlobalIndex>(n0) * n1 * n2, numRanks} {
+  // Every factorisation p0 p1 p2 = P with p_a <= n_a; the cut faces of p_a boxes along a are
+  // (p_a − 1) times the cross-section across a.
+  double best = -1;
+  for (int p0 = 1; p0 <= numRanks; ++p0) {
+    if (numRanks % p0 != 0 || p0 > n0) continue;
+    for (int p1 = 1; p1 <= numRanks / p0; ++p1) {
+      if ((numRanks / p0) % p1 != 0 || p1 > n1) continue;
+      const int p2 = numRanks / p0 / p1;
+      if (p2 > n2) continue;
+      const double cut = (p0 - 1.0) * n1 * n2 + (p1 - 1.0) * n0 * n2 + (p2 - 1.0) * n0 * n1;
+      if (best < 0 || cut < best) {
+        best = cut;
+        parts_[0] = p0, parts_[1] = p1, parts_[2] = p2;
+      }
+    }
+  }
+  boxes_ = best >= 0;
+}
+
+int GridPartition::boxAlong(int axis, int index) const {
+  // The largest b with split(b) <= index: start from the estimate and correct it.
+  const int p = parts_[axis], n = n_[axis];
+  int b = static_cast<int>(static_cast<long long>(index) * p / n);
+  b = std::min(std::max(b, 0), p - 1);
+  while (b > 0 && split(n, p, b) > index) --b;
+  while (b + 1 < p && split(n, p, b + 1) <= index) ++b;
+  return b;
+}
+
+int GridPartition::owner(int i, int j, int k) const {
+  if (!boxes_) return ranges_.owner((static_cast<GlobalIndex>(k) * n_[1] + j) * n_[0] + i);
+  return boxAlong(0, i) + parts_[0] * (boxAlong(1, j) + parts_[1] * boxAlong(2, k));
+}
+
+void GridPartition::bounds(int rank, int lo[3], int hi[3]) const {
+  if (boxes_) {
+    const int b[3] = {rank % parts_[0], rank / parts_[0] % parts_[1], rank / (parts_[0] * parts_[1])};
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = split(n_[a], parts_[a], b[a]);
+      hi[a] = split(n_[a], parts_[a], b[a] + 1);
+    }
+    return;
+  }
+  // Ids [first, last): along the slowest axis from the first cell's index to the last's; a faster axis
+  // whole unless every slower one is a single index.
+  const GlobalIndex first = ranges_.begin(rank), last = ranges_.begin(rank + 1) - 1;
+  const int f[3] = {static_cast<int>(first % n_[0]), static_cast<int>(first / n_[0] % n_[1]),
+                    static_cast<int>(first / (static_cast<GlobalIndex>(n_[0]) * n_[1]))};
+  const int l[3] = {static_cast<int>(last % n_[0]), static_cast<int>(last / n_[0] % n_[1]),
+                    static_cast<int>(last / (static_cast<GlobalIndex>(n_[0]) * n_[1]))};
+  bool single = true;  // every slower axis holds one index
+  for (int a = 2; a >= 0; --a) {
+    if (single) {
+      lo[a] = f[a];
+      hi[a] = l[a] + 1;
+      single = f[a] == l[a];
+    } else {
+      lo[a] = 0;
+      hi[a] = n_[a];
+    }
+  }
+}
+
+std::vector<int> GridPartition::owners() const {
+  std::vector<int> result;
+  result.reserve(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2]);
+  for (int k = 0; k < n_[2]; ++k)
+    for (int j = 0; j < n_[1]; ++j)
+      for (int i = 0; i < n_[0]; ++i) result.push_back(owner(i, j, k));
+  return result;
+}
+
 PartExtractor::PartExtractor(const Mesh& mesh, std::vector<int> elementOwner, int numRanks)
     : mesh_(mesh), elementOwner_(std::move(elementOwner)), numRanks_(numRanks) {
   if (static_cast<GlobalIndex>(elementOwner_.size()) != mesh.numElements())

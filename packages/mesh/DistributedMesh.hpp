@@ -55,6 +55,35 @@ struct ElementRanges {
   std::vector<int> owners() const;
 };
 
+/// The partition of a structured grid of n0 × n1 × n2 cells (n2 = 1 in 2D; cell id i + n0 (j + n1 k)) that
+/// every rank computes alone for the structured generators: index boxes, p0 × p1 × p2 = P of them, with
+/// the fewest cut cell faces (ties: the first found, p0 smallest), box b along axis a holding the cells
+/// [⌊b·n_a/p_a⌋, ⌊(b+1)·n_a/p_a⌋); rank = b0 + p0 (b1 + p1 b2). Compact subdomains: a rank's interface
+/// shrinks as (N/P)^((d−1)/d), where slabs of ids would cut whole cross-sections. When no boxes fit
+/// (P has a prime factor larger than the grid along every axis that could take it), contiguous id
+/// ranges (ElementRanges).
+class GridPartition {
+ public:
+  GridPartition(int n0, int n1, int n2, int numRanks);
+  int owner(int i, int j, int k) const;
+  /// The index box [lo, hi) per axis that holds every cell of `rank` (exactly its cells with boxes).
+  void bounds(int rank, int lo[3], int hi[3]) const;
+  /// The owner of every cell, by cell id (for tests and the replicated reference).
+  std::vector<int> owners() const;
+  bool boxes() const { return boxes_; }
+  const int* parts() const { return parts_; }
+
+ private:
+  int n_[3];
+  int parts_[3] = {1, 1, 1};
+  bool boxes_ = false;
+  ElementRanges ranges_;
+  static int split(int count, int parts, int index) {
+    return static_cast<int>(static_cast<long long>(index) * count / parts);
+  }
+  int boxAlong(int axis, int index) const;
+};
+
 /// Rank r's part of a replicated mesh under element owners `elementOwner` (one per global element, the
 /// same on every rank): node users computed once (O(mesh)), then one part per call (O(mesh)).
 class PartExtractor {

@@ -242,16 +242,17 @@ struct GridRecipe {
   DistributedMesh part(int rank, int numRanks) const;
 };
 
-// Rank `rank`'s part under ElementRanges: the cells of its id range, the nodes they use, each node's
+// Rank `rank`'s part under GridPartition: the cells of its index box, the nodes they use, each node's
 // ranks found from the (up to 2^d) cells around it, whose owners every rank computes alone. Nothing of
-// the rest of the grid is built; the node ids scanned span the part's plus one layer of nodes.
+// the rest of the grid is built; the nodes scanned are those of the rank's box (its bounds).
 DistributedMesh GridRecipe::part(int rank, int numRanks) const {
   const int dim = grid.dimension();
   const int n[3] = {grid.count(0), grid.count(1), dim == 2 ? 1 : grid.count(2)};
   const GlobalIndex numElements = grid.numElements();
   requirePartsFit(numElements, numRanks);
-  const ElementRanges ranges{numElements, numRanks};
-  const GlobalIndex first = ranges.begin(rank), last = ranges.begin(rank + 1);  // cells [first, last)
+  const GridPartition partition(n[0], n[1], n[2], numRanks);
+  int lo[3], hi[3];  // cells [lo, hi) per axis
+  partition.bounds(rank, lo, hi);
 
   DistributedMesh result;
   result.rank = rank;
@@ -261,62 +262,59 @@ DistributedMesh GridRecipe::part(int rank, int numRanks) const {
   MeshPiece& piece = result.part;
   piece.mesh.dimension = dim;
 
-  auto cellIndex = [&](GlobalIndex e, int idx[3]) {
-    idx[0] = static_cast<int>(e % n[0]);
-    idx[1] = static_cast<int>(e / n[0] % n[1]);
-    idx[2] = static_cast<int>(e / (static_cast<GlobalIndex>(n[0]) * n[1]));
+  // The box's nodes [lo, hi] per axis (one layer in 2D), numbered within the box, in global id order.
+  const int nodeHi[3] = {hi[0], hi[1], dim == 2 ? 0 : hi[2]};
+  const int width[3] = {hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, nodeHi[2] - lo[2] + 1};
+  const auto boxIndex = [&](int i, int j, int k) {
+    return (static_cast<std::size_t>(k - lo[2]) * width[1] + (j - lo[1])) * width[0] + (i - lo[0]);
   };
-  int lo[3], hi[3];
-  cellIndex(first, lo);
-  cellIndex(last - 1, hi);
-  const GlobalIndex nodeBegin = grid.node(lo[0], lo[1], lo[2]);
-  const GlobalIndex nodeEnd = grid.node(hi[0] + 1, hi[1] + 1, dim == 2 ? 0 : hi[2] + 1) + 1;
-  std::vector<GlobalIndex> local(static_cast<std::size_t>(nodeEnd - nodeBegin), -1);
-  const int nodeRow = grid.count(0) + 1, nodeLayer = nodeRow * (grid.count(1) + 1);
+  std::vector<GlobalIndex> local(static_cast<std::size_t>(width[0]) * width[1] * width[2], -1);
   std::vector<int> ranks;
   std::vector<int> nodeIndex;  // i, j, k of each part node
-  for (GlobalIndex node = nodeBegin; node < nodeEnd; ++node) {
-    const int idx[3] = {static_cast<int>(node % nodeRow), static_cast<int>(node / nodeRow % (grid.count(1) + 1)),
-                        static_cast<int>(node / nodeLayer)};
-    ranks.clear();
-    for (int dk = dim == 2 ? 0 : -1; dk <= 0; ++dk)
-      for (int dj = -1; dj <= 0; ++dj)
-        for (int di = -1; di <= 0; ++di) {
-          const int c[3] = {idx[0] + di, idx[1] + dj, idx[2] + dk};
-          if (c[0] < 0 || c[0] >= n[0] || c[1] < 0 || c[1] >= n[1] || c[2] < 0 || c[2] >= n[2]) continue;
-          ranks.push_back(ranges.owner(grid.element(c[0], c[1], c[2])));
-        }
-    std::sort(ranks.begin(), ranks.end());
-    ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
-    if (!std::binary_search(ranks.begin(), ranks.end(), rank)) continue;
-    local[node - nodeBegin] = static_cast<GlobalIndex>(piece.globalNodes.size());
-    piece.globalNodes.push_back(node);
-    nodeIndex.insert(nodeIndex.end(), idx, idx + 3);
-    double x[3];
-    point(idx[0], idx[1], idx[2], x);
-    piece.mesh.coordinates.insert(piece.mesh.coordinates.end(), x, x + dim);
-    result.nodeOwner.push_back(ranks.front());
-    std::vector<int> others;
-    for (int r : ranks)
-      if (r != rank) others.push_back(r);
-    piece.sharedWith.push_back(std::move(others));
-  }
+  for (int k = lo[2]; k <= nodeHi[2]; ++k)
+    for (int j = lo[1]; j <= nodeHi[1]; ++j)
+      for (int i = lo[0]; i <= nodeHi[0]; ++i) {
+        const int idx[3] = {i, j, k};
+        ranks.clear();
+        for (int dk = dim == 2 ? 0 : -1; dk <= 0; ++dk)
+          for (int dj = -1; dj <= 0; ++dj)
+            for (int di = -1; di <= 0; ++di) {
+              const int c[3] = {idx[0] + di, idx[1] + dj, idx[2] + dk};
+              if (c[0] < 0 || c[0] >= n[0] || c[1] < 0 || c[1] >= n[1] || c[2] < 0 || c[2] >= n[2]) continue;
+              ranks.push_back(partition.owner(c[0], c[1], c[2]));
+            }
+        std::sort(ranks.begin(), ranks.end());
+        ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+        if (!std::binary_search(ranks.begin(), ranks.end(), rank)) continue;
+        local[boxIndex(i, j, k)] = static_cast<GlobalIndex>(piece.globalNodes.size());
+        piece.globalNodes.push_back(grid.node(i, j, k));
+        nodeIndex.insert(nodeIndex.end(), idx, idx + 3);
+        double x[3];
+        point(i, j, k, x);
+        piece.mesh.coordinates.insert(piece.mesh.coordinates.end(), x, x + dim);
+        result.nodeOwner.push_back(ranks.front());
+        std::vector<int> others;
+        for (int r : ranks)
+          if (r != rank) others.push_back(r);
+        piece.sharedWith.push_back(std::move(others));
+      }
 
   ElementBlock block;
   block.name = blockName;
   block.cellType = dim == 2 ? CellType::Quad4 : CellType::Hex8;
-  std::vector<GlobalIndex> corners;
   std::vector<int> cells;  // i, j, k of each part cell
-  for (GlobalIndex e = first; e < last; ++e) {
-    int c[3];
-    cellIndex(e, c);
-    cells.insert(cells.end(), c, c + 3);
-    block.elements.push_back(e - first);
-    piece.globalElements.push_back(e);
-    corners.clear();
-    grid.cellNodes(c[0], c[1], c[2], corners);
-    for (GlobalIndex node : corners) block.connectivity.push_back(local[node - nodeBegin]);
-  }
+  for (int k = lo[2]; k < hi[2]; ++k)
+    for (int j = lo[1]; j < hi[1]; ++j)
+      for (int i = lo[0]; i < hi[0]; ++i) {
+        if (partition.owner(i, j, k) != rank) continue;
+        cells.insert(cells.end(), {i, j, k});
+        block.elements.push_back(static_cast<GlobalIndex>(piece.globalElements.size()));
+        piece.globalElements.push_back(grid.element(i, j, k));
+        // The corners in cellNodes' order (StructuredGrid::cellNodes).
+        for (int layer = 0; layer < (dim == 2 ? 1 : 2); ++layer)
+          for (const auto& [di, dj] : {std::pair{0, 0}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}})
+            block.connectivity.push_back(local[boxIndex(i + di, j + dj, k + layer)]);
+      }
   piece.mesh.blocks.push_back(std::move(block));
   result.globalBlockSizes.push_back(numElements);
 

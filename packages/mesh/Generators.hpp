@@ -104,10 +104,11 @@ struct SphereOctantSpec {
 Mesh generateSphereOctant(const SphereOctantSpec& spec);
 
 /// Rank `rank`'s part (of `numRanks`) of the mesh the generator of the same name makes, built alone
-/// without communication and without the rest of the mesh: the elements of ElementRanges' range for
-/// the rank, their nodes (bit-identical coordinates), the sets restricted to them, and each node's
-/// owner and sharing ranks from the owners of the cells around it. Equal, field by field, to
-/// PartExtractor(whole mesh, ElementRanges owners).part(rank). The same parameter errors as the
+/// without communication and without the rest of the mesh: the rank's elements (the structured grids:
+/// its index box of GridPartition; the sphere octant, not one grid: its range of ElementRanges), their
+/// nodes (bit-identical coordinates), the sets restricted to them, and each node's owner and sharing
+/// ranks from the owners of the cells around it. Equal, field by field, to PartExtractor(whole mesh,
+/// those owners).part(rank). The same parameter errors as the
 /// whole-mesh generator, plus requirePartsFit (at most one rank per element); the part's mesh check is
 /// the caller's, on every rank at once (validatePart, MeshDistribution.hpp). The sphere octant (not
 /// one structured grid) finds the ranks of its part's nodes and the sets' global order in one pass

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <map>
 
@@ -111,12 +112,13 @@ void expectPartsMakeTheMesh(const Mesh& mesh, const std::vector<int>& elementOwn
 }
 
 // For 1 to 7 ranks: each rank's generated part equals the part extracted from the replicated mesh
-// under the same element ranges, and all parts together are the replicated mesh.
-void expectGeneratedPartsMatch(const Mesh& mesh,
+// under the same element owners (`owners(numRanks)`: GridPartition's for the grid generators, ElementRanges'
+// for the sphere octant), and all parts together are the replicated mesh.
+void expectGeneratedPartsMatch(const Mesh& mesh, const std::function<std::vector<int>(int numRanks)>& ownersFor,
                                const std::function<DistributedMesh(int rank, int numRanks)>& generatePart) {
   for (int numRanks : {1, 2, 3, 5, 7}) {
     SCOPED_TRACE("ranks " + std::to_string(numRanks));
-    const std::vector<int> owners = ElementRanges{mesh.numElements(), numRanks}.owners();
+    const std::vector<int> owners = ownersFor(numRanks);
     const PartExtractor extractor(mesh, owners, numRanks);
     std::vector<DistributedMesh> parts;
     for (int rank = 0; rank < numRanks; ++rank) {
@@ -125,6 +127,10 @@ void expectGeneratedPartsMatch(const Mesh& mesh,
     }
     expectPartsMakeTheMesh(mesh, owners, parts);
   }
+}
+
+std::function<std::vector<int>(int)> gridOwners(int n0, int n1, int n2) {
+  return [=](int numRanks) { return GridPartition(n0, n1, n2, numRanks).owners(); };
 }
 
 }  // namespace
@@ -143,6 +149,40 @@ TEST(ElementRanges, ContiguousNonEmptyRangesCoverTheElementsAndOwnerInvertsThem)
   }
 }
 
+// Index boxes with the fewest cut faces; every cell in exactly one box, each box its bounds; without a
+// fitting factorisation, id ranges.
+TEST(GridPartition, BoxesWithTheFewestCutFacesCoverTheGrid) {
+  const auto parts = [](int n0, int n1, int n2, int ranks) {
+    const GridPartition partition(n0, n1, n2, ranks);
+    return std::vector<int>(partition.parts(), partition.parts() + 3);
+  };
+  EXPECT_EQ(parts(8, 8, 4, 4), (std::vector<int>{2, 2, 1}));      // cut 64 faces; 4 slabs along z would cut 192
+  EXPECT_EQ(parts(40, 40, 20, 2), (std::vector<int>{1, 2, 1}));   // across y (800 faces; x ties), not z (1600)
+  EXPECT_EQ(parts(13, 101, 1, 6), (std::vector<int>{1, 6, 1}));   // the thin ring sector: along the arc
+  for (const auto& [n, ranks] : std::vector<std::pair<std::array<int, 3>, int>>{
+           {{8, 8, 4}, 4}, {{5, 7, 3}, 6}, {{4, 3, 2}, 7}, {{9, 1, 1}, 3}, {{3, 4, 2}, 5}}) {
+    const GridPartition partition(n[0], n[1], n[2], ranks);
+    EXPECT_EQ(partition.boxes(), !(ranks == 7 || ranks == 5)) << ranks;
+    std::vector<int> seen(static_cast<std::size_t>(n[0]) * n[1] * n[2], 0);
+    for (int r = 0; r < ranks; ++r) {
+      int lo[3], hi[3];
+      partition.bounds(r, lo, hi);
+      int inside = 0;
+      for (int k = lo[2]; k < hi[2]; ++k)
+        for (int j = lo[1]; j < hi[1]; ++j)
+          for (int i = lo[0]; i < hi[0]; ++i)
+            if (partition.owner(i, j, k) == r) {
+              ++seen[(static_cast<std::size_t>(k) * n[1] + j) * n[0] + i];
+              ++inside;
+            }
+      EXPECT_GT(inside, 0) << "rank " << r << " of " << ranks << " has no cell";
+      if (partition.boxes()) EXPECT_EQ(inside, (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]));
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(seen.size())) << "a cell outside its rank's bounds";
+    EXPECT_EQ(partition.owners().size(), seen.size());
+  }
+}
+
 TEST(DistributedMesh, GeneratedRectanglePartsAreTheReplicatedMeshs) {
   RectangleSpec spec;
   spec.x0 = -1;
@@ -152,7 +192,7 @@ TEST(DistributedMesh, GeneratedRectanglePartsAreTheReplicatedMeshs) {
   spec.biasX = 2.5;
   spec.biasY = 0.7;
   const Mesh mesh = generateRectangle(spec);
-  expectGeneratedPartsMatch(mesh, [&](int r, int p) { return generateRectanglePart(spec, r, p); });
+  expectGeneratedPartsMatch(mesh, gridOwners(5, 4, 1), [&](int r, int p) { return generateRectanglePart(spec, r, p); });
 }
 
 TEST(DistributedMesh, GeneratedAnnulusSectorPartsAreTheReplicatedMeshs) {
@@ -161,7 +201,8 @@ TEST(DistributedMesh, GeneratedAnnulusSectorPartsAreTheReplicatedMeshs) {
   spec.elementsAroundArc = 6;
   spec.radialBias = 0.5;
   const Mesh mesh = generateAnnulusSector(spec);
-  expectGeneratedPartsMatch(mesh, [&](int r, int p) { return generateAnnulusSectorPart(spec, r, p); });
+  expectGeneratedPartsMatch(mesh, gridOwners(3, 6, 1),
+                            [&](int r, int p) { return generateAnnulusSectorPart(spec, r, p); });
 }
 
 TEST(DistributedMesh, GeneratedBoxPartsAreTheReplicatedMeshs) {
@@ -172,7 +213,7 @@ TEST(DistributedMesh, GeneratedBoxPartsAreTheReplicatedMeshs) {
   spec.lz = 2;
   spec.biasZ = 3;
   const Mesh mesh = generateBox(spec);
-  expectGeneratedPartsMatch(mesh, [&](int r, int p) { return generateBoxPart(spec, r, p); });
+  expectGeneratedPartsMatch(mesh, gridOwners(3, 4, 2), [&](int r, int p) { return generateBoxPart(spec, r, p); });
 }
 
 TEST(DistributedMesh, GeneratedHollowCylinderSectorPartsAreTheReplicatedMeshs) {
@@ -181,7 +222,8 @@ TEST(DistributedMesh, GeneratedHollowCylinderSectorPartsAreTheReplicatedMeshs) {
   spec.section.elementsAroundArc = 5;
   spec.layers = 3;
   const Mesh mesh = generateHollowCylinderSector(spec);
-  expectGeneratedPartsMatch(mesh, [&](int r, int p) { return generateHollowCylinderSectorPart(spec, r, p); });
+  expectGeneratedPartsMatch(mesh, gridOwners(2, 5, 3),
+                            [&](int r, int p) { return generateHollowCylinderSectorPart(spec, r, p); });
 }
 
 TEST(DistributedMesh, SphereOctantPartsAreTheReplicatedMeshs) {
@@ -189,7 +231,9 @@ TEST(DistributedMesh, SphereOctantPartsAreTheReplicatedMeshs) {
   spec.elementsAlongEdge = 2;
   spec.elementsThroughShell = 2;
   const Mesh mesh = generateSphereOctant(spec);
-  expectGeneratedPartsMatch(mesh, [&](int r, int p) { return generateSphereOctantPart(spec, r, p); });
+  expectGeneratedPartsMatch(
+      mesh, [&](int numRanks) { return ElementRanges{mesh.numElements(), numRanks}.owners(); },
+      [&](int r, int p) { return generateSphereOctantPart(spec, r, p); });
 }
 
 TEST(DistributedMesh, ExtractedPartsFollowTheMetisPartitionsNodeOwners) {
