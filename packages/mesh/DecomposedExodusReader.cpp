@@ -3,7 +3,9 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
+#include <filesystem>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -194,6 +196,122 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
     part.sideSetPositions.push_back(std::move(positions));
   }
   return part;
+}
+
+std::vector<int> decomposedFileSets(const std::string& base) {
+  namespace fs = std::filesystem;
+  const fs::path path(base);
+  const std::string stem = path.filename().string();
+  const auto digits = [](const std::string& t) {
+    return !t.empty() && t.size() <= 9 && std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
+  };
+  std::vector<int> counts;
+  std::error_code error;  // an unreadable directory holds no set
+  for (fs::directory_iterator it(path.has_parent_path() ? path.parent_path() : fs::path("."), error), end;
+       !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= stem.size() + 1 || name.compare(0, stem.size() + 1, stem + ".") != 0) continue;
+    const std::string rest = name.substr(stem.size() + 1);
+    const std::size_t dot = rest.find('.');
+    if (dot == std::string::npos || !digits(rest.substr(0, dot)) || !digits(rest.substr(dot + 1))) continue;
+    const int count = std::stoi(rest.substr(0, dot)), rank = std::stoi(rest.substr(dot + 1));
+    // Only the names decomposedFileName gives (the rank below the count, padded to its digits).
+    if (count >= 1 && rank < count && decomposedFileName(stem, count, rank) == name) counts.push_back(count);
+  }
+  std::sort(counts.begin(), counts.end());
+  counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+  return counts;
+}
+
+Mesh joinDecomposedExodus(const std::string& base, int numFiles) {
+  const std::string set = decomposedFileName(base, numFiles, 0) + " ...";
+  Mesh whole;
+  // Per block: global element ids and their global connectivity, file by file; per side set its
+  // (global element, side) entries.
+  std::vector<std::vector<GlobalIndex>> blockElements, blockNodes;
+  std::vector<char> blockTyped, nodeSeen;
+  std::vector<std::vector<std::pair<GlobalIndex, int>>> sides;
+  for (int r = 0; r < numFiles; ++r) {
+    const std::string path = decomposedFileName(base, numFiles, r);
+    const DistributedMesh part = readPart(path, r, numFiles);
+    const Mesh& local = part.local();
+    const std::vector<GlobalIndex>& nodes = part.part.globalNodes;
+    const std::vector<GlobalIndex>& elements = part.part.globalElements;
+    if (r == 0) {
+      whole.dimension = local.dimension;
+      for (const auto& b : local.blocks) whole.blocks.push_back({b.name, b.cellType, {}, {}});
+      for (const auto& n : local.nodeSets) whole.nodeSets.push_back({n.name, {}});
+      for (const auto& s : local.sideSets) whole.sideSets.push_back({s.name, {}, {}});
+      blockElements.resize(local.blocks.size());
+      blockNodes.resize(local.blocks.size());
+      blockTyped.assign(local.blocks.size(), 0);
+      sides.resize(local.sideSets.size());
+    }
+    bool sameLists = local.dimension == whole.dimension && local.blocks.size() == whole.blocks.size() &&
+                     local.nodeSets.size() == whole.nodeSets.size() && local.sideSets.size() == whole.sideSets.size();
+    for (std::size_t b = 0; sameLists && b < local.blocks.size(); ++b) sameLists = local.blocks[b].name == whole.blocks[b].name;
+    for (std::size_t n = 0; sameLists && n < local.nodeSets.size(); ++n) sameLists = local.nodeSets[n].name == whole.nodeSets[n].name;
+    for (std::size_t s = 0; sameLists && s < local.sideSets.size(); ++s) sameLists = local.sideSets[s].name == whole.sideSets[s].name;
+    requireInput(sameLists, path + ": its dimension, element blocks, node sets or side sets differ from those of " +
+                                decomposedFileName(base, numFiles, 0) + " (the files of a set list the same)");
+
+    const auto dim = static_cast<std::size_t>(whole.dimension);
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      const auto g = static_cast<std::size_t>(nodes[k]);
+      requireInput(nodes[k] >= 0, path + ": global node id " + std::to_string(nodes[k] + 1) + " out of range");
+      if (g >= nodeSeen.size()) {
+        nodeSeen.resize(g + 1, 0);
+        whole.coordinates.resize((g + 1) * dim, 0.0);
+      }
+      nodeSeen[g] = 1;  // a border node is in several files, at the same place
+      std::copy(local.coordinates.begin() + k * dim, local.coordinates.begin() + (k + 1) * dim,
+                whole.coordinates.begin() + g * dim);
+    }
+    for (std::size_t b = 0; b < local.blocks.size(); ++b) {
+      const ElementBlock& block = local.blocks[b];
+      if (block.elements.empty()) continue;  // an empty block's type is whatever the file says
+      if (!blockTyped[b]) whole.blocks[b].cellType = block.cellType;
+      blockTyped[b] = 1;
+      requireInput(block.cellType == whole.blocks[b].cellType,
+                   path + ": block '" + block.name + "' holds " + exodusCellName(block.cellType) + " elements, " +
+                       exodusCellName(whole.blocks[b].cellType) + " in another file");
+      for (GlobalIndex e : block.elements) blockElements[b].push_back(elements[e]);
+      for (GlobalIndex n : block.connectivity) blockNodes[b].push_back(nodes[n]);
+    }
+    for (std::size_t n = 0; n < local.nodeSets.size(); ++n)
+      for (GlobalIndex node : local.nodeSets[n].nodes) whole.nodeSets[n].nodes.push_back(nodes[node]);
+    for (std::size_t s = 0; s < local.sideSets.size(); ++s)
+      for (std::size_t k = 0; k < local.sideSets[s].elements.size(); ++k)
+        sides[s].emplace_back(elements[local.sideSets[s].elements[k]], local.sideSets[s].sides[k]);
+  }
+  for (std::size_t g = 0; g < nodeSeen.size(); ++g)
+    requireInput(nodeSeen[g], set + ": global node id " + std::to_string(g + 1) + " is in none of the files");
+
+  for (std::size_t b = 0; b < whole.blocks.size(); ++b) {
+    ElementBlock& block = whole.blocks[b];
+    const auto perElement = static_cast<std::size_t>(nodesPerCell(block.cellType));
+    std::vector<std::size_t> order(blockElements[b].size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return blockElements[b][x] < blockElements[b][y]; });
+    for (std::size_t k : order) {
+      block.elements.push_back(blockElements[b][k]);
+      block.connectivity.insert(block.connectivity.end(), blockNodes[b].begin() + k * perElement,
+                                blockNodes[b].begin() + (k + 1) * perElement);
+    }
+  }
+  for (auto& n : whole.nodeSets) {
+    std::sort(n.nodes.begin(), n.nodes.end());
+    n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
+  }
+  for (std::size_t s = 0; s < whole.sideSets.size(); ++s) {
+    std::sort(sides[s].begin(), sides[s].end());
+    for (const auto& [element, side] : sides[s]) {
+      whole.sideSets[s].elements.push_back(element);
+      whole.sideSets[s].sides.push_back(side);
+    }
+  }
+  whole.validate(set);  // every element id once, in range; connectivity in range; sides on the boundary
+  return whole;
 }
 
 }  // namespace contessa::mesh
