@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -134,8 +135,18 @@ DistributedMesh readPart(const std::string& path, int rank, int numRanks) {
   return part;
 }
 
-int worldInt(int value, MPI_Op op) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, op, MPI_COMM_WORLD);
+// What the files of a set must agree on: the dimension and the names of the blocks and sets, in order
+// (a part's blocks and sets are matched to the whole mesh's by position).
+std::string listing(const Mesh& mesh) {
+  std::string s = std::to_string(mesh.dimension);
+  for (const auto& b : mesh.blocks) s += "\nblock " + b.name;
+  for (const auto& n : mesh.nodeSets) s += "\nnode set " + n.name;
+  for (const auto& x : mesh.sideSets) s += "\nside set " + x.name;
+  return s;
+}
+
+unsigned long long worldValue(unsigned long long value, MPI_Op op) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_UNSIGNED_LONG_LONG, op, MPI_COMM_WORLD);
   return value;
 }
 
@@ -159,14 +170,14 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   }
   throwIfAnyRankFailed(failure);
 
-  // The files must list the same blocks and sets (empty where a file has none of them).
+  // The files must list the same blocks and sets (empty where a file has none of their elements).
   const Mesh& local = part.local();
   const int counts[3] = {static_cast<int>(local.blocks.size()), static_cast<int>(local.nodeSets.size()),
                          static_cast<int>(local.sideSets.size())};
-  for (int c : counts)
-    requireInput(worldInt(c, MPI_MIN) == worldInt(c, MPI_MAX),
-                 decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different numbers of "
-                                                         "element blocks, node sets or side sets");
+  const unsigned long long signature = std::hash<std::string>()(listing(local));
+  requireInput(worldValue(signature, MPI_MIN) == worldValue(signature, MPI_MAX),
+               decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different element blocks, "
+                                                       "node sets or side sets (names and order must agree)");
 
   // Global sizes: each element is in one file, each node owned by one.
   std::vector<GlobalIndex> sizes{static_cast<GlobalIndex>(part.ownedNodes().size()), local.numElements()};
@@ -247,12 +258,7 @@ Mesh joinDecomposedExodus(const std::string& base, int numFiles) {
       blockTyped.assign(local.blocks.size(), 0);
       sides.resize(local.sideSets.size());
     }
-    bool sameLists = local.dimension == whole.dimension && local.blocks.size() == whole.blocks.size() &&
-                     local.nodeSets.size() == whole.nodeSets.size() && local.sideSets.size() == whole.sideSets.size();
-    for (std::size_t b = 0; sameLists && b < local.blocks.size(); ++b) sameLists = local.blocks[b].name == whole.blocks[b].name;
-    for (std::size_t n = 0; sameLists && n < local.nodeSets.size(); ++n) sameLists = local.nodeSets[n].name == whole.nodeSets[n].name;
-    for (std::size_t s = 0; sameLists && s < local.sideSets.size(); ++s) sameLists = local.sideSets[s].name == whole.sideSets[s].name;
-    requireInput(sameLists, path + ": its dimension, element blocks, node sets or side sets differ from those of " +
+    requireInput(listing(local) == listing(whole), path + ": its dimension, element blocks, node sets or side sets differ from those of " +
                                 decomposedFileName(base, numFiles, 0) + " (the files of a set list the same)");
 
     const auto dim = static_cast<std::size_t>(whole.dimension);

@@ -549,6 +549,30 @@ TEST(MeshFactory, APerRankSetToJoinMustBeTheRunsOrTheOnlyOne) {
   removeSetOnRankZero(base, ranks() + 2);
 }
 
+TEST(MeshFactory, FilesOfASetListingOtherBlocksAreRefusedNamingTheFile) {
+  // A set of 2 whose second file names its first block otherwise (a file from another split).
+  const Mesh mesh = twoBodies(false);
+  const std::string base = sharedPath("mixed");
+  if (rank() == 0) {
+    const PartExtractor extractor(mesh, partitionMesh(mesh, 2).elementOwner, 2);
+    DistributedMesh second = extractor.part(1);
+    second.part.mesh.blocks[0].name = "other";
+    writeDecomposedFile(base, extractor.part(0), 2);
+    writeDecomposedFile(base, second, 2);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  EXPECT_EQ(inputErrorOf([&] { joinDecomposedExodus(base, 2); }),
+            decomposedFileName(base, 2, 1) + ": its dimension, element blocks, node sets or side sets differ from those of " +
+                decomposedFileName(base, 2, 0) + " (the files of a set list the same)");
+  // Read as parts on 2 ranks: every rank says so.
+  if (ranks() == 2) {
+    EXPECT_EQ(inputErrorOf([&] { readDecomposedExodus(base); }),
+              decomposedFileName(base, 2, 0) + " ...: the files of the set list different element blocks, node sets or "
+                                               "side sets (names and order must agree)");
+  }
+  removeSetOnRankZero(base, 2);
+}
+
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   ::testing::InitGoogleTest(&argc, argv);
