@@ -277,11 +277,16 @@ bool perRank(const ParameterList& list) { return list.get<std::string>("Layout")
 
 const char* const kPerRankWhat = "the name of a per-rank Exodus II set, without .N.r";
 
-// ", found: the sets for 2, 4 ranks" (or none), to say what the directory holds instead.
+// "1 rank", "2 ranks".
+std::string ranksText(int n) { return std::to_string(n) + (n == 1 ? " rank" : " ranks"); }
+
+// "found: the sets for 2, 4 ranks" (or "none found"), to say what the directory holds instead.
 std::string setsFound(const std::string& base) {
+  const std::vector<int> sets = decomposedFileSets(base);
+  if (sets.empty()) return "none found";
   std::string found;
-  for (int n : decomposedFileSets(base)) found += (found.empty() ? "" : ", ") + std::to_string(n);
-  return found.empty() ? "none found" : "found: the set for " + found + " ranks";
+  for (std::size_t k = 0; k + 1 < sets.size(); ++k) found += std::to_string(sets[k]) + ", ";
+  return (sets.size() == 1 ? "found: the set for " : "found: the sets for ") + found + ranksText(sets.back());
 }
 
 // The whole mesh from a per-rank set (for tools and tests; a run reads its part, below): the set for
@@ -307,7 +312,7 @@ DistributedMesh readPerRankSet(const ParameterList& list, const std::string& whe
   if (!std::ifstream(mine).good())
     failure = std::make_exception_ptr(InputError(
         where + "/File Name: per-rank mesh file '" + mine + "' does not exist (Layout = Per Rank on " +
-        std::to_string(world.size) + " ranks reads " + decomposedFileName(base, world.size, 0) +
+        ranksText(world.size) + " reads " + decomposedFileName(base, world.size, 0) +
         (world.size > 1 ? " to " + decomposedFileName(base, world.size, world.size - 1) : std::string()) + "; " +
         setsFound(base) + ")"));
   throwIfAnyRankFailed(failure);  // the lowest rank missing its file speaks for all

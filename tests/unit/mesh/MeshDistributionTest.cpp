@@ -500,8 +500,7 @@ TEST(MeshFactory, APerRankSetIsJoinedIntoTheWholeMeshItWasSplitFrom) {
 TEST(MeshFactoryPart, AMissingPerRankFileIsOneLineNamingItAndTheRankCountOnEveryRank) {
   const std::string base = sharedPath("absent");
   const PerRankDeck deck = perRankDeck(base);
-  const std::string n = std::to_string(ranks());
-  const std::string reads = "(Layout = Per Rank on " + n + " ranks reads " + decomposedFileName(base, ranks(), 0) +
+  const std::string reads = "(Layout = Per Rank on " + std::to_string(ranks()) + (ranks() == 1 ? " rank" : " ranks") + " reads " + decomposedFileName(base, ranks(), 0) +
                             (ranks() > 1 ? " to " + decomposedFileName(base, ranks(), ranks() - 1) : "") + "; ";
   auto readPart = [&] { MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory); };
   EXPECT_EQ(inputErrorOf(readPart), "Problem/Mesh/File Name: per-rank mesh file '" +
@@ -543,7 +542,7 @@ TEST(MeshFactory, APerRankSetToJoinMustBeTheRunsOrTheOnlyOne) {
   const Mesh mesh = twoBodies(false);
   writeSetOnRankZero(base, mesh, ranks() + 1);
   writeSetOnRankZero(base, mesh, ranks() + 2);
-  EXPECT_EQ(inputErrorOf(join), needs + "found: the set for " + std::to_string(ranks() + 1) + ", " +
+  EXPECT_EQ(inputErrorOf(join), needs + "found: the sets for " + std::to_string(ranks() + 1) + ", " +
                                     std::to_string(ranks() + 2) + " ranks)");
   removeSetOnRankZero(base, ranks() + 1);
   removeSetOnRankZero(base, ranks() + 2);
