@@ -14,19 +14,19 @@ inline void expectSameMesh(const Mesh& x, const Mesh& y) {
   for (std::size_t k = 0; k < x.blocks.size(); ++k) {
     EXPECT_EQ(x.blocks[k].name, y.blocks[k].name);
     EXPECT_EQ(x.blocks[k].cellType, y.blocks[k].cellType);
-    EXPECT_EQ(x.blocks[k].elements, y.blocks[k].elements);
-    EXPECT_EQ(x.blocks[k].connectivity, y.blocks[k].connectivity);
+    EXPECT_EQ(x.blocks[k].elements, y.blocks[k].elements) << x.blocks[k].name;
+    EXPECT_EQ(x.blocks[k].connectivity, y.blocks[k].connectivity) << x.blocks[k].name;
   }
   ASSERT_EQ(x.nodeSets.size(), y.nodeSets.size());
   for (std::size_t k = 0; k < x.nodeSets.size(); ++k) {
     EXPECT_EQ(x.nodeSets[k].name, y.nodeSets[k].name);
-    EXPECT_EQ(x.nodeSets[k].nodes, y.nodeSets[k].nodes);
+    EXPECT_EQ(x.nodeSets[k].nodes, y.nodeSets[k].nodes) << x.nodeSets[k].name;
   }
   ASSERT_EQ(x.sideSets.size(), y.sideSets.size());
   for (std::size_t k = 0; k < x.sideSets.size(); ++k) {
     EXPECT_EQ(x.sideSets[k].name, y.sideSets[k].name);
-    EXPECT_EQ(x.sideSets[k].elements, y.sideSets[k].elements);
-    EXPECT_EQ(x.sideSets[k].sides, y.sideSets[k].sides);
+    EXPECT_EQ(x.sideSets[k].elements, y.sideSets[k].elements) << x.sideSets[k].name;
+    EXPECT_EQ(x.sideSets[k].sides, y.sideSets[k].sides) << x.sideSets[k].name;
   }
 }
 

@@ -588,32 +588,6 @@ int main(int argc, char** argv) {
   return worst;
 }
 
-namespace {
-
-void expectSameMesh(const Mesh& a, const Mesh& b) {
-  EXPECT_EQ(a.dimension, b.dimension);
-  EXPECT_EQ(a.coordinates, b.coordinates);
-  ASSERT_EQ(a.blocks.size(), b.blocks.size());
-  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
-    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
-    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements) << a.blocks[k].name;
-    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity) << a.blocks[k].name;
-  }
-  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
-  for (std::size_t k = 0; k < a.nodeSets.size(); ++k) {
-    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
-    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes) << a.nodeSets[k].name;
-  }
-  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
-  for (std::size_t k = 0; k < a.sideSets.size(); ++k) {
-    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
-    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements) << a.sideSets[k].name;
-    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides) << a.sideSets[k].name;
-  }
-}
-
-}  // namespace
-
 // The single-file output's view: the parts gathered on rank 0 are the whole mesh again (coordinates,
 // blocks, node sets, side sets in their order), for generated parts and for a file's METIS parts.
 TEST(MeshDistribution, PartsGatheredOnRankZeroAreTheWholeMesh) {
