@@ -15,6 +15,7 @@
 #include "mesh/ExodusFile.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/MeshDistribution.hpp"
+#include "mesh/MeshJoin.hpp"
 
 namespace contessa::mesh {
 
@@ -135,16 +136,6 @@ DistributedMesh readPart(const std::string& path, int rank, int numRanks) {
   return part;
 }
 
-// What the files of a set must agree on: the dimension and the names of the blocks and sets, in order
-// (a part's blocks and sets are matched to the whole mesh's by position).
-std::string listing(const Mesh& mesh) {
-  std::string s = std::to_string(mesh.dimension);
-  for (const auto& b : mesh.blocks) s += "\nblock " + b.name;
-  for (const auto& n : mesh.nodeSets) s += "\nnode set " + n.name;
-  for (const auto& x : mesh.sideSets) s += "\nside set " + x.name;
-  return s;
-}
-
 unsigned long long worldValue(unsigned long long value, MPI_Op op) {
   MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_UNSIGNED_LONG_LONG, op, MPI_COMM_WORLD);
   return value;
@@ -174,7 +165,7 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   const Mesh& local = part.local();
   const int counts[3] = {static_cast<int>(local.blocks.size()), static_cast<int>(local.nodeSets.size()),
                          static_cast<int>(local.sideSets.size())};
-  const unsigned long long signature = std::hash<std::string>()(listing(local));
+  const unsigned long long signature = std::hash<std::string>()(meshListing(local));
   requireInput(worldValue(signature, MPI_MIN) == worldValue(signature, MPI_MAX),
                decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different element blocks, "
                                                        "node sets or side sets (names and order must agree)");
@@ -235,87 +226,13 @@ std::vector<int> decomposedFileSets(const std::string& base) {
 }
 
 Mesh joinDecomposedExodus(const std::string& base, int numFiles) {
-  const std::string set = decomposedFileName(base, numFiles, 0) + " ...";
-  Mesh whole;
-  // Per block: global element ids and their global connectivity, file by file; per side set its
-  // (global element, side) entries.
-  std::vector<std::vector<GlobalIndex>> blockElements, blockNodes;
-  std::vector<char> blockTyped, nodeSeen;
-  std::vector<std::vector<std::pair<GlobalIndex, int>>> sides;
+  MeshJoiner joiner;
   for (int r = 0; r < numFiles; ++r) {
     const std::string path = decomposedFileName(base, numFiles, r);
-    const DistributedMesh part = readPart(path, r, numFiles);
-    const Mesh& local = part.local();
-    const std::vector<GlobalIndex>& nodes = part.part.globalNodes;
-    const std::vector<GlobalIndex>& elements = part.part.globalElements;
-    if (r == 0) {
-      whole.dimension = local.dimension;
-      for (const auto& b : local.blocks) whole.blocks.push_back({b.name, b.cellType, {}, {}});
-      for (const auto& n : local.nodeSets) whole.nodeSets.push_back({n.name, {}});
-      for (const auto& s : local.sideSets) whole.sideSets.push_back({s.name, {}, {}});
-      blockElements.resize(local.blocks.size());
-      blockNodes.resize(local.blocks.size());
-      blockTyped.assign(local.blocks.size(), 0);
-      sides.resize(local.sideSets.size());
-    }
-    requireInput(listing(local) == listing(whole), path + ": its dimension, element blocks, node sets or side sets differ from those of " +
-                                decomposedFileName(base, numFiles, 0) + " (the files of a set list the same)");
-
-    const auto dim = static_cast<std::size_t>(whole.dimension);
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-      const auto g = static_cast<std::size_t>(nodes[k]);
-      requireInput(nodes[k] >= 0, path + ": global node id " + std::to_string(nodes[k] + 1) + " out of range");
-      if (g >= nodeSeen.size()) {
-        nodeSeen.resize(g + 1, 0);
-        whole.coordinates.resize((g + 1) * dim, 0.0);
-      }
-      nodeSeen[g] = 1;  // a border node is in several files, at the same place
-      std::copy(local.coordinates.begin() + k * dim, local.coordinates.begin() + (k + 1) * dim,
-                whole.coordinates.begin() + g * dim);
-    }
-    for (std::size_t b = 0; b < local.blocks.size(); ++b) {
-      const ElementBlock& block = local.blocks[b];
-      if (block.elements.empty()) continue;  // an empty block's type is whatever the file says
-      if (!blockTyped[b]) whole.blocks[b].cellType = block.cellType;
-      blockTyped[b] = 1;
-      requireInput(block.cellType == whole.blocks[b].cellType,
-                   path + ": block '" + block.name + "' holds " + exodusCellName(block.cellType) + " elements, " +
-                       exodusCellName(whole.blocks[b].cellType) + " in another file");
-      for (GlobalIndex e : block.elements) blockElements[b].push_back(elements[e]);
-      for (GlobalIndex n : block.connectivity) blockNodes[b].push_back(nodes[n]);
-    }
-    for (std::size_t n = 0; n < local.nodeSets.size(); ++n)
-      for (GlobalIndex node : local.nodeSets[n].nodes) whole.nodeSets[n].nodes.push_back(nodes[node]);
-    for (std::size_t s = 0; s < local.sideSets.size(); ++s)
-      for (std::size_t k = 0; k < local.sideSets[s].elements.size(); ++k)
-        sides[s].emplace_back(elements[local.sideSets[s].elements[k]], local.sideSets[s].sides[k]);
+    joiner.add(readPart(path, r, numFiles), path);
   }
-  for (std::size_t g = 0; g < nodeSeen.size(); ++g)
-    requireInput(nodeSeen[g], set + ": global node id " + std::to_string(g + 1) + " is in none of the files");
-
-  for (std::size_t b = 0; b < whole.blocks.size(); ++b) {
-    ElementBlock& block = whole.blocks[b];
-    const auto perElement = static_cast<std::size_t>(nodesPerCell(block.cellType));
-    std::vector<std::size_t> order(blockElements[b].size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return blockElements[b][x] < blockElements[b][y]; });
-    for (std::size_t k : order) {
-      block.elements.push_back(blockElements[b][k]);
-      block.connectivity.insert(block.connectivity.end(), blockNodes[b].begin() + k * perElement,
-                                blockNodes[b].begin() + (k + 1) * perElement);
-    }
-  }
-  for (auto& n : whole.nodeSets) {
-    std::sort(n.nodes.begin(), n.nodes.end());
-    n.nodes.erase(std::unique(n.nodes.begin(), n.nodes.end()), n.nodes.end());
-  }
-  for (std::size_t s = 0; s < whole.sideSets.size(); ++s) {
-    std::sort(sides[s].begin(), sides[s].end());
-    for (const auto& [element, side] : sides[s]) {
-      whole.sideSets[s].elements.push_back(element);
-      whole.sideSets[s].sides.push_back(side);
-    }
-  }
+  const std::string set = decomposedFileName(base, numFiles, 0) + " ...";
+  Mesh whole = joiner.finish(set);
   whole.validate(set);  // every element id once, in range; connectivity in range; sides on the boundary
   return whole;
 }

@@ -29,12 +29,10 @@ DistributedMesh readDecomposedExodus(const std::string& base);
 /// enough), ascending: what a reader names when the set for its rank count is missing.
 std::vector<int> decomposedFileSets(const std::string& base);
 
-/// Serial: all numFiles files of the set `base.numFiles.r` read on the calling rank and put together
-/// into the whole mesh through their global ids (what SEACAS epu does to a mesh): node g at global id g,
-/// each block's elements in increasing global element id, node sets the union of the files' (sorted),
-/// side sets in (global element, side) order. The files must list the same blocks and sets by name in
-/// the same order and their global ids must number every node and element once; the whole mesh is
-/// validated (Mesh::validate). Errors are InputErrors naming the file.
+/// Serial: all numFiles files of the set `base.numFiles.r` read on the calling rank (as each rank reads
+/// its own) and joined into the whole mesh (MeshJoiner: node g at global id g, blocks by global element
+/// id, side sets in (global element, side) order), which is validated (Mesh::validate). The files must
+/// list the same blocks and sets and number every node; errors are InputErrors naming the file.
 Mesh joinDecomposedExodus(const std::string& base, int numFiles);
 
 }  // namespace contessa::mesh

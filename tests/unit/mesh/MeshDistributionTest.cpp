@@ -20,6 +20,7 @@
 #include "mesh/Generators.hpp"
 #include "mesh/MeshDistribution.hpp"
 #include "mesh/MeshFactory.hpp"
+#include "mesh/MeshJoin.hpp"
 #include "mesh/MeshMerge.hpp"
 #include "mesh/Partition.hpp"
 #include "DistributedMeshChecks.hpp"
@@ -548,6 +549,18 @@ TEST(MeshFactory, APerRankSetToJoinMustBeTheRunsOrTheOnlyOne) {
   removeSetOnRankZero(base, ranks() + 2);
 }
 
+TEST(MeshJoiner, PartsWithTheirSideSetPositionsJoinIntoTheWholeMeshInItsOrder) {
+  // A side set listed backwards in the whole mesh: the parts' positions put it back in that order.
+  const Mesh mesh = twoBodies(true);
+  for (int numParts : {1, 2, 3}) {
+    SCOPED_TRACE(std::to_string(numParts) + " parts");
+    const PartExtractor extractor(mesh, partitionMesh(mesh, numParts).elementOwner, numParts);
+    MeshJoiner joiner;
+    for (int r = numParts - 1; r >= 0; --r) joiner.add(extractor.part(r), "part " + std::to_string(r));
+    expectSameMesh(joiner.finish("parts"), mesh);
+  }
+}
+
 TEST(MeshFactory, FilesOfASetListingOtherBlocksAreRefusedNamingTheFile) {
   // A set of 2 whose second file names its first block otherwise (a file from another split).
   const Mesh mesh = twoBodies(false);
@@ -561,8 +574,8 @@ TEST(MeshFactory, FilesOfASetListingOtherBlocksAreRefusedNamingTheFile) {
   }
   MPI_Barrier(MPI_COMM_WORLD);
   EXPECT_EQ(inputErrorOf([&] { joinDecomposedExodus(base, 2); }),
-            decomposedFileName(base, 2, 1) + ": its dimension, element blocks, node sets or side sets differ from those of " +
-                decomposedFileName(base, 2, 0) + " (the files of a set list the same)");
+            decomposedFileName(base, 2, 1) + ": its dimension, element blocks, node sets or side sets differ from those "
+                                             "of the first part (the parts of a mesh list the same)");
   // Read as parts on 2 ranks: every rank says so.
   if (ranks() == 2) {
     EXPECT_EQ(inputErrorOf([&] { readDecomposedExodus(base); }),
