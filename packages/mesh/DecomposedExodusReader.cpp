@@ -3,7 +3,10 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -12,6 +15,7 @@
 #include "mesh/ExodusFile.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/MeshDistribution.hpp"
+#include "mesh/MeshJoin.hpp"
 
 namespace contessa::mesh {
 
@@ -132,8 +136,8 @@ DistributedMesh readPart(const std::string& path, int rank, int numRanks) {
   return part;
 }
 
-int worldInt(int value, MPI_Op op) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_INT, op, MPI_COMM_WORLD);
+unsigned long long worldValue(unsigned long long value, MPI_Op op) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_UNSIGNED_LONG_LONG, op, MPI_COMM_WORLD);
   return value;
 }
 
@@ -157,14 +161,14 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   }
   throwIfAnyRankFailed(failure);
 
-  // The files must list the same blocks and sets (empty where a file has none of them).
+  // The files must list the same blocks and sets (empty where a file has none of their elements).
   const Mesh& local = part.local();
   const int counts[3] = {static_cast<int>(local.blocks.size()), static_cast<int>(local.nodeSets.size()),
                          static_cast<int>(local.sideSets.size())};
-  for (int c : counts)
-    requireInput(worldInt(c, MPI_MIN) == worldInt(c, MPI_MAX),
-                 decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different numbers of "
-                                                         "element blocks, node sets or side sets");
+  const unsigned long long signature = std::hash<std::string>()(meshListing(local));
+  requireInput(worldValue(signature, MPI_MIN) == worldValue(signature, MPI_MAX),
+               decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different element blocks, "
+                                                       "node sets or side sets (names and order must agree)");
 
   // Global sizes: each element is in one file, each node owned by one.
   std::vector<GlobalIndex> sizes{static_cast<GlobalIndex>(part.ownedNodes().size()), local.numElements()};
@@ -194,6 +198,43 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
     part.sideSetPositions.push_back(std::move(positions));
   }
   return part;
+}
+
+std::vector<int> decomposedFileSets(const std::string& base) {
+  namespace fs = std::filesystem;
+  const fs::path path(base);
+  const std::string stem = path.filename().string();
+  const auto digits = [](const std::string& t) {
+    return !t.empty() && t.size() <= 9 && std::all_of(t.begin(), t.end(), [](unsigned char c) { return std::isdigit(c); });
+  };
+  std::vector<int> counts;
+  std::error_code error;  // an unreadable directory holds no set
+  for (fs::directory_iterator it(path.has_parent_path() ? path.parent_path() : fs::path("."), error), end;
+       !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= stem.size() + 1 || name.compare(0, stem.size() + 1, stem + ".") != 0) continue;
+    const std::string rest = name.substr(stem.size() + 1);
+    const std::size_t dot = rest.find('.');
+    if (dot == std::string::npos || !digits(rest.substr(0, dot)) || !digits(rest.substr(dot + 1))) continue;
+    const int count = std::stoi(rest.substr(0, dot)), rank = std::stoi(rest.substr(dot + 1));
+    // Only the names decomposedFileName gives (the rank below the count, padded to its digits).
+    if (count >= 1 && rank < count && decomposedFileName(stem, count, rank) == name) counts.push_back(count);
+  }
+  std::sort(counts.begin(), counts.end());
+  counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+  return counts;
+}
+
+Mesh joinDecomposedExodus(const std::string& base, int numFiles) {
+  MeshJoiner joiner;
+  for (int r = 0; r < numFiles; ++r) {
+    const std::string path = decomposedFileName(base, numFiles, r);
+    joiner.add(readPart(path, r, numFiles), path);
+  }
+  const std::string set = decomposedFileName(base, numFiles, 0) + " ...";
+  Mesh whole = joiner.finish(set);
+  whole.validate(set);  // every element id once, in range; connectivity in range; sides on the boundary
+  return whole;
 }
 
 }  // namespace contessa::mesh

@@ -5,8 +5,10 @@
 // Nemesis node communication maps (which other files hold each border node) give the part's global
 // ids and halo; the part is the DistributedMesh the file's elements make.
 #include <string>
+#include <vector>
 
 #include "mesh/DistributedMesh.hpp"
+#include "mesh/Mesh.hpp"
 
 namespace contessa::mesh {
 
@@ -22,5 +24,15 @@ std::string decomposedFileName(const std::string& base, int numFiles, int rank);
 /// unreadable file, a set written for another number of ranks) is an InputError naming the file on
 /// every rank.
 DistributedMesh readDecomposedExodus(const std::string& base);
+
+/// The rank counts N of the sets `base.N.r` present beside `base` (a file of the set for any r is
+/// enough), ascending: what a reader names when the set for its rank count is missing.
+std::vector<int> decomposedFileSets(const std::string& base);
+
+/// Serial: all numFiles files of the set `base.numFiles.r` read on the calling rank (as each rank reads
+/// its own) and joined into the whole mesh (MeshJoiner: node g at global id g, blocks by global element
+/// id, side sets in (global element, side) order), which is validated (Mesh::validate). The files must
+/// list the same blocks and sets and number every node; errors are InputErrors naming the file.
+Mesh joinDecomposedExodus(const std::string& base, int numFiles);
 
 }  // namespace contessa::mesh

@@ -1,13 +1,16 @@
 // Mesh source registry: one row per generator or file reader (name, description, parameters, build).
 #include "mesh/MeshFactory.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
 #include <fstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "common/Error.hpp"
+#include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/GmshMeshReader.hpp"
 #include "mesh/Generators.hpp"
@@ -243,20 +246,87 @@ RCP<ParameterList> fileParameters(const std::string& name, const std::string& wh
   return p;
 }
 
-// The file named by "File Name", relative to the deck's directory, which must exist.
-std::string meshFile(const ParameterList& list, const std::string& where, const std::string& directory,
+// The path "File Name" gives, relative to the deck's directory.
+std::string meshPath(const ParameterList& list, const std::string& where, const std::string& directory,
                      const std::string& what) {
   std::string file = list.get<std::string>("File Name");
   requireInput(!file.empty(), where + "/File Name: required (" + what + ")");
   if (file.front() != '/' && !directory.empty()) file = directory + "/" + file;
+  return file;
+}
+
+// The file named by "File Name", relative to the deck's directory, which must exist.
+std::string meshFile(const ParameterList& list, const std::string& where, const std::string& directory,
+                     const std::string& what) {
+  const std::string file = meshPath(list, where, directory, what);
   requireInput(std::ifstream(file).good(), where + "/File Name: mesh file '" + file + "' does not exist");
   return file;
 }
 
-RCP<ParameterList> exodusFileParameters() { return fileParameters("Exodus File", "Exodus II mesh file"); }
+RCP<ParameterList> exodusFileParameters() {
+  auto p = fileParameters("Exodus File", "Exodus II mesh file; with Layout = Per Rank the set's name without .N.r");
+  setChoice(*p, "Layout", "Single File", {"Single File", "Per Rank"},
+            "Single File: one file holding the whole mesh, partitioned with METIS; Per Rank: the "
+            "pre-split set <File Name>.N.r for a run on N ranks (r zero-padded to the digits of N, as SEACAS decomp "
+            "or nem_slice + nem_spread write it, or Contessa's Problem/Output/Exodus Layout = Per Rank), each rank "
+            "reading only its own file, as split");
+  return p;
+}
+
+bool perRank(const ParameterList& list) { return list.get<std::string>("Layout") == "Per Rank"; }
+
+const char* const kPerRankWhat = "the name of a per-rank Exodus II set, without .N.r";
+
+// "1 rank", "2 ranks".
+std::string ranksText(int n) { return std::to_string(n) + (n == 1 ? " rank" : " ranks"); }
+
+// "found: the sets for 2, 4 ranks" (or "none found"), to say what the directory holds instead.
+std::string setsFound(const std::string& base) {
+  const std::vector<int> sets = decomposedFileSets(base);
+  if (sets.empty()) return "none found";
+  std::string found;
+  for (std::size_t k = 0; k + 1 < sets.size(); ++k) found += std::to_string(sets[k]) + ", ";
+  return (sets.size() == 1 ? "found: the set for " : "found: the sets for ") + found + ranksText(sets.back());
+}
+
+// The whole mesh from a per-rank set (for tools and tests; a run reads its part, below): the set for
+// the world's rank count when present, otherwise the only set beside File Name; its files are joined
+// on the calling rank.
+Mesh joinPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory) {
+  const std::string base = meshPath(list, where, directory, kPerRankWhat);
+  const std::vector<int> sets = decomposedFileSets(base);
+  const int world = worldRanks().size;
+  int numFiles = std::find(sets.begin(), sets.end(), world) != sets.end() ? world : 0;
+  if (numFiles == 0 && sets.size() == 1) numFiles = sets.front();
+  requireInput(numFiles > 0, where + "/File Name: Layout = Per Rank needs one set " + base + ".N.r to join into the "
+                                     "whole mesh (" + setsFound(base) + ")");
+  return joinDecomposedExodus(base, numFiles);
+}
+
+// This rank's part of a per-rank set: its own file, base.N.r on N ranks.
+DistributedMesh readPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory) {
+  const std::string base = meshPath(list, where, directory, kPerRankWhat);
+  const WorldRanks world = worldRanks();
+  const std::string mine = decomposedFileName(base, world.size, world.rank);
+  std::exception_ptr failure;
+  if (!std::ifstream(mine).good())
+    failure = std::make_exception_ptr(InputError(
+        where + "/File Name: per-rank mesh file '" + mine + "' does not exist (Layout = Per Rank on " +
+        ranksText(world.size) + " reads " + decomposedFileName(base, world.size, 0) +
+        (world.size > 1 ? " to " + decomposedFileName(base, world.size, world.size - 1) : std::string()) + "; " +
+        setsFound(base) + ")"));
+  throwIfAnyRankFailed(failure);  // the lowest rank missing its file speaks for all
+  return readDecomposedExodus(base);
+}
 
 Mesh createExodusFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+  if (perRank(list)) return joinPerRankSet(list, where, directory);
   return readExodusMesh(meshFile(list, where, directory, "an Exodus II mesh file"));
+}
+
+DistributedMesh createExodusFilePart(const ParameterList& list, const std::string& where, const std::string& directory) {
+  if (perRank(list)) return readPerRankSet(list, where, directory);
+  return distributeMesh([&] { return createExodusFile(list, where, directory); });
 }
 
 RCP<ParameterList> gmshFileParameters() { return fileParameters("Gmsh File", "Gmsh mesh file (.msh)"); }
@@ -322,7 +392,7 @@ const std::array<MeshSourceEntry, 8> kRegistry = {{
      &createGeneratedPart<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctantPart>},
     {"Exodus File",
      "An Exodus II mesh: QUAD4 or HEX8 element blocks, node sets and side sets with their names",
-     &exodusFileParameters, &createExodusFile},
+     &exodusFileParameters, &createExodusFile, &createExodusFilePart},
     {"Gmsh File",
      "A Gmsh mesh (.msh): physical volumes (2D: surfaces) become HEX8 (QUAD4) element blocks, physical groups "
      "one dimension lower side sets and node sets, physical points and curves node sets",

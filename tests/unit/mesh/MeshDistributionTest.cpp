@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstdio>
+#include <functional>
 
 #include "common/Error.hpp"
 #include "contact/ContactSurface.hpp"
@@ -19,11 +20,13 @@
 #include "mesh/Generators.hpp"
 #include "mesh/MeshDistribution.hpp"
 #include "mesh/MeshFactory.hpp"
+#include "mesh/MeshJoin.hpp"
 #include "mesh/MeshMerge.hpp"
 #include "mesh/Partition.hpp"
 #include "DistributedMeshChecks.hpp"
 
 using namespace contessa::mesh;
+using contessa::mesh::test::expectSameMesh;
 using contessa::mesh::test::expectSameParts;
 
 namespace {
@@ -421,6 +424,174 @@ TEST(MeshFactoryPart, AGeneratorsErrorNamesTheDeckParameterOnEveryRank) {
   }
 }
 
+namespace {
+
+// A whole set base.numFiles.r of `mesh` (METIS parts, maybe with their nodes listed backwards), written
+// by rank 0 alone as a decomposition tool would; and removed again.
+void writeSetOnRankZero(const std::string& base, const Mesh& mesh, int numFiles, bool reversed = false) {
+  if (rank() == 0) {
+    const PartExtractor extractor(mesh, partitionMesh(mesh, numFiles).elementOwner, numFiles);
+    for (int r = 0; r < numFiles; ++r)
+      writeDecomposedFile(base, reversed ? nodesReversed(extractor.part(r)) : extractor.part(r), numFiles);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void removeSetOnRankZero(const std::string& base, int numFiles) {
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (rank() == 0)
+    for (int r = 0; r < numFiles; ++r) std::remove(decomposedFileName(base, numFiles, r).c_str());
+}
+
+// The deck's Exodus File list for a per-rank set at `base`, named relative to the deck's directory.
+struct PerRankDeck {
+  Teuchos::ParameterList list;
+  std::string directory;
+};
+
+PerRankDeck perRankDeck(const std::string& base) {
+  PerRankDeck deck{*MeshFactory::validParameters("Exodus File"), base.substr(0, base.rfind('/'))};
+  deck.list.set("Layout", std::string("Per Rank"));
+  deck.list.set("File Name", base.substr(base.rfind('/') + 1));
+  return deck;
+}
+
+std::string inputErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const contessa::InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+}  // namespace
+
+TEST(MeshFactoryPart, APerRankSetIsReadByEachRankFromItsOwnFile) {
+  const Mesh mesh = twoBodies(false);
+  const DistributedMesh expected = PartExtractor(mesh, partitionMesh(mesh, ranks()).elementOwner, ranks()).part(rank());
+  const std::string base = sharedPath("per_rank");
+  writeDecomposedFile(base, expected, ranks());
+  MPI_Barrier(MPI_COMM_WORLD);
+  const PerRankDeck deck = perRankDeck(base);
+  const DistributedMesh part = MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory);
+  expectSameParts(part, expected);
+  expectConsistentOwnership(part);
+  // The whole mesh of the same deck: the set of the run's rank count, joined.
+  expectSameMesh(MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory), mesh);
+  removeDecomposedFile(base);
+}
+
+TEST(MeshFactory, APerRankSetIsJoinedIntoTheWholeMeshItWasSplitFrom) {
+  const Mesh mesh = twoBodies(false);  // side sets in element order, as joining gives them back
+  for (bool reversed : {false, true}) {
+    SCOPED_TRACE(reversed ? "nodes listed backwards in the files" : "nodes in global order");
+    const std::string base = sharedPath(reversed ? "join_reversed" : "join");
+    writeSetOnRankZero(base, mesh, 3, reversed);  // the only set present: joined whatever the rank count
+    const PerRankDeck deck = perRankDeck(base);
+    expectSameMesh(MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory), mesh);
+    removeSetOnRankZero(base, 3);
+  }
+  // A generated 2D mesh, split in 4.
+  RectangleSpec rectangle;
+  rectangle.nx = 5;
+  rectangle.ny = 3;
+  rectangle.biasX = 1.5;
+  const Mesh flat = generateRectangle(rectangle);
+  const std::string base = sharedPath("join_2d");
+  writeSetOnRankZero(base, flat, 4);
+  EXPECT_EQ(decomposedFileSets(base), std::vector<int>{4});
+  expectSameMesh(joinDecomposedExodus(base, 4), flat);
+  removeSetOnRankZero(base, 4);
+}
+
+TEST(MeshFactoryPart, AMissingPerRankFileIsOneLineNamingItAndTheRankCountOnEveryRank) {
+  const std::string base = sharedPath("absent");
+  const PerRankDeck deck = perRankDeck(base);
+  const std::string reads = "(Layout = Per Rank on " + std::to_string(ranks()) + (ranks() == 1 ? " rank" : " ranks") + " reads " + decomposedFileName(base, ranks(), 0) +
+                            (ranks() > 1 ? " to " + decomposedFileName(base, ranks(), ranks() - 1) : "") + "; ";
+  auto readPart = [&] { MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory); };
+  EXPECT_EQ(inputErrorOf(readPart), "Problem/Mesh/File Name: per-rank mesh file '" +
+                                        decomposedFileName(base, ranks(), 0) + "' does not exist " + reads +
+                                        "none found)");
+  MPI_Barrier(MPI_COMM_WORLD);
+
+  // A set split for another rank count: said so.
+  writeSetOnRankZero(base, twoBodies(false), ranks() + 1);
+  EXPECT_EQ(inputErrorOf(readPart), "Problem/Mesh/File Name: per-rank mesh file '" +
+                                        decomposedFileName(base, ranks(), 0) + "' does not exist " + reads +
+                                        "found: the set for " + std::to_string(ranks() + 1) + " ranks)");
+  removeSetOnRankZero(base, ranks() + 1);
+
+  // Only rank 0's file of the run's set: the last rank's file is named, on every rank.
+  if (ranks() > 1) {
+    const Mesh mesh = twoBodies(false);
+    if (rank() == 0)
+      writeDecomposedFile(base, PartExtractor(mesh, partitionMesh(mesh, ranks()).elementOwner, ranks()).part(0), ranks());
+    MPI_Barrier(MPI_COMM_WORLD);
+    const std::string message = inputErrorOf(readPart);
+    EXPECT_EQ(message.rfind("Problem/Mesh/File Name: per-rank mesh file '" + decomposedFileName(base, ranks(), 1) +
+                                "' does not exist " + reads,
+                            0),
+              0u)
+        << message;
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (rank() == 0) std::remove(decomposedFileName(base, ranks(), 0).c_str());
+  }
+}
+
+TEST(MeshFactory, APerRankSetToJoinMustBeTheRunsOrTheOnlyOne) {
+  const std::string base = sharedPath("which_set");
+  const PerRankDeck deck = perRankDeck(base);
+  auto join = [&] { MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory); };
+  const std::string needs = "Problem/Mesh/File Name: Layout = Per Rank needs one set " + base + ".N.r to join into the whole mesh (";
+  EXPECT_EQ(inputErrorOf(join), needs + "none found)");
+  MPI_Barrier(MPI_COMM_WORLD);  // every rank looked before rank 0 writes
+  const Mesh mesh = twoBodies(false);
+  writeSetOnRankZero(base, mesh, ranks() + 1);
+  writeSetOnRankZero(base, mesh, ranks() + 2);
+  EXPECT_EQ(inputErrorOf(join), needs + "found: the sets for " + std::to_string(ranks() + 1) + ", " +
+                                    std::to_string(ranks() + 2) + " ranks)");
+  removeSetOnRankZero(base, ranks() + 1);
+  removeSetOnRankZero(base, ranks() + 2);
+}
+
+TEST(MeshJoiner, PartsWithTheirSideSetPositionsJoinIntoTheWholeMeshInItsOrder) {
+  // A side set listed backwards in the whole mesh: the parts' positions put it back in that order.
+  const Mesh mesh = twoBodies(true);
+  for (int numParts : {1, 2, 3}) {
+    SCOPED_TRACE(std::to_string(numParts) + " parts");
+    const PartExtractor extractor(mesh, partitionMesh(mesh, numParts).elementOwner, numParts);
+    MeshJoiner joiner;
+    for (int r = numParts - 1; r >= 0; --r) joiner.add(extractor.part(r), "part " + std::to_string(r));
+    expectSameMesh(joiner.finish("parts"), mesh);
+  }
+}
+
+TEST(MeshFactory, FilesOfASetListingOtherBlocksAreRefusedNamingTheFile) {
+  // A set of 2 whose second file names its first block otherwise (a file from another split).
+  const Mesh mesh = twoBodies(false);
+  const std::string base = sharedPath("mixed");
+  if (rank() == 0) {
+    const PartExtractor extractor(mesh, partitionMesh(mesh, 2).elementOwner, 2);
+    DistributedMesh second = extractor.part(1);
+    second.part.mesh.blocks[0].name = "other";
+    writeDecomposedFile(base, extractor.part(0), 2);
+    writeDecomposedFile(base, second, 2);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  EXPECT_EQ(inputErrorOf([&] { joinDecomposedExodus(base, 2); }),
+            decomposedFileName(base, 2, 1) + ": its dimension, element blocks, node sets or side sets differ from those "
+                                             "of the first part (the parts of a mesh list the same)");
+  // Read as parts on 2 ranks: every rank says so.
+  if (ranks() == 2) {
+    EXPECT_EQ(inputErrorOf([&] { readDecomposedExodus(base); }),
+              decomposedFileName(base, 2, 0) + " ...: the files of the set list different element blocks, node sets or "
+                                               "side sets (names and order must agree)");
+  }
+  removeSetOnRankZero(base, 2);
+}
+
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   ::testing::InitGoogleTest(&argc, argv);
@@ -436,32 +607,6 @@ int main(int argc, char** argv) {
   MPI_Finalize();
   return worst;
 }
-
-namespace {
-
-void expectSameMesh(const Mesh& a, const Mesh& b) {
-  EXPECT_EQ(a.dimension, b.dimension);
-  EXPECT_EQ(a.coordinates, b.coordinates);
-  ASSERT_EQ(a.blocks.size(), b.blocks.size());
-  for (std::size_t k = 0; k < a.blocks.size(); ++k) {
-    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
-    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements) << a.blocks[k].name;
-    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity) << a.blocks[k].name;
-  }
-  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
-  for (std::size_t k = 0; k < a.nodeSets.size(); ++k) {
-    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
-    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes) << a.nodeSets[k].name;
-  }
-  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
-  for (std::size_t k = 0; k < a.sideSets.size(); ++k) {
-    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
-    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements) << a.sideSets[k].name;
-    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides) << a.sideSets[k].name;
-  }
-}
-
-}  // namespace
 
 // The single-file output's view: the parts gathered on rank 0 are the whole mesh again (coordinates,
 // blocks, node sets, side sets in their order), for generated parts and for a file's METIS parts.
