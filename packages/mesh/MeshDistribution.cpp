@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "common/Error.hpp"
+#include "mesh/MeshJoin.hpp"
 #include "mesh/Partition.hpp"
 
 namespace contessa::mesh {
@@ -273,68 +274,12 @@ Mesh gatherMeshOnRoot(const DistributedMesh& part) {
     sendBytes(pack(part), 0, comm->get());
     return Mesh{};
   }
-  const int dim = part.local().dimension;
-  Mesh whole;
-  whole.dimension = dim;
-  whole.coordinates.assign(static_cast<std::size_t>(part.numGlobalNodes) * dim, 0.0);
-  const std::size_t numBlocks = part.local().blocks.size();
-  // Per block, (global element, global nodes) of every part; blocks list their elements in increasing
-  // global id, as every reader and generator numbers them (the parts' union is then the whole block).
-  std::vector<std::vector<std::pair<GlobalIndex, std::vector<GlobalIndex>>>> blockElements(numBlocks);
-  std::vector<std::vector<GlobalIndex>> nodeSets(part.local().nodeSets.size());
-  std::vector<SideSet> sideSets(part.local().sideSets.size());
-  for (std::size_t s = 0; s < sideSets.size(); ++s) {
-    sideSets[s].elements.resize(static_cast<std::size_t>(part.globalSideSetSizes[s]));
-    sideSets[s].sides.resize(static_cast<std::size_t>(part.globalSideSetSizes[s]));
-  }
-  const auto add = [&](const DistributedMesh& p) {
-    const Mesh& local = p.local();
-    const auto& gn = p.part.globalNodes;
-    const auto& ge = p.part.globalElements;
-    for (std::size_t n = 0; n < gn.size(); ++n)
-      for (int c = 0; c < dim; ++c) whole.coordinates[gn[n] * dim + c] = local.coordinates[n * dim + c];
-    for (std::size_t b = 0; b < numBlocks; ++b) {
-      const auto& block = local.blocks[b];
-      const int npe = nodesPerCell(block.cellType);
-      for (std::size_t k = 0; k < block.elements.size(); ++k) {
-        std::vector<GlobalIndex> nodes(static_cast<std::size_t>(npe));
-        for (int a = 0; a < npe; ++a) nodes[a] = gn[block.connectivity[k * npe + a]];
-        blockElements[b].emplace_back(ge[block.elements[k]], std::move(nodes));
-      }
-    }
-    for (std::size_t s = 0; s < nodeSets.size(); ++s)
-      for (GlobalIndex n : local.nodeSets[s].nodes) nodeSets[s].push_back(gn[n]);
-    for (std::size_t s = 0; s < sideSets.size(); ++s)
-      for (std::size_t k = 0; k < local.sideSets[s].elements.size(); ++k) {
-        const auto at = static_cast<std::size_t>(p.sideSetPositions[s][k]);
-        sideSets[s].elements[at] = ge[local.sideSets[s].elements[k]];
-        sideSets[s].sides[at] = local.sideSets[s].sides[k];
-      }
-  };
-  add(part);
-  for (int from = 1; from < size; ++from) add(unpack(receiveBytes(from, comm->get())));
-  for (std::size_t b = 0; b < numBlocks; ++b) {
-    auto& elements = blockElements[b];
-    std::sort(elements.begin(), elements.end(),
-              [](const auto& x, const auto& y) { return x.first < y.first; });
-    ElementBlock block{part.local().blocks[b].name, part.local().blocks[b].cellType, {}, {}};
-    for (const auto& [element, nodes] : elements) {
-      block.elements.push_back(element);
-      block.connectivity.insert(block.connectivity.end(), nodes.begin(), nodes.end());
-    }
-    whole.blocks.push_back(std::move(block));
-  }
-  for (std::size_t s = 0; s < nodeSets.size(); ++s) {
-    auto& nodes = nodeSets[s];
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    whole.nodeSets.push_back({part.local().nodeSets[s].name, std::move(nodes)});
-  }
-  for (std::size_t s = 0; s < sideSets.size(); ++s) {
-    sideSets[s].name = part.local().sideSets[s].name;
-    whole.sideSets.push_back(std::move(sideSets[s]));
-  }
-  return whole;
+  // Rank 0 joins the parts as they arrive (one received part at a time in memory besides the join).
+  MeshJoiner joiner;
+  joiner.add(part, "rank 0's part of the mesh");
+  for (int from = 1; from < size; ++from)
+    joiner.add(unpack(receiveBytes(from, comm->get())), "rank " + std::to_string(from) + "'s part of the mesh");
+  return joiner.finish("the mesh gathered on rank 0");
 }
 
 WorldRanks worldRanks() {

@@ -33,9 +33,10 @@ class MeshFactory {
                      const std::string& directory);
 
   /// This rank's part of the same mesh, collective over MPI_COMM_WORLD (DistributedMesh.hpp): the
-  /// generators build only the rank's part (generate*Part: contiguous element ranges, no
-  /// communication); the file readers read on rank 0, which partitions with METIS and sends the parts
-  /// out (distributeMesh). Errors as create's, on every rank.
+  /// generators build only the rank's part (generate*Part: no
+  /// communication: the structured grids in GridPartition's index boxes, the sphere octant in id ranges); the file readers read on rank 0, which partitions with
+  /// METIS and sends the parts out (distributeMesh), except an Exodus set with Layout = Per Rank, whose
+  /// files each rank reads itself. Errors as create's, on every rank.
   static DistributedMesh createPart(const std::string& type, const Teuchos::ParameterList& params,
                                     const std::string& where, const std::string& directory);
 };

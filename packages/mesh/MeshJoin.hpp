@@ -4,7 +4,7 @@
 // global element id (as every reader and generator numbers them), node sets the union of the parts'
 // (sorted), side sets at the parts' sideSetPositions when they carry them, otherwise in (global
 // element, side) order. One part at a time, so a part can be freed once added. Serial: used on one
-// rank to join a pre-split file set (joinDecomposedExodus); the same assembly as gatherMeshOnRoot's.
+// rank to join a pre-split file set (joinDecomposedExodus), and by gatherMeshOnRoot on rank 0.
 #include <string>
 #include <utility>
 #include <vector>
