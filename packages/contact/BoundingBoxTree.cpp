@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 namespace contessa::contact {
 
@@ -71,26 +72,34 @@ class MortonEncoder {
   double scale_ = 0;
 };
 
-/// Sorts `codes` ascending and returns the permutation applied, stable (equal codes keep their order, so duplicates are
-/// ordered by index): an LSD radix sort, 8 bits per pass, passes where every code has the same digit
-/// skipped. O(m), against the comparison sort's O(m log m).
-std::vector<int> sortInPlace(std::vector<std::uint64_t>& key) {
-  const std::size_t n = key.size();
-  std::vector<std::uint64_t> keyTmp(n);
-  std::vector<int> order(n), orderTmp(n);
-  std::iota(order.begin(), order.end(), 0);
-  for (int shift = 0; shift < 64; shift += 8) {
-    std::array<std::size_t, 257> start{};
-    for (std::uint64_t k : key) ++start[((k >> shift) & 0xffU) + 1];
-    if (std::any_of(start.begin() + 1, start.end(), [n](std::size_t c) { return c == n; })) continue;
-    for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t to = start[(key[i] >> shift) & 0xffU]++;
-      keyTmp[to] = key[i];
-      orderTmp[to] = order[i];
-    }
-    key.swap(keyTmp);
-    order.swap(orderTmp);
+/// Sorts `codes` ascending and returns the permutation applied, stable (equal codes keep their order, so
+/// duplicates are ordered by index): an LSD radix sort, 8 bits per pass (the digits' counts all taken
+/// in one read), passes where every code has the same digit skipped. O(m), against the comparison
+/// sort's O(m log m). Code and index move together, one store stream per digit value.
+std::vector<int> sortInPlace(std::vector<std::uint64_t>& codes) {
+  struct Keyed {
+    std::uint64_t code;
+    int index;
+  };
+  const std::size_t n = codes.size();
+  std::vector<Keyed> items(n), moved(n);
+  std::array<std::array<std::size_t, 256>, 8> counts{};
+  for (std::size_t i = 0; i < n; ++i) {
+    items[i] = {codes[i], static_cast<int>(i)};
+    for (int pass = 0; pass < 8; ++pass) ++counts[static_cast<std::size_t>(pass)][(codes[i] >> (8 * pass)) & 0xffU];
+  }
+  for (int pass = 0; pass < 8; ++pass) {
+    auto& count = counts[static_cast<std::size_t>(pass)];
+    if (std::any_of(count.begin(), count.end(), [n](std::size_t c) { return c == n; })) continue;
+    std::size_t start = 0;
+    for (auto& c : count) start += std::exchange(c, start);  // counts → first position of each digit
+    for (const Keyed& item : items) moved[count[(item.code >> (8 * pass)) & 0xffU]++] = item;
+    items.swap(moved);
+  }
+  std::vector<int> order(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    codes[i] = items[i].code;
+    order[i] = items[i].index;
   }
   return order;
 }
@@ -130,22 +139,10 @@ BoundingBoxTree<Dim>::BoundingBoxTree(std::vector<BoundingBox<Dim>> boxes, int l
   // every subtree is a contiguous range.
   std::vector<std::uint64_t> codes;
   order_ = mortonOrder<Dim>(boxes.size(), [&boxes](std::size_t i) { return boxes[i].center(); }, codes);
-  // Permuted in place, cycle by cycle (no second copy of the boxes): boxes_[i] = boxes[order_[i]].
-  std::vector<bool> placed(boxes.size(), false);
-  for (std::size_t start = 0; start < boxes.size(); ++start) {
-    if (placed[start]) continue;
-    const BoundingBox<Dim> first = boxes[start];
-    std::size_t i = start;
-    for (std::size_t from = static_cast<std::size_t>(order_[i]); from != start;
-         from = static_cast<std::size_t>(order_[i])) {
-      boxes[i] = boxes[from];
-      placed[i] = true;
-      i = from;
-    }
-    boxes[i] = first;
-    placed[i] = true;
-  }
-  boxes_ = std::move(boxes);
+  boxes_.resize(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) boxes_[i] = boxes[static_cast<std::size_t>(order_[i])];
+  boxes.clear();
+  boxes.shrink_to_fit();
   if (!boxes_.empty()) {
     nodes_.reserve(2 * boxes_.size() / static_cast<std::size_t>(leafSize_) + 1);
     build(codes, 0, static_cast<int>(boxes_.size()), 1);
@@ -186,22 +183,23 @@ template <class Accepts>
 void BoundingBoxTree<Dim>::search(const Accepts& accepts, std::vector<int>& hits, std::size_t* visitedNodes) const {
   if (nodes_.empty()) return;
   const std::size_t first = hits.size();
-  // Depth-first with an explicit stack: each level leaves at most one sibling on it, so depth_ + 1
-  // entries suffice.
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  std::size_t visited = 0;
-  while (top > 0) {
-    const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
-    ++visited;
-    if (!accepts(node.box)) continue;
-    if (node.left < 0) {
-      for (int k = node.begin; k < node.end; ++k)
-        if (accepts(boxes_[static_cast<std::size_t>(k)])) hits.push_back(order_[static_cast<std::size_t>(k)]);
-    } else {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
+  std::size_t visited = 1;
+  if (accepts(nodes_[0].box)) {
+    // Depth-first with an explicit stack of accepted nodes; a node's children are tested before they
+    // are pushed. Each level leaves at most one sibling on the stack, so depth_ + 1 entries suffice.
+    int stack[128];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[static_cast<std::size_t>(stack[--top])];
+      if (node.left < 0) {
+        for (int k = node.begin; k < node.end; ++k)
+          if (accepts(boxes_[static_cast<std::size_t>(k)])) hits.push_back(order_[static_cast<std::size_t>(k)]);
+        continue;
+      }
+      visited += 2;
+      if (accepts(nodes_[static_cast<std::size_t>(node.right)].box)) stack[top++] = node.right;
+      if (accepts(nodes_[static_cast<std::size_t>(node.left)].box)) stack[top++] = node.left;
     }
   }
   std::sort(hits.begin() + static_cast<std::ptrdiff_t>(first), hits.end());

@@ -38,16 +38,18 @@ struct BoundingBox {
       upper[d] += distance;
     }
   }
+  // Both tests evaluate every comparison (& and |, not && and ||): one unpredictable branch instead of
+  // up to 2·Dim, as the search tests about log2(m) boxes per query that pass or fail at random.
   bool contains(const Vector<Dim>& point) const {
-    for (int d = 0; d < Dim; ++d)
-      if (point[d] < lower[d] || point[d] > upper[d]) return false;
-    return true;
+    bool outside = false;
+    for (int d = 0; d < Dim; ++d) outside |= (point[d] < lower[d]) | (point[d] > upper[d]);
+    return !outside;
   }
   /// The two closed boxes share at least one point.
   bool intersects(const BoundingBox& box) const {
-    for (int d = 0; d < Dim; ++d)
-      if (box.upper[d] < lower[d] || box.lower[d] > upper[d]) return false;
-    return true;
+    bool apart = false;
+    for (int d = 0; d < Dim; ++d) apart |= (box.upper[d] < lower[d]) | (box.lower[d] > upper[d]);
+    return !apart;
   }
   Vector<Dim> center() const { return scaled(0.5, add(lower, upper)); }
 
