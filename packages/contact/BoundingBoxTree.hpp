@@ -1,12 +1,15 @@
 #pragma once
 // Global contact search: an axis-aligned bounding-box tree over the master facets. Each master facet's
 // box is enlarged by a search distance; a slave node's candidates are the facets whose enlarged box
-// contains it. Building is O(m log m) (median splits), a query O(log m + k), so n slave nodes against
-// m facets cost O((n + m) log m) instead of the brute-force O(n·m). The local choice among the
-// candidates is FacetSelector's job.
+// contains it. Building sorts the boxes by the Morton (Z-order) code of their centres (a radix sort,
+// O(m)) and splits the sorted range recursively at the codes' highest differing bit (a linear BVH);
+// a query is O(log m + k), so n slave nodes against m facets cost O((n + m) log m) instead of the
+// brute-force O(n·m). The tree only filters: a box is a candidate exactly when it contains the point,
+// whatever the tree's shape. The local choice among the candidates is FacetSelector's job.
 #include "contact/SmallMatrix.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -35,16 +38,18 @@ struct BoundingBox {
       upper[d] += distance;
     }
   }
+  // Both tests evaluate every comparison (& and |, not && and ||): one unpredictable branch instead of
+  // up to 2·Dim, as the search tests about log2(m) boxes per query that pass or fail at random.
   bool contains(const Vector<Dim>& point) const {
-    for (int d = 0; d < Dim; ++d)
-      if (point[d] < lower[d] || point[d] > upper[d]) return false;
-    return true;
+    bool outside = false;
+    for (int d = 0; d < Dim; ++d) outside |= (point[d] < lower[d]) | (point[d] > upper[d]);
+    return !outside;
   }
   /// The two closed boxes share at least one point.
   bool intersects(const BoundingBox& box) const {
-    for (int d = 0; d < Dim; ++d)
-      if (box.upper[d] < lower[d] || box.lower[d] > upper[d]) return false;
-    return true;
+    bool apart = false;
+    for (int d = 0; d < Dim; ++d) apart |= (box.upper[d] < lower[d]) | (box.lower[d] > upper[d]);
+    return !apart;
   }
   Vector<Dim> center() const { return scaled(0.5, add(lower, upper)); }
 
@@ -98,13 +103,8 @@ class BoundingBoxTree {
     int end = 0;
   };
 
-  /// A box with its centre and its index in the constructor's vector, moved as one during the build.
-  struct Item {
-    BoundingBox<Dim> box;
-    Vector<Dim> center;
-    int id = 0;
-  };
-  int build(std::vector<Item>& items, int begin, int end, int level);
+  /// Builds the subtree over boxes_[begin, end), whose sorted Morton codes are codes[begin, end).
+  int build(const std::vector<std::uint64_t>& codes, int begin, int end, int level);
   /// Depth-first search for the boxes a predicate accepts (on tree nodes and on items alike).
   template <class Accepts>
   void search(const Accepts& accepts, std::vector<int>& hits, std::size_t* visitedNodes) const;

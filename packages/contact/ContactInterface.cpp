@@ -136,7 +136,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
     for (const auto& x : facets[s].x) boxes[s].include(x);
     boxes[s].enlarge(reach);
   }
-  const BoundingBoxTree<kDim> tree(boxes);
+  const BoundingBoxTree<kDim> tree(std::move(boxes));
 
   std::vector<double> force(kDim, 0.0);
   std::vector<int> hits;
@@ -238,7 +238,7 @@ std::vector<TunnellingNode> ContactInterface<Facet>::tunnellingNodes() const {
     }
     boxes[s].enlarge(margin);
   }
-  const BoundingBoxTree<kDim> tree(boxes);
+  const BoundingBoxTree<kDim> tree(std::move(boxes));
   std::vector<int> hits;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     // In contact now (g_N ≤ 0 on the selected facet): penalty penetration, not tunnelling.
