@@ -32,8 +32,8 @@ struct RunMemoryEstimate {
 
 /// Unknowns n = dimension × nodes; matrix entries n · d·3^d (each node couples to the 3^d nodes of
 /// its element patch); 100 bytes per matrix entry (Tpetra matrix and graph, MUMPS' copies of the
-/// entries, vectors); factor entries 10 · n · log2 n in 2D, 10 · n^(4/3) in 3D, 12 bytes each;
-/// 85 MiB of libraries and twice the mesh containers per rank.
+/// entries, vectors); factor entries 11 · n · log2 n in 2D, 11 · n^(4/3) in 3D, 12 bytes each;
+/// 96 MiB of libraries and twice the mesh containers per rank.
 RunMemoryEstimate estimateRunMemory(const MeshSize& size);
 
 /// Largest count Contessa's libraries can index: Tpetra's local ordinals, METIS' idx_t and MUMPS'

@@ -41,7 +41,7 @@ constexpr double kGiB = 1024.0 * 1024 * 1024;
 
 // The calibration runs (docs/user-guide.md): inputs/tube_bending.xml with the given elements through
 // the thickness x around the arc, Method=Constant, 2 increments, peak resident memory from
-// /usr/bin/time -v (summed over the ranks for 2 ranks). The estimate must not be below what was
+// the run summary's VmHWM per rank (summed over the ranks for 2 ranks), re-measured 2026-11-23. The estimate must not be below what was
 // measured, nor more than 30 % above it.
 TEST(MemoryEstimate, CalibrationRunsOfTheTube) {
   struct Run {
@@ -49,8 +49,8 @@ TEST(MemoryEstimate, CalibrationRunsOfTheTube) {
     int ranks;
     double measuredKiB;
   };
-  for (const Run& run : {Run{13, 101, 1, 94200}, Run{13, 1000, 1, 161208}, Run{50, 1000, 1, 397500},
-                         Run{300, 300, 1, 753752}, Run{100, 2000, 1, 1454724}, Run{50, 1000, 2, 239828 + 266272}}) {
+  for (const Run& run : {Run{13, 101, 1, 106080}, Run{13, 1000, 1, 188068}, Run{50, 1000, 1, 458316},
+                         Run{300, 300, 1, 818244}, Run{100, 2000, 1, 1548800}, Run{50, 1000, 2, 307804 + 287252}}) {
     const double estimate = estimateRunMemory(grid(run.nr, run.nt)).onMachine(run.ranks, run.ranks);
     const double measured = run.measuredKiB * kKiB;
     EXPECT_GE(estimate, measured) << run.nr << " x " << run.nt << " on " << run.ranks;
@@ -63,7 +63,7 @@ TEST(MemoryEstimate, PartsAndScaling) {
   // 10201 nodes x (2 coordinates + 1 set entry) + 10000 elements x (1 id + 4 nodes), 8 bytes each.
   EXPECT_DOUBLE_EQ(e.mesh, 8 * (3 * 10201.0 + 5 * 10000.0));
   EXPECT_DOUBLE_EQ(e.distributed, 100 * 18 * 20402.0);
-  EXPECT_NEAR(e.factor, 12 * 10 * 20402.0 * std::log2(20402.0), 1);
+  EXPECT_NEAR(e.factor, 12 * 11 * 20402.0 * std::log2(20402.0), 1);
   // Ranks on one machine each load the libraries and hold the mesh; the matrix and factor are shared.
   EXPECT_DOUBLE_EQ(e.onMachine(2, 2) - e.onMachine(1, 1), e.perRank);
   EXPECT_DOUBLE_EQ(e.onMachine(1, 2), e.perRank + (e.distributed + e.factor) / 2);
@@ -75,7 +75,7 @@ TEST(MemoryEstimate, PartsAndScaling) {
   cube.nodesPerElement = 8;
   const RunMemoryEstimate c = estimateRunMemory(cube);
   EXPECT_DOUBLE_EQ(c.distributed, 100 * 81 * 3e6);
-  EXPECT_NEAR(c.factor / (12 * 10 * std::pow(3e6, 4.0 / 3.0)), 1, 1e-12);
+  EXPECT_NEAR(c.factor / (12 * 11 * std::pow(3e6, 4.0 / 3.0)), 1, 1e-12);
 }
 
 TEST(MemoryEstimate, RefusesWhatDoesNotFit) {
