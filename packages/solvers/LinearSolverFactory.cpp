@@ -1,5 +1,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 
+#include <array>
+
 #include <Stratimikos_DefaultLinearSolverBuilder.hpp>
 #include <MueLu_MasterList.hpp>
 #include <Stratimikos_MueLuHelpers.hpp>
@@ -11,8 +13,6 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
-
-#include <array>
 
 #include "common/Error.hpp"
 #include "common/ErrorText.hpp"
