@@ -3,9 +3,8 @@
 #include <map>
 #include <string>
 
-#include <Teuchos_CommHelpers.hpp>
-
 #include "common/Error.hpp"
+#include "model/RankAgreement.hpp"
 
 namespace contessa::model {
 
@@ -31,17 +30,8 @@ BoundaryConditions::BoundaryConditions(const deck::ProblemDefinition& problem, c
                    " differently from '" + it->second.second + "'";
     }
   }
-  const Comm& comm = *layout.comm();
-  const int mine = conflict.empty() ? comm.getSize() : comm.getRank();
-  int speaker = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &mine, &speaker);
-  if (speaker < comm.getSize()) {
-    int length = static_cast<int>(conflict.size());
-    Teuchos::broadcast(comm, speaker, &length);
-    conflict.resize(static_cast<std::size_t>(length));
-    Teuchos::broadcast(comm, speaker, length, conflict.data());
-    throw InputError(conflict);
-  }
+  conflict = firstMessageOfAnyRank(*layout.comm(), conflict);
+  if (!conflict.empty()) throw InputError(conflict);
   for (const auto& [dof, value] : prescribed) {
     const LO lo = owned.getLocalElement(dof);
     if (lo != Teuchos::OrdinalTraits<LO>::invalid()) {

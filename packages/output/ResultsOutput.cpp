@@ -16,6 +16,7 @@
 #include "io/OutputWriteError.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/MeshDistribution.hpp"
+#include "model/RankAgreement.hpp"
 
 #include "common/PhaseTimers.hpp"
 
@@ -53,20 +54,6 @@ const std::vector<std::string> kFixedColumns = {"step", "lambda", "dlambda", "be
 RCP<const model::Map> mapOf(const std::vector<model::GO>& ids, const RCP<const model::Comm>& comm) {
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   return rcp(new model::Map(invalid, Teuchos::ArrayView<const model::GO>(ids), 0, comm));
-}
-
-// The message of the lowest rank that has one, on every rank ("" when none has): a rank only knows
-// its own writes.
-std::string agree(const model::Comm& comm, std::string message) {
-  const int mine = message.empty() ? comm.getSize() : comm.getRank();
-  int first = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &mine, &first);
-  if (first == comm.getSize()) return "";
-  int size = static_cast<int>(message.size());
-  Teuchos::broadcast(comm, first, &size);
-  message.resize(static_cast<std::size_t>(size));
-  Teuchos::broadcast(comm, first, size, message.data());
-  return message;
 }
 
 std::string formatTime(const char* format) {
@@ -248,7 +235,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
       lock_.reset();
     }
   }
-  error = agree(*comm, error);
+  error = model::firstMessageOfAnyRank(*comm, error);
   if (!error.empty()) throw InputError(error);
   if (perRank_) {
     try {
@@ -256,7 +243,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     } catch (const std::exception& e) {
       error = e.what();
     }
-    error = agree(*comm, error);
+    error = model::firstMessageOfAnyRank(*comm, error);
     if (!error.empty()) {
       exodus_.reset();
       history_.reset();
@@ -355,7 +342,7 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   } catch (const std::exception& e) {
     error = describe(e) + kept();
   }
-  error = agree(comm, error);
+  error = model::firstMessageOfAnyRank(comm, error);
   if (error.empty() && history_) {
     try {
       history_->writeRow(row);
@@ -363,7 +350,7 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
       error = describe(e) + kept();
     }
   }
-  error = agree(comm, error);
+  error = model::firstMessageOfAnyRank(comm, error);
   if (!error.empty()) {
     failure_ = error;
     throw std::runtime_error(error);
