@@ -88,14 +88,31 @@ class ContactInterface final : public ContactInterfaceBase {
     position(spec_.slaveNodes[k], x.data());
     return x;
   }
-  /// The element of slave node k at `xs` on master facet `facet` against the committed history on it.
+  /// The element of slave node k at `xs` on master facet `facet` against the committed history on it, at
+  /// the point the selection chose (its projection, or a vertex or edge of the facet).
   NodeToFacetResult<Facet> evaluateElement(std::size_t k, const Point& xs, const MasterFacetNodes<Facet>& facet,
+                                           const FacetSelection<Facet>& selection,
                                            const ContactHistory<kXi>& committed,
                                            SlipTangent tangent = SlipTangent::consistent()) const {
     NodeToFacetGeometry<Facet> geometry;
     geometry.slave = xs;
     geometry.master = facet.x;
-    return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent);
+    return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent,
+                             contactPointOf(selection, facet));
+  }
+  /// The selection's contact point in the facet's local node numbers.
+  static ContactPoint contactPointOf(const FacetSelection<Facet>& selection, const MasterFacetNodes<Facet>& facet) {
+    const auto local = [&](int node) {
+      for (int a = 0; a < Facet::kNodes; ++a)
+        if (facet.nodes[a] == node) return a;
+      throw std::logic_error("ContactInterface: the selected vertex or edge is not on the selected facet");
+    };
+    const double side = selection.gap < 0.0 ? -1.0 : 1.0;
+    switch (selection.kind) {
+      case SelectionKind::AtVertex: return ContactPoint::vertex(local(selection.vertexNode), side);
+      case SelectionKind::AtEdge: return ContactPoint::edge(local(selection.edgeNodes[0]), local(selection.edgeNodes[1]), side);
+      default: return ContactPoint::projection();
+    }
   }
   /// Scales the element by the tributary area of slave node k and hands it to the sink; returns the
   /// scaled residual (its first kDim entries are minus the force on the slave node).
@@ -149,7 +166,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
     tree.query(xs, hits);
     candidates.clear();
     for (int h : hits) candidates.push_back(facets[h]);
-    const FacetSelection<Facet> selection = selector_.select(xs, candidates);
+    const FacetSelection<Facet> selection = selector_.select(xs, candidates, spec_.slaveFacetLengths[k]);
 
     SlaveNodeState out;
     out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
@@ -165,11 +182,11 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       const auto& facet = facets[selection.facet];
       // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
       // tangential stiffness (SlipReversalDamping); the residual is the same either way.
-      NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, committed);
+      NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, selection, committed);
       if (updateTrial) {
         damping_.observe(k, history_.trial(k), r.trial);
         const SlipTangent tangent = damping_.tangent(k);
-        if (tangent.secant) r = evaluateElement(k, xs, facet, committed, tangent);
+        if (tangent.secant) r = evaluateElement(k, xs, facet, selection, committed, tangent);
       }
       trial = r.trial;
       change = changeOf(k, out.gap, &r, committed);
@@ -315,13 +332,13 @@ std::vector<SlaveNodeChange> ContactInterface<Facet>::changesAt(const NodePositi
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
     const Point xs = slavePosition(position, k);
-    const FacetSelection<Facet> selection = selector_.select(xs, facets);
+    const FacetSelection<Facet> selection = selector_.select(xs, facets, spec_.slaveFacetLengths[k]);
     if (selection.kind == SelectionKind::None) {
       out.push_back(changeOf(k, std::numeric_limits<double>::infinity(), nullptr, history_.committed(k)));
       continue;
     }
     const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
-    const NodeToFacetResult<Facet> r = evaluateElement(k, xs, facets[selection.facet], committed);
+    const NodeToFacetResult<Facet> r = evaluateElement(k, xs, facets[selection.facet], selection, committed);
     out.push_back(changeOf(k, selection.gap, &r, committed));
   }
   return out;

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common/Error.hpp"
+#include "contact/BoundingBoxTree.hpp"
 #include "contact/MasterFacet.hpp"
 #include "contact/Projection.hpp"
 
@@ -136,6 +137,71 @@ void validateRigidSurface(const RigidSurface& surface, int dimension, const std:
                            "ordered around it)");
     }
   }
+}
+
+namespace {
+
+template <class Facet>
+void checkFacing(const RigidSurface& surface, const mesh::ReplicatedSurface& slave, const std::string& where) {
+  using Point = typename Facet::Point;
+  constexpr int n = Facet::kNodes, dim = Facet::kSpaceDim;
+  constexpr double kCos60 = 0.5;
+  // The rigid facets at λ = 0, each with a box enlarged by its size: the slave faces near it.
+  const std::size_t numFacets = surface.facets.size() / n;
+  std::vector<std::array<Point, n>> rigid(numFacets);
+  std::vector<BoundingBox<dim>> boxes(numFacets);
+  std::vector<double> sizes(numFacets, 0.0);
+  for (std::size_t f = 0; f < numFacets; ++f) {
+    for (int a = 0; a < n; ++a) {
+      for (int c = 0; c < dim; ++c) rigid[f][a][c] = surface.points[surface.facets[f * n + a] * dim + c];
+      boxes[f].include(rigid[f][a]);
+    }
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) sizes[f] = std::max(sizes[f], norm(subtract(rigid[f][b], rigid[f][a])));
+    boxes[f].enlarge(sizes[f]);
+  }
+  const BoundingBoxTree<dim> tree(std::move(boxes));
+  std::vector<int> facing(numFacets, 0), backwards(numFacets, 0), hits;
+  const Projection<Facet> projection;
+  for (std::size_t i = 0; i < slave.elements.size(); ++i) {
+    std::array<Point, n> x{};
+    for (int a = 0; a < n; ++a) {
+      const auto at = static_cast<std::size_t>(
+          std::lower_bound(slave.nodes.begin(), slave.nodes.end(), slave.facetNodes[i * n + a]) - slave.nodes.begin());
+      for (int c = 0; c < dim; ++c) x[a][c] = slave.coordinates[at * dim + c];
+    }
+    // The slave face's centre and outward normal (the side orderings make the facet normal outward).
+    const auto centre = Projection<Facet>::evaluateAt(Point{}, x, Facet::center());
+    if (!(determinant(centre.metric) > 0.0)) continue;
+    hits.clear();
+    tree.query(centre.position, hits);
+    for (int f : hits) {
+      const auto p = projection.project(centre.position, rigid[f]);
+      if (!p.converged || !p.isInside(1e-8) || std::abs(p.gap) > sizes[f]) continue;
+      const double tolerance = 1e-8 * sizes[f];
+      const double turned = dot(centre.normal, p.normal);
+      if (turned < -kCos60 && p.gap >= -tolerance) ++facing[f];
+      if (turned > kCos60 && p.gap <= tolerance) ++backwards[f];
+    }
+  }
+  for (std::size_t f = 0; f < numFacets; ++f)
+    requireInput(!(backwards[f] > 0 && facing[f] == 0),
+                 where + "/Facets: facet " + std::to_string(f + 1) + " faces away from the slave side set '" +
+                     slave.name + "' (its normal points into the slave body: " + std::to_string(backwards[f]) +
+                     " slave faces lie behind it, none in front); list its points in the opposite order (" +
+                     (dim == 2 ? "the rigid body on the left of the direction point 1 -> point 2"
+                               : "counter-clockwise seen from the slave body") +
+                     ")");
+}
+
+}  // namespace
+
+void checkRigidSurfaceFacesSlave(const RigidSurface& surface, const mesh::ReplicatedSurface& slave,
+                                 const std::string& where) {
+  if (slave.dimension == 2)
+    checkFacing<Line2Facet>(surface, slave, where);
+  else
+    checkFacing<Quad4Facet>(surface, slave, where);
 }
 
 }  // namespace contessa::contact

@@ -37,4 +37,14 @@ struct ContactSurface {
 /// spaceDim values.
 void validateRigidSurface(const RigidSurface& surface, int dimension, const std::string& where);
 
+/// Checks that each facet of a rigid master surface faces the slave body (its normal, MasterFacet.hpp,
+/// points out of the rigid body, towards the slave) in the reference configuration: one-line InputError
+/// naming `where`/Facets and the facet when a facet has slave faces behind it turned the same way as it
+/// (normals within 60°, gap ≤ 0: the slave body lies on the facet's outer side, as it does when the facet's
+/// points are listed clockwise) and none in front of it turned towards it. Only slave faces whose centre
+/// projects inside the facet and lies within a facet size of it count; a facet with none is not judged.
+/// Without this check such a facet simply never touched the slave: a run to the end with zero force.
+void checkRigidSurfaceFacesSlave(const RigidSurface& surface, const mesh::ReplicatedSurface& slave,
+                                 const std::string& where);
+
 }  // namespace contessa::contact

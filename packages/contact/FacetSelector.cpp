@@ -19,10 +19,29 @@ void considerOnFacet(const ProjectionResult<Facet>& p, int facet, FacetSelection
   best.kind = SelectionKind::OnFacet;
   best.facet = facet;
   best.vertexNode = -1;
+  best.edgeNodes = {-1, -1};
   best.projection = p;
   best.gap = p.gap;
   best.normal = p.normal;
   best.closestPoint = p.position;
+}
+
+/// How far the projection x̄(ξ̄) lies beyond the facet, on its extension: the distance to x̄ at ξ̄ clamped to
+/// the parent domain (0 inside).
+template <class Facet>
+double distanceBeyond(const ProjectionResult<Facet>& p, const std::array<typename Facet::Point, Facet::kNodes>& x) {
+  typename Facet::SurfaceCoords clamped = p.xi;
+  for (auto& xi : clamped) xi = std::clamp(xi, -1.0, 1.0);
+  if (clamped == p.xi) return 0.0;
+  return norm(subtract(p.position, Projection<Facet>::evaluateAt(typename Facet::Point{}, x, clamped).position));
+}
+
+/// A penetrating node past a free boundary of the master surface that stays in contact with the boundary
+/// facet (FacetSelectorOptions::freeEdgeTolerance): past it by at most `reach`.
+template <class Facet>
+bool withinFreeEdgeReach(const ProjectionResult<Facet>& p, const std::array<typename Facet::Point, Facet::kNodes>& x,
+                         double reach) {
+  return p.converged && p.isPenetrating() && distanceBeyond(p, x) <= reach;
 }
 
 }  // namespace
@@ -31,7 +50,8 @@ void considerOnFacet(const ProjectionResult<Facet>& p, int facet, FacetSelection
 
 template <>
 FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
-    const Line2Facet::Point& slave, const std::vector<MasterFacetNodes<Line2Facet>>& candidates) const {
+    const Line2Facet::Point& slave, const std::vector<MasterFacetNodes<Line2Facet>>& candidates,
+    double slaveSize) const {
   const Projection<Line2Facet> projection(options_.projection);
   std::vector<ProjectionResult<Line2Facet>> projected;
   projected.reserve(candidates.size());
@@ -45,7 +65,17 @@ FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
     if (projected[c].converged && projected[c].isInside(options_.insideTolerance))
       considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
 
-  // 2. Corner regions: a vertex that is the clamped closest point of two candidate segments.
+  // 2. Corner regions: a vertex that is the clamped closest point of two candidate segments, unless a free
+  //    end of the surface is closer (the node is then past that end, as in 3D).
+  double freeEndDistance = std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+    for (int end = 0; end < 2; ++end) {
+      const int vertex = candidates[c].nodes[end];
+      bool shared = false;
+      for (std::size_t o = 0; o < candidates.size() && !shared; ++o)
+        shared = o != c && (candidates[o].nodes[0] == vertex || candidates[o].nodes[1] == vertex);
+      if (!shared) freeEndDistance = std::min(freeEndDistance, norm(subtract(slave, candidates[c].x[end])));
+    }
   for (std::size_t a = 0; a < candidates.size(); ++a) {
     const auto& pa = projected[a];
     if (!pa.converged || pa.isInside(options_.insideTolerance)) continue;
@@ -61,6 +91,7 @@ FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
       const Vector<2> d = subtract(slave, xv);
       const double distance = norm(d);
       if (!(distance < bestDistance)) continue;  // ties go to the inside projection
+      if (!(distance <= freeEndDistance)) continue;  // past a free end: not this corner
       // Sign of the gap from the averaged outward normal of the two segments (eq. 5 on each).
       const Vector<2> averaged = add(pa.normal, pb.normal);
       const double side = dot(d, averaged) >= 0.0 ? 1.0 : -1.0;
@@ -78,10 +109,10 @@ FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
 
   // 3. A penetrating node just past a free end of the master surface (a flush edge: the end segment
   //    tilts as it deforms, so a node sitting on the edge projects a little outside): it stays in
-  //    contact with that segment, extended by at most freeEndTolerance in ξ.
+  //    contact with that segment, extended, while it is past the end by at most freeEdgeTolerance × L_k.
   if (best.kind == SelectionKind::None)
     for (std::size_t c = 0; c < candidates.size(); ++c)
-      if (projected[c].converged && projected[c].isPenetrating() && projected[c].isInside(options_.freeEndTolerance))
+      if (withinFreeEdgeReach(projected[c], candidates[c].x, options_.freeEdgeTolerance * slaveSize))
         considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
 
   // 4. Nothing inside and no corner: the node has left the master surface.
@@ -154,7 +185,8 @@ double areaJacobian(const std::array<Quad4Facet::Point, 4>& x, const Quad4Facet:
 
 template <>
 FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::Point& slave,
-                                                             const std::vector<QuadNodes>& candidates) const {
+                                                             const std::vector<QuadNodes>& candidates,
+                                                             double slaveSize) const {
   using Point = Quad4Facet::Point;
   constexpr int kNodes = Quad4Facet::kNodes;
   const Projection<Quad4Facet> projection(options_.projection);
@@ -176,7 +208,11 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
   for (std::size_t c = 0; c < n; ++c)
     if (inside[c]) considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
 
-  // 2. Interior edges and vertices: the closest point of each outside face's boundary.
+  // 2. Interior edges and vertices: the closest point of each outside face's boundary. A point of the free
+  //    boundary (a free edge, a vertex of an open fan) closer than the chosen interior point means the node
+  //    is past the surface's free boundary: the interior point is not the surface's closest point then (a
+  //    node beside a split punch was held by the punch's interior edge 36 mm away).
+  double freeBoundaryDistance = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < n; ++c) {
     if (inside[c]) continue;
     const QuadNodes& face = candidates[c];
@@ -193,7 +229,10 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
       const Point d = subtract(slave, point);
       const double distance = norm(d);
       if (!(distance < bestDistance)) continue;  // ties go to the inside projection / the first point
-      if (atVertex && !interiorVertex(candidates, vertex)) continue;
+      if (atVertex && !interiorVertex(candidates, vertex)) {
+        freeBoundaryDistance = std::min(freeBoundaryDistance, distance);
+        continue;
+      }
       // The faces holding the point, and their unit normals there (eq. 5).
       std::vector<std::size_t> holders;
       std::vector<Point> normals;
@@ -215,7 +254,10 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
         normals.push_back(at.normal);
         averaged = add(averaged, at.normal);
       }
-      if (holders.size() < 2) continue;  // a free edge (or a vertex held by one face)
+      if (holders.size() < 2) {  // a free edge (or a vertex held by one face)
+        freeBoundaryDistance = std::min(freeBoundaryDistance, distance);
+        continue;
+      }
       const double side = dot(d, averaged) >= 0.0 ? 1.0 : -1.0;
       // The face whose normal best matches the signed direction point → node.
       std::size_t chosen = 0;
@@ -232,6 +274,7 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
       best.kind = atVertex ? SelectionKind::AtVertex : SelectionKind::AtEdge;
       best.facet = candidates[holders[chosen]].id;
       best.vertexNode = atVertex ? vertex : -1;
+      best.edgeNodes = atVertex ? std::array<int, 2>{-1, -1} : std::array<int, 2>{face.nodes[i], face.nodes[j]};
       best.projection = projected[holders[chosen]];
       best.gap = side * distance;
       best.normal = distance > 0.0 ? scaled(side / distance, d)
@@ -240,10 +283,16 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
     }
   }
 
+  if ((best.kind == SelectionKind::AtEdge || best.kind == SelectionKind::AtVertex) &&
+      freeBoundaryDistance < bestDistance) {
+    best = FacetSelection<Quad4Facet>{};
+    bestDistance = std::numeric_limits<double>::infinity();
+  }
+
   // 3. A penetrating node just past a free boundary: it stays on the boundary face, extended.
   if (best.kind == SelectionKind::None)
     for (std::size_t c = 0; c < n; ++c)
-      if (regular[c] && projected[c].isPenetrating() && projected[c].isInside(options_.freeEndTolerance))
+      if (regular[c] && withinFreeEdgeReach(projected[c], candidates[c].x, options_.freeEdgeTolerance * slaveSize))
         considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
 
   // 4. Nothing inside and no interior edge or vertex: the node has left the master surface.

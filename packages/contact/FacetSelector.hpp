@@ -21,6 +21,7 @@ struct FacetSelection {
   SelectionKind kind = SelectionKind::None;
   int facet = -1;       ///< facet on which the node-to-facet element is evaluated
   int vertexNode = -1;  ///< AtVertex: the global node id of the vertex
+  std::array<int, 2> edgeNodes{-1, -1};  ///< AtEdge: the global node ids of the edge's ends
   ProjectionResult<Facet> projection{};  ///< projection on `facet`, unclamped
   double gap = 0.0;                  ///< signed distance to the closest point, eq. (4)
   typename Facet::Point normal{};    ///< unit normal at the closest point, g_N = (x^k − closest point)·normal
@@ -36,9 +37,16 @@ struct FacetSelectorOptions {
   /// and "at edge/vertex".
   double insideTolerance = 1e-8;
   /// A PENETRATING node past a free boundary of the master surface stays on the boundary facet while its
-  /// ξ̄ lies within freeEndTolerance of the parent domain (0.1: 5 % of the facet size), so a slave node on
-  /// a flush edge is not dropped when the boundary facet tilts under load.
-  double freeEndTolerance = 0.1;
+  /// distance beyond that boundary, measured on the facet's extension (‖x̄(ξ̄) − x̄(clamped ξ̄)‖), is at most
+  /// freeEdgeTolerance × L_k, L_k being the size of the slave facets at the node (the `slaveSize` given to
+  /// select). So a slave node on a flush edge (the 2D patch test's free ends: both bodies expand alike and
+  /// the node drifts past the end by round-off, or by |g_N| tan θ when the end facet tilts by θ) keeps its
+  /// contact, while a free-surface node beside a punch is not in contact however large the punch's facet
+  /// is: the rule is a length of the slave mesh, not a fraction of the master facet (issue 22; the former
+  /// 0.1 in ξ kept a row 1.11 mm past a 70 mm punch face). It does not depend on the penetration either:
+  /// a rule that did (past by less than |g_N|) let a node 0.11 mm past the edge switch between open and
+  /// closed from one Newton iterate to the next as its penetration changed, and the run stalled.
+  double freeEdgeTolerance = 1e-3;
   /// 3D: a projection on a face whose area Jacobian ‖ā_1 × ā_2‖ at ξ̄ is below this fraction of its value
   /// at the face centre (near the apex of a collapsed face) does not count as inside: the node is handed to
   /// a neighbour, or to the apex vertex.
@@ -60,7 +68,8 @@ struct FacetSelectorOptions {
 ///    wins over an inside projection only when strictly closer. The element is then evaluated on one facet
 ///    sharing the point (2D: the one whose projection overshoots least; 3D: the one whose normal best
 ///    matches x^k − x_p), i.e. on that facet extended;
-///  - a PENETRATING node just past a free boundary (within freeEndTolerance) stays on the boundary facet;
+///  - a PENETRATING node just past a free boundary (by at most freeEdgeTolerance × L_k) stays on the
+///    boundary facet, extended;
 ///  - otherwise the node has left the master surface: kind None, not in contact.
 /// The 3D rules for edges and vertices (which are interior, collapsed faces) are in FacetSelector.cpp.
 template <class Facet>
@@ -68,8 +77,9 @@ class FacetSelector {
  public:
   explicit FacetSelector(FacetSelectorOptions options = {}) : options_(options) {}
 
+  /// `slaveSize`: L_k, the size of the slave facets at the node (the free-edge rule's length; 0: none).
   FacetSelection<Facet> select(const typename Facet::Point& slave,
-                               const std::vector<MasterFacetNodes<Facet>>& candidates) const;
+                               const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize = 0.0) const;
 
   const FacetSelectorOptions& options() const { return options_; }
 
@@ -79,9 +89,11 @@ class FacetSelector {
 
 template <>
 FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(const Line2Facet::Point&,
-                                                             const std::vector<MasterFacetNodes<Line2Facet>>&) const;
+                                                             const std::vector<MasterFacetNodes<Line2Facet>>&,
+                                                             double) const;
 template <>
 FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::Point&,
-                                                             const std::vector<MasterFacetNodes<Quad4Facet>>&) const;
+                                                             const std::vector<MasterFacetNodes<Quad4Facet>>&,
+                                                             double) const;
 
 }  // namespace contessa::contact

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +43,262 @@ struct Operators {
   }
 };
 
+
+/// The facet at the node's projection ξ̄ (eq. 1–5) and the kinematic operators of eq. (26) with the exact
+/// first variations (NodeToFacetContact.hpp): what every term of the residual and tangent is built from.
+template <class Facet>
+struct FacetKinematics {
+  static constexpr int M = Facet::kSurfaceDim;
+  using Op = Operators<Facet>;
+  using Column = typename Op::Column;
+  using Weights = typename Op::Weights;
+  using Point = typename Facet::Point;
+
+  double gN = 0.0;                                 // the projection's g_N (the kinematics of ξ̄)
+  Point n{};                                       // n̄
+  std::array<Point, M> a{};                        // ā_α
+  Matrix<M, M> aInv{};                             // ā^αβ
+  Weights relative{};                              // [1, −H_i]: x^k − x̄ (eq. 26)
+  std::array<Weights, M> base{};                   // [0, H_i,α]: δā_α at fixed ξ
+  std::array<std::array<Weights, M>, M> curve{};   // [0, H_i,αβ]: δx̄,αβ
+  std::array<std::array<Point, M>, M> xbar2{};     // x̄,αβ = Σ H_i,αβ x_i
+  Matrix<M, M> b{};                                // b̄_αβ = x̄,αβ·n̄
+  Matrix<M, M> AInv{};                             // (A⁻¹)^αβ, A_αβ = ā_αβ − g_N b̄_αβ
+  std::array<std::array<std::array<double, M>, M>, M> gamma{};  // Γ_αβγ = x̄,αβ·ā_γ
+  Column N{};                                      // ∂g_N/∂u at the projection
+  std::array<Column, M> Nbar{}, D{}, Xi{};         // N̄_α, D^α = ā^αβ T_β, Ξ^α = ∂ξ̄^α/∂u
+
+  /// False where the node sits at a focal point of the facet (A singular: no unique ξ̄).
+  bool build(const ProjectionResult<Facet>& p, const std::array<Point, Facet::kNodes>& master) {
+    gN = p.gap;
+    n = p.normal;
+    a = p.covariantBasis;
+    aInv = p.inverseMetric;
+    const auto dH = Facet::shapeDerivatives(p.xi);
+    const auto d2H = Facet::shapeSecondDerivatives(p.xi);
+    relative[0] = 1.0;
+    for (int i = 0; i < Facet::kNodes; ++i) {
+      relative[1 + i] = -p.shape[i];
+      for (int al = 0; al < M; ++al) {
+        base[al][1 + i] = dH(i, al);
+        for (int be = 0; be < M; ++be) {
+          curve[al][be][1 + i] = d2H[i](al, be);
+          addScaled(xbar2[al][be], d2H[i](al, be), master[i]);
+        }
+      }
+    }
+    Matrix<M, M> A;
+    for (int al = 0; al < M; ++al)
+      for (int be = 0; be < M; ++be) {
+        b(al, be) = dot(xbar2[al][be], n);
+        A(al, be) = p.metric(al, be) - gN * b(al, be);
+        for (int ga = 0; ga < M; ++ga) gamma[al][be][ga] = dot(xbar2[al][be], a[ga]);
+      }
+    if (!(determinant(A) > 0.0)) return false;
+    AInv = inverse(A);
+    N = Op::kron(relative, n);
+    std::array<Column, M> T{};
+    for (int al = 0; al < M; ++al) {
+      T[al] = Op::kron(relative, a[al]);
+      Nbar[al] = Op::kron(base[al], n);
+    }
+    for (int al = 0; al < M; ++al)
+      for (int be = 0; be < M; ++be) {
+        addScaled(D[al], aInv(al, be), T[be]);                      // D^α = ā^αβ T_β
+        addScaled(Xi[al], AInv(al, be), T[be]);                     // Ξ^α = (A⁻¹)^αβ (T_β + g_N N̄_β)
+        addScaled(Xi[al], AInv(al, be) * gN, Nbar[be]);
+      }
+    return true;
+  }
+
+  /// Tangent term (a) at the projection: t_N ∂²g_N/∂u², from δg_N = n̄·(δx^k − H_i δx_i) with
+  /// δn̄ = −(n̄·δā_α) ā^α and δH_i = H_i,β δξ^β; with M_α = N̄_α + b̄_αβ Ξ^β (total variation of n̄·ā_α):
+  ///   ∂²g_N/∂u² = −(Ξ^α N̄_αᵀ + N̄_α Ξ^αᵀ) − b̄_αβ Ξ^α Ξ^βᵀ + g_N ā^αβ M_α M_βᵀ    (symmetric)
+  void addGapCurvature(typename Op::Square& K, double tN) const {
+    std::array<Column, M> Mv = Nbar;
+    for (int al = 0; al < M; ++al)
+      for (int be = 0; be < M; ++be) addScaled(Mv[al], b(al, be), Xi[be]);
+    for (int al = 0; al < M; ++al) {
+      Op::addSymmetricOuter(K, -tN, Xi[al], Nbar[al]);
+      for (int be = 0; be < M; ++be) {
+        addOuter(K, -tN * b(al, be), Xi[al], Xi[be]);
+        addOuter(K, tN * gN * aInv(al, be), Mv[al], Mv[be]);
+      }
+    }
+  }
+};
+
+/// The normal part at a vertex or edge point x_b of the facet (ContactPoint): g_N = ±‖x^k − x_b‖, its
+/// operator N_b and curvature (NodeToFacetContact.hpp).
+template <class Facet>
+struct BoundaryPointKinematics {
+  using Op = Operators<Facet>;
+  using Column = typename Op::Column;
+  using Weights = typename Op::Weights;
+  using Point = typename Facet::Point;
+
+  double gap = 0.0;
+  Column N{};           // ∂g_N/∂u = [n̄_b; −h_i n̄_b]
+  Weights relative{};   // r = [1, −h_i]
+  Column edgeMotion{};  // F = ∂(d·e)/∂u on an edge (zero at a vertex)
+  double edgeLength2 = 0.0;
+
+  BoundaryPointKinematics(const ContactPoint& point, const Point& slave, const std::array<Point, Facet::kNodes>& x,
+                          const Point& fallbackNormal) {
+    const int i = point.nodes[0];
+    relative[0] = 1.0;
+    Point xb = x[i];
+    Point e{};
+    double t = 0.0;
+    if (point.kind == ContactPoint::Kind::Edge) {
+      const int j = point.nodes[1];
+      e = subtract(x[j], x[i]);
+      edgeLength2 = dot(e, e);
+      t = std::clamp(dot(subtract(slave, x[i]), e) / edgeLength2, 0.0, 1.0);
+      xb = add(x[i], scaled(t, e));
+      relative[1 + j] = -t;
+    }
+    relative[1 + i] = -(1.0 - t);
+    const Point d = subtract(slave, xb);
+    const double distance = norm(d);
+    gap = point.side * distance;
+    const Point n = distance > 0.0 ? scaled(point.side / distance, d) : fallbackNormal;
+    N = Op::kron(relative, n);
+    if (point.kind == ContactPoint::Kind::Edge) {
+      Weights along{};
+      along[1 + i] = -1.0;
+      along[1 + point.nodes[1]] = 1.0;
+      edgeMotion = add(Op::kron(relative, e), Op::kron(along, d));
+    }
+  }
+
+  /// t_N ∂²g_N/∂u² = (t_N/g_N) [(r ⊗ I)ᵀ(r ⊗ I) − N_b N_bᵀ − F Fᵀ/‖e‖²].
+  void addGapCurvature(typename Op::Square& K, double tN) const {
+    if (gap == 0.0) return;
+    const double s = tN / gap;
+    Op::addBlockOuter(K, s, relative, relative);
+    addOuter(K, -s, N, N);
+    if (edgeLength2 > 0.0) addOuter(K, -s / edgeLength2, edgeMotion, edgeMotion);
+  }
+};
+
+/// The tangential traction t_Tα of the contact law and its partial derivatives (all zero without friction
+/// and at a first contact).
+template <int M>
+struct TangentialLaw {
+  Vector<M> traction{};
+  Matrix<M, M> dT_dXi{};                 // ∂t_α/∂Δξ^β
+  std::array<Matrix<M, M>, M> dT_dMetric{};  // ∂t_α/∂ā_βγ
+  Vector<M> dT_dNormal{};                // ∂t_α/∂t_N
+};
+
+/// The Coulomb law at the projection ξ̄: the return mapping of eq. (20)–(23) against the committed history;
+/// sets the status, tractions and trial history of `out`.
+template <class Facet, class Result>
+TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters& parameters,
+                                                     const CoulombReturnMapping<Facet::kSurfaceDim>& returnMapping,
+                                                     const ProjectionResult<Facet>& p,
+                                                     const ContactHistory<Facet::kSurfaceDim>& committed, double tN,
+                                                     double facetLength, SlipTangent slipTangent, Result& out) {
+  constexpr int M = Facet::kSurfaceDim;
+  TangentialLaw<M> law;
+  if (parameters.isFrictionless()) {
+    out.status = ContactStatus::Slip;  // free sliding, t_T ≡ 0
+  } else if (!committed.isInContact()) {
+    // First contact: ξ_n := ξ̄, t_T,n := 0, so Δξ ≡ 0 and t_T ≡ 0 in this increment (see header).
+    out.status = ContactStatus::Stick;
+  } else {
+    ReturnMappingInput<M> in;
+    in.committedTraction = committed.tangentialTraction;
+    in.slipIncrement = subtract(p.xi, committed.xi);  // Δξ_{n+1}, eq. (20)
+    in.metric = p.metric;
+    in.normalTraction = tN;
+    in.facetLength = facetLength;
+    out.friction = returnMapping.map(in);  // eq. (20)–(23)
+    out.status = out.friction.status;
+    law.traction = out.friction.traction;
+    law.dT_dXi = out.friction.dTraction_dSlipIncrement;
+    if (out.status == ContactStatus::Slip && slipTangent.secant) {
+      // A node in a slip cycle: the secant stiffness along its slip direction (see SlipTangent).
+      Vector<M> s = out.friction.trialDirection;
+      s = scaled(1.0 / norm(s), s);
+      const double stick = out.friction.tangentialPenalty * dot(s, multiply(p.metric, s));
+      const double along = dot(s, multiply(law.dT_dXi, s));
+      addOuter(law.dT_dXi, std::min(slipTangent.stiffness, stick) - along, s, s);
+    }
+    law.dT_dMetric = out.friction.dTraction_dMetric;
+    law.dT_dNormal = out.friction.dTraction_dNormalTraction;
+    // eq. (7), backward Euler: g_T,n+1 = g_T,n + √(Δξ^α ā_αβ Δξ^β); committed only at commit().
+    out.trial.accumulatedSlip =
+        committed.accumulatedSlip + std::sqrt(dot(in.slipIncrement, multiply(p.metric, in.slipIncrement)));
+  }
+  out.tangentialTraction = law.traction;
+  out.trial.tangentialTraction = law.traction;
+  out.trial.status = out.status;
+  return law;
+}
+
+/// Tangent term (b): Ξ^α (dt_Tα/du)ᵀ with the exact variation of the traction:
+///   dt_α = ∂t_α/∂Δξ^β Ξ^β + ∂t_α/∂ā_βγ dā_βγ + ∂t_α/∂t_N ε_N N,
+///   dā_βγ = [0, H_i,β] ⊗ ā_γ + [0, H_i,γ] ⊗ ā_β + (Γ_βεγ + Γ_γεβ) Ξ^ε     (Γ_αβγ = x̄,αβ·ā_γ)
+/// (the stretch term makes even the stick tangent slightly non-symmetric when Δξ ≠ 0: the covariant
+///  t_T,n is held fixed while the facet stretches). N is the contact law's ∂g_N/∂u.
+template <class Facet>
+void addTractionVariation(typename Operators<Facet>::Square& K, const FacetKinematics<Facet>& k,
+                          const TangentialLaw<Facet::kSurfaceDim>& law, const typename Operators<Facet>::Column& N,
+                          double epsN) {
+  constexpr int M = Facet::kSurfaceDim;
+  using Op = Operators<Facet>;
+  using Column = typename Op::Column;
+  std::array<std::array<Column, M>, M> dMetric{};
+  for (int be = 0; be < M; ++be)
+    for (int ga = 0; ga < M; ++ga) {
+      dMetric[be][ga] = add(Op::kron(k.base[be], k.a[ga]), Op::kron(k.base[ga], k.a[be]));
+      for (int ep = 0; ep < M; ++ep) addScaled(dMetric[be][ga], k.gamma[be][ep][ga] + k.gamma[ga][ep][be], k.Xi[ep]);
+    }
+  for (int al = 0; al < M; ++al) {
+    Column dt = scaled(law.dT_dNormal[al] * epsN, N);
+    for (int be = 0; be < M; ++be) {
+      addScaled(dt, law.dT_dXi(al, be), k.Xi[be]);
+      for (int ga = 0; ga < M; ++ga) addScaled(dt, law.dT_dMetric[al](be, ga), dMetric[be][ga]);
+    }
+    addOuter(K, 1.0, k.Xi[al], dt);
+  }
+}
+
+/// Tangent term (c): t_Tβ ∂²ξ̄^β/∂u². ξ̄(u) solves F_α(u, ξ) = (x^k − x̄)·ā_α = 0 with ∂F_α/∂ξ^β = −A_αβ, so
+///   ∂²ξ̄^β/∂u² = (A⁻¹)^βα [F_α,uu + F_α,uξ^γ Ξ^γᵀ + Ξ^γ F_α,uξ^γᵀ + F_α,ξ^γξ^δ Ξ^γ Ξ^δᵀ]
+/// with (x̄,αβγ = 0 for the multilinear facets of MasterFacet.hpp)
+///   F_α,uu      = ([1, −H_i] ⊗ I)ᵀ([0, H_i,α] ⊗ I) + transpose
+///   F_α,uξ^γ    = −[0, H_i,γ] ⊗ ā_α − [0, H_i,α] ⊗ ā_γ + [1, −H_i] ⊗ x̄,αγ + g_N [0, H_i,αγ] ⊗ n̄
+///   F_α,ξ^γξ^δ  = −(Γ_γδα + Γ_αδγ + Γ_αγδ)
+/// contracted with t_Tβ: weights w_α = t_Tβ (A⁻¹)^βα.
+template <class Facet>
+void addProjectionCurvature(typename Operators<Facet>::Square& K, const FacetKinematics<Facet>& k,
+                            const Vector<Facet::kSurfaceDim>& tT) {
+  constexpr int M = Facet::kSurfaceDim;
+  using Op = Operators<Facet>;
+  using Column = typename Op::Column;
+  if (tT == Vector<M>{}) return;
+  const Vector<M> w = multiply(transpose(k.AInv), tT);
+  for (int al = 0; al < M; ++al) {
+    if (w[al] == 0.0) continue;
+    Op::addBlockOuter(K, w[al], k.relative, k.base[al]);
+    Op::addBlockOuter(K, w[al], k.base[al], k.relative);
+    for (int ga = 0; ga < M; ++ga) {
+      Column fuxi = Op::kron(k.relative, k.xbar2[al][ga]);
+      addScaled(fuxi, -1.0, Op::kron(k.base[ga], k.a[al]));
+      addScaled(fuxi, -1.0, Op::kron(k.base[al], k.a[ga]));
+      addScaled(fuxi, k.gN, Op::kron(k.curve[al][ga], k.n));
+      Op::addSymmetricOuter(K, w[al], fuxi, k.Xi[ga]);
+      for (int de = 0; de < M; ++de) {
+        const double fxixi = -(k.gamma[ga][de][al] + k.gamma[al][de][ga] + k.gamma[al][ga][de]);
+        addOuter(K, w[al] * fxixi, k.Xi[ga], k.Xi[de]);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 template <class Facet>
@@ -56,12 +313,10 @@ NodeToFacetContact<Facet>::NodeToFacetContact(const ContactLawParameters& parame
 template <class Facet>
 typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
     const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed, double facetLength,
-    SlipTangent slipTangent) const {
+    SlipTangent slipTangent, const ContactPoint& point) const {
   constexpr int M = kSurfaceDim;
   using Op = Operators<Facet>;
   using Column = typename Op::Column;
-  using Weights = typename Op::Weights;
-  using Point = typename Facet::Point;
 
   if (committed.isInContact() && committed.segment != facet)
     throw std::logic_error("NodeToFacetContact: committed history is on facet " + std::to_string(committed.segment) +
@@ -76,103 +331,32 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
   out.trial.xi = p.xi;
   out.trial.tangentialTraction = {};
   out.trial.status = ContactStatus::Open;
-  if (!p.converged || !normalLaw_.isActive(p.gap)) return out;  // eq. (6): open, no force, no stiffness
-
-  // ---- Surface geometry at ξ̄ --------------------------------------------------------------------------
-  const double gN = p.gap;
-  const Point& n = p.normal;
-  const auto& a = p.covariantBasis;        // ā_α
-  const auto& aInv = p.inverseMetric;      // ā^αβ
-  const auto dH = Facet::shapeDerivatives(p.xi);
-  const auto d2H = Facet::shapeSecondDerivatives(p.xi);
-  Weights relative{};                              // [1, −H_i]: x^k − x̄ (eq. 26)
-  std::array<Weights, M> base{};                   // [0, H_i,α]: δā_α at fixed ξ
-  std::array<std::array<Weights, M>, M> curve{};   // [0, H_i,αβ]: δx̄,αβ
-  std::array<std::array<Point, M>, M> xbar2{};     // x̄,αβ = Σ H_i,αβ x_i
-  relative[0] = 1.0;
-  for (int i = 0; i < Facet::kNodes; ++i) {
-    relative[1 + i] = -p.shape[i];
-    for (int al = 0; al < M; ++al) {
-      base[al][1 + i] = dH(i, al);
-      for (int be = 0; be < M; ++be) {
-        curve[al][be][1 + i] = d2H[i](al, be);
-        addScaled(xbar2[al][be], d2H[i](al, be), x.master[i]);
-      }
-    }
+  out.gap = p.gap;
+  if (!p.converged) return out;
+  // The normal part: at the projection, or at a vertex or edge point of the facet (ContactPoint).
+  std::optional<BoundaryPointKinematics<Facet>> boundary;
+  if (point.kind != ContactPoint::Kind::Projection) {
+    boundary.emplace(point, x.slave, x.master, p.normal);
+    out.gap = boundary->gap;
   }
-  Matrix<M, M> b;      // b̄_αβ = x̄,αβ·n̄
-  Matrix<M, M> A;      // A_αβ = ā_αβ − g_N b̄_αβ
-  std::array<std::array<std::array<double, M>, M>, M> gamma{};  // Γ_αβγ = x̄,αβ·ā_γ
-  for (int al = 0; al < M; ++al)
-    for (int be = 0; be < M; ++be) {
-      b(al, be) = dot(xbar2[al][be], n);
-      A(al, be) = p.metric(al, be) - gN * b(al, be);
-      for (int ga = 0; ga < M; ++ga) gamma[al][be][ga] = dot(xbar2[al][be], a[ga]);
-    }
-  if (!(determinant(A) > 0.0)) return out;  // the node sits at a focal point of the facet: no unique ξ̄
-  const Matrix<M, M> AInv = inverse(A);
+  if (!normalLaw_.isActive(out.gap)) return out;  // eq. (6): open, no force, no stiffness
 
-  // ---- Kinematic operators, eq. (26) and the exact first variations --------------------------------
-  const Column N = Op::kron(relative, n);  // ∂g_N/∂u
-  std::array<Column, M> T{}, Nbar{}, D{}, Xi{};
-  for (int al = 0; al < M; ++al) {
-    T[al] = Op::kron(relative, a[al]);
-    Nbar[al] = Op::kron(base[al], n);
-  }
-  for (int al = 0; al < M; ++al)
-    for (int be = 0; be < M; ++be) {
-      addScaled(D[al], aInv(al, be), T[be]);                      // D^α = ā^αβ T_β
-      addScaled(Xi[al], AInv(al, be), T[be]);                     // Ξ^α = (A⁻¹)^αβ (T_β + g_N N̄_β)
-      addScaled(Xi[al], AInv(al, be) * gN, Nbar[be]);
-    }
+  FacetKinematics<Facet> facetKinematics;
+  if (!facetKinematics.build(p, x.master)) return out;  // the node sits at a focal point of the facet
+  const auto& k = facetKinematics;
+  const Column& N = boundary ? boundary->N : k.N;  // ∂g_N/∂u of the contact law's gap
 
-  // ---- Contact law --------------------------------------------------------------------------------
-  const double tN = normalLaw_.traction(gN);  // eq. (16), < 0
-  const double epsN = normalLaw_.tractionDerivative(gN);
+  // ---- Contact law: eq. (16), then the return mapping of eq. (20)–(23) ------------------------------
+  const double tN = normalLaw_.traction(out.gap);  // eq. (16), < 0
+  const double epsN = normalLaw_.tractionDerivative(out.gap);
   out.normalTraction = tN;
-
-  // Partial derivatives of t_Tα(Δξ, ā_βγ, t_N); all zero without friction and at a first contact.
-  Matrix<M, M> dT_dXi{};
-  std::array<Matrix<M, M>, M> dT_dMetric{};
-  Vector<M> dT_dNormal{};
-  Vector<M> tT{};
-  if (parameters_.isFrictionless()) {
-    out.status = ContactStatus::Slip;  // free sliding, t_T ≡ 0
-  } else if (!committed.isInContact()) {
-    // First contact: ξ_n := ξ̄, t_T,n := 0, so Δξ ≡ 0 and t_T ≡ 0 in this increment (see header).
-    out.status = ContactStatus::Stick;
-  } else {
-    ReturnMappingInput<M> in;
-    in.committedTraction = committed.tangentialTraction;
-    in.slipIncrement = subtract(p.xi, committed.xi);  // Δξ_{n+1}, eq. (20)
-    in.metric = p.metric;
-    in.normalTraction = tN;
-    in.facetLength = facetLength;
-    out.friction = returnMapping_.map(in);  // eq. (20)–(23)
-    out.status = out.friction.status;
-    tT = out.friction.traction;
-    dT_dXi = out.friction.dTraction_dSlipIncrement;
-    if (out.status == ContactStatus::Slip && slipTangent.secant) {
-      // A node in a slip cycle: the secant stiffness along its slip direction (see SlipTangent).
-      Vector<M> s = out.friction.trialDirection;
-      s = scaled(1.0 / norm(s), s);
-      const double stick = out.friction.tangentialPenalty * dot(s, multiply(p.metric, s));
-      const double along = dot(s, multiply(dT_dXi, s));
-      addOuter(dT_dXi, std::min(slipTangent.stiffness, stick) - along, s, s);
-    }
-    dT_dMetric = out.friction.dTraction_dMetric;
-    dT_dNormal = out.friction.dTraction_dNormalTraction;
-    // eq. (7), backward Euler: g_T,n+1 = g_T,n + √(Δξ^α ā_αβ Δξ^β); committed only at commit().
-    out.trial.accumulatedSlip =
-        committed.accumulatedSlip + std::sqrt(dot(in.slipIncrement, multiply(p.metric, in.slipIncrement)));
-  }
-  out.tangentialTraction = tT;
-  out.trial.tangentialTraction = tT;
-  out.trial.status = out.status;
+  const auto tangential =
+      applyTangentialLaw<Facet>(parameters_, returnMapping_, p, committed, tN, facetLength, slipTangent, out);
 
   // ---- Residual: r_c = t_N N + t_Tα Ξ^α --------------------------------------------------------------
+  const Vector<M>& tT = tangential.traction;
   out.residual = scaled(tN, N);
-  for (int al = 0; al < M; ++al) addScaled(out.residual, tT[al], Xi[al]);
+  for (int al = 0; al < M; ++al) addScaled(out.residual, tT[al], k.Xi[al]);
 
   auto& K = out.tangent;
   addOuter(K, epsN, N, N);  // eq. (24): K_N = ε_N N Nᵀ
@@ -182,74 +366,20 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
     // eq. (26): ∂t_α/∂t_N ε_N = −μ ε_N n^trial_α (t_N < 0; the paper counts the penetration positive) and
     // the eq. (27) term. With a slip tolerance the ∂t/∂t_N term also acts in stick (ε_T depends on t_N).
     for (int al = 0; al < M; ++al) {
-      Column dt = scaled(dT_dNormal[al] * epsN, N);
-      for (int be = 0; be < M; ++be) addScaled(dt, dT_dXi(al, be), D[be]);
-      addOuter(K, 1.0, D[al], dt);
+      Column dt = scaled(tangential.dT_dNormal[al] * epsN, N);
+      for (int be = 0; be < M; ++be) addScaled(dt, tangential.dT_dXi(al, be), k.D[be]);
+      addOuter(K, 1.0, k.D[al], dt);
     }
     return out;
   }
 
   // ---- Consistent tangent: K_c = ε_N N Nᵀ + t_N ∂²g_N/∂u² + Ξ^α (dt_Tα/du)ᵀ + t_Tα ∂²ξ̄^α/∂u² -------
-  // Total variation of n̄·ā_α (fixed-ξ part N̄_α plus the motion of ξ̄): M_α = N̄_α + b̄_αβ Ξ^β.
-  std::array<Column, M> Mv = Nbar;
-  for (int al = 0; al < M; ++al)
-    for (int be = 0; be < M; ++be) addScaled(Mv[al], b(al, be), Xi[be]);
-  // (a) t_N ∂²g_N/∂u², from δg_N = n̄·(δx^k − H_i δx_i) with δn̄ = −(n̄·δā_α) ā^α and δH_i = H_i,β δξ^β:
-  //       ∂²g_N/∂u² = −(Ξ^α N̄_αᵀ + N̄_α Ξ^αᵀ) − b̄_αβ Ξ^α Ξ^βᵀ + g_N ā^αβ M_α M_βᵀ    (symmetric)
-  for (int al = 0; al < M; ++al) {
-    Op::addSymmetricOuter(K, -tN, Xi[al], Nbar[al]);
-    for (int be = 0; be < M; ++be) {
-      addOuter(K, -tN * b(al, be), Xi[al], Xi[be]);
-      addOuter(K, tN * gN * aInv(al, be), Mv[al], Mv[be]);
-    }
-  }
-  // (b) Ξ^α (dt_Tα/du)ᵀ with the exact variation of the traction:
-  //       dt_α = ∂t_α/∂Δξ^β Ξ^β + ∂t_α/∂ā_βγ dā_βγ + ∂t_α/∂t_N ε_N N,
-  //       dā_βγ = [0, H_i,β] ⊗ ā_γ + [0, H_i,γ] ⊗ ā_β + (Γ_βεγ + Γ_γεβ) Ξ^ε     (Γ_αβγ = x̄,αβ·ā_γ)
-  // (the stretch term makes even the stick tangent slightly non-symmetric when Δξ ≠ 0: the covariant
-  //  t_T,n is held fixed while the facet stretches)
-  {
-    std::array<std::array<Column, M>, M> dMetric{};
-    for (int be = 0; be < M; ++be)
-      for (int ga = 0; ga < M; ++ga) {
-        dMetric[be][ga] = add(Op::kron(base[be], a[ga]), Op::kron(base[ga], a[be]));
-        for (int ep = 0; ep < M; ++ep) addScaled(dMetric[be][ga], gamma[be][ep][ga] + gamma[ga][ep][be], Xi[ep]);
-      }
-    for (int al = 0; al < M; ++al) {
-      Column dt = scaled(dT_dNormal[al] * epsN, N);
-      for (int be = 0; be < M; ++be) {
-        addScaled(dt, dT_dXi(al, be), Xi[be]);
-        for (int ga = 0; ga < M; ++ga) addScaled(dt, dT_dMetric[al](be, ga), dMetric[be][ga]);
-      }
-      addOuter(K, 1.0, Xi[al], dt);
-    }
-  }
-  // (c) t_Tβ ∂²ξ̄^β/∂u². ξ̄(u) solves F_α(u, ξ) = (x^k − x̄)·ā_α = 0 with ∂F_α/∂ξ^β = −A_αβ, so
-  //       ∂²ξ̄^β/∂u² = (A⁻¹)^βα [F_α,uu + F_α,uξ^γ Ξ^γᵀ + Ξ^γ F_α,uξ^γᵀ + F_α,ξ^γξ^δ Ξ^γ Ξ^δᵀ]
-  //     with (x̄,αβγ = 0 for the multilinear facets of MasterFacet.hpp)
-  //       F_α,uu      = ([1, −H_i] ⊗ I)ᵀ([0, H_i,α] ⊗ I) + transpose
-  //       F_α,uξ^γ    = −[0, H_i,γ] ⊗ ā_α − [0, H_i,α] ⊗ ā_γ + [1, −H_i] ⊗ x̄,αγ + g_N [0, H_i,αγ] ⊗ n̄
-  //       F_α,ξ^γξ^δ  = −(Γ_γδα + Γ_αδγ + Γ_αγδ)
-  //     contracted with t_Tβ: weights w_α = t_Tβ (A⁻¹)^βα.
-  if (tT != Vector<M>{}) {
-    const Vector<M> w = multiply(transpose(AInv), tT);
-    for (int al = 0; al < M; ++al) {
-      if (w[al] == 0.0) continue;
-      Op::addBlockOuter(K, w[al], relative, base[al]);
-      Op::addBlockOuter(K, w[al], base[al], relative);
-      for (int ga = 0; ga < M; ++ga) {
-        Column fuxi = Op::kron(relative, xbar2[al][ga]);
-        addScaled(fuxi, -1.0, Op::kron(base[ga], a[al]));
-        addScaled(fuxi, -1.0, Op::kron(base[al], a[ga]));
-        addScaled(fuxi, gN, Op::kron(curve[al][ga], n));
-        Op::addSymmetricOuter(K, w[al], fuxi, Xi[ga]);
-        for (int de = 0; de < M; ++de) {
-          const double fxixi = -(gamma[ga][de][al] + gamma[al][de][ga] + gamma[al][ga][de]);
-          addOuter(K, w[al] * fxixi, Xi[ga], Xi[de]);
-        }
-      }
-    }
-  }
+  if (boundary)
+    boundary->addGapCurvature(K, tN);  // (a) at the vertex or edge point
+  else
+    k.addGapCurvature(K, tN);          // (a) at the projection
+  addTractionVariation<Facet>(K, k, tangential, N, epsN);  // (b)
+  addProjectionCurvature<Facet>(K, k, tT);                 // (c)
   return out;
 }
 

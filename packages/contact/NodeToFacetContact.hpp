@@ -42,12 +42,32 @@ struct SlipTangent {
   static SlipTangent secantOf(double stiffness) { return {true, stiffness}; }
 };
 
+/// Where the slave node touches its facet (FacetSelection): at the closest point ξ̄ of eq. (1)–(3), or,
+/// when the node lies past the facet's boundary and the closest point of the master surface is a vertex
+/// or an edge point of it (a node under a valley or in a concave corner of the master; a node on a line
+/// of master nodes sits there), at that vertex or edge point x_b. The normal part of the contact then
+/// uses g_N = ±‖x^k − x_b‖ and n̄ = ±(x^k − x_b)/‖x^k − x_b‖ (docs/theory-contact.md §3 and §6.4), which
+/// join the neighbouring facets' gaps and normals continuously; evaluated on one facet extended instead,
+/// the force turned between the two facets' normals where the choice of facet flipped, and Newton cycled
+/// on a node at rest exactly on the line (issue 22).
+struct ContactPoint {
+  enum class Kind { Projection, Vertex, Edge };
+  Kind kind = Kind::Projection;
+  std::array<int, 2> nodes{-1, -1};  ///< Vertex: nodes[0]; Edge: its two nodes (local indices in the facet)
+  double side = 1.0;                 ///< sign of g_N: +1 in front of the master surface, −1 behind it
+
+  static ContactPoint projection() { return {}; }
+  static ContactPoint vertex(int node, double side) { return {Kind::Vertex, {node, -1}, side}; }
+  static ContactPoint edge(int a, int b, double side) { return {Kind::Edge, {a, b}, side}; }
+};
+
 template <class Facet>
 struct NodeToFacetResult {
   static constexpr int kSurfaceDim = Facet::kSurfaceDim;
   static constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
 
   ProjectionResult<Facet> projection{};        ///< ξ̄, ā_α, ā_αβ, n̄, g_N on the facet (unclamped)
+  double gap = 0.0;                            ///< g_N of the contact law: the projection's, or at the vertex/edge
   ContactStatus status = ContactStatus::Open;  ///< Open, Stick or Slip at this iterate
   double normalTraction = 0.0;                 ///< t_N = ε_N g_N, eq. (16)
   Vector<kSurfaceDim> tangentialTraction{};    ///< t_Tα, covariant, eq. (22)
@@ -86,6 +106,13 @@ struct NodeToFacetResult {
 /// total variation of ā_βγ and ε_N N. TangentTerms::PaperMainTerms keeps ε_N N Nᵀ + D^α (∂t_α/∂Δξ^β D^β +
 /// ∂t_α/∂t_N ε_N N)ᵀ only, which is eq. (24) + (25) in stick and (24) + (26) in slip.
 ///
+/// At a vertex or edge point x_b (ContactPoint), the normal part uses the operator N_b = [n̄_b; −h_i n̄_b]
+/// of the point's weights h_i (1 at the vertex; 1 − t and t on the edge x_i → x_j) and
+///   ∂²g_N/∂u² = (1/g_N) [ (r ⊗ I)ᵀ(r ⊗ I) − N_b N_bᵀ − F F ᵀ/‖e‖² ],   r = [1, −h_i],
+/// with, on an edge e = x_j − x_i, F = ∂(d·e)/∂u = r ⊗ e + [−1 at i, 1 at j] ⊗ d, d = x^k − x_b (the edge
+/// point moves along the edge as the node moves: the last term; none at a vertex). The tangential part
+/// stays that of the facet, at its projection ξ̄ on the facet's extension, with t_N from g_N at x_b.
+///
 /// History: the element reads the committed history of the node on THIS facet (after a facet change,
 /// first map it with transferHistory) and returns the trial history. A node whose committed status is
 /// Open is a first contact: its stick reference point is the current ξ̄ and it carries no tangential
@@ -103,8 +130,10 @@ class NodeToFacetContact {
   /// Residual, tangent and trial history for the current positions `x` on master facet `facet`.
   /// `facetLength` is L_k, the mean size of the slave facets at the node (reference configuration): the
   /// length the slip tolerance refers to (ε_T = μ|t_N|/(s L_k), ContactLawParameters); unused when s = 0.
+  /// `point`: where on the facet the node touches (the selector's choice; ContactPoint).
   Result evaluate(const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed,
-                  double facetLength = 0.0, SlipTangent slipTangent = SlipTangent::consistent()) const;
+                  double facetLength = 0.0, SlipTangent slipTangent = SlipTangent::consistent(),
+                  const ContactPoint& point = ContactPoint::projection()) const;
 
   const ContactLawParameters& parameters() const { return parameters_; }
 

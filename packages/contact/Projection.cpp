@@ -66,11 +66,20 @@ ProjectionResult<Facet> Projection<Facet>::evaluateAt(const Point& slave, const 
   p.xi = xi;
   p.shape = Facet::shapeFunctions(xi);
   const auto dH = Facet::shapeDerivatives(xi);
-  for (int i = 0; i < Facet::kNodes; ++i) {
-    addScaled(p.position, p.shape[i], master[i]);
+  // Positions relative to the facet's first node (Σ H_i = 1, Σ H_i,α = 0): x̄ = x_1 + Σ H_i (x_i − x_1),
+  // ā_α = Σ H_i,α (x_i − x_1), g_N = ((x^k − x_1) − Σ H_i (x_i − x_1))·n̄. In absolute coordinates Σ H_i
+  // is 1 only to round-off, so a slave node flush with a flat facet far from the origin got a gap of
+  // ±ulp(|x|) instead of 0, and a penalty of 1e8 turned that into a residual no Newton tolerance meets
+  // (a flush start at λ = 0, issue 22). Relative to x_1, a flat facet and a node in its plane give 0.
+  const Point& origin = master[0];
+  Point offset{};
+  for (int i = 1; i < Facet::kNodes; ++i) {
+    const Point relative = subtract(master[i], origin);
+    addScaled(offset, p.shape[i], relative);
     // eq. (2)–(3): ā_α = ∂x̄/∂ξ^α = Σ_i H_i,α x_i
-    for (int alpha = 0; alpha < nXi; ++alpha) addScaled(p.covariantBasis[alpha], dH(i, alpha), master[i]);
+    for (int alpha = 0; alpha < nXi; ++alpha) addScaled(p.covariantBasis[alpha], dH(i, alpha), relative);
   }
+  p.position = add(origin, offset);
   for (int alpha = 0; alpha < nXi; ++alpha)
     for (int beta = 0; beta < nXi; ++beta) p.metric(alpha, beta) = dot(p.covariantBasis[alpha], p.covariantBasis[beta]);
   if (determinant(p.metric) <= 0.0) return p;  // degenerate facet (zero length/area): no geometry, not converged
@@ -79,7 +88,7 @@ ProjectionResult<Facet> Projection<Facet>::evaluateAt(const Point& slave, const 
     for (int beta = 0; beta < nXi; ++beta)
       addScaled(p.contravariantBasis[alpha], p.inverseMetric(alpha, beta), p.covariantBasis[beta]);
   p.normal = Facet::unitNormal(p.covariantBasis);          // eq. (5)
-  p.gap = dot(subtract(slave, p.position), p.normal);      // eq. (4)
+  p.gap = dot(subtract(subtract(slave, origin), offset), p.normal);  // eq. (4)
   return p;
 }
 

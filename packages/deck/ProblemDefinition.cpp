@@ -144,8 +144,10 @@ using SurfaceCoordinates = std::map<GlobalIndex, std::vector<double>>;
 
 // A side set's contact surface, gathered from every rank's part (collective); its nodes' coordinates kept.
 contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const std::string& set,
-                                        const std::string& where, SurfaceCoordinates& coordinates) {
+                                        const std::string& where, SurfaceCoordinates& coordinates,
+                                        mesh::ReplicatedSurface* gathered = nullptr) {
   const mesh::ReplicatedSurface facets = mesh::gatherSurface(part, set);
+  if (gathered) *gathered = facets;
   const int dim = facets.dimension;
   for (std::size_t k = 0; k < facets.nodes.size(); ++k)
     coordinates[facets.nodes[k]].assign(facets.coordinates.begin() + static_cast<std::ptrdiff_t>(k * dim),
@@ -178,7 +180,8 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   requireInput(rigid != points.empty(),
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
-  const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates);
+  mesh::ReplicatedSurface slaveFacets;
+  const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, &slaveFacets);
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
   spec.slaveFacetLengths = slave.facetLengths;
@@ -193,6 +196,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
     if (mesh.dimension == 2 && surface.facets.empty())
       for (int i = 0; i + 1 < static_cast<int>(points.size() / 2); ++i) surface.facets.insert(surface.facets.end(), {i, i + 1});
     contact::validateRigidSurface(surface, mesh.dimension, where + "/Rigid Surface");
+    contact::checkRigidSurfaceFacesSlave(surface, slaveFacets, where + "/Rigid Surface");
     return {spec};
   }
   requireInput(facets.empty() && motion.empty(),

@@ -34,7 +34,8 @@ template <class Facet>
 Matrix<kDofs<Facet>, kDofs<Facet>> finiteDifferenceTangent(const NodeToFacetContact<Facet>& element,
                                                              const NodeToFacetGeometry<Facet>& g, int facet,
                                                              const ContactHistory<Facet::kSurfaceDim>& committed,
-                                                             double h, double facetLength = 0.0) {
+                                                             double h, double facetLength = 0.0,
+                                                             const ContactPoint& point = ContactPoint::projection()) {
   constexpr int n = kDofs<Facet>;
   Matrix<n, n> k;
   const auto x = toDofs(g);
@@ -43,8 +44,10 @@ Matrix<kDofs<Facet>, kDofs<Facet>> finiteDifferenceTangent(const NodeToFacetCont
     auto minus = x;
     plus[j] += h;
     minus[j] -= h;
-    const auto rp = element.evaluate(fromDofs<Facet>(plus), facet, committed, facetLength).residual;
-    const auto rm = element.evaluate(fromDofs<Facet>(minus), facet, committed, facetLength).residual;
+    const auto rp =
+        element.evaluate(fromDofs<Facet>(plus), facet, committed, facetLength, SlipTangent::consistent(), point).residual;
+    const auto rm =
+        element.evaluate(fromDofs<Facet>(minus), facet, committed, facetLength, SlipTangent::consistent(), point).residual;
     for (int i = 0; i < n; ++i) k(i, j) = (rp[i] - rm[i]) / (2.0 * h);
   }
   return k;

@@ -121,10 +121,59 @@ TEST(FacetSelectorQuad4, FreeBoundaryIsNotAnEdgeToContact) {
   const cc::FacetSelector<cc::Quad4Facet> selector;
   EXPECT_EQ(selector.select({1.0, -0.2, 0.05}, faces).kind, cc::SelectionKind::None);
   EXPECT_EQ(selector.select({1.0, -0.2, -0.05}, faces).kind, cc::SelectionKind::None);
-  const auto flush = selector.select({0.5, -0.02, -0.01}, faces);  // 4 % of the half-width past it
+  // Past the boundary by 0.0008, within 1e-3 of the slave facet size L_k = 1 (FacetSelectorOptions::
+  // freeEdgeTolerance): still on, however little it penetrates.
+  const auto flush = selector.select({0.5, -0.0008, -0.01}, faces, 1.0);
   EXPECT_EQ(flush.kind, cc::SelectionKind::OnFacet);
   EXPECT_EQ(flush.facet, 0);
   EXPECT_NEAR(flush.gap, -0.01, 1e-12);
+  EXPECT_EQ(selector.select({0.5, -0.0008, -1e-7}, faces, 1.0).kind, cc::SelectionKind::OnFacet);
+  // Past it by 0.0012: off, however deep it penetrates.
+  EXPECT_EQ(selector.select({0.5, -0.0012, -0.01}, faces, 1.0).kind, cc::SelectionKind::None);
+  EXPECT_EQ(selector.select({0.5, -0.0012, -0.5}, faces, 1.0).kind, cc::SelectionKind::None);
+  // Past a corner of the surface: the distance to the corner counts (0.0006·√2 on, 0.0008·√2 off).
+  EXPECT_EQ(selector.select({-0.0006, -0.0006, -0.01}, faces, 1.0).kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(selector.select({-0.0008, -0.0008, -0.01}, faces, 1.0).kind, cc::SelectionKind::None);
+}
+
+// The free-edge rule is a length of the slave mesh, not a fraction of the master facet: a node 1.11 past
+// the edge of a punch face 70 wide (1.6 % of it, within the 0.1 in ξ of the former rule) is off; the same
+// node 1e-4 past it is on (L_k = 5.56, the punch deck's block at 18 elements).
+TEST(FacetSelectorQuad4, FreeEdgeRuleDoesNotGrowWithTheFacet) {
+  const Face punch = face(0, {0, 1, 2, 3}, {P{-10, -10, 0}, P{60, -10, 0}, P{60, 60, 0}, P{-10, 60, 0}});
+  const cc::FacetSelector<cc::Quad4Facet> selector;
+  const double slaveSize = 100.0 / 18.0;
+  EXPECT_EQ(selector.select({61.11, 20.0, -0.05}, {punch}, slaveSize).kind, cc::SelectionKind::None);
+  EXPECT_EQ(selector.select({60.0 + 1e-4, 20.0, -0.05}, {punch}, slaveSize).kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(selector.select({59.0, 20.0, -1e-6}, {punch}, slaveSize).kind, cc::SelectionKind::OnFacet);
+}
+
+// A node beside a punch split into faces, past its free edge: the punch's interior edges and vertices are
+// farther than its free edge, so they are not the surface's closest point and do not hold the node (they
+// held it, 11 mm away, beside a punch of 10 mm faces).
+TEST(FacetSelectorQuad4, InteriorEdgesDoNotHoldANodePastTheFreeEdge) {
+  std::vector<Face> faces;
+  const auto point = [](int i, int j) { return -1 - (i * 8 + j); };
+  int id = 0;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 7; ++j) {
+      const double x0 = -10 + 10 * i, y0 = -10 + 10 * j;
+      faces.push_back(face(id++, {point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)},
+                           {P{x0, y0, 0}, P{x0 + 10, y0, 0}, P{x0 + 10, y0 + 10, 0}, P{x0, y0 + 10, 0}}));
+    }
+  const cc::FacetSelector<cc::Quad4Facet> selector;
+  for (const double y : {0.0, 3.0, 25.0})
+    for (const double z : {-0.5, -1e-3, 0.0, 0.5}) {
+      SCOPED_TRACE("y = " + std::to_string(y) + ", z = " + std::to_string(z));
+      EXPECT_EQ(selector.select({61.11, y, z}, faces, 5.56).kind, cc::SelectionKind::None);
+    }
+  // Inside, on an interior edge and vertex of the split punch: on a face, with the flat gap.
+  const auto onEdge = selector.select({50.0, 3.0, -1e-3}, faces, 5.56);
+  EXPECT_EQ(onEdge.kind, cc::SelectionKind::OnFacet);
+  EXPECT_NEAR(onEdge.gap, -1e-3, 1e-15);
+  const auto onVertex = selector.select({50.0, 0.0, -1e-3}, faces, 5.56);
+  EXPECT_EQ(onVertex.kind, cc::SelectionKind::OnFacet);
+  EXPECT_NEAR(onVertex.gap, -1e-3, 1e-15);
 }
 
 // A collapsed face (a triangle with its apex twice) next to a regular one, sharing the apex as a corner:
