@@ -147,7 +147,8 @@ class ContactBetaControl {
     field("redos", self.redos_);
     field("redoing", self.redoing_);
     field("last_newton_iterations", self.lastNewtonIterations_);
-    field("predicted_fractions", self.predictedFractions_);
+    // A fraction may overflow to +inf (a node closing by a subnormal distance): a value, not damage.
+    field("predicted_fractions", self.predictedFractions_, StateValues::AnyDouble);
     field("prediction_step", self.predictionStep_);
   }
 };
