@@ -128,25 +128,30 @@ RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path
   requireInput(c.meshHash == identity.meshHash, "--restart " + path +
                                                     ": written for another mesh (the same node and element counts, "
                                                     "other coordinates or connectivity)");
-  for (const auto& r : c.records)
-    if (r.kind == io::restart_kind::kHistoryRow) {
-      requireInput(r.id == static_cast<std::int64_t>(in.historyRows.size()),
-                   "--restart " + path + ": corrupt restart file (history rows out of order)");
-      in.historyRows.push_back(r.values);
+  // The history rows of steps 0..k (any value: a column may hold NaN where it has none).
+  const StateField& rows =
+      c.state.child("history").field("rows", StateField::Type::Double, {StateRecord::kAnyExtent, StateRecord::kAnyExtent});
+  requireInput(rows.shape[0] > 0, "--restart " + path + ": corrupt restart file (no history rows)");
+  for (std::size_t k = 0; k < rows.shape[0]; ++k)
+    in.historyRows.emplace_back(rows.doubles.begin() + static_cast<std::ptrdiff_t>(k * rows.shape[1]),
+                                rows.doubles.begin() + static_cast<std::ptrdiff_t>((k + 1) * rows.shape[1]));
+  // Every rank reads its own nodes' displacements later: a file without all of them, or with a value that
+  // is not finite, is refused here, on every rank alike.
+  const StateRecord& nodes = c.state.child("nodes");
+  StateTableReader table(nodes);
+  std::vector<double> values;
+  for (std::int64_t node = 0; node < c.nodes; ++node) {
+    table.seek(node, "node " + std::to_string(node + 1));
+    for (const char* column : {"displacement", "previous_displacement"}) {
+      table(column, values);
+      requireInput(values.size() == static_cast<std::size_t>(dimension),
+                   "--restart " + path + ": nodes/" + column + ": " + std::to_string(values.size()) +
+                       " components per node, the mesh has " + std::to_string(dimension));
     }
-  requireInput(!in.historyRows.empty(), "--restart " + path + ": corrupt restart file (no history rows)");
-  // Every rank reads its own nodes' displacements from it later: a file without all of them is refused
-  // here, on every rank alike.
-  const io::RestartRecords index(c.records);
-  requireInput(index.find(io::restart_kind::kRun, 0) != nullptr,
-               "--restart " + path + ": corrupt restart file (no continuation record)");
-  const auto dim = static_cast<std::size_t>(dimension);
-  for (std::int64_t node = 0; node < c.nodes; ++node)
-    for (const auto kind : {io::restart_kind::kDisplacement, io::restart_kind::kPreviousDisplacement}) {
-      const auto* r = index.find(kind, node);
-      requireInput(r != nullptr && r->size() == dim, "--restart " + path + ": corrupt restart file (node " +
-                                                          std::to_string(node + 1) + " has no displacement record)");
-    }
+  }
+  requireInput(table.rows() == static_cast<std::size_t>(c.nodes),
+               "--restart " + path + ": nodes: " + std::to_string(table.rows()) + " rows, the mesh has " +
+                   std::to_string(c.nodes) + " nodes");
   return in;
 }
 
@@ -191,14 +196,13 @@ solvers::CheckpointControl::Decision RunCheckpoints::decide(int increments, bool
   return d;
 }
 
-void RunCheckpoints::write(std::vector<io::RestartRecord> driverRecords) {
+void RunCheckpoints::write(StateRecord driverState) {
   const auto start = Clock::now();
-  // Every rank's records (its elements, slave nodes, displacements), gathered to rank 0 as encoded
-  // pieces; rank 0 adds the history rows and writes the file.
+  // Every rank's part of the state (its elements, slave nodes, displacements), gathered to rank 0 as
+  // encoded pieces; rank 0 merges them (rows sorted by id), adds the history rows and writes the file.
   io::RestartContent piece;
-  piece.records = model_.committedStateRecords();
-  piece.records.insert(piece.records.end(), std::make_move_iterator(driverRecords.begin()),
-                       std::make_move_iterator(driverRecords.end()));
+  model_.saveCommittedState(piece.state);
+  piece.state.merge(driverState);
   const std::string bytes = io::encodeRestart(std::move(piece));
   const int ranks = comm_->getSize();
   // MPI_Gatherv counts and offsets are int: refused alike on every rank beyond 2 GiB in all.
@@ -223,16 +227,14 @@ void RunCheckpoints::write(std::vector<io::RestartRecord> driverRecords) {
   std::string error;
   if (comm_->getRank() == 0) {
     io::RestartContent content = identity_;
-    for (int r = 0; r < ranks; ++r) {
-      auto part = io::decodeRestart(all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(sizes[r])),
-                                    path_);
-      content.records.insert(content.records.end(), std::make_move_iterator(part.records.begin()),
-                             std::make_move_iterator(part.records.end()));
-    }
+    for (int r = 0; r < ranks; ++r)
+      content.state.merge(io::decodeRestart(all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(sizes[r])),
+                                            path_).state);
     const auto& rows = results_.historyRows();
-    for (std::size_t k = 0; k < rows.size(); ++k)
-      content.records.push_back({io::restart_kind::kHistoryRow, static_cast<std::int64_t>(k), rows[k]});
-    error = io::writeFileAtomically(path_, io::encodeRestart(std::move(content)));
+    std::vector<double> table;
+    for (const auto& row : rows) table.insert(table.end(), row.begin(), row.end());
+    content.state.child("history").put("rows", std::move(table), {rows.size(), rows.empty() ? 0 : rows[0].size()});
+    error = io::writeRestartFile(path_, std::move(content));
   }
   int size = static_cast<int>(error.size());
   Teuchos::broadcast(*comm_, 0, &size);

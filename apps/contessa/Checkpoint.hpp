@@ -28,14 +28,14 @@ std::string restartDeckText(const Teuchos::ParameterList& deck);
 /// Collective.
 io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mesh::DistributedMesh& part);
 
-/// A restart file read for --restart: its records and the history rows it keeps (steps 0..k).
+/// A restart file read for --restart: its state and the history rows it keeps (steps 0..k).
 struct RestartInput {
   io::RestartContent content;
   std::vector<std::vector<double>> historyRows;
 };
 /// Collective: rank 0 reads `path`, every rank checks it against `identity` and throws InputError alike
-/// ("--restart PATH: written for another deck: ..."; missing, truncated or corrupt files too).
-/// `dimension`: the mesh's (each node's displacement record has as many values).
+/// ("--restart PATH: written for another deck: ..."; missing, truncated or corrupt files too), and checks
+/// the table "nodes": a row for every node, `dimension` finite displacements in each.
 RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity,
                          int dimension);
 
@@ -47,7 +47,7 @@ class RunCheckpoints : public solvers::CheckpointControl {
                  const output::ResultsOutput& results, std::string path, io::RestartContent identity, int every,
                  double maxWallSeconds, std::chrono::steady_clock::time_point runStart, bool verbose);
   Decision decide(int increments, bool converged) override;
-  void write(std::vector<io::RestartRecord> driverRecords) override;
+  void write(StateRecord driverState) override;
   /// Why the restart file could not be written ("" while it could), on every rank.
   const std::string& failure() const { return failure_; }
 

@@ -154,10 +154,18 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     });
   // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
   solvers::provideNearNullSpace(*linearSolver, *model->ownedDofMap(), problem.mesh);
+  // The restart file's state into the model and the continuation point, before the output is touched;
+  // then every field of the file has been read by someone (the step size's, read when LOCA's state is
+  // made, checks its own).
+  std::shared_ptr<const solvers::ContinuationPoint> resumed;
+  if (!cl.restart.empty())
+    agreeOnInput(*comm, [&] {
+      model->restoreCommittedState(restart.content.state);
+      resumed = solvers::readContinuationPoint(*model, restart.content.state);
+      restart.content.state.requireAllRead();
+    });
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description,
                                 cl.restart.empty() ? nullptr : &restart.historyRows);
-  const io::RestartRecords restartRecords(restart.content.records);
-  if (!cl.restart.empty()) agreeOnInput(*comm, [&] { model->restoreCommittedState(restartRecords); });
   if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
   requireHistoryColumns(problem, results.historyColumns());
   if (root && !cl.quiet)
@@ -186,7 +194,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     } else {
       solvers::ContinuationDriver driver(model, piro, observer, jacobianCheck);
       driver.setCheckpointControl(&checkpoints);
-      if (!cl.restart.empty()) driver.resumeFrom(restartRecords);
+      if (resumed) driver.resumeFrom(resumed);
       summary = driver.run();
     }
   } catch (const std::exception&) {

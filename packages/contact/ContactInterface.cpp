@@ -77,10 +77,10 @@ class ContactInterface final : public ContactInterfaceBase {
   std::vector<TunnellingNode> tunnellingNodes() const override;
   void commit() override;
   void rollback() override;
-  std::vector<double> committedSlaveRecord(std::size_t k) const override;
-  void restoreSlave(std::size_t k, const std::vector<double>& record) override;
-  std::vector<double> committedMasterRecord() const override;
-  void restoreMaster(const std::vector<double>& record) override;
+  void saveCommittedSlaves(StateRecord& table) const override;
+  void restoreSlaves(const StateRecord& table) override;
+  void saveCommittedMaster(StateRecord& table) const override;
+  void restoreMaster(const StateRecord& table) override;
 
  private:
   Point slavePosition(const NodePosition& position, std::size_t k) const {
@@ -378,84 +378,96 @@ void ContactInterface<Facet>::rollback() {
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
 }
 
-// Record layout of a slave node: history (segment, ξ, t_T, status, slip), change (gaps, statuses,
-// indicators, reversal, facet), output (pressure, gap, status, slip), committed position.
-template <class Facet>
-std::vector<double> ContactInterface<Facet>::committedSlaveRecord(std::size_t k) const {
-  const auto& h = history_.committed(k);
-  std::vector<double> r = {static_cast<double>(h.segment)};
-  r.insert(r.end(), h.xi.begin(), h.xi.end());
-  r.insert(r.end(), h.tangentialTraction.begin(), h.tangentialTraction.end());
-  r.push_back(static_cast<double>(h.status));
-  r.push_back(h.accumulatedSlip);
-  const SlaveNodeChange& c = committedIncrement_[k];
-  r.insert(r.end(), {c.committedGap, c.trialGap, static_cast<double>(c.committedStatus),
-                     static_cast<double>(c.trialStatus), c.committedIndicator, c.trialIndicator,
-                     c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet)});
-  const SlaveNodeState& o = committedOutput_[k];
-  r.insert(r.end(), {o.pressure, o.gap, static_cast<double>(o.status), o.slip});
-  const Point x = committedSlave_.empty() ? Point{} : committedSlave_[k];
-  r.insert(r.end(), x.begin(), x.end());
-  return r;
+// A slave node's fields in the restart file: its history, its change over the last increment, its output
+// and its committed position (const parts when saving, copies to put back when loading).
+template <class History, class Change, class Output, class Position, class Fields>
+void slaveNodeFields(History& h, Change& c, Output& o, Position& x, Fields& field) {
+  field("facet", h.segment);
+  field("xi", h.xi);
+  field("tangential_traction", h.tangentialTraction);
+  field("status", h.status);
+  field("slip", h.accumulatedSlip);
+  field("committed_gap", c.committedGap, StateValues::AnyDouble);  // +inf: no master facet in reach
+  field("trial_gap", c.trialGap, StateValues::AnyDouble);
+  field("committed_status", c.committedStatus);
+  field("trial_status", c.trialStatus);
+  field("committed_indicator", c.committedIndicator, StateValues::AnyDouble);  // NaN unless in frictional contact
+  field("trial_indicator", c.trialIndicator, StateValues::AnyDouble);
+  field("slip_reversed", c.slipReversed);
+  field("trial_facet", c.trialFacet);
+  field("pressure", o.pressure);
+  field("gap", o.gap, StateValues::AnyDouble);
+  field("output_status", o.status);
+  field("output_slip", o.slip);
+  field("position", x);
+}
+
+template <class Facet, class Fields>
+void masterFacetFields(Facet& m, Fields& field) {
+  field("facet", m.id);
+  field("nodes", m.nodes);
+  field("x", m.x);
 }
 
 template <class Facet>
-void ContactInterface<Facet>::restoreSlave(std::size_t k, const std::vector<double>& r) {
-  constexpr std::size_t size = 3 + 2 * kXi + 8 + 4 + kDim;
-  requireInput(r.size() == size, "restart file: slave node record of interface '" + spec_.label() + "' has " +
-                                     std::to_string(r.size()) + " values, " + std::to_string(size) + " expected");
-  std::size_t i = 0;
-  ContactHistory<kXi> h;
-  h.segment = static_cast<int>(r[i++]);
-  for (auto& v : h.xi) v = r[i++];
-  for (auto& v : h.tangentialTraction) v = r[i++];
-  h.status = static_cast<ContactStatus>(static_cast<int>(r[i++]));
-  h.accumulatedSlip = r[i++];
-  history_.restore(k, h);
-  SlaveNodeChange& c = committedIncrement_[k];
-  c.committedGap = r[i++];
-  c.trialGap = r[i++];
-  c.committedStatus = static_cast<ContactStatus>(static_cast<int>(r[i++]));
-  c.trialStatus = static_cast<ContactStatus>(static_cast<int>(r[i++]));
-  c.committedIndicator = r[i++];
-  c.trialIndicator = r[i++];
-  c.slipReversed = r[i++] != 0.0;
-  c.trialFacet = static_cast<int>(r[i++]);
-  SlaveNodeState& o = committedOutput_[k];
-  o.pressure = r[i++];
-  o.gap = r[i++];
-  o.status = static_cast<ContactStatus>(static_cast<int>(r[i++]));
-  o.slip = r[i++];
-  if (committedSlave_.size() != spec_.slaveNodes.size()) committedSlave_.assign(spec_.slaveNodes.size(), Point{});
-  for (auto& v : committedSlave_[k]) v = r[i++];
-  lastSlave_[k] = committedSlave_[k];
-  trialOutput_[k] = o;
-  trialChanges_[k] = unchanged(k);
-}
-
-template <class Facet>
-std::vector<double> ContactInterface<Facet>::committedMasterRecord() const {
-  std::vector<double> r;
-  for (const auto& m : committedMaster_) {
-    r.push_back(static_cast<double>(m.id));
-    for (int n : m.nodes) r.push_back(static_cast<double>(n));
-    for (const auto& x : m.x) r.insert(r.end(), x.begin(), x.end());
+void ContactInterface<Facet>::saveCommittedSlaves(StateRecord& table) const {
+  StateTableWriter rows(table);
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave()[k]) continue;
+    rows.beginRow(static_cast<std::int64_t>(k));
+    const Point x = committedSlave_.empty() ? Point{} : committedSlave_[k];
+    slaveNodeFields(history_.committed(k), committedIncrement_[k], committedOutput_[k], x, rows);
   }
-  return r;
+  rows.finish();
 }
 
 template <class Facet>
-void ContactInterface<Facet>::restoreMaster(const std::vector<double>& r) {
-  constexpr std::size_t perFacet = 1 + Facet::kNodes + Facet::kNodes * kDim;
-  requireInput(r.size() % perFacet == 0, "restart file: master record of interface '" + spec_.label() +
-                                             "' does not hold whole facets");
-  Facets facets(r.size() / perFacet);
-  std::size_t i = 0;
-  for (auto& m : facets) {
-    m.id = static_cast<int>(r[i++]);
-    for (auto& n : m.nodes) n = static_cast<int>(r[i++]);
-    for (auto& x : m.x)
-      for (auto& v : x) v = r[i++];
+void ContactInterface<Facet>::restoreSlaves(const StateRecord& table) {
+  StateTableReader rows(table);
+  const std::size_t n = spec_.slaveNodes.size();
+  for (std::size_t row = 0; row < rows.rows(); ++row) {
+    const std::int64_t id = rows.idAt(row);
+    if (id < 0 || static_cast<std::size_t>(id) >= n)
+      table.fail("id", "slave node " + std::to_string(id) + ", the interface has " + std::to_string(n));
+    rows.seekRow(row);
+    ContactHistory<kXi> h;
+    SlaveNodeChange c;
+    SlaveNodeState o;
+    Point x{};
+    slaveNodeFields(h, c, o, x, rows);
+    const auto k = static_cast<std::size_t>(id);
+    if (!evaluatesSlave()[k]) continue;
+    history_.restore(k, h);
+    committedIncrement_[k] = c;
+    committedOutput_[k] = o;
+    if (committedSlave_.size() != n) committedSlave_.assign(n, Point{});
+    committedSlave_[k] = x;
+    lastSlave_[k] = x;
+    trialOutput_[k] = o;
+    trialChanges_[k] = unchanged(k);
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    if (evaluatesSlave()[k] && !rows.hasRow(static_cast<std::int64_t>(k)))
+      table.fail("id", "no row for slave node " + std::to_string(k) + " of interface '" + spec_.label() + "'");
+}
+
+template <class Facet>
+void ContactInterface<Facet>::saveCommittedMaster(StateRecord& table) const {
+  StateTableWriter rows(table);
+  for (std::size_t i = 0; i < committedMaster_.size(); ++i) {
+    rows.beginRow(static_cast<std::int64_t>(i));
+    masterFacetFields(committedMaster_[i], rows);
+  }
+  rows.finish();
+}
+
+template <class Facet>
+void ContactInterface<Facet>::restoreMaster(const StateRecord& table) {
+  StateTableReader rows(table);
+  Facets facets(rows.rows());
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    rows.seek(static_cast<std::int64_t>(i), "master facet " + std::to_string(i));
+    masterFacetFields(facets[i], rows);
   }
   committedMaster_ = facets;
   lastFacets_ = std::move(facets);

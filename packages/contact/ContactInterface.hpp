@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/StateRecord.hpp"
 #include "contact/ContactCounts.hpp"
 #include "contact/ContactHistory.hpp"
 #include "contact/InterfaceSpec.hpp"
@@ -82,16 +83,20 @@ class ContactInterfaceBase {
   /// The increment is abandoned: back to the committed state.
   virtual void rollback() = 0;
 
-  // A restart file's records of the committed state (docs/architecture.md, "Checkpoint and restart").
-  /// Owned slave node k: its history (facet, ξ, tangential traction, status, slip), its change over the
-  /// last increment (Contact Beta reads it), its output and its committed position, as numbers.
-  virtual std::vector<double> committedSlaveRecord(std::size_t k) const = 0;
-  /// Puts slave node k's record back as the committed and trial state; InputError when its size is not
-  /// this interface's.
-  virtual void restoreSlave(std::size_t k, const std::vector<double>& record) = 0;
-  /// The master facets' committed positions (the same on every rank).
-  virtual std::vector<double> committedMasterRecord() const = 0;
-  virtual void restoreMaster(const std::vector<double>& record) = 0;
+  // The restart file's state of the committed configuration, by name (docs/architecture.md, "Checkpoint
+  // and restart"; common/StateRecord.hpp).
+  /// Rows of the table "slaves" (id: slave node index) for the owned slave nodes: history (facet, ξ, t_T,
+  /// status, slip), the change over the last increment (Contact Beta reads it), the output and the
+  /// committed position.
+  virtual void saveCommittedSlaves(StateRecord& table) const = 0;
+  /// Reads and checks every row (every rank judges the whole table alike) and puts the owned slave nodes'
+  /// rows back as their committed and trial state; InputError naming a field that is missing, of another
+  /// shape or not finite, or a missing row.
+  virtual void restoreSlaves(const StateRecord& table) = 0;
+  /// The table "master" (id: the facet's position): the master facets' committed positions (the same on
+  /// every rank).
+  virtual void saveCommittedMaster(StateRecord& table) const = 0;
+  virtual void restoreMaster(const StateRecord& table) = 0;
 
   /// The owned slave nodes: the last commit against the latest trial evaluation.
   std::vector<SlaveNodeChange> trialChanges() const { return owned(trialChanges_); }

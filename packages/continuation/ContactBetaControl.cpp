@@ -196,44 +196,18 @@ double ContactBetaControl::newtonGrowth() const {
   return static_cast<double>(settings_.targetNewtonIterations) / std::max(1, lastNewtonIterations_);
 }
 
-std::vector<double> ContactBetaControl::state() const {
-  std::vector<double> s = {correction_.scale(), step_, plannedStep_, startLambda_, beta_, carriedBeta_,
-                           static_cast<double>(afterFailure_), static_cast<double>(checkPending_),
-                           static_cast<double>(restartRequested_), static_cast<double>(justReleased_),
-                           static_cast<double>(hitMinimumStep_), static_cast<double>(lastBetaFromEvents_),
-                           static_cast<double>(predictedEvents_), static_cast<double>(rechecks_),
-                           static_cast<double>(redos_), static_cast<double>(redoing_),
-                           static_cast<double>(lastNewtonIterations_), predictionStep_,
-                           static_cast<double>(predictedFractions_.size())};
-  s.insert(s.end(), predictedFractions_.begin(), predictedFractions_.end());
-  return s;
+void ContactBetaControl::saveState(StateRecord& state) const {
+  StateWriter fields(state);
+  stateFields(*this, fields);
+  fields("event_rate_scale", correction_.scale());
 }
 
-void ContactBetaControl::restoreState(const std::vector<double>& s) {
-  constexpr std::size_t fixed = 19;
-  if (s.size() < fixed || s.size() != fixed + static_cast<std::size_t>(s[fixed - 1]))
-    throw std::invalid_argument("Contact Beta state: " + std::to_string(s.size()) + " values do not fit");
-  std::size_t i = 0;
-  correction_.restoreScale(s[i++]);
-  step_ = s[i++];
-  plannedStep_ = s[i++];
-  startLambda_ = s[i++];
-  beta_ = s[i++];
-  carriedBeta_ = s[i++];
-  afterFailure_ = s[i++] != 0;
-  checkPending_ = s[i++] != 0;
-  restartRequested_ = s[i++] != 0;
-  justReleased_ = s[i++] != 0;
-  hitMinimumStep_ = s[i++] != 0;
-  lastBetaFromEvents_ = s[i++] != 0;
-  predictedEvents_ = static_cast<int>(s[i++]);
-  rechecks_ = static_cast<int>(s[i++]);
-  redos_ = static_cast<int>(s[i++]);
-  redoing_ = s[i++] != 0;
-  lastNewtonIterations_ = static_cast<int>(s[i++]);
-  predictionStep_ = s[i++];
-  ++i;
-  predictedFractions_.assign(s.begin() + static_cast<std::ptrdiff_t>(i), s.end());
+void ContactBetaControl::loadState(const StateRecord& state) {
+  StateReader fields(state);
+  stateFields(*this, fields);
+  double scale = 1;
+  fields("event_rate_scale", scale);
+  correction_.restoreScale(scale);
 }
 
 }  // namespace contessa::continuation

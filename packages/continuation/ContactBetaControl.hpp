@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/StateRecord.hpp"
 #include "continuation/ContactBeta.hpp"
 #include "continuation/ContactEvents.hpp"
 #include "continuation/EventRateCorrection.hpp"
@@ -80,10 +81,11 @@ class ContactBetaControl {
   /// Every Newton iterate: the release of new contacts concerns only the iterate it happened at.
   void nextIterate() { justReleased_ = false; }
 
-  // ---- Checkpoint and restart: everything the next decisions depend on, as numbers (a restart file's
-  // record), and putting it back. restoreState throws std::invalid_argument for a record of another size.
-  std::vector<double> state() const;
-  void restoreState(const std::vector<double>& state);
+  // ---- Checkpoint and restart: everything the next decisions depend on, by name (stateFields, below the
+  // members), and putting it back; loadState throws InputError naming a field that is missing, of
+  // another shape or not finite.
+  void saveState(StateRecord& state) const;
+  void loadState(const StateRecord& state);
 
   // ---- Queries.
   const ContactBetaSettings& settings() const { return settings_; }
@@ -125,6 +127,30 @@ class ContactBetaControl {
   int lastNewtonIterations_ = 0;
   std::vector<double> predictedFractions_;  ///< unscaled β^k of the last check / prediction
   double predictionStep_ = 0;               ///< the Δλ they refer to (0: none recorded)
+
+  /// The members above a restart keeps (the learned event-rate scale too, through correction_).
+  template <class Self, class Fields>
+  static void stateFields(Self& self, Fields& field) {
+    field("step", self.step_);
+    field("planned_step", self.plannedStep_);
+    field("start_lambda", self.startLambda_);
+    field("beta", self.beta_);
+    field("carried_beta", self.carriedBeta_);
+    field("after_failure", self.afterFailure_);
+    field("check_pending", self.checkPending_);
+    field("restart_requested", self.restartRequested_);
+    field("just_released", self.justReleased_);
+    field("hit_minimum_step", self.hitMinimumStep_);
+    field("last_beta_from_events", self.lastBetaFromEvents_);
+    field("predicted_events", self.predictedEvents_);
+    field("rechecks", self.rechecks_);
+    field("redos", self.redos_);
+    field("redoing", self.redoing_);
+    field("last_newton_iterations", self.lastNewtonIterations_);
+    // A fraction may overflow to +inf (a node closing by a subnormal distance): a value, not damage.
+    field("predicted_fractions", self.predictedFractions_, StateValues::AnyDouble);
+    field("prediction_step", self.predictionStep_);
+  }
 };
 
 }  // namespace contessa::continuation

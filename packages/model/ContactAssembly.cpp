@@ -218,25 +218,19 @@ void ContactAssembly::rollback() {
   for (auto& c : interfaces_) c->rollback();
 }
 
-void ContactAssembly::appendRecords(std::vector<io::RestartRecord>& out, bool writer) const {
+void ContactAssembly::saveState(StateRecord& contact, bool writer) const {
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
-    const auto& c = *interfaces_[i];
-    const auto kind = io::restart_kind::kContactSlave + static_cast<std::int64_t>(i);
-    for (std::size_t k = 0; k < c.spec().slaveNodes.size(); ++k)
-      if (c.evaluatesSlave()[k]) out.push_back({kind, static_cast<std::int64_t>(k), c.committedSlaveRecord(k)});
-    if (writer) out.push_back({io::restart_kind::kContactMaster + static_cast<std::int64_t>(i), 0, c.committedMasterRecord()});
+    auto& group = contact.child("interface_" + std::to_string(i));
+    interfaces_[i]->saveCommittedSlaves(group.child("slaves"));
+    if (writer) interfaces_[i]->saveCommittedMaster(group.child("master"));
   }
 }
 
-void ContactAssembly::restore(const io::RestartRecords& records) {
+void ContactAssembly::restore(const StateRecord& contact) {
   for (std::size_t i = 0; i < interfaces_.size(); ++i) {
-    auto& c = *interfaces_[i];
-    const auto kind = io::restart_kind::kContactSlave + static_cast<std::int64_t>(i);
-    const std::string name = "contact interface '" + c.spec().label() + "'";
-    for (std::size_t k = 0; k < c.spec().slaveNodes.size(); ++k)
-      if (c.evaluatesSlave()[k])
-        c.restoreSlave(k, records.at(kind, static_cast<std::int64_t>(k), name + " slave node " + std::to_string(k)));
-    c.restoreMaster(records.at(io::restart_kind::kContactMaster + static_cast<std::int64_t>(i), 0, name));
+    const auto& group = contact.child("interface_" + std::to_string(i));
+    interfaces_[i]->restoreSlaves(group.child("slaves"));
+    interfaces_[i]->restoreMaster(group.child("master"));
   }
 }
 

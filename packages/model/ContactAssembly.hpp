@@ -13,7 +13,7 @@
 #include "contact/ContactInterface.hpp"
 #include "contact/CouplingReservation.hpp"
 #include "deck/ProblemDefinition.hpp"
-#include "io/RestartFile.hpp"
+#include "common/StateRecord.hpp"
 #include "model/DofLayout.hpp"
 #include "model/StiffnessScatter.hpp"
 
@@ -62,10 +62,11 @@ class ContactAssembly {
 
   void commit();
   void rollback();
-  /// This rank's records of the committed contact state (its slave nodes; rank `writer`: the masters).
-  void appendRecords(std::vector<io::RestartRecord>& out, bool writer) const;
-  /// The committed contact state from a restart file's records (this rank's slave nodes, the masters).
-  void restore(const io::RestartRecords& records);
+  /// This rank's part of the committed contact state, a group "interface_<i>" per interface: its slave
+  /// nodes (table "slaves"; rank `writer` also the table "master").
+  void saveState(StateRecord& contact, bool writer) const;
+  /// The committed contact state from a restart file's group "contact" (this rank's slave nodes, the masters).
+  void restore(const StateRecord& contact);
   /// Contact Beta, Restart mode: nodes open at the last commit carry no force while frozen.
   void setNewContactsFrozen(bool frozen);
   bool newContactsFrozen() const { return frozen_; }

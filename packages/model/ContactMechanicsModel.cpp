@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -298,21 +299,53 @@ void ContactMechanicsModel::rollbackState() {
   passServesReactions_ = false;
 }
 
-std::vector<io::RestartRecord> ContactMechanicsModel::committedStateRecords() const {
-  std::vector<io::RestartRecord> out;
+namespace {
+// The elements' internal variables, one table per state size (each row one element's committed state).
+std::string elementTableName(std::size_t values) { return "with_" + std::to_string(values) + "_values"; }
+}  // namespace
+
+void ContactMechanicsModel::saveCommittedState(StateRecord& state) const {
   const auto& elements = solids_->elements();
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    out.push_back({io::restart_kind::kElementState, elements[i], solids_->committedState(i)});
-  contact_->appendRecords(out, comm_->getRank() == 0);
-  return out;
+  std::map<std::size_t, std::vector<std::size_t>> bySize;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::size_t n = solids_->committedState(i).size();
+    if (n > 0) bySize[n].push_back(i);  // elements without internal variables keep nothing
+  }
+  auto& group = state.child("elements");
+  for (const auto& [n, indices] : bySize) {
+    StateTableWriter rows(group.child(elementTableName(n)));
+    for (const std::size_t i : indices) {
+      rows.beginRow(elements[i]);
+      rows("state", solids_->committedState(i));
+    }
+    rows.finish();
+  }
+  contact_->saveState(state.child("contact"), comm_->getRank() == 0);
 }
 
-void ContactMechanicsModel::restoreCommittedState(const io::RestartRecords& records) {
+void ContactMechanicsModel::restoreCommittedState(const StateRecord& state) {
+  const auto& group = state.child("elements");
+  std::map<std::string, StateTableReader> tables;
+  std::vector<double> values;
+  for (const auto& [name, table] : group.children()) {
+    auto& rows = tables.emplace(name, StateTableReader(table)).first->second;
+    for (std::size_t row = 0; row < rows.rows(); ++row) {  // every row checked, on every rank
+      rows.seekRow(row);
+      rows("state", values);
+    }
+  }
   const auto& elements = solids_->elements();
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    solids_->restoreState(i, records.at(io::restart_kind::kElementState, elements[i],
-                                        "element " + std::to_string(elements[i] + 1)));
-  contact_->restore(records);
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::size_t n = solids_->committedState(i).size();
+    if (n == 0) continue;
+    const std::string what = "element " + std::to_string(elements[i] + 1);
+    const auto table = tables.find(elementTableName(n));
+    if (table == tables.end()) group.fail(elementTableName(n), "missing (" + what + " has " + std::to_string(n) + " state values)");
+    table->second.seek(elements[i], what);
+    table->second("state", values);
+    solids_->restoreState(i, values);
+  }
+  contact_->restore(state.child("contact"));
   passServesEvaluations_ = false;
   passServesReactions_ = false;
 }

@@ -68,11 +68,13 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   // increment, rolled back when an increment is abandoned.
   void commitState() override;
   void rollbackState() override;
-  /// This rank's records of the committed state for a restart file: the states of its elements, its
-  /// contact slave nodes (and on rank 0 the master positions). Global ids: any rank count reads them.
-  std::vector<io::RestartRecord> committedStateRecords() const;
-  /// The committed (and trial) state from a restart file's records; InputError when one is missing.
-  void restoreCommittedState(const io::RestartRecords& records);
+  /// This rank's part of the committed state for a restart file: the states of its elements (group
+  /// "elements", a table per state size), its contact slave nodes (group "contact"; rank 0 also the master
+  /// positions). Rows keyed by global ids: any rank count reads them.
+  void saveCommittedState(StateRecord& state) const;
+  /// The committed (and trial) state from a restart file's state; InputError naming a field or row that
+  /// is missing, of another shape or not finite (every rank checks every row alike).
+  void restoreCommittedState(const StateRecord& state);
   /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
   double lastLoadFactor() const override { return lastLoadFactor_; }
 

@@ -100,18 +100,16 @@ NOX::Abstract::Group::ReturnType ContactBetaStepSize::computeStepSize(
   return NOX::Abstract::Group::Ok;
 }
 
-std::vector<double> ContactBetaStepSize::saveState() const {
-  std::vector<double> s = {first_ ? 1.0 : 0.0, previous_};
-  const auto control = control_.state();
-  s.insert(s.end(), control.begin(), control.end());
-  return s;
+void ContactBetaStepSize::saveState(StateRecord& state) const {
+  StateWriter fields(state);
+  stateFields(*this, fields);
+  control_.saveState(state.child("contact_beta"));
 }
 
-void ContactBetaStepSize::restoreState(const std::vector<double>& s) {
-  if (s.size() < 2) throw std::invalid_argument("Contact Beta step size: state too short");
-  control_.restoreState(std::vector<double>(s.begin() + 2, s.end()));
-  first_ = s[0] != 0.0;
-  previous_ = s[1];
+void ContactBetaStepSize::loadState(const StateRecord& state) {
+  control_.loadState(state.child("contact_beta"));
+  StateReader fields(state);
+  stateFields(*this, fields);
 }
 
 }  // namespace contessa::solvers

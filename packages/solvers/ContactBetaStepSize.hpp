@@ -44,9 +44,9 @@ class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy, public Resu
                                                    const LOCA::Abstract::Iterator& stepper, double& stepSize) override;
   double getPrevStepSize() const override { return previous_; }
   double getStartStepSize() const override { return control_.settings().initialStep; }
-  /// First step or not, the previous step and the control's whole state.
-  std::vector<double> saveState() const override;
-  void restoreState(const std::vector<double>& state) override;
+  /// First step or not, the previous step, and the control's whole state in the child "contact_beta".
+  void saveState(StateRecord& state) const override;
+  void loadState(const StateRecord& state) override;
 
  private:
   /// Predictor mode: the slave nodes at x_t + Δλ dx/dλ.
@@ -58,6 +58,11 @@ class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy, public Resu
   continuation::ContactBetaControl& control_;
   double previous_ = 0;
   bool first_ = true;
+  template <class Self, class Fields>
+  static void stateFields(Self& self, Fields& field) {
+    field("first_step", self.first_);
+    field("previous_step", self.previous_);
+  }
 };
 
 /// The deck's "Contact Beta" parameters (Piro/LOCA/Step Size) and the stepper's Max Value.

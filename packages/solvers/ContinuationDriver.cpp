@@ -23,6 +23,7 @@
 
 #include "solvers/ContactBetaStepSize.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
+#include "solvers/LocaResume.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "common/Error.hpp"
 #include "solvers/NewtonStatusTests.hpp"
@@ -34,6 +35,31 @@ namespace contessa::solvers {
 
 using Teuchos::RCP;
 using Teuchos::rcp;
+
+// The continuation at a converged increment k, as the restart file keeps it: what LOCA's stepper, its
+// predictor and its step-size strategy need to take increment k + 1 exactly as the uninterrupted run does.
+struct ContinuationPoint {
+  int increments = 0, failedAttempts = 0;  ///< converged increments (k) and failed attempts so far
+  int newtonIterations = 0;                ///< of increment k's solve (what the step-size strategy reads)
+  double lambda = 0, previousLambda = 0;   ///< λ_k, λ_{k-1}
+  double stepSize = 0;                     ///< LOCA's step size of increment k (after its capping)
+  double wallSeconds = 0;                  ///< wall time of the run (all its parts) at increment k
+  StateRecord stepSizeState;               ///< a ResumableStepSize's state (empty for LOCA's own)
+  const StateRecord* resumedStepSizeState = nullptr;  ///< the restart file's, read when LOCA's state is made
+  RCP<const model::Vector> x, previousX;   ///< x_k, x_{k-1}
+
+  /// The restart file's group "continuation" (common/StateRecord.hpp).
+  template <class Self, class Fields>
+  static void stateFields(Self& self, Fields& field) {
+    field("increments", self.increments);
+    field("failed_attempts", self.failedAttempts);
+    field("newton_iterations", self.newtonIterations);
+    field("lambda", self.lambda);
+    field("previous_lambda", self.previousLambda);
+    field("step_size", self.stepSize);
+    field("wall_seconds", self.wallSeconds);
+  }
+};
 
 namespace {
 
@@ -125,173 +151,46 @@ class NewtonCounter : public NOX::Observer {
 
 // ---- Checkpoint and restart (docs/architecture.md, "Checkpoint and restart").
 
-// The continuation at a converged increment k, as the restart file keeps it: what LOCA's stepper, its
-// predictor and its step-size strategy need to take increment k + 1 exactly as the uninterrupted run does.
-struct ContinuationPoint {
-  int increments = 0, failedAttempts = 0;  ///< converged increments (k) and failed attempts so far
-  int newtonIterations = 0;                ///< of increment k's solve (what the step-size strategy reads)
-  double lambda = 0, previousLambda = 0;   ///< λ_k, λ_{k-1}
-  double stepSize = 0;                     ///< LOCA's step size of increment k (after its capping)
-  double wallSeconds = 0;                  ///< wall time of the run (all its parts) at increment k
-  std::vector<double> stepSizeState;       ///< a ResumableStepSize's state (empty for LOCA's own)
-  RCP<const model::Vector> x, previousX;   ///< x_k, x_{k-1}
-
-  static constexpr double kLayout = 1;
-  std::vector<double> record() const {
-    return {kLayout, static_cast<double>(increments), static_cast<double>(failedAttempts),
-            static_cast<double>(newtonIterations), lambda, previousLambda, stepSize, wallSeconds};
-  }
-  void read(const std::vector<double>& r) {
-    requireInput(r.size() == 8 && r[0] == kLayout, "restart file: the continuation record does not fit this Contessa");
-    increments = static_cast<int>(r[1]);
-    failedAttempts = static_cast<int>(r[2]);
-    newtonIterations = static_cast<int>(r[3]);
-    lambda = r[4];
-    previousLambda = r[5];
-    stepSize = r[6];
-    wallSeconds = r[7];
-  }
-};
-
-// A vector over the owned DOFs as one record per node (id: node, dim values): any rank count reads it.
-void appendNodeRecords(const model::Vector& v, int dim, std::int64_t kind, std::vector<io::RestartRecord>& out) {
-  const auto& map = *v.getMap();
-  const auto values = v.getData(0);
-  std::map<model::GO, std::vector<double>> nodes;
+// The owned DOFs of x_k and x_{k-1} as rows of the table "nodes" (id: node, displacement and
+// previous_displacement: dim values each): any rank count reads it.
+void saveNodeTable(const model::Vector& x, const model::Vector& previousX, int dim, StateRecord& table) {
+  const auto& map = *x.getMap();
+  const auto values = x.getData(0), previous = previousX.getData(0);
+  std::map<model::GO, std::pair<std::vector<double>, std::vector<double>>> nodes;
   for (std::size_t i = 0; i < map.getNodeNumElements(); ++i) {
     const model::GO dof = map.getGlobalElement(static_cast<model::LO>(i));
     auto& node = nodes[dof / dim];
-    node.resize(static_cast<std::size_t>(dim), 0.0);
-    node[static_cast<std::size_t>(dof % dim)] = values[i];
+    node.first.resize(static_cast<std::size_t>(dim), 0.0);
+    node.second.resize(static_cast<std::size_t>(dim), 0.0);
+    node.first[static_cast<std::size_t>(dof % dim)] = values[i];
+    node.second[static_cast<std::size_t>(dof % dim)] = previous[i];
   }
-  for (auto& [node, vals] : nodes) out.push_back({kind, node, std::move(vals)});
+  StateTableWriter rows(table);
+  for (const auto& [node, v] : nodes) {
+    rows.beginRow(node);
+    rows("displacement", v.first);
+    rows("previous_displacement", v.second);
+  }
+  rows.finish();
 }
 
-RCP<model::Vector> vectorFromNodeRecords(const RCP<const model::Map>& map, int dim, std::int64_t kind,
-                                         const io::RestartRecords& records) {
+RCP<model::Vector> vectorFromNodeTable(const RCP<const model::Map>& map, int dim, const std::string& column,
+                                       const StateRecord& table) {
   auto v = rcp(new model::Vector(map));
   auto values = v->getDataNonConst(0);
+  StateTableReader rows(table);
+  std::vector<double> node;
   for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
     const model::GO dof = map->getGlobalElement(static_cast<model::LO>(i));
-    const auto& node = records.at(kind, dof / dim, "the displacement of node " + std::to_string(dof / dim + 1));
-    requireInput(node.size() == static_cast<std::size_t>(dim), "restart file: node " + std::to_string(dof / dim + 1) +
-                                                                   " has " + std::to_string(node.size()) +
-                                                                   " displacement components, the mesh " +
-                                                                   std::to_string(dim));
+    rows.seek(dof / dim, "node " + std::to_string(dof / dim + 1));
+    rows(column, node);
+    requireInput(node.size() == static_cast<std::size_t>(dim),
+                 table.origin() + ": " + table.path() + column + ": " + std::to_string(node.size()) +
+                     " components per node, the mesh has " + std::to_string(dim));
     values[i] = node[static_cast<std::size_t>(dof % dim)];
   }
   return v;
 }
-
-// The solver LOCA's step-size strategy reads when the first increment after a restart is planned: the
-// new (unused) solver, reporting the Newton iterations of the increment the restart file was written at,
-// as the uninterrupted run's solver would.
-class ResumedSolver : public NOX::Solver::Generic {
- public:
-  ResumedSolver(RCP<NOX::Solver::Generic> solver, int iterations) : solver_(std::move(solver)), iterations_(iterations) {}
-  void reset() override { solver_->reset(); }
-  void reset(const NOX::Abstract::Vector& x) override { solver_->reset(x); }
-  void reset(const NOX::Abstract::Vector& x, const RCP<NOX::StatusTest::Generic>& tests) override { solver_->reset(x, tests); }
-  NOX::StatusTest::StatusType step() override { return solver_->step(); }
-  NOX::StatusTest::StatusType solve() override { return solver_->solve(); }
-  const NOX::Abstract::Group& getSolutionGroup() const override { return solver_->getSolutionGroup(); }
-  const NOX::Abstract::Group& getPreviousSolutionGroup() const override { return solver_->getPreviousSolutionGroup(); }
-  NOX::StatusTest::StatusType getStatus() const override { return NOX::StatusTest::Converged; }
-  int getNumIterations() const override { return iterations_; }
-  const Teuchos::ParameterList& getList() const override { return solver_->getList(); }
-  RCP<const NOX::Abstract::Group> getSolutionGroupPtr() const override { return solver_->getSolutionGroupPtr(); }
-  RCP<const NOX::Abstract::Group> getPreviousSolutionGroupPtr() const override {
-    return solver_->getPreviousSolutionGroupPtr();
-  }
-  RCP<const Teuchos::ParameterList> getListPtr() const override { return solver_->getListPtr(); }
-  RCP<const NOX::SolverStats> getSolverStatistics() const override { return solver_->getSolverStatistics(); }
-
- private:
-  RCP<NOX::Solver::Generic> solver_;
-  int iterations_;
-};
-
-// LOCA's stepper, able to continue from a converged increment (a restart file) instead of solving the
-// initial state, and to tell what a restart file must keep of it. LOCA 13.2 keeps that state in protected
-// members (Stepper, Iterator), so it is re-seeded here; every value is the uninterrupted run's, bit for
-// bit, so the restarted run takes the same increments.
-class ResumableStepper : public LOCA::Stepper {
- public:
-  using LOCA::Stepper::Stepper;
-  /// Continue from `point` at run(): the group must hold x_k and λ_k already.
-  /// `quiet(true)` while start() re-creates LOCA's state: the step notifications it makes are not steps.
-  void resumeFrom(const ContinuationPoint& point, bool secantPredictor, std::function<void(bool)> quiet) {
-    resume_ = &point;
-    secant_ = secantPredictor;
-    quiet_ = std::move(quiet);
-  }
-  double currentStepSize() const { return stepSize; }
-  std::vector<double> stepSizeState() const {
-    const auto* resumable = dynamic_cast<const ResumableStepSize*>(stepSizeStrategyPtr.get());
-    return resumable != nullptr ? resumable->saveState() : std::vector<double>();
-  }
-
- protected:
-  LOCA::Abstract::Iterator::IteratorStatus start() override {
-    if (resume_ == nullptr) return LOCA::Stepper::start();
-    const ContinuationPoint& p = *resume_;
-    struct Quiet {
-      const std::function<void(bool)>& set;
-      explicit Quiet(const std::function<void(bool)>& f) : set(f) { set(true); }
-      ~Quiet() { set(false); }
-    } quiet(quiet_);
-    // As LOCA::Stepper::start() after the initial solve, with x_k taken as converged (re-solving it would
-    // move it: Newton iterates at least once where only the absolute tolerance can pass).
-    auto underlying = curGroupPtr->getUnderlyingGroup();
-    curGroupPtr = globalData->locaFactory->createContinuationStrategy(parsedParams, stepperList, underlying, predictor,
-                                                                     conParamIDs);
-    stepSize = p.stepSize;
-    curGroupPtr->setStepSize(stepSize);
-    prevGroupPtr = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::AbstractStrategy>(curGroupPtr->clone());
-    if (secant_) {
-      // The secant predictor's first step is LOCA's first-step predictor; later ones are (x_k − x_{k−1})
-      // scaled. Its first-step flags are passed as in the run: one predictor at the start, then a
-      // completed step (which LOCA marks with postProcessContinuationStep), then the secant of x_k and
-      // x_{k−1} as the uninterrupted run computed it after increment k.
-      auto previous = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
-          curGroupPtr->getX().clone(NOX::DeepCopy), true);
-      auto thyraPrevious = Thyra::createConstVector(p.previousX);
-      *previous->getXVec() = NOX::Thyra::Vector(*thyraPrevious);
-      previous->getScalar(0) = p.previousLambda;
-      curGroupPtr->setPrevX(*previous);
-      globalData->locaErrorCheck->checkReturnType(curGroupPtr->computePredictor(), "contessa: resumed predictor");
-      curGroupPtr->postProcessContinuationStep(LOCA::Abstract::Iterator::Successful);
-    }
-    globalData->locaErrorCheck->checkReturnType(curGroupPtr->computePredictor(), "contessa: resumed predictor");
-    curPredictorPtr = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
-        curGroupPtr->getPredictorTangent()[0].clone(NOX::DeepCopy));
-    prevPredictorPtr = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(
-        curGroupPtr->getPredictorTangent()[0].clone(NOX::ShapeCopy));
-    solverPtr = rcp(new ResumedSolver(
-        NOX::Solver::buildSolver(curGroupPtr, noxStatusTestPtr, parsedParams->getSublist("NOX")), p.newtonIterations));
-    // The step-size strategy past its first step: Contessa's restore their state; LOCA's Constant and
-    // Adaptive keep only whether the first step was taken, which one call with a unit predictor sets
-    // (their first call divides the start step by dλ/ds = 1: no change).
-    if (auto* resumable = dynamic_cast<ResumableStepSize*>(stepSizeStrategyPtr.get())) {
-      resumable->restoreState(p.stepSizeState);
-    } else {
-      auto unit = Teuchos::rcp_dynamic_cast<LOCA::MultiContinuation::ExtendedVector>(curPredictorPtr->clone(NOX::DeepCopy));
-      unit->getScalar(0) = 1.0;
-      double ignored = stepSize;
-      stepSizeStrategyPtr->computeStepSize(*curGroupPtr, *unit, *solverPtr, LOCA::Abstract::Iterator::Successful, *this,
-                                           ignored);
-    }
-    stepNumber = p.increments;
-    numFailedSteps = p.failedAttempts;
-    numTotalSteps = p.increments + p.failedAttempts;
-    return LOCA::Abstract::Iterator::NotFinished;
-  }
-
- private:
-  const ContinuationPoint* resume_ = nullptr;
-  bool secant_ = false;
-  std::function<void(bool)> quiet_;
-};
 
 // Thrown at an increment boundary once the restart file is written, to leave LOCA's stepper.
 struct CheckpointStop {
@@ -369,7 +268,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
     point_.previousLambda = previousLambda_;
     point_.stepSize = stepper_ != nullptr ? stepper_->currentStepSize() : 0.0;
     point_.wallSeconds = r.wallSeconds;
-    point_.stepSizeState = stepper_ != nullptr ? stepper_->stepSizeState() : std::vector<double>();
+    point_.stepSizeState = stepper_ != nullptr ? stepper_->stepSizeState() : StateRecord();
     point_.x = currentX_;
     point_.previousX = previousX_;
     // After the increment that reaches Max Value the run ends anyway.
@@ -400,16 +299,16 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
 
   int increments = 0, failedAttempts = 0;
   double lastLambda() const { return lastLambda_; }
-  /// The restart file's scalars and vectors of the last converged increment.
-  std::vector<io::RestartRecord> restartRecords() const {
-    std::vector<io::RestartRecord> out;
-    const bool writer = currentX_->getMap()->getComm()->getRank() == 0;
-    if (writer) {
-      out.push_back({io::restart_kind::kRun, 0, point_.record()});
-      out.push_back({io::restart_kind::kStepSize, 0, point_.stepSizeState});
+  /// The restart file's continuation, step size (rank 0) and nodes (this rank's) of the last converged
+  /// increment.
+  StateRecord restartState() const {
+    StateRecord out;
+    if (currentX_->getMap()->getComm()->getRank() == 0) {
+      StateWriter continuation(out.child("continuation"));
+      ContinuationPoint::stateFields(point_, continuation);
+      out.child("step_size").merge(point_.stepSizeState);
     }
-    appendNodeRecords(*point_.x, dimension_, io::restart_kind::kDisplacement, out);
-    appendNodeRecords(*point_.previousX, dimension_, io::restart_kind::kPreviousDisplacement, out);
+    saveNodeTable(*point_.x, *point_.previousX, dimension_, out.child("nodes"));
     return out;
   }
   bool initialStateSolved() const { return !first_; }
@@ -435,7 +334,7 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   void checkpoint(bool converged) {
     if (checkpoint_ == nullptr) return;
     const auto decision = checkpoint_->decide(increments, converged);
-    if (decision.write) checkpoint_->write(restartRecords());
+    if (decision.write) checkpoint_->write(restartState());
     if (decision.stop) throw CheckpointStop{decision.reason};
   }
 
@@ -555,6 +454,18 @@ ContinuationDriver::ContinuationDriver(const RCP<model::ContactMechanicsModel>& 
                                        Teuchos::RCP<NOX::Observer> iterationObserver)
     : model_(model), piro_(piro), observer_(observer), iterationObserver_(std::move(iterationObserver)) {}
 
+std::shared_ptr<const ContinuationPoint> readContinuationPoint(const model::ContactMechanicsModel& model,
+                                                               const StateRecord& state) {
+  auto point = std::make_shared<ContinuationPoint>();
+  StateReader continuation(state.child("continuation"));
+  ContinuationPoint::stateFields(*point, continuation);
+  point->resumedStepSizeState = &state.claim("step_size");
+  const StateRecord& nodes = state.child("nodes");
+  point->x = vectorFromNodeTable(model.ownedDofMap(), model.dimension(), "displacement", nodes);
+  point->previousX = vectorFromNodeTable(model.ownedDofMap(), model.dimension(), "previous_displacement", nodes);
+  return point;
+}
+
 RunSummary ContinuationDriver::run() {
   const auto& stepSize = piro_.sublist("LOCA").sublist("Step Size");
   const bool contactBeta = stepSizeMethod(stepSize.get<std::string>("Method")).regulatesContactEvents;
@@ -588,16 +499,9 @@ RunSummary ContinuationDriver::run() {
 
   // A restarted run starts from the restart file's increment k: x_k and λ_k are the initial guess and
   // LOCA's Initial Value (taken as converged, not solved again).
-  ContinuationPoint resumed;
-  if (resume_ != nullptr) {
-    resumed.read(resume_->at(io::restart_kind::kRun, 0, "the continuation"));
-    const auto* state = resume_->find(io::restart_kind::kStepSize, 0);
-    if (state != nullptr) resumed.stepSizeState = *state;
-    resumed.x = vectorFromNodeRecords(model_->ownedDofMap(), model_->dimension(), io::restart_kind::kDisplacement, *resume_);
-    resumed.previousX = vectorFromNodeRecords(model_->ownedDofMap(), model_->dimension(),
-                                              io::restart_kind::kPreviousDisplacement, *resume_);
-    params->sublist("LOCA").sublist("Stepper").set("Initial Value", resumed.lambda);
-  }
+  static const ContinuationPoint fresh;
+  const ContinuationPoint& resumed = resume_ != nullptr ? *resume_ : fresh;
+  if (resume_ != nullptr) params->sublist("LOCA").sublist("Stepper").set("Initial Value", resumed.lambda);
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
   LOCA::ParameterVector p;
   p.addParameter("Load Factor", lambda0);
@@ -622,9 +526,17 @@ RunSummary ContinuationDriver::run() {
   try {
     ResumableStepper stepper(globalData, group, newtonTests.test(), params);
     bookkeeper->setStepper(&stepper);
+    LocaResumePoint locaPoint;
     if (resume_ != nullptr) {
-      stepper.resumeFrom(resumed, piro_.sublist("LOCA").sublist("Predictor").get<std::string>("Method") == "Secant",
-                         [bookkeeper](bool resuming) { bookkeeper->setResuming(resuming); });
+      locaPoint.increments = resumed.increments;
+      locaPoint.failedAttempts = resumed.failedAttempts;
+      locaPoint.newtonIterations = resumed.newtonIterations;
+      locaPoint.stepSize = resumed.stepSize;
+      locaPoint.previousLambda = resumed.previousLambda;
+      locaPoint.previousX = resumed.previousX;
+      locaPoint.secantPredictor = piro_.sublist("LOCA").sublist("Predictor").get<std::string>("Method") == "Secant";
+      locaPoint.stepSizeState = resumed.resumedStepSizeState;
+      stepper.resumeFrom(locaPoint, [bookkeeper](bool resuming) { bookkeeper->setResuming(resuming); });
     }
     const auto status = stepper.run();
     summary.finished = status == LOCA::Abstract::Iterator::Finished;
@@ -649,6 +561,8 @@ RunSummary ContinuationDriver::run() {
   } catch (const CheckpointStop& stop) {
     summary.checkpointed = true;
     summary.message = stop.reason;
+  } catch (const InputError&) {
+    throw;  // the restart file's step-size state did not fit (read when LOCA's state is re-created)
   } catch (const std::exception& e) {
     summary.message = solverErrorMessage(newtonTests, bookkeeper->lastLambda(), e.what());
   } catch (const char* e) {

@@ -3,12 +3,13 @@
 // solves. Built by hand (LOCA::Stepper + LOCA::Thyra::Group) rather than through Piro, because
 // Piro::LOCASolver in Trilinos 13.2 cannot take a user LOCA factory, and Contessa's step-size
 // strategies are registered through one (StepSizeFactory).
+#include <memory>
 #include <string>
 
 #include <NOX_Observer.hpp>
 #include <Teuchos_ParameterList.hpp>
 
-#include "io/RestartFile.hpp"
+#include "common/StateRecord.hpp"
 #include "model/ContactMechanicsModel.hpp"
 
 namespace contessa::solvers {
@@ -50,9 +51,10 @@ class CheckpointControl {
   /// After converged increment `increments` (`converged`), or after a failed attempt that followed it: the
   /// same answer on every rank.
   virtual Decision decide(int increments, bool converged) = 0;
-  /// Writes the restart file of the last converged increment: the driver's records plus the model's
-  /// committed state (which is that increment's, also after a failed attempt rolled back).
-  virtual void write(std::vector<io::RestartRecord> driverRecords) = 0;
+  /// Writes the restart file of the last converged increment: the driver's state (this rank's part:
+  /// "continuation" and "step_size" on rank 0, its rows of "nodes") plus the model's committed state
+  /// (which is that increment's, also after a failed attempt rolled back).
+  virtual void write(StateRecord driverState) = 0;
 };
 
 struct RunSummary {
@@ -64,6 +66,14 @@ struct RunSummary {
   double finalLambda = 0;
 };
 
+struct ContinuationPoint;
+
+/// A restart file's continuation point: its groups "continuation" and "nodes" (this rank's x_k and
+/// x_{k-1}); InputError naming a field that is missing, of another shape or not finite. Its group
+/// "step_size" is read when the driver re-creates LOCA's state (`state` must outlive the driver's run()).
+std::shared_ptr<const ContinuationPoint> readContinuationPoint(const model::ContactMechanicsModel& model,
+                                                               const StateRecord& state);
+
 class ContinuationDriver {
  public:
   /// `piro` is the validated deck list (Piro/NOX, Piro/LOCA); the model and observer must outlive run().
@@ -72,14 +82,15 @@ class ContinuationDriver {
                      IncrementObserver& observer, Teuchos::RCP<NOX::Observer> iterationObserver = Teuchos::null);
   /// Writes restart files and stops for them as `control` decides (it must outlive run()).
   void setCheckpointControl(CheckpointControl* control) { checkpoint_ = control; }
-  /// Continues from a restart file instead of solving the initial state: the model's committed state must
-  /// be restored already (ContactMechanicsModel::restoreCommittedState).
-  void resumeFrom(const io::RestartRecords& records) { resume_ = &records; }
+  /// Continues from a restart file's continuation point (readContinuationPoint) instead of solving the
+  /// initial state. The model's committed state must be restored already
+  /// (ContactMechanicsModel::restoreCommittedState).
+  void resumeFrom(std::shared_ptr<const ContinuationPoint> point) { resume_ = std::move(point); }
   RunSummary run();
 
  private:
   CheckpointControl* checkpoint_ = nullptr;
-  const io::RestartRecords* resume_ = nullptr;
+  std::shared_ptr<const ContinuationPoint> resume_;
   Teuchos::RCP<model::ContactMechanicsModel> model_;
   Teuchos::ParameterList piro_;
   IncrementObserver& observer_;
