@@ -132,13 +132,17 @@ class MshLayoutCheck {
   std::ifstream in_;
   int number_ = 0;  ///< the line last read
   int major_ = 4, minor_ = 1;
+  std::string line_;             ///< the line numbers() read
+  std::vector<double> values_;   ///< its numbers
 
   [[noreturn]] void fail(const std::string& what) const {
     throw InputError(path_ + ": not a readable Gmsh file (" + what + ")");
   }
-  static std::string trimmed(const std::string& t) {
-    const auto b = t.find_first_not_of(" \t\r"), e = t.find_last_not_of(" \t\r");
-    return b == std::string::npos ? std::string() : t.substr(b, e - b + 1);
+  static void trim(std::string& t) {
+    const auto b = t.find_first_not_of(" \t\r");
+    if (b == std::string::npos) return t.clear();
+    t.erase(t.find_last_not_of(" \t\r") + 1);
+    t.erase(0, b);
   }
   static std::string shortened(const std::string& t) { return t.size() > 40 ? t.substr(0, 40) + "..." : t; }
   std::string where(const Section& s) const { return "$" + s.name + " (line " + std::to_string(s.opened) + ")"; }
@@ -147,7 +151,7 @@ class MshLayoutCheck {
   bool nextNonBlank(std::string& line) {
     while (std::getline(in_, line)) {
       ++number_;
-      line = trimmed(line);
+      trim(line);
       if (!line.empty()) return true;
     }
     return false;
@@ -161,29 +165,40 @@ class MshLayoutCheck {
          where(s));
   }
 
-  // The next line of the section as numbers (at least `fields` of them); `what` says what it should be.
-  std::vector<double> numbers(const Section& s, std::size_t fields, const std::string& what) {
-    std::string line;
-    if (!nextNonBlank(line)) failUnclosed(s);
-    if (line == "$End" + s.name)
-      fail(where(s) + " ends at line " + std::to_string(number_) + " where " + what +
-           " was expected: a count does not match the lines, or lines are missing");
-    if (line[0] == '$') failInterrupted(s, line);
-    std::istringstream in(line);
-    std::vector<double> values;
-    std::string token;
-    while (in >> token) {
-      char* end = nullptr;
-      const double v = std::strtod(token.c_str(), &end);
-      if (end == token.c_str() || *end != '\0')
-        fail("line " + std::to_string(number_) + " of " + where(s) + ": '" + shortened(token) + "' is not a number (" +
-             what + ")");
-      values.push_back(v);
+  // The next line of the section as numbers (at least `fields` of them); `what()` says what it should
+  // be (made only for a message: the check is one pass of strtod over the file).
+  template <class What>
+  const std::vector<double>& numbers(const Section& s, std::size_t fields, const What& what) {
+    if (!nextNonBlank(line_)) failUnclosed(s);
+    if (line_[0] == '$') {
+      if (line_ == "$End" + s.name)
+        fail(where(s) + " ends at line " + std::to_string(number_) + " where " + what() +
+             " was expected: a count does not match the lines, or lines are missing");
+      failInterrupted(s, line_);
     }
-    if (values.size() < fields)
-      fail("line " + std::to_string(number_) + " of " + where(s) + ": " + std::to_string(values.size()) +
-           " values where " + what + " needs " + std::to_string(fields));
-    return values;
+    values_.clear();
+    const char* p = line_.c_str();
+    while (true) {
+      while (*p == ' ' || *p == '\t') ++p;
+      if (*p == '\0') break;
+      char* end = nullptr;
+      const double v = std::strtod(p, &end);
+      if (end == p || (*end != '\0' && *end != ' ' && *end != '\t')) {
+        const char* stop = p;
+        while (*stop != '\0' && *stop != ' ' && *stop != '\t') ++stop;
+        fail("line " + std::to_string(number_) + " of " + where(s) + ": '" + shortened(std::string(p, stop)) +
+             "' is not a number (" + what() + ")");
+      }
+      values_.push_back(v);
+      p = end;
+    }
+    if (values_.size() < fields)
+      fail("line " + std::to_string(number_) + " of " + where(s) + ": " + std::to_string(values_.size()) +
+           " values where " + what() + " needs " + std::to_string(fields));
+    return values_;
+  }
+  std::vector<double> numbers(const Section& s, std::size_t fields, const char* what) {
+    return numbers(s, fields, [what] { return std::string(what); });
   }
   // A count read from the line just read: a whole number >= 0.
   long long count(double v, const Section& s) const {
@@ -225,23 +240,23 @@ class MshLayoutCheck {
     if (major_ == 2) {
       const long long n = count(numbers(s, 1, "the number of nodes")[0], s);
       for (long long k = 0; k < n; ++k)
-        numbers(s, 4, "node " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag x y z)");
+        numbers(s, 4, [&] { return "node " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag x y z)"; });
       return requireEnd(s);
     }
     const auto header = numbers(s, minor_ == 0 ? 2 : 4, "the node section's counts");
     const long long blocks = count(header[0], s), total = count(header[1], s);
     long long seen = 0;
     for (long long b = 0; b < blocks; ++b) {
-      const std::string block = "node block " + std::to_string(b + 1) + " of " + std::to_string(blocks);
-      const auto h = numbers(s, 4, "the header of " + block);
+      const auto block = [&] { return "node block " + std::to_string(b + 1) + " of " + std::to_string(blocks); };
+      const auto h = numbers(s, 4, [&] { return "the header of " + block(); });
       const bool parametric = h[2] != 0;
       const long long n = count(h[3], s);
       if (minor_ == 0) {
-        for (long long k = 0; k < n; ++k) numbers(s, 4, "node " + std::to_string(k + 1) + " of " + block + " (tag x y z)");
+        for (long long k = 0; k < n; ++k) numbers(s, 4, [&] { return "node " + std::to_string(k + 1) + " of " + block() + " (tag x y z)"; });
       } else {
-        for (long long k = 0; k < n; ++k) numbers(s, 1, "node tag " + std::to_string(k + 1) + " of " + block);
+        for (long long k = 0; k < n; ++k) numbers(s, 1, [&] { return "node tag " + std::to_string(k + 1) + " of " + block(); });
         for (long long k = 0; k < n; ++k)
-          numbers(s, parametric ? 4 : 3, "the coordinates of node " + std::to_string(k + 1) + " of " + block);
+          numbers(s, parametric ? 4 : 3, [&] { return "the coordinates of node " + std::to_string(k + 1) + " of " + block(); });
       }
       seen += n;
     }
@@ -254,16 +269,17 @@ class MshLayoutCheck {
     if (major_ == 2) {
       const long long n = count(numbers(s, 1, "the number of elements")[0], s);
       for (long long k = 0; k < n; ++k)
-        numbers(s, 4, "element " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag type tags nodes)");
+        numbers(s, 4, [&] { return "element " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag type tags nodes)"; });
       return requireEnd(s);
     }
     const auto header = numbers(s, minor_ == 0 ? 2 : 4, "the element section's counts");
     const long long blocks = count(header[0], s), total = count(header[1], s);
     long long seen = 0;
     for (long long b = 0; b < blocks; ++b) {
-      const std::string block = "element block " + std::to_string(b + 1) + " of " + std::to_string(blocks);
-      const long long n = count(numbers(s, 4, "the header of " + block)[3], s);
-      for (long long k = 0; k < n; ++k) numbers(s, 2, "element " + std::to_string(k + 1) + " of " + block + " (tag nodes)");
+      const auto block = [&] { return "element block " + std::to_string(b + 1) + " of " + std::to_string(blocks); };
+      const long long n = count(numbers(s, 4, [&] { return "the header of " + block(); })[3], s);
+      for (long long k = 0; k < n; ++k)
+        numbers(s, 2, [&] { return "element " + std::to_string(k + 1) + " of " + block() + " (tag nodes)"; });
       seen += n;
     }
     requireEnd(s);
