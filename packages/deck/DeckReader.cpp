@@ -94,6 +94,8 @@ class DeckBuilder {
       fail(p.line, path + ": unknown type '" + *type + "' (expected one of: " + joinNames(types) + ")");
     ParsedValue parsed = parseValue(*type, *value);
     if (parsed.problem != ValueProblem::None) fail(p.line, path + ": " + parsed.message);
+    // Where the value was declared, for validation's type check (declaredAt).
+    parsed.entry.setDocString(file_ + ":" + std::to_string(p.line));
     out.setEntry(name, parsed.entry);
   }
 };
@@ -131,6 +133,8 @@ Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const st
 }
 
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path) { return parseDeck(readDeckText(path), path); }
+
+std::string declaredAt(const Teuchos::ParameterEntry& entry) { return entry.docString(); }
 
 ParsedValue setTypedFromText(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& typed,
                              const std::string& text) {

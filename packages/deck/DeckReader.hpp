@@ -18,8 +18,13 @@ std::string readDeckText(const std::string& path);
 /// The deck `text` as a ParameterList; `file` names the deck in messages ("FILE:LINE: what"). Refuses
 /// malformed XML, elements and attributes a deck does not have, a missing name, type or value, types
 /// other than deckTypes(), a parameter or sublist given twice in one list, and values that do not read
-/// as their type (numbers must be finite).
+/// as their type (numbers must be finite). Each parameter keeps its file and line (declaredAt).
 Teuchos::RCP<Teuchos::ParameterList> parseDeck(const std::string& text, const std::string& file);
+
+/// "FILE:LINE" of the <Parameter> an entry of parseDeck's list was read from (kept as the entry's
+/// documentation string, which a deck's entries have no other use for); "" for a value that came from
+/// elsewhere (--set, a default). Validation names it when the declared type is not the expected one.
+std::string declaredAt(const Teuchos::ParameterEntry& entry);
 
 /// parseDeck(readDeckText(path), path).
 Teuchos::RCP<Teuchos::ParameterList> readDeck(const std::string& path);

@@ -131,9 +131,16 @@ void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::Paramet
     const auto& expectedType = expected->getAny(false).type();
     if (given.getAny(false).type() != expectedType) {
       // Decks often write type="int" for a real number: accept it as a double.
-      // --set stores new values as text, typed here.
+      // --set stores new values as text, typed here; a deck's type="..." is the user's word, held to
+      // the documented type (a number declared type="string" is a mistake the deck reference would show).
+      const std::string declared = declaredAt(given);
       if (expectedType == typeid(double) && given.isType<int>()) {
         deck.set(name, static_cast<double>(Teuchos::getValue<int>(given)));
+      } else if (!declared.empty()) {
+        const std::string expectedDeckType = deckTypeOf(*expected);
+        throw InputError(declared + ": " + where + ": declared type=\"" + deckTypeOf(given) + "\", expected type=\"" +
+                         (expectedDeckType.empty() ? typeName(*expected) : expectedDeckType) + "\" (value '" +
+                         valueText(given) + "')");
       } else {
         const ParsedValue typed = given.isType<std::string>()
                                       ? setTypedFromText(deck, name, *expected, Teuchos::getValue<std::string>(given))

@@ -183,41 +183,46 @@ void disableHdf5FileLocking() { setenv("HDF5_USE_FILE_LOCKING", "FALSE", 1); }
 
 ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
                            const ExodusRecords& records, const std::vector<ExodusSurfaceBlock>& surfaceBlocks,
-                           const ExodusDecomposition* decomposition)
+                           const ExodusDecomposition* decomposition, ExodusNaming naming)
     : path_(path), numElements_(mesh.numElements()), fields_(fields) {
   for (const auto& block : mesh.blocks) blocks_.push_back({block.name, block.elements});
   const int dim = mesh.dimension;
   numNodes_ = mesh.numNodes();
   for (const auto& surface : surfaceBlocks) numNodes_ += static_cast<GlobalIndex>(surface.points.size()) / dim;
 
-  // The system's reason for a path that cannot be written (a directory, no permission, a read-only
-  // file system): the library's own message would blame netCDF-4 support for any failure.
-  spaceFd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  // A results file is made under startingPath_ and takes its name at its first step (a file of another
+  // run there is left alone until then); a path that is a directory would only fail at that rename.
+  struct stat existing {};
+  if (::stat(path.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode))
+    throw OutputWriteError(path, "cannot create", systemMessage(EISDIR));
+  startingPath_ = naming == ExodusNaming::AtFirstStep ? path + ".starting" : path;
+  // The system's reason for a path that cannot be written (no permission, a read-only file system, a
+  // full disk): the library's own message would blame netCDF-4 support for any failure.
+  spaceFd_ = ::open(startingPath_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (spaceFd_ < 0) throw OutputWriteError(path, "cannot create", systemMessage(errno));
+  const auto giveUp = [this](const std::string& reason) {
+    ::close(spaceFd_);
+    ::unlink(startingPath_.c_str());
+    throw OutputWriteError(path_, "cannot create", reason);
+  };
   const long long meshBytes =
       8 * (static_cast<long long>(numNodes_) * dim + static_cast<long long>(mesh.numElements()) * 8) + kMargin;
-  if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) {
-    ::close(spaceFd_);
-    throw OutputWriteError(path, "cannot create", systemMessage(error));
-  }
+  if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) giveUp(systemMessage(error));
 
   int cpuWordSize = 8, ioWordSize = 8;
   // netCDF-4/HDF5: no 2 GiB variable limits, and what current ParaView/SEACAS tools expect.
   // 64-bit integers through the API take GlobalIndex data without narrowing copies.
   errno = 0;
-  id_ = ex_create(path.c_str(), EX_CLOBBER | EX_NETCDF4 | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize);
+  id_ = ex_create(startingPath_.c_str(), EX_CLOBBER | EX_NETCDF4 | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize);
   if (id_ < 0) {
     const int error = errno;
-    ::close(spaceFd_);
-    throw OutputWriteError(path, "cannot create",
-                           error != 0 ? systemMessage(error) : std::string("the Exodus library cannot create it"));
+    giveUp(error != 0 ? systemMessage(error) : std::string("the Exodus library cannot create it"));
   }
   // HDF5 truncates the file again when it creates it, which frees what was reserved past its end on
   // ext4 and tmpfs: reserve again, now that the file is HDF5's, for the mesh and records written next.
   if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) {
     ex_close(id_);
-    ::close(spaceFd_);
-    throw OutputWriteError(path, "cannot create", systemMessage(error));
+    giveUp(systemMessage(error));
   }
   try {
     const Calls check(path, "cannot create");
@@ -375,6 +380,7 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
   } catch (...) {
     ex_close(id_);
     ::close(spaceFd_);
+    ::unlink(startingPath_.c_str());
     throw;
   }
 }
@@ -383,6 +389,7 @@ ExodusWriter::~ExodusWriter() {
   ex_close(id_);  // every step is already on disk; nothing is left to report
   releaseAfterEnd(spaceFd_);
   ::close(spaceFd_);
+  if (steps_ == 0 && startingPath_ != path_) ::unlink(startingPath_.c_str());  // a results file without a step
 }
 
 void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>& nodal,
@@ -426,6 +433,9 @@ void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>
     if (!global.empty())
       check(ex_put_glob_vars(id_, step, static_cast<int>(global.size()), global.data()), "global variables");
     check(ex_update(id_), "the flush to disk");
+    // The first step is on disk: the file takes its name, replacing the one of an earlier run.
+    if (step == 1 && startingPath_ != path_ && ::rename(startingPath_.c_str(), path_.c_str()) != 0)
+      throw OutputWriteError(path_, action, systemMessage(errno));
   } catch (...) {
     failed_ = true;
     throw;

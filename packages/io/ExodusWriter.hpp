@@ -70,16 +70,24 @@ std::vector<std::string> infoRecords(const std::vector<std::string>& lines);
 /// call. Runs are kept apart by OutputLock instead.
 void disableHdf5FileLocking();
 
+/// When the file takes its name: a mesh file as soon as it is created; a run's results file at its
+/// first step, so that a run that writes no step leaves no file, and a file of an earlier run under
+/// that name is kept until the new run has a step to show.
+enum class ExodusNaming { AtCreation, AtFirstStep };
+
 class ExodusWriter {
  public:
   /// Creates (clobbers) `path` and writes the mesh (coordinates, blocks, node sets, side sets, names),
   /// the surface blocks, the records and the variable names, and flushes it. Throws OutputWriteError
-  /// naming the file when it cannot be created or written.
+  /// naming `path` when it cannot be created or written, and removes what it had made of the file.
+  /// ExodusNaming::AtFirstStep: the file is made as `path`.starting; the first step renames it to
+  /// `path` (replacing a file of an earlier run only then), and a writer destroyed before any step
+  /// removes it.
   /// With `decomposition`, the file is one piece of a decomposed set: `mesh` is the piece (numbered
   /// from 0), and the global ids and Nemesis records are written too.
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields,
                const ExodusRecords& records = {}, const std::vector<ExodusSurfaceBlock>& surfaceBlocks = {},
-               const ExodusDecomposition* decomposition = nullptr);
+               const ExodusDecomposition* decomposition = nullptr, ExodusNaming naming = ExodusNaming::AtCreation);
   ExodusWriter(const std::string& path, const mesh::Mesh& mesh, const ExodusFields& fields, const std::string& title)
       : ExodusWriter(path, mesh, fields, ExodusRecords{title, {}, {}}) {}
   /// Closes the file.
@@ -87,7 +95,7 @@ class ExodusWriter {
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
 
-  /// Appends one output step and flushes it. nodal[v][node] over the mesh nodes then the surface
+  /// Appends one output step and flushes it (the first one then gives the file its name). nodal[v][node] over the mesh nodes then the surface
   /// blocks' points, element[v][global element] over the mesh elements, global[v]. Values of the wrong size
   /// throw std::runtime_error; a failed write throws OutputWriteError (a runtime_error too), and the
   /// file keeps the steps written before (no step is written after a failure).
@@ -106,6 +114,7 @@ class ExodusWriter {
 
  private:
   std::string path_;
+  std::string startingPath_;  ///< where the file is until its first step
   /// Per mesh block: its name and the elements' indices into an element variable (the mesh itself is not
   /// kept: the caller may free it once the file is created).
   struct BlockElements {

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <numeric>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -33,6 +35,7 @@ using detail::ExodusFile;
 struct Decomposition {
   std::vector<GlobalIndex> globalNodes, globalElements;
   std::vector<std::vector<int>> sharedWith;
+  GlobalIndex recordedNodes = 0, recordedElements = 0;  ///< of the whole mesh, as the file's records say
 };
 
 Decomposition readDecomposition(const std::string& path, GlobalIndex numNodes, GlobalIndex numElements, int rank,
@@ -53,6 +56,11 @@ Decomposition readDecomposition(const std::string& path, GlobalIndex numNodes, G
                                            " ranks; the run has " + std::to_string(numRanks));
 
   Decomposition d;
+  int64_t globalNodes = 0, globalElements = 0, globalBlocks = 0, globalNodeSets = 0, globalSideSets = 0;
+  check(ex_get_init_global(file.id(), &globalNodes, &globalElements, &globalBlocks, &globalNodeSets, &globalSideSets),
+        "its global sizes");
+  d.recordedNodes = globalNodes;
+  d.recordedElements = globalElements;
   std::vector<int64_t> ids(static_cast<std::size_t>(numNodes));
   if (numNodes > 0) check(ex_get_id_map(file.id(), EX_NODE_MAP, ids.data()), "the global node ids");
   for (int64_t id : ids) d.globalNodes.push_back(id - 1);
@@ -93,10 +101,16 @@ Decomposition readDecomposition(const std::string& path, GlobalIndex numNodes, G
   return d;
 }
 
+// What a file's decomposition records say of the whole mesh.
+struct RecordedSizes {
+  GlobalIndex nodes = 0, elements = 0;
+};
+
 // The file's mesh and decomposition as this rank's part, nodes renumbered in increasing global id.
-DistributedMesh readPart(const std::string& path, int rank, int numRanks) {
+DistributedMesh readPart(const std::string& path, int rank, int numRanks, RecordedSizes* recorded = nullptr) {
   Mesh mesh = readExodusMesh(path);
   Decomposition d = readDecomposition(path, mesh.numNodes(), mesh.numElements(), rank, numRanks);
+  if (recorded != nullptr) *recorded = {d.recordedNodes, d.recordedElements};
   const int dim = mesh.dimension;
   const auto numNodes = static_cast<std::size_t>(mesh.numNodes());
 
@@ -146,6 +160,147 @@ std::vector<GlobalIndex> summed(std::vector<GlobalIndex> values) {
   return values;
 }
 
+// Collective: what each rank has for every other (outgoing[r], r = 0..size-1) exchanged; returns what the
+// others sent this rank, concatenated in rank order.
+template <class T>
+std::vector<T> exchanged(const std::vector<std::vector<T>>& outgoing, MPI_Datatype type) {
+  const int size = static_cast<int>(outgoing.size());
+  std::vector<int> sendCounts(size), receiveCounts(size), sendOffsets(size + 1, 0), receiveOffsets(size + 1, 0);
+  std::vector<T> sent;
+  for (int r = 0; r < size; ++r) {
+    sendCounts[r] = static_cast<int>(outgoing[r].size());
+    sendOffsets[r + 1] = sendOffsets[r] + sendCounts[r];
+    sent.insert(sent.end(), outgoing[r].begin(), outgoing[r].end());
+  }
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < size; ++r) receiveOffsets[r + 1] = receiveOffsets[r] + receiveCounts[r];
+  std::vector<T> received(static_cast<std::size_t>(receiveOffsets[size]));
+  MPI_Alltoallv(sent.data(), sendCounts.data(), sendOffsets.data(), type, received.data(), receiveCounts.data(),
+                receiveOffsets.data(), type, MPI_COMM_WORLD);
+  return received;
+}
+
+std::string rankList(std::vector<GlobalIndex> ranks) {
+  std::sort(ranks.begin(), ranks.end());
+  std::string text;
+  for (std::size_t k = 0; k < ranks.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == ranks.size() ? " and " : ", ") + std::to_string(ranks[k]);
+  return text;
+}
+
+// Collective. The files of a set must be pieces of one decomposition of one mesh: the same global sizes
+// in every file's records, every global element in exactly one file, every global node in at least
+// one, held by as many files as the communication maps of each say, at the same coordinates in all.
+// Pieces of two decompositions (or two meshes) would otherwise be read as one mesh, holes and overlaps
+// included. Each global id is checked by rank id % N, which the others send what they hold of it (an
+// all-to-all of the part's ids and node coordinates: the cost of reading the part once more). Throws,
+// on every rank, the InputError of the lowest rank that finds a difference, naming the set.
+void requireOneDecomposition(const DistributedMesh& part, const RecordedSizes& recorded, const std::string& base) {
+  const int rank = part.rank, numRanks = part.numRanks;
+  const std::string set = decomposedFileName(base, numRanks, 0) + " ...";
+  const auto file = [&](GlobalIndex r) { return decomposedFileName(base, numRanks, static_cast<int>(r)); };
+  const Mesh& local = part.local();
+  const int dim = local.dimension;
+
+  // The records and the dimension, compared on every rank alike.
+  const std::vector<GlobalIndex> facts = allGather({recorded.nodes, recorded.elements, dim});
+  for (int r = 1; r < numRanks; ++r)
+    requireInput(std::equal(facts.begin(), facts.begin() + 3, facts.begin() + 3 * r),
+                 set + ": the files are not pieces of one mesh: " + file(0) + " records " + std::to_string(facts[0]) +
+                     " nodes, " + std::to_string(facts[1]) + " elements in " + std::to_string(facts[2]) + "D, " +
+                     file(r) + " " + std::to_string(facts[3 * r]) + " nodes, " + std::to_string(facts[3 * r + 1]) +
+                     " elements in " + std::to_string(facts[3 * r + 2]) + "D");
+  const GlobalIndex numNodes = recorded.nodes, numElements = recorded.elements;
+
+  // Global ids in range, then sent to their checking rank: (id, holder) for an element, (id, holder,
+  // number of files holding it by this file's maps) and the coordinates for a node.
+  std::exception_ptr failure;
+  std::vector<std::vector<GlobalIndex>> elementsOut(numRanks), nodesOut(numRanks);
+  std::vector<std::vector<double>> coordinatesOut(numRanks);
+  double extent = 0;
+  try {
+    for (GlobalIndex g : part.part.globalElements) {
+      requireInput(g >= 0 && g < numElements, set + ": " + file(rank) + " holds global element id " +
+                                                  std::to_string(g + 1) + ", beyond the " + std::to_string(numElements) +
+                                                  " elements its records give the mesh");
+      elementsOut[g % numRanks].insert(elementsOut[g % numRanks].end(), {g, rank});
+    }
+    for (std::size_t n = 0; n < part.part.globalNodes.size(); ++n) {
+      const GlobalIndex g = part.part.globalNodes[n];
+      requireInput(g >= 0 && g < numNodes, set + ": " + file(rank) + " holds global node id " + std::to_string(g + 1) +
+                                               ", beyond the " + std::to_string(numNodes) +
+                                               " nodes its records give the mesh");
+      const auto holders = static_cast<GlobalIndex>(part.part.sharedWith[n].size()) + 1;
+      nodesOut[g % numRanks].insert(nodesOut[g % numRanks].end(), {g, rank, holders});
+      for (int i = 0; i < 3; ++i) {
+        const double x = i < dim ? local.coordinates[n * dim + i] : 0.0;
+        coordinatesOut[g % numRanks].push_back(x);
+        extent = std::max(extent, std::abs(x));
+      }
+    }
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  throwIfAnyRankFailed(failure);
+  MPI_Allreduce(MPI_IN_PLACE, &extent, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  const std::vector<GlobalIndex> elements = exchanged(elementsOut, MPI_LONG_LONG);
+  const std::vector<GlobalIndex> nodes = exchanged(nodesOut, MPI_LONG_LONG);
+  const std::vector<double> coordinates = exchanged(coordinatesOut, MPI_DOUBLE);
+
+  try {
+    // Elements: each id of this rank's share (id % N == rank) in exactly one file.
+    std::vector<std::vector<GlobalIndex>> elementHolders(static_cast<std::size_t>(numElements / numRanks + 1));
+    for (std::size_t k = 0; k < elements.size(); k += 2)
+      elementHolders[elements[k] / numRanks].push_back(elements[k + 1]);
+    for (GlobalIndex g = rank; g < numElements; g += numRanks) {
+      const auto& holders = elementHolders[g / numRanks];
+      requireInput(!holders.empty(), set + ": global element id " + std::to_string(g + 1) +
+                                         " is in none of the files (the files cover the elements of another "
+                                         "decomposition or mesh)");
+      requireInput(holders.size() == 1, set + ": global element id " + std::to_string(g + 1) +
+                                            " is in the files of ranks " + rankList(holders) +
+                                            " (pieces of two decompositions or meshes)");
+    }
+    // Nodes: each in a file at least, held by as many files as each holder's maps say, at one place.
+    struct Copy {
+      GlobalIndex holder, holders;
+      const double* x;
+    };
+    std::vector<std::vector<Copy>> nodeCopies(static_cast<std::size_t>(numNodes / numRanks + 1));
+    for (std::size_t k = 0, c = 0; k < nodes.size(); k += 3, c += 3)
+      nodeCopies[nodes[k] / numRanks].push_back({nodes[k + 1], nodes[k + 2], coordinates.data() + c});
+    const double tolerance = 1e-12 * std::max(extent, 1.0);
+    for (GlobalIndex g = rank; g < numNodes; g += numRanks) {
+      const auto& copies = nodeCopies[g / numRanks];
+      const std::string node = set + ": global node id " + std::to_string(g + 1);
+      requireInput(!copies.empty(), node + " is in none of the files (the files cover the nodes of another "
+                                           "decomposition or mesh)");
+      std::vector<GlobalIndex> holders;
+      for (const Copy& c : copies) holders.push_back(c.holder);
+      for (const Copy& c : copies) {
+        requireInput(c.holders == static_cast<GlobalIndex>(copies.size()),
+                     node + " is in the files of ranks " + rankList(holders) + ", but the communication maps of " +
+                         file(c.holder) + " share it with " + std::to_string(c.holders - 1) +
+                         " other file(s) (pieces of two decompositions or meshes)");
+        for (int i = 0; i < 3; ++i)
+          if (std::abs(c.x[i] - copies.front().x[i]) > tolerance) {
+            std::ostringstream where;
+            where.precision(9);
+            for (const Copy* copy : {&copies.front(), &c}) {
+              where << (copy == &c ? " and (" : " (");
+              for (int j = 0; j < dim; ++j) where << (j > 0 ? ", " : "") << copy->x[j];
+              where << ") in " << file(copy->holder);
+            }
+            throw InputError(node + " lies at different places:" + where.str() + " (pieces of two meshes)");
+          }
+      }
+    }
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  throwIfAnyRankFailed(failure);
+}
+
 }  // namespace
 
 DistributedMesh readDecomposedExodus(const std::string& base) {
@@ -153,9 +308,10 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   const int rank = world.rank, numRanks = world.size;
   const std::string path = decomposedFileName(base, numRanks, rank);
   DistributedMesh part;
+  RecordedSizes recorded;
   std::exception_ptr failure;
   try {
-    part = readPart(path, rank, numRanks);
+    part = readPart(path, rank, numRanks, &recorded);
   } catch (...) {
     failure = std::current_exception();
   }
@@ -169,6 +325,7 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   requireInput(worldValue(signature, MPI_MIN) == worldValue(signature, MPI_MAX),
                decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different element blocks, "
                                                        "node sets or side sets (names and order must agree)");
+  requireOneDecomposition(part, recorded, base);
 
   // Global sizes: each element is in one file, each node owned by one.
   std::vector<GlobalIndex> sizes{static_cast<GlobalIndex>(part.ownedNodes().size()), local.numElements()};

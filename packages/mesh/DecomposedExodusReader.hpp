@@ -22,7 +22,10 @@ std::string decomposedFileName(const std::string& base, int numFiles, int rank);
 /// file's rank owning its elements); global sizes are summed over the ranks; a side set's entries
 /// are placed in the whole set in (global element, side) order. Any rank's failure (a missing or
 /// unreadable file, a set written for another number of ranks) is an InputError naming the file on
-/// every rank.
+/// every rank. The files must be the pieces of one decomposition of one mesh: the same global sizes in
+/// every file's records, each global element in exactly one file, each global node in one at least, in
+/// as many files as their communication maps say and at the same coordinates (to 1e-12 of the mesh's
+/// extent) in all; otherwise every rank throws one InputError naming the set and what differs.
 DistributedMesh readDecomposedExodus(const std::string& base);
 
 /// The rank counts N of the sets `base.N.r` present beside `base` (a file of the set for any r is

@@ -8,7 +8,9 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -89,12 +91,210 @@ struct Group {
   std::string name;
 };
 
+// The layout of an ASCII .msh file, checked before Gmsh reads it: Gmsh's reader skips to the next
+// '$' line it knows, so a file with its $EndNodes missing, a section cut short or a count that does
+// not match the lines below it is read without a word, and what it made of it fails much later (the
+// results file cannot be written). Every section must close before the next one begins; $PhysicalNames,
+// $Nodes and $Elements must hold exactly the lines their counts announce (MSH 2.x, 4.0 and 4.1). One
+// pass over the file, line by line (nothing kept). Binary files (file-type 1) are left to Gmsh: their
+// sections are byte counts, not lines.
+class MshLayoutCheck {
+ public:
+  explicit MshLayoutCheck(std::string path) : path_(std::move(path)), in_(path_, std::ios::binary) {}
+
+  void run() {
+    std::string line;
+    if (!in_ || !nextNonBlank(line) || line != "$MeshFormat") return;  // not MSH 2 or 4: Gmsh decides
+    Section format{"MeshFormat", number_};
+    const auto v = numbers(format, 3, "the version, file type and data size");
+    major_ = static_cast<int>(v[0]);
+    minor_ = static_cast<int>(std::lround((v[0] - major_) * 10));
+    if (v[1] != 0 || (major_ != 2 && major_ != 4)) return;  // binary, or a version not checked here
+    requireEnd(format);
+    while (nextNonBlank(line)) {
+      if (line[0] != '$')
+        fail("line " + std::to_string(number_) + ": '" + shortened(line) + "' outside any section ($Name ... $EndName)");
+      Section section{line.substr(1), number_};
+      if (section.name == "PhysicalNames") checkPhysicalNames(section);
+      else if (section.name == "Nodes") checkNodes(section);
+      else if (section.name == "Elements") checkElements(section);
+      else skipToEnd(section);
+    }
+  }
+
+ private:
+  struct Section {
+    std::string name;
+    int opened;  ///< line of $Name
+  };
+
+  std::string path_;
+  std::ifstream in_;
+  int number_ = 0;  ///< the line last read
+  int major_ = 4, minor_ = 1;
+  std::string line_;             ///< the line numbers() read
+  std::vector<double> values_;   ///< its numbers
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(path_ + ": not a readable Gmsh file (" + what + ")");
+  }
+  static void trim(std::string& t) {
+    const auto b = t.find_first_not_of(" \t\r");
+    if (b == std::string::npos) return t.clear();
+    t.erase(t.find_last_not_of(" \t\r") + 1);
+    t.erase(0, b);
+  }
+  static std::string shortened(const std::string& t) { return t.size() > 40 ? t.substr(0, 40) + "..." : t; }
+  std::string where(const Section& s) const { return "$" + s.name + " (line " + std::to_string(s.opened) + ")"; }
+
+  // The next line that is not blank, trimmed; false at the end of the file.
+  bool nextNonBlank(std::string& line) {
+    while (std::getline(in_, line)) {
+      ++number_;
+      trim(line);
+      if (!line.empty()) return true;
+    }
+    return false;
+  }
+  [[noreturn]] void failUnclosed(const Section& s) const {
+    fail(where(s) + " has no $End" + s.name + ": the file ends at line " + std::to_string(number_) +
+         " (a truncated file?)");
+  }
+  [[noreturn]] void failInterrupted(const Section& s, const std::string& line) const {
+    fail("line " + std::to_string(number_) + ": " + shortened(line) + " begins before $End" + s.name + " closes " +
+         where(s));
+  }
+
+  // The next line of the section as numbers (at least `fields` of them); `what()` says what it should
+  // be (made only for a message: the check is one pass of strtod over the file).
+  template <class What>
+  const std::vector<double>& numbers(const Section& s, std::size_t fields, const What& what) {
+    if (!nextNonBlank(line_)) failUnclosed(s);
+    if (line_[0] == '$') {
+      if (line_ == "$End" + s.name)
+        fail(where(s) + " ends at line " + std::to_string(number_) + " where " + what() +
+             " was expected: a count does not match the lines, or lines are missing");
+      failInterrupted(s, line_);
+    }
+    values_.clear();
+    const char* p = line_.c_str();
+    while (true) {
+      while (*p == ' ' || *p == '\t') ++p;
+      if (*p == '\0') break;
+      char* end = nullptr;
+      const double v = std::strtod(p, &end);
+      if (end == p || (*end != '\0' && *end != ' ' && *end != '\t')) {
+        const char* stop = p;
+        while (*stop != '\0' && *stop != ' ' && *stop != '\t') ++stop;
+        fail("line " + std::to_string(number_) + " of " + where(s) + ": '" + shortened(std::string(p, stop)) +
+             "' is not a number (" + what() + ")");
+      }
+      values_.push_back(v);
+      p = end;
+    }
+    if (values_.size() < fields)
+      fail("line " + std::to_string(number_) + " of " + where(s) + ": " + std::to_string(values_.size()) +
+           " values where " + what() + " needs " + std::to_string(fields));
+    return values_;
+  }
+  std::vector<double> numbers(const Section& s, std::size_t fields, const char* what) {
+    return numbers(s, fields, [what] { return std::string(what); });
+  }
+  // A count read from the line just read: a whole number >= 0.
+  long long count(double v, const Section& s) const {
+    if (!(v >= 0 && v == std::floor(v) && v <= 1e15))
+      fail("line " + std::to_string(number_) + " of " + where(s) + ": '" + std::to_string(v) + "' is not a count");
+    return static_cast<long long>(v);
+  }
+  // After the lines the counts announce: $EndName.
+  void requireEnd(const Section& s) {
+    std::string line;
+    if (!nextNonBlank(line)) failUnclosed(s);
+    if (line == "$End" + s.name) return;
+    if (line[0] == '$') failInterrupted(s, line);
+    fail("line " + std::to_string(number_) + " of " + where(s) + ": more lines than its counts announce, or $End" +
+         s.name + " missing");
+  }
+  void skipToEnd(const Section& s) {
+    std::string line;
+    while (nextNonBlank(line)) {
+      if (line == "$End" + s.name) return;
+      if (line[0] == '$') failInterrupted(s, line);
+    }
+    failUnclosed(s);
+  }
+
+  void checkPhysicalNames(const Section& s) {
+    const long long n = count(numbers(s, 1, "the number of names")[0], s);
+    for (long long k = 0; k < n; ++k) {
+      std::string line;
+      if (!nextNonBlank(line)) failUnclosed(s);
+      if (line[0] == '$')
+        fail(where(s) + " ends at line " + std::to_string(number_) + " where name " + std::to_string(k + 1) + " of " +
+             std::to_string(n) + " was expected: a count does not match the lines, or lines are missing");
+    }
+    requireEnd(s);
+  }
+
+  void checkNodes(const Section& s) {
+    if (major_ == 2) {
+      const long long n = count(numbers(s, 1, "the number of nodes")[0], s);
+      for (long long k = 0; k < n; ++k)
+        numbers(s, 4, [&] { return "node " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag x y z)"; });
+      return requireEnd(s);
+    }
+    const auto header = numbers(s, minor_ == 0 ? 2 : 4, "the node section's counts");
+    const long long blocks = count(header[0], s), total = count(header[1], s);
+    long long seen = 0;
+    for (long long b = 0; b < blocks; ++b) {
+      const auto block = [&] { return "node block " + std::to_string(b + 1) + " of " + std::to_string(blocks); };
+      const auto h = numbers(s, 4, [&] { return "the header of " + block(); });
+      const bool parametric = h[2] != 0;
+      const long long n = count(h[3], s);
+      if (minor_ == 0) {
+        for (long long k = 0; k < n; ++k) numbers(s, 4, [&] { return "node " + std::to_string(k + 1) + " of " + block() + " (tag x y z)"; });
+      } else {
+        for (long long k = 0; k < n; ++k) numbers(s, 1, [&] { return "node tag " + std::to_string(k + 1) + " of " + block(); });
+        for (long long k = 0; k < n; ++k)
+          numbers(s, parametric ? 4 : 3, [&] { return "the coordinates of node " + std::to_string(k + 1) + " of " + block(); });
+      }
+      seen += n;
+    }
+    requireEnd(s);
+    if (seen != total)
+      fail(where(s) + " announces " + std::to_string(total) + " nodes, its blocks hold " + std::to_string(seen));
+  }
+
+  void checkElements(const Section& s) {
+    if (major_ == 2) {
+      const long long n = count(numbers(s, 1, "the number of elements")[0], s);
+      for (long long k = 0; k < n; ++k)
+        numbers(s, 4, [&] { return "element " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag type tags nodes)"; });
+      return requireEnd(s);
+    }
+    const auto header = numbers(s, minor_ == 0 ? 2 : 4, "the element section's counts");
+    const long long blocks = count(header[0], s), total = count(header[1], s);
+    long long seen = 0;
+    for (long long b = 0; b < blocks; ++b) {
+      const auto block = [&] { return "element block " + std::to_string(b + 1) + " of " + std::to_string(blocks); };
+      const long long n = count(numbers(s, 4, [&] { return "the header of " + block(); })[3], s);
+      for (long long k = 0; k < n; ++k)
+        numbers(s, 2, [&] { return "element " + std::to_string(k + 1) + " of " + block() + " (tag nodes)"; });
+      seen += n;
+    }
+    requireEnd(s);
+    if (seen != total)
+      fail(where(s) + " announces " + std::to_string(total) + " elements, its blocks hold " + std::to_string(seen));
+  }
+};
+
 class Reader {
  public:
   explicit Reader(std::string path) : path_(std::move(path)) {}
 
   Mesh read() {
     requireReadableMshFile();
+    MshLayoutCheck(path_).run();
     GmshSession session(gmsh_);
     try {
       gmsh_.open(path_);

@@ -2,8 +2,10 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <functional>
@@ -177,7 +179,7 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     if (!perRank_) {
       continuing(exodusPath_, [&] {
         exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, whole, fields, runRecords(problem.title, run, ranks),
-                                                     surfaceBlocks);
+                                                     surfaceBlocks, nullptr, io::ExodusNaming::AtFirstStep);
       });
       return;
     }
@@ -211,26 +213,20 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     const std::string piecePath = mesh::decomposedFileName(directory + "/" + name + ".exo", ranks, comm->getRank());
     continuing(piecePath, [&] {
       exodus_ = std::make_unique<io::ExodusWriter>(piecePath, piece_->mesh, fields, runRecords(problem.title, run, ranks),
-                                                   pieceSurfaces, &decomposition);
+                                                   pieceSurfaces, &decomposition, io::ExodusNaming::AtFirstStep);
     });
   };
   // Rank 0 takes the lock before any file is created, so a second run on the same files stops before
-  // it touches them; per rank, every rank creates its piece once the lock is held.
+  // it touches them; per rank, every rank creates its piece once the lock is held. The history is
+  // created (replacing an earlier run's) once every Exodus file is.
   std::string error;
   if (root_) {
     try {
       lock_ = std::make_unique<io::OutputLock>(directory, name);
       warning_ = lock_->warning();
       if (!perRank_) createExodus();
-      const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
-                                                       "new_contacts", "new_events", "stick", "slip",
-                                                       "linear_iterations"};
-      history_ = std::make_unique<io::HistoryWriter>(historyPath_, columns_, integerColumns);
-      if (restartRows != nullptr)
-        for (const auto& row : *restartRows) history_->writeRow(row);
     } catch (const std::exception& e) {
       error = e.what();
-      history_.reset();
       exodus_.reset();
       lock_.reset();
     }
@@ -243,13 +239,31 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     } catch (const std::exception& e) {
       error = e.what();
     }
-    error = model::firstMessageOfAnyRank(*comm, error);
-    if (!error.empty()) {
-      exodus_.reset();
-      history_.reset();
-      lock_.reset();
-      throw InputError(error);
+  }
+  if (root_ && error.empty()) {
+    try {
+      const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
+                                                       "new_contacts", "new_events", "stick", "slip",
+                                                       "linear_iterations"};
+      // A directory in the way would only show at the rename: say it now, as creating the file would.
+      if (std::filesystem::is_directory(historyPath_))
+        throw io::OutputWriteError(historyPath_, "cannot create", std::strerror(EISDIR));
+      history_ = std::make_unique<io::HistoryWriter>(historyStartingPath(), columns_, integerColumns);
+      if (restartRows != nullptr) {
+        for (const auto& row : *restartRows) history_->writeRow(row);
+        nameHistory();
+      }
+    } catch (const std::exception& e) {
+      error = e.what();
+      const std::size_t at = error.find(historyStartingPath());  // the history by its name
+      if (at != std::string::npos) error.replace(at, historyStartingPath().size(), historyPath_);
     }
+  }
+  error = model::firstMessageOfAnyRank(*comm, error);
+  if (!error.empty()) {
+    removeUnwrittenFiles();
+    lock_.reset();
+    throw InputError(error);
   }
   if (restartRows != nullptr) {
     for (const auto& row : *restartRows)
@@ -262,6 +276,29 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
                 "contact", "|f|", "time[s]");
     std::fflush(stdout);
   }
+}
+
+ResultsOutput::~ResultsOutput() { removeUnwrittenFiles(); }
+
+void ResultsOutput::removeUnwrittenFiles() {
+  if (!rows_.empty()) return;
+  exodus_.reset();  // a writer without a step removes its file
+  if (history_ && !historyNamed_) {
+    history_.reset();
+    std::error_code ignored;
+    std::filesystem::remove(historyStartingPath(), ignored);
+  }
+}
+
+// The history, like the Exodus file, takes its name with its first row: until then an earlier run's
+// history stays.
+std::string ResultsOutput::historyStartingPath() const { return historyPath_ + ".starting"; }
+
+void ResultsOutput::nameHistory() {
+  std::error_code ec;
+  std::filesystem::rename(historyStartingPath(), historyPath_, ec);
+  if (ec) throw io::OutputWriteError(historyPath_, "cannot create", ec.message());
+  historyNamed_ = true;
 }
 
 void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) {
@@ -295,8 +332,9 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
     for (int c = 0; c < dim; ++c) row.push_back(force[c]);
 
   const std::string stepText = "cannot write step " + std::to_string(report.step);
-  const auto describe = [&stepText](const std::exception& e) {
-    if (const auto* w = dynamic_cast<const io::OutputWriteError*>(&e)) return stepText + " to " + w->path() + ": " + w->reason();
+  const auto describe = [this, &stepText](const std::exception& e) {
+    if (const auto* w = dynamic_cast<const io::OutputWriteError*>(&e))  // the history by its name
+      return stepText + " to " + (w->path() == historyStartingPath() ? historyPath_ : w->path()) + ": " + w->reason();
     return stepText + ": " + e.what();
   };
   // What the user still has: the history's steps, which every Exodus file holds too.
@@ -346,6 +384,7 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   if (error.empty() && history_) {
     try {
       history_->writeRow(row);
+      if (!historyNamed_) nameHistory();
     } catch (const std::exception& e) {
       error = describe(e) + kept();
     }

@@ -32,7 +32,8 @@ class ResultsOutput : public solvers::IncrementObserver {
   /// `<directory>/<name>.history.csv` on rank 0 (per rank: `<directory>/<name>.exo.N.r` on each rank r
   /// of N, the rank zero-padded to the digits of N as SEACAS names them). Collective: when another run
   /// holds the lock or a file cannot be created, every rank throws InputError with the one-line reason
-  /// of the lowest rank that failed.
+  /// of the lowest rank that failed, and no file is left. Each Exodus file (ExodusNaming::AtFirstStep)
+  /// and the history take their names with their first step, so an earlier run's files stay until then.
   /// A restarted run (`restartRows`: the history rows of steps 0..k from the restart file) continues the
   /// files of the run it continues: each Exodus file is re-created with its first k + 1 steps copied from
   /// the old one (so steps written after the restart file, before a kill, are gone) and the history is
@@ -40,6 +41,12 @@ class ResultsOutput : public solvers::IncrementObserver {
   ResultsOutput(const deck::ProblemDefinition& problem, const model::ContactMechanicsModel& model,
                 const std::string& directory, const std::string& name, bool printTable,
                 const RunDescription& run = {}, const std::vector<std::vector<double>>* restartRows = nullptr);
+
+  /// A run that wrote no step (it failed before its first one) leaves no results: this rank's Exodus
+  /// file and, on rank 0, the history are removed.
+  ~ResultsOutput() override;
+  ResultsOutput(const ResultsOutput&) = delete;
+  ResultsOutput& operator=(const ResultsOutput&) = delete;
 
   /// Collective. When a rank cannot write the increment, every rank throws std::runtime_error with
   /// the reason (also kept in failure()); the files keep every increment before it.
@@ -65,6 +72,10 @@ class ResultsOutput : public solvers::IncrementObserver {
     std::vector<double> motion;  ///< displacement at λ = 1, one entry per component
   };
 
+  void removeUnwrittenFiles();
+  std::string historyStartingPath() const;
+  void nameHistory();
+
   const deck::ProblemDefinition& problem_;
   const model::ContactMechanicsModel& model_;
   bool root_, printTable_;
@@ -74,6 +85,7 @@ class ResultsOutput : public solvers::IncrementObserver {
   std::unique_ptr<io::OutputLock> lock_;
   std::unique_ptr<io::ExodusWriter> exodus_;
   std::unique_ptr<io::HistoryWriter> history_;
+  bool historyNamed_ = false;  ///< the history has its name (historyPath_), after its first row
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
   // What this rank's Exodus file shows (Single File: the whole mesh on rank 0, nothing elsewhere; Per

@@ -256,6 +256,73 @@ TEST(GmshMeshReader, UnreadableFilesInOneLine) {
   EXPECT_EQ(messageOf([&] { readGmshMesh(geo); }), geo + ": not a Gmsh mesh file (expected the extension .msh)");
 }
 
+// A damaged ASCII file is refused before Gmsh reads it (Gmsh skips to the next section it knows and
+// reads a file with its $EndNodes missing without a word): one line naming the file, the section and
+// the line. Variants of the Gmsh-made two_blocks.msh ($Nodes on lines 62-199, $Elements on 200-258)
+// and of a hand-written MSH 2.2 file.
+TEST(GmshMeshReader, DamagedSectionsAreNamedWithTheirLines) {
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(kTwoBlocks);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  ASSERT_EQ(lines.size(), 258u);
+  ASSERT_EQ(lines[198], "$EndNodes");
+  const auto refusal = [&](const std::string& stem, std::vector<std::string> text) {
+    const std::string path = tempPath(stem, ".msh");
+    {
+      std::ofstream out(path);
+      for (const auto& line : text) out << line << "\n";
+    }
+    std::string message = messageOf([&] { readGmshMesh(path); });
+    std::remove(path.c_str());
+    EXPECT_EQ(message.rfind(path + ": not a readable Gmsh file (", 0), 0u) << message;
+    return message.substr(std::min(message.size(), path.size()));
+  };
+  auto without = [&](std::size_t line) {  // 1-based
+    auto text = lines;
+    text.erase(text.begin() + static_cast<long>(line - 1));
+    return text;
+  };
+  EXPECT_EQ(refusal("no_end_nodes", without(199)),
+            ": not a readable Gmsh file (line 199: $Elements begins before $EndNodes closes $Nodes (line 62))");
+  auto miscounted = lines;
+  ASSERT_EQ(miscounted[62], "45 45 1 45");
+  miscounted[62] = "45 46 1 45";
+  EXPECT_EQ(refusal("miscounted_nodes", miscounted),
+            ": not a readable Gmsh file ($Nodes (line 62) announces 46 nodes, its blocks hold 45)");
+  EXPECT_EQ(refusal("coordinates_missing", without(198)),
+            ": not a readable Gmsh file ($Nodes (line 62) ends at line 198 where the coordinates of node 1 of node block "
+            "45 of 45 was expected: a count does not match the lines, or lines are missing)");
+  EXPECT_EQ(refusal("truncated", std::vector<std::string>(lines.begin(), lines.begin() + 230)),
+            ": not a readable Gmsh file ($Elements (line 200) has no $EndElements: the file ends at line 230 (a "
+            "truncated file?))");
+  // MSH 2.2: $Nodes on lines 8-16 (6 nodes), $Elements on lines 17-21 (2 elements).
+  const std::string quads = writeMsh("quads22", {"2 1 \"plate\""}, {"1 0 0 0", "2 1 0 0", "3 2 0 0", "4 0 1 0", "5 1 1 0", "6 2 1 0"},
+                                     {"1 3 2 1 1 1 2 5 4", "2 3 2 1 1 2 3 6 5"});
+  std::vector<std::string> v2;
+  {
+    std::ifstream in(quads);
+    for (std::string line; std::getline(in, line);) v2.push_back(line);
+  }
+  std::remove(quads.c_str());
+  ASSERT_EQ(v2[16], "$Elements");
+  ASSERT_EQ(v2[17], "2");
+  v2[17] = "3";
+  EXPECT_EQ(refusal("more_announced", v2),
+            ": not a readable Gmsh file ($Elements (line 17) ends at line 21 where element 3 of 3 (tag type tags nodes) "
+            "was expected: a count does not match the lines, or lines are missing)");
+  v2[17] = "1";
+  EXPECT_EQ(refusal("fewer_announced", v2),
+            ": not a readable Gmsh file (line 20 of $Elements (line 17): more lines than its counts announce, or "
+            "$EndElements missing)");
+  v2[17] = "2";
+  ASSERT_EQ(v2[13], "5 1 1 0");
+  v2[13] = "5 1 1";  // node 5 without its z
+  EXPECT_EQ(refusal("node_line_short", v2),
+            ": not a readable Gmsh file (line 14 of $Nodes (line 8): 3 values where node 5 of 6 (tag x y z) needs 4)");
+}
+
 TEST(MeshFactory, ReadersByTypeAndByExtension) {
   Teuchos::ParameterList list;
   list.set("File Name", std::string("two_blocks.msh"));
