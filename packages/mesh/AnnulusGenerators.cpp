@@ -87,22 +87,20 @@ std::string checkHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
 }  // namespace
 
 Mesh generateAnnulusSector(const AnnulusSectorSpec& spec) {
-  const std::string outOfMemory = checkAnnulusSector(spec);
-  return guardAllocation(outOfMemory, [&spec] { return annulusSectorRecipe(spec).whole(); });
+  return guardAllocation(checkAnnulusSector(spec), [&] { return annulusSectorRecipe(spec).whole(); });
 }
 
 DistributedMesh generateAnnulusSectorPart(const AnnulusSectorSpec& spec, int rank, int numRanks) {
-  const std::string outOfMemory = checkAnnulusSector(spec);
-  return guardAllocation(outOfMemory, [&] { return annulusSectorRecipe(spec).part(rank, numRanks); });
+  return guardAllocation(checkAnnulusSector(spec), [&] { return annulusSectorRecipe(spec).part(rank, numRanks); });
 }
 
 Mesh generateHollowCylinderSector(const HollowCylinderSectorSpec& spec) {
-  const std::string outOfMemory = checkHollowCylinderSector(spec);
-  return guardAllocation(outOfMemory, [&spec] { return hollowCylinderSectorRecipe(spec).whole(); });
+  return guardAllocation(checkHollowCylinderSector(spec), [&] { return hollowCylinderSectorRecipe(spec).whole(); });
 }
 
 DistributedMesh generateHollowCylinderSectorPart(const HollowCylinderSectorSpec& spec, int rank, int numRanks) {
-  const std::string outOfMemory = checkHollowCylinderSector(spec);
-  return guardAllocation(outOfMemory, [&] { return hollowCylinderSectorRecipe(spec).part(rank, numRanks); });
+  return guardAllocation(checkHollowCylinderSector(spec),
+                         [&] { return hollowCylinderSectorRecipe(spec).part(rank, numRanks); });
 }
+
 }  // namespace contessa::mesh

@@ -66,22 +66,19 @@ std::string checkBox(const BoxSpec& spec) {
 }  // namespace
 
 Mesh generateRectangle(const RectangleSpec& spec) {
-  const std::string outOfMemory = checkRectangle(spec);
-  return guardAllocation(outOfMemory, [&spec] { return rectangleRecipe(spec).whole(); });
+  return guardAllocation(checkRectangle(spec), [&] { return rectangleRecipe(spec).whole(); });
 }
 
 DistributedMesh generateRectanglePart(const RectangleSpec& spec, int rank, int numRanks) {
-  const std::string outOfMemory = checkRectangle(spec);
-  return guardAllocation(outOfMemory, [&] { return rectangleRecipe(spec).part(rank, numRanks); });
+  return guardAllocation(checkRectangle(spec), [&] { return rectangleRecipe(spec).part(rank, numRanks); });
 }
 
 Mesh generateBox(const BoxSpec& spec) {
-  const std::string outOfMemory = checkBox(spec);
-  return guardAllocation(outOfMemory, [&spec] { return boxRecipe(spec).whole(); });
+  return guardAllocation(checkBox(spec), [&] { return boxRecipe(spec).whole(); });
 }
 
 DistributedMesh generateBoxPart(const BoxSpec& spec, int rank, int numRanks) {
-  const std::string outOfMemory = checkBox(spec);
-  return guardAllocation(outOfMemory, [&] { return boxRecipe(spec).part(rank, numRanks); });
+  return guardAllocation(checkBox(spec), [&] { return boxRecipe(spec).part(rank, numRanks); });
 }
+
 }  // namespace contessa::mesh

@@ -28,7 +28,8 @@ void requireBias(double value, const char* parameter);
 std::string requireFits(const MeshSize& size, const std::vector<std::pair<std::string, int>>& counts);
 std::string requireGridFits(const std::vector<std::pair<std::string, int>>& counts);
 
-/// generate(), with an allocation failure turned into InputError(outOfMemoryMessage).
+/// generate(), with an allocation failure turned into InputError(outOfMemoryMessage): the message the
+/// generator's parameter check returned, so the check runs before anything is allocated.
 template <class Generate>
 auto guardAllocation(const std::string& outOfMemoryMessage, Generate&& generate) {
   try {

@@ -346,12 +346,11 @@ std::string checkSphereOctant(const SphereOctantSpec& spec) {
 }  // namespace
 
 Mesh generateSphereOctant(const SphereOctantSpec& spec) {
-  const std::string outOfMemory = checkSphereOctant(spec);
-  return guardAllocation(outOfMemory, [&spec] { return SphereOctant(spec).build(); });
+  return guardAllocation(checkSphereOctant(spec), [&] { return SphereOctant(spec).build(); });
 }
 
 DistributedMesh generateSphereOctantPart(const SphereOctantSpec& spec, int rank, int numRanks) {
-  const std::string outOfMemory = checkSphereOctant(spec);
-  return guardAllocation(outOfMemory, [&] { return SphereOctant(spec).part(rank, numRanks); });
+  return guardAllocation(checkSphereOctant(spec), [&] { return SphereOctant(spec).part(rank, numRanks); });
 }
+
 }  // namespace contessa::mesh
