@@ -12,6 +12,8 @@
 
 #include "common/Error.hpp"
 #include "common/ErrorText.hpp"
+#include "common/MpiCommOf.hpp"
+#include "common/RankAgreement.hpp"
 #include "deck/DeckReader.hpp"
 
 namespace contessa::app {
@@ -108,15 +110,11 @@ void agreeOnInput(const Teuchos::Comm<int>& comm, const std::function<void()>& v
     message = plainMessage(e);
     status = 1;
   }
-  const int size = comm.getSize();
-  const int mine = status != 0 ? comm.getRank() : size;
-  int lowest = size;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(lowest));
-  if (lowest == size) return;
-  Teuchos::broadcast(comm, lowest, &status);
-  broadcastString(comm, lowest, message);
-  if (lowest != 0) message += " (on rank " + std::to_string(lowest) + ")";
-  if (status == 2) throw InputError(message);
+  const RankMessage lowest = lowestSpeakingRank(mpiCommOf(comm), status, std::move(message));
+  if (!lowest.spoken()) return;
+  message = lowest.message;
+  if (lowest.rank != 0) message += " (on rank " + std::to_string(lowest.rank) + ")";
+  if (lowest.status == 2) throw InputError(message);
   throw std::runtime_error(message);
 }
 

@@ -15,6 +15,7 @@
 #include "RunReport.hpp"
 #include "StopSignals.hpp"
 #include "common/Error.hpp"
+#include "common/MpiCommOf.hpp"
 #include "common/PhaseTimers.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
@@ -88,64 +89,52 @@ std::string commandLineText(const CommandLine& cl) {
   return text;
 }
 
-}  // namespace
-
-int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
-  const bool root = comm->getRank() == 0;
-  const auto start = std::chrono::steady_clock::now();
-  // Before the first HDF5 call (the mesh reader may make it): readers may open the results while
-  // the run writes them (io/ExodusWriter.hpp).
-  io::disableHdf5FileLocking();
-  // 1. The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
-  //    validates it and reads the mesh, and a failure on any rank (a file only some ranks can read)
-  //    stops every rank with one message (agreeOnInput).
-  const std::string deckText = shareDeckText(*comm, cl.deck);
-  mesh::agreeOnMachineMemory();
-  Teuchos::RCP<Teuchos::ParameterList> deckList;
+// The deck, validated, and what it makes before the model: the problem (its mesh part on this rank),
+// the linear solver, and the run's description for the results file.
+struct ValidatedInput {
+  Teuchos::RCP<Teuchos::ParameterList> deck;
   deck::ProblemDefinition problem;
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
   output::RunDescription description;
-  agreeOnInput(*comm, [&] {
-    deckList = deck::parseDeck(deckText, cl.deck);
-    deck::applyOverrides(*deckList, cl.overrides);
-    description = {commandLineText(cl), output::deckText(*deckList)};
+};
+
+// The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
+// validates it and reads the mesh, and a failure on any rank (a file only some ranks can read) stops
+// every rank with one message (agreeOnInput).
+ValidatedInput readInput(const CommandLine& cl, const Teuchos::Comm<int>& comm) {
+  const std::string deckText = shareDeckText(comm, cl.deck);
+  mesh::agreeOnMachineMemory();
+  ValidatedInput input;
+  agreeOnInput(comm, [&] {
+    input.deck = deck::parseDeck(deckText, cl.deck);
+    deck::applyOverrides(*input.deck, cl.overrides);
+    input.description = {commandLineText(cl), output::deckText(*input.deck)};
     Teuchos::ParameterList validTop("Contessa deck");
     validTop.sublist("Problem", false, "The model: mesh, blocks, materials, boundary conditions, output");
     validTop.sublist("Piro", false, "Solvers: NOX, LOCA, Stratimikos");
-    deck::validateAndSetDefaults(*deckList, validTop, "", {"Problem", "Piro"});
-    requireInput(deckList->isSublist("Problem") && deckList->sublist("Problem").isSublist("Mesh"),
+    deck::validateAndSetDefaults(*input.deck, validTop, "", {"Problem", "Piro"});
+    requireInput(input.deck->isSublist("Problem") && input.deck->sublist("Problem").isSublist("Mesh"),
                  "Problem/Mesh: required (the deck has no mesh)");
 
     const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
-    problem = deck::buildProblem(deckList->sublist("Problem"), deckDirectory);
-    solvers::validatePiro(deckList->sublist("Piro"), comm->getSize());
-    linearSolver = solvers::createLinearSolverFactory(deckList->sublist("Piro").sublist("Stratimikos"));
+    input.problem = deck::buildProblem(input.deck->sublist("Problem"), deckDirectory);
+    solvers::validatePiro(input.deck->sublist("Piro"), comm.getSize());
+    input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"));
 
     std::error_code ec;
     fs::create_directories(cl.outputDirectory, ec);
     requireInput(fs::is_directory(cl.outputDirectory), "--output-dir " + cl.outputDirectory + ": cannot create the directory");
   });
-  auto& piro = deckList->sublist("Piro");
-  const std::string name = fs::path(cl.deck).stem().string();
-  const bool continuation = piro.get<std::string>("Solver Type") != "NOX";
-  // Checkpoint and restart: the deck and mesh a restart file must match; with --restart, the file is read
-  // and checked before any output is touched.
-  const io::RestartContent identity = restartIdentity(*deckList, problem.mesh);
-  const std::string restartPath = cl.outputDirectory + "/" + name + ".restart";
-  RestartInput restart;
-  if (!cl.restart.empty()) {
-    requireInput(continuation, "--restart " + cl.restart +
-                                   ": a static solve (Piro/Solver Type = NOX) has no increments to continue");
-    restart = readRestart(*comm, cl.restart, identity, problem.dimension());
-  }
-  // A continuation acts on stop signals at its next increment; a single solve has none, so it leaves them
-  // to their default action.
-  if (continuation) installStopSignalHandlers();
+  return input;
+}
 
-  // 2. Model and output on this rank's part of the mesh (partitioned as it was made, deck/ProblemDefinition).
-  auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, linearSolver));
+// The model on this rank's part of the mesh (partitioned as it was made, deck/ProblemDefinition).
+Teuchos::RCP<model::ContactMechanicsModel> buildModel(const CommandLine& cl,
+                                                      const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                                                      const ValidatedInput& input) {
+  auto model = Teuchos::rcp(new model::ContactMechanicsModel(comm, input.problem, input.linearSolver));
   // A rebuild of the matrix graph (the contact left the couplings reserved for it) is a line in the log.
-  if (root && !cl.quiet)
+  if (comm->getRank() == 0 && !cl.quiet)
     model->onGraphRebuild([](const model::GraphRebuild& r) {
       std::printf("contessa: matrix graph rebuilt (%d): %s; contact couplings reserved around the current "
                   "configuration, %lld entries, %.3g s\n",
@@ -153,31 +142,18 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
       std::fflush(stdout);
     });
   // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
-  solvers::provideNearNullSpace(*linearSolver, *model->ownedDofMap(), problem.mesh);
-  // The restart file's state into the model and the continuation point, before the output is touched;
-  // then every field of the file has been read by someone (the step size's, read when LOCA's state is
-  // made, checks its own).
-  std::shared_ptr<const solvers::ContinuationPoint> resumed;
-  if (!cl.restart.empty())
-    agreeOnInput(*comm, [&] {
-      model->restoreCommittedState(restart.content.state);
-      resumed = solvers::readContinuationPoint(*model, restart.content.state);
-      restart.content.state.requireAllRead();
-    });
-  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, description,
-                                cl.restart.empty() ? nullptr : &restart.historyRows);
-  if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
-  requireHistoryColumns(problem, results.historyColumns());
-  if (root && !cl.quiet)
-    std::printf("contessa: %s on %d rank(s): %lld nodes, %lld elements, %lld unknowns\n", cl.deck.c_str(),
-                comm->getSize(), static_cast<long long>(problem.mesh.numGlobalNodes),
-                static_cast<long long>(problem.mesh.numGlobalElements),
-                static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
+  solvers::provideNearNullSpace(*input.linearSolver, *model->ownedDofMap(), input.problem.mesh);
+  return model;
+}
 
-  // 3. Continuation in the load factor.
-  // An output error ends the run on every rank (ResultsOutput agrees on it): the drivers report it as
-  // a stopped run, or it reaches here from the initial state. Its own message is the one to show; it
-  // is thrown on every rank alike, so FailureReporter prints it once (exit status 1).
+// The solve: one static solve, or the continuation in the load factor (resumed from `resumed` with
+// --restart). An output error ends the run on every rank (ResultsOutput agrees on it): the drivers
+// report it as a stopped run, or it reaches here from the initial state. Its own message is the one to
+// show; it is thrown on every rank alike, so FailureReporter prints it once (exit status 1).
+solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::ContactMechanicsModel>& model,
+                          Teuchos::ParameterList& piro, bool continuation, output::ResultsOutput& results,
+                          RunCheckpoints& checkpoints,
+                          const std::shared_ptr<const solvers::ContinuationPoint>& resumed) {
   timers::switchTo(timers::Phase::Other);
   solvers::RunSummary summary;
   // --check-jacobian: a NOX observer of the solves that sees the increment reports before the output.
@@ -186,8 +162,6 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     jacobianCheck = Teuchos::rcp(new solvers::JacobianCheckObserver(*model, cl.checkJacobianIncrements, results));
   solvers::IncrementObserver& observer = jacobianCheck.is_null() ? static_cast<solvers::IncrementObserver&>(results)
                                                                  : *jacobianCheck;
-  RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
-                             problem.maxWallSeconds, start, !cl.quiet);
   try {
     if (!continuation) {
       summary = solvers::solveStatic(model, piro, observer, jacobianCheck);
@@ -202,6 +176,15 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   }
   if (!results.failure().empty()) throw std::runtime_error(results.failure());
   if (!checkpoints.failure().empty()) throw std::runtime_error(checkpoints.failure());
+  return summary;
+}
+
+// What the run says at its end, and its exit status: 0 finished (and the deck's own checks passed), 3 a
+// check failed, 4 stopped for a restart (not an error: the run can go on from its restart file,
+// docs/user-guide.md), 1 stopped.
+int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinition& problem,
+                  const output::ResultsOutput& results, const std::string& restartPath, const Teuchos::Comm<int>& comm) {
+  const bool root = comm.getRank() == 0;
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
                 "load factor %.6g\n",
@@ -210,49 +193,108 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
     std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
     std::fflush(stdout);
   }
-  timers::printTable(*Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm(), stdout);
-  int exitStatus = 0;
+  timers::printTable(mpiCommOf(comm), stdout);
   if (summary.checkpointed) {
-    // Not an error: the run can go on from its restart file (exit status 4, docs/user-guide.md).
     if (root)
       std::printf("contessa: stopped: %s; restart file %s holds step %d (load factor %.6g); continue with "
                   "--restart %s\n",
                   summary.message.c_str(), restartPath.c_str(), summary.increments, summary.finalLambda,
                   restartPath.c_str());
-    exitStatus = 4;
-  } else if (!summary.finished) {
-    if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
-    exitStatus = 1;
-  } else {
-    int failedChecks = root ? checkRegression(problem, results) : 0;
-    Teuchos::broadcast(*comm, 0, &failedChecks);
-    if (failedChecks > 0) {
-      if (root) std::fprintf(stderr, "contessa: error: %d regression check(s) of the deck failed\n", failedChecks);
-      exitStatus = 3;
-    }
+    return 4;
   }
+  if (!summary.finished) {
+    if (root) std::fprintf(stderr, "contessa: error: %s\n", summary.message.c_str());
+    return 1;
+  }
+  int failedChecks = root ? checkRegression(problem, results) : 0;
+  Teuchos::broadcast(comm, 0, &failedChecks);
+  if (failedChecks == 0) return 0;
+  if (root) std::fprintf(stderr, "contessa: error: %d regression check(s) of the deck failed\n", failedChecks);
+  return 3;
+}
 
-  // The summary for batch logs and scripts, beside the history (a failure to write it is a warning:
-  // the results are complete).
+// The summary for batch logs and scripts, beside the history (a failure to write it is a warning: the
+// results are complete). Collective (peak memory and mesh parts are gathered).
+void writeRunReport(const CommandLine& cl, const std::string& name, const solvers::RunSummary& summary, int exitStatus,
+                    const model::ContactMechanicsModel& model, const mesh::DistributedMesh& mesh,
+                    std::chrono::steady_clock::time_point start, const Teuchos::Comm<int>& comm) {
   RunReport report;
   report.deck = cl.deck;
-  report.ranks = comm->getSize();
+  report.ranks = comm.getSize();
   report.summary = summary;
   report.exitStatus = exitStatus;
   report.directFactorizations = solvers::mumpsCounters().factorizations;
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
-  report.graphRebuilds = model->graphRebuilds();
-  report.graphRebuildSeconds = model->graphRebuildSeconds();
+  report.graphRebuilds = model.graphRebuilds();
+  report.graphRebuildSeconds = model.graphRebuildSeconds();
   report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  gatherPeakMemory(*comm, report);
-  gatherMeshParts(*comm, problem.mesh, report);
-  if (root) {
+  gatherPeakMemory(comm, report);
+  gatherMeshParts(comm, mesh, report);
+  if (comm.getRank() == 0) {
     const std::string path = cl.outputDirectory + "/" + name + ".summary.json";
     std::printf("%s\n", summaryLine(report).c_str());
     const std::string error = io::writeFileAtomically(path, summaryJson(report));
     if (!error.empty()) std::printf("contessa: warning: no run summary: %s\n", error.c_str());
     std::fflush(stdout);
   }
+}
+
+}  // namespace
+
+int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
+  const bool root = comm->getRank() == 0;
+  const auto start = std::chrono::steady_clock::now();
+  // Before the first HDF5 call (the mesh reader may make it): readers may open the results while
+  // the run writes them (io/ExodusWriter.hpp).
+  io::disableHdf5FileLocking();
+  // 1. The deck, validated on every rank, and the mesh.
+  ValidatedInput input = readInput(cl, *comm);
+  const deck::ProblemDefinition& problem = input.problem;
+  auto& piro = input.deck->sublist("Piro");
+  const std::string name = fs::path(cl.deck).stem().string();
+  const bool continuation = piro.get<std::string>("Solver Type") != "NOX";
+  // Checkpoint and restart: the deck and mesh a restart file must match; with --restart, the file is read
+  // and checked before any output is touched.
+  const io::RestartContent identity = restartIdentity(*input.deck, problem.mesh);
+  const std::string restartPath = cl.outputDirectory + "/" + name + ".restart";
+  RestartInput restart;
+  if (!cl.restart.empty()) {
+    requireInput(continuation, "--restart " + cl.restart +
+                                   ": a static solve (Piro/Solver Type = NOX) has no increments to continue");
+    restart = readRestart(*comm, cl.restart, identity, problem.dimension());
+  }
+  // A continuation acts on stop signals at its next increment; a single solve has none, so it leaves them
+  // to their default action.
+  if (continuation) installStopSignalHandlers();
+
+  // 2. Model and output on this rank's part of the mesh.
+  auto model = buildModel(cl, comm, input);
+  // The restart file's state into the model and the continuation point, before the output is touched;
+  // then every field of the file has been read by someone (the step size's, read when LOCA's state is
+  // made, checks its own).
+  std::shared_ptr<const solvers::ContinuationPoint> resumed;
+  if (!cl.restart.empty())
+    agreeOnInput(*comm, [&] {
+      model->restoreCommittedState(restart.content.state);
+      resumed = solvers::readContinuationPoint(*model, restart.content.state);
+      restart.content.state.requireAllRead();
+    });
+  output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, input.description,
+                                cl.restart.empty() ? nullptr : &restart.historyRows);
+  if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
+  requireHistoryColumns(problem, results.historyColumns());
+  if (root && !cl.quiet)
+    std::printf("contessa: %s on %d rank(s): %lld nodes, %lld elements, %lld unknowns\n", cl.deck.c_str(),
+                comm->getSize(), static_cast<long long>(problem.mesh.numGlobalNodes),
+                static_cast<long long>(problem.mesh.numGlobalElements),
+                static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
+
+  // 3. The solve, its outcome and the run's summary.
+  RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
+                             problem.maxWallSeconds, start, !cl.quiet);
+  const solvers::RunSummary summary = solve(cl, model, piro, continuation, results, checkpoints, resumed);
+  const int exitStatus = reportOutcome(summary, problem, results, restartPath, *comm);
+  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, *comm);
   return exitStatus;
 }
 

@@ -1,8 +1,6 @@
 // Element registry: one row per kernel. Adding an element = its reference-element (and enhanced-mode)
 // traits, a make function like Quad4.cpp's or Hex8.cpp's, and its rows here.
-#include <array>
-
-#include "common/Error.hpp"
+#include "common/Registry.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Hex8.hpp"
 #include "mechanics/Quad4.hpp"
@@ -10,29 +8,24 @@
 namespace contessa::mechanics {
 namespace {
 
-struct ElementEntry {
-  const char* name;
-  std::unique_ptr<ElementKernel> (*create)(const std::string& name);
-};
+using MakeElement = std::unique_ptr<ElementKernel> (*)(const std::string& name);
 
-const std::array<ElementEntry, 4> kRegistry = {
-    ElementEntry{"Q4", &makeQuad4}, ElementEntry{"Q4 Enhanced", &makeQuad4Enhanced}, ElementEntry{"Hex8", &makeHex8},
-    ElementEntry{"Hex8 Enhanced", &makeHex8Enhanced}};
+const Registry<RegistryRow<MakeElement>>& registry() {
+  static const Registry<RegistryRow<MakeElement>> rows(
+      "element", {{"Q4", "4-node quadrilateral (2D, plane strain), full 2 × 2 Gauss", &makeQuad4},
+                  {"Q4 Enhanced", "Q4 with the 4 Simo–Armero enhanced modes: exact in pure bending", &makeQuad4Enhanced},
+                  {"Hex8", "8-node hexahedron (3D), full 2 × 2 × 2 Gauss", &makeHex8},
+                  {"Hex8 Enhanced", "Hex8 with the 9 Simo–Armero enhanced modes: exact in pure bending", &makeHex8Enhanced}});
+  return rows;
+}
 
 }  // namespace
 
-std::vector<std::string> ElementFactory::names() {
-  std::vector<std::string> result;
-  for (const auto& e : kRegistry) result.emplace_back(e.name);
-  return result;
-}
+std::vector<std::string> ElementFactory::names() { return registry().names(); }
 
 std::unique_ptr<ElementKernel> ElementFactory::create(const std::string& name, const std::string& where) {
-  for (const auto& e : kRegistry)
-    if (name == e.name) return e.create(e.name);
-  std::string known;
-  for (const auto& e : kRegistry) known += (known.empty() ? "" : ", ") + std::string(e.name);
-  throw InputError(where + ": unknown element '" + name + "' (known: " + known + ")");
+  const auto& row = registry().lookup(name, where);
+  return row.factory(row.name);
 }
 
 }  // namespace contessa::mechanics

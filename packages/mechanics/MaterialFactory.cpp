@@ -1,7 +1,6 @@
 // Material registry: one row per law. Adding a law = one class + one row here.
-#include <array>
-
 #include "common/Error.hpp"
+#include "common/Registry.hpp"
 #include "mechanics/LinearElastic.hpp"
 #include "mechanics/Material.hpp"
 #include "mechanics/NeoHookean.hpp"
@@ -10,50 +9,40 @@
 namespace contessa::mechanics {
 namespace {
 
-struct MaterialEntry {
-  const char* name;
+// A law publishes its parameters and is made from them.
+struct MaterialMaker {
   Teuchos::RCP<const Teuchos::ParameterList> (*validParameters)();
   std::unique_ptr<Material> (*create)(const Teuchos::ParameterList&, const std::string&);
 };
 
 template <class Law>
-constexpr MaterialEntry entry() {
-  return {Law::kModelName, &Law::validParameters, &Law::create};
+RegistryRow<MaterialMaker> row(const char* doc) {
+  return {Law::kModelName, doc, {&Law::validParameters, &Law::create}};
 }
 
-constexpr std::array<MaterialEntry, 3> kRegistry = {
-    entry<SaintVenantKirchhoff>(), entry<NeoHookean>(), entry<LinearElastic>()};
-
-std::string knownNames() {
-  std::string list;
-  for (const auto& e : kRegistry) list += (list.empty() ? "" : ", ") + std::string(e.name);
-  return list;
+const Registry<RegistryRow<MaterialMaker>>& registry() {
+  static const Registry<RegistryRow<MaterialMaker>> rows(
+      "material model", {row<SaintVenantKirchhoff>("S = λ tr(E) I + 2μ E: large rotations with small strains"),
+                         row<NeoHookean>("compressible, W = μ/2 (tr C − 3) − μ ln J + λ/2 (ln J)²: large strains"),
+                         row<LinearElastic>("σ = λ tr(ε) I + 2μ ε, geometrically linear: small strains and rotations")});
+  return rows;
 }
 
-/// The registry row for `model`; throws InputError "<where>/Model: unknown ..." otherwise.
-const MaterialEntry& lookup(const std::string& model, const std::string& where) {
-  for (const auto& e : kRegistry)
-    if (model == e.name) return e;
-  const std::string prefix = where.empty() ? "Model" : where + "/Model";
-  throw InputError(prefix + ": unknown material model '" + model + "' (known: " + knownNames() + ")");
-}
+/// The parameter that names the law: "<where>/Model", or "Model" without a path.
+std::string modelParameter(const std::string& where) { return where.empty() ? "Model" : where + "/Model"; }
 
 }  // namespace
 
-std::vector<std::string> MaterialFactory::names() {
-  std::vector<std::string> result;
-  for (const auto& e : kRegistry) result.emplace_back(e.name);
-  return result;
-}
+std::vector<std::string> MaterialFactory::names() { return registry().names(); }
 
 Teuchos::RCP<const Teuchos::ParameterList> MaterialFactory::validParameters(const std::string& model) {
-  return lookup(model, "").validParameters();
+  return registry().lookup(model, modelParameter("")).factory.validParameters();
 }
 
 std::unique_ptr<Material> MaterialFactory::create(const Teuchos::ParameterList& params, const std::string& where) {
   requireInput(params.isType<std::string>("Model"),
-               where + "/Model: required string parameter is missing (known: " + knownNames() + ")");
-  return lookup(params.get<std::string>("Model"), where).create(params, where);
+               where + "/Model: required string parameter is missing (known: " + registry().knownNames() + ")");
+  return registry().lookup(params.get<std::string>("Model"), modelParameter(where)).factory.create(params, where);
 }
 
 }  // namespace contessa::mechanics

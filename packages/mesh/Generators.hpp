@@ -5,6 +5,9 @@
 // element-count parameters (requireRunFits). Their meshes pass Mesh::validate: positive Jacobians at
 // every corner, side sets on the boundary with outward normals (Exodus side order). Errors are
 // InputErrors whose message starts with the deck parameter's name ("Elements X: ...").
+// One file per family: CartesianGenerators.cpp (Rectangle, Box), AnnulusGenerators.cpp (Annulus Sector,
+// Hollow Cylinder Sector), SphereOctantGenerator.cpp; what they share in StructuredGrid.hpp (the grid,
+// and a rank's part of it) and GeneratorSupport.hpp (parameter checks, memory check, graded positions).
 #include <string>
 
 #include "mesh/DistributedMesh.hpp"

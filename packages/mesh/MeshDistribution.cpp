@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "common/Error.hpp"
+#include "common/RankAgreement.hpp"
 #include "mesh/MeshJoin.hpp"
 #include "mesh/Partition.hpp"
 
@@ -184,12 +185,7 @@ int worldSize() { return worldRanks().size; }
 }  // namespace
 
 void throwIfAnyRankFailed(std::exception_ptr failure) {
-  // The lowest failing rank speaks for all: 1 = an InputError, 2 = another error.
-  const int rank = worldRank(), size = worldSize();
-  if (size == 1) {  // one process (MPI perhaps not even initialised): nobody to tell
-    if (failure) std::rethrow_exception(failure);
-    return;
-  }
+  // The lowest failing rank speaks for all (common/RankAgreement): 1 = an InputError, 2 = another error.
   int status = 0;
   std::string message;
   if (failure) {
@@ -206,17 +202,11 @@ void throwIfAnyRankFailed(std::exception_ptr failure) {
       message = "unknown error";
     }
   }
-  int speaker = status != 0 ? rank : size;
-  MPI_Allreduce(MPI_IN_PLACE, &speaker, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-  if (speaker == size) return;
-  int length = static_cast<int>(message.size());
-  MPI_Bcast(&status, 1, MPI_INT, speaker, MPI_COMM_WORLD);
-  MPI_Bcast(&length, 1, MPI_INT, speaker, MPI_COMM_WORLD);
-  message.resize(static_cast<std::size_t>(length));
-  MPI_Bcast(message.data(), length, MPI_CHAR, speaker, MPI_COMM_WORLD);
-  if (rank == speaker) std::rethrow_exception(failure);
-  if (status == 1) throw InputError(message);
-  throw std::runtime_error(message);
+  const RankMessage lowest = lowestSpeakingRank(MPI_COMM_WORLD, status, std::move(message));
+  if (!lowest.spoken()) return;
+  if (lowest.rank == worldRank()) std::rethrow_exception(failure);
+  if (lowest.status == 1) throw InputError(lowest.message);
+  throw std::runtime_error(lowest.message);
 }
 
 DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {

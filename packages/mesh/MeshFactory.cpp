@@ -2,14 +2,13 @@
 #include "mesh/MeshFactory.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <exception>
 #include <fstream>
 
-#include <Teuchos_StandardParameterEntryValidators.hpp>
-
 #include "common/Error.hpp"
+#include "common/ParameterPublishing.hpp"
+#include "common/Registry.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/GmshMeshReader.hpp"
@@ -22,28 +21,6 @@ namespace {
 using Teuchos::ParameterList;
 using Teuchos::RCP;
 using Teuchos::rcp;
-
-// Publishing helpers: the validator enforces the range (the deck's validateAndSetDefaults reports a
-// violation with the parameter's path) and the doc string states it for the deck reference.
-void setPositive(ParameterList& p, const std::string& name, double value, const std::string& doc) {
-  auto v = rcp(new Teuchos::EnhancedNumberValidator<double>());
-  v->setMin(std::nextafter(0.0, 1.0));
-  p.set(name, value, doc + " (> 0)", v);
-}
-
-void setPositiveInt(ParameterList& p, const std::string& name, int value, const std::string& doc) {
-  auto v = rcp(new Teuchos::EnhancedNumberValidator<int>());
-  v->setMin(1);
-  p.set(name, value, doc + " (>= 1)", v);
-}
-
-void setChoice(ParameterList& p, const std::string& name, const std::string& value,
-               const std::vector<std::string>& choices, const std::string& doc) {
-  std::string list;
-  for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-  p.set(name, value, doc + " (one of: " + list + ")",
-        rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(choices.begin(), choices.end()))));
-}
 
 // Generators say which parameter is wrong; the deck path is added here.
 template <class F>
@@ -360,16 +337,16 @@ Mesh createMeshFile(const ParameterList& list, const std::string& where, const s
 
 // ---- The registry ----
 
-struct MeshSourceEntry {
-  const char* name;
-  const char* description;
+// A mesh source publishes its parameters and makes the whole mesh from them, or this rank's part.
+struct MeshSource {
   RCP<ParameterList> (*validParameters)();
   Mesh (*create)(const ParameterList&, const std::string& where, const std::string& directory);
   /// This rank's part built alone; null: rank 0 creates the whole mesh and sends the parts out.
   DistributedMesh (*createPart)(const ParameterList&, const std::string& where, const std::string& directory) = nullptr;
 };
 
-const std::array<MeshSourceEntry, 8> kRegistry = {{
+const Registry<RegistryRow<MeshSource>>& registry() {
+  static const Registry<RegistryRow<MeshSource>> rows("mesh type", {
     {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters,
      &createGenerated<RectangleSpec, &rectangleSpec, &generateRectangle>,
      &createGeneratedPart<RectangleSpec, &rectangleSpec, &generateRectanglePart>},
@@ -399,38 +376,33 @@ const std::array<MeshSourceEntry, 8> kRegistry = {{
      &gmshFileParameters, &createGmshFile},
     {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension", &meshFileParameters,
      &createMeshFile},
-}};
-
-const MeshSourceEntry& lookup(const std::string& type, const std::string& where = "") {
-  for (const auto& e : kRegistry)
-    if (type == e.name) return e;
-  std::string known;
-  for (const auto& e : kRegistry) known += (known.empty() ? "" : ", ") + std::string(e.name);
-  throw InputError((where.empty() ? "" : where + "/") + "Type: unknown mesh type '" + type + "' (known: " + known + ")");
+  });
+  return rows;
 }
+
+// The parameter that names the mesh source: "<where>/Type", or "Type" without a path.
+std::string typeParameter(const std::string& where) { return (where.empty() ? "" : where + "/") + "Type"; }
 
 }  // namespace
 
-std::vector<std::string> MeshFactory::names() {
-  std::vector<std::string> result;
-  for (const auto& e : kRegistry) result.emplace_back(e.name);
-  return result;
+std::vector<std::string> MeshFactory::names() { return registry().names(); }
+
+std::string MeshFactory::description(const std::string& type) { return registry().lookup(type, typeParameter("")).doc; }
+
+RCP<const ParameterList> MeshFactory::validParameters(const std::string& type) {
+  return registry().lookup(type, typeParameter("")).factory.validParameters();
 }
-
-std::string MeshFactory::description(const std::string& type) { return lookup(type).description; }
-
-RCP<const ParameterList> MeshFactory::validParameters(const std::string& type) { return lookup(type).validParameters(); }
 
 Mesh MeshFactory::create(const std::string& type, const ParameterList& params, const std::string& where,
                          const std::string& directory) {
-  return lookup(type, where).create(params, where, directory);
+  return registry().lookup(type, typeParameter(where)).factory.create(params, where, directory);
 }
 
 DistributedMesh MeshFactory::createPart(const std::string& type, const ParameterList& params, const std::string& where,
                                         const std::string& directory) {
-  const MeshSourceEntry& entry = lookup(type, where);
-  if (entry.createPart) return entry.createPart(params, where, directory);
-  return distributeMesh([&] { return entry.create(params, where, directory); });
+  const MeshSource& source = registry().lookup(type, typeParameter(where)).factory;
+  if (source.createPart) return source.createPart(params, where, directory);
+  return distributeMesh([&] { return source.create(params, where, directory); });
 }
 
 }  // namespace contessa::mesh

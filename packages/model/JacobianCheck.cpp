@@ -61,6 +61,337 @@ void requireSameContactState(const std::vector<continuation::SlaveNodeIncrement>
   if (!same) throw std::logic_error("the Jacobian check changed the contact trial state of the model");
 }
 
+// W by columns on this rank's rows (global column id → (local row, W_ij)), and each row's largest
+// |entry|: the scale of the floor τ · max_k |W_ik| below which an entry is measured against the floor.
+struct AssembledColumns {
+  std::unordered_map<GO, std::vector<std::pair<LO, double>>> entries;
+  std::vector<double> rowMax;
+};
+
+AssembledColumns assembledColumns(const CrsMatrix& matrix) {
+  const auto& colMap = *matrix.getColMap();
+  const LO numRows = static_cast<LO>(matrix.getRowMap()->getNodeNumElements());
+  AssembledColumns w;
+  w.rowMax.assign(numRows, 0.0);
+  for (LO r = 0; r < numRows; ++r) {
+    CrsMatrix::local_inds_host_view_type indices;
+    CrsMatrix::values_host_view_type values;
+    matrix.getLocalRowView(r, indices, values);
+    for (std::size_t k = 0; k < indices.extent(0); ++k) {
+      w.entries[colMap.getGlobalElement(indices(k))].emplace_back(r, values(k));
+      w.rowMax[r] = std::max(w.rowMax[r], std::abs(values(k)));
+    }
+  }
+  return w;
+}
+
+// The unknown x_j a column perturbs: its owner rank holds it (`mine`, local index lj, value xj); the
+// step h is the same on every rank.
+struct Column {
+  LO lj = 0;
+  bool mine = false;
+  double xj = 0, h = 0;
+};
+
+// The residual at x with one unknown moved, on every rank at once, and whether the contact statuses
+// held there. The contact status of every slave node (open/stick/slip, slip reversed, and the master
+// facet it is evaluated on) at the unperturbed state is what W is the derivative with: a perturbed
+// residual whose statuses differ lies beyond a kink of the residual (a node opening or closing, stick
+// turning to slip, a node at a vertex changing facet), where no difference quotient measures W.
+class PerturbedResiduals {
+ public:
+  PerturbedResiduals(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x, double lambda,
+                     const Map& rowMap)
+      : model_(model), lambda_(lambda), rowMap_(rowMap), xp_(x.clone_v()), xt_(Extract::getTpetraVector(xp_)) {
+    if (!xt_->getMap()->isSameAs(rowMap)) throw std::logic_error("JacobianCheck: W's rows are not distributed as x");
+    xNorm_ = xt_->normInf();
+    centre_ = Thyra::createMember(model.get_f_space());
+    residual(model_, xp_, lambda_, centre_);
+    baseStatuses_ = statuses();
+  }
+
+  const Teuchos::Comm<int>& comm() const { return *rowMap_.getComm(); }
+  long evaluations() const { return evaluations_; }
+  /// f(x), unperturbed.
+  Teuchos::ArrayRCP<const double> centre() const { return Extract::getConstTpetraVector(centre_)->getData(0); }
+
+  /// Column j with its step h_j = η · max(|x_j|, ‖x‖_∞, 1): the owner's, on every rank (0 when no
+  /// rank has the DOF).
+  Column column(GO j, double step) const {
+    Column c;
+    c.lj = rowMap_.getLocalElement(j);
+    c.mine = c.lj != Teuchos::OrdinalTraits<LO>::invalid();
+    double hLocal = 0;
+    if (c.mine) {
+      c.xj = xt_->getData(0)[c.lj];
+      hLocal = step * std::max({std::abs(c.xj), xNorm_, 1.0});
+    }
+    Teuchos::reduceAll(comm(), Teuchos::REDUCE_MAX, 1, &hLocal, &c.h);
+    return c;
+  }
+
+  /// f(x ± factor·h e_j) into `f` (side 0: +, side 1: −), x_j set back afterwards. The perturbed value
+  /// is rounded, so the step is exactly the one taken: `step` is |x_j' − x_j| on the owner rank, 0
+  /// elsewhere. Returns whether every rank's contact statuses are the unperturbed ones.
+  bool evaluate(const Column& c, int side, double factor, const RCP<Thyra::VectorBase<double>>& f, double& step) {
+    step = 0;
+    if (c.mine) {
+      auto v = xt_->getDataNonConst(0);
+      v[c.lj] = side == 0 ? c.xj + factor * c.h : c.xj - factor * c.h;
+      step = std::abs(v[c.lj] - c.xj);
+    }
+    residual(model_, xp_, lambda_, f);
+    ++evaluations_;
+    const bool held = sameStatusesEverywhere();
+    if (c.mine) xt_->getDataNonConst(0)[c.lj] = c.xj;
+    return held;
+  }
+
+ private:
+  std::vector<int> statuses() const {
+    std::vector<int> s;
+    for (const auto& n : model_.trialIncrement()) {
+      s.push_back(2 * static_cast<int>(n.trialStatus) + (n.slipReversed ? 1 : 0));
+      s.push_back(n.trialFacet);
+    }
+    return s;
+  }
+
+  bool sameStatusesEverywhere() const {
+    int same = statuses() == baseStatuses_ ? 1 : 0, all = 0;
+    Teuchos::reduceAll(comm(), Teuchos::REDUCE_MIN, 1, &same, &all);
+    return all == 1;
+  }
+
+  const ContactMechanicsModel& model_;
+  const double lambda_;
+  const Map& rowMap_;
+  RCP<Thyra::VectorBase<double>> xp_;
+  RCP<Vector> xt_;
+  double xNorm_ = 0;
+  RCP<Thyra::VectorBase<double>> centre_;
+  std::vector<int> baseStatuses_;
+  long evaluations_ = 1;  // f(x)
+};
+
+// One column's difference quotients D_ij on this rank's rows and the scale each entry is measured
+// against.
+struct ColumnDifferences {
+  std::vector<double> differences, scales;
+};
+
+// The residuals of one attempt at a column: f(x + h e_j) and f(x − h e_j) and, when only one side
+// keeps the statuses, f at half the step on that side.
+struct Attempt {
+  double taken[2] = {0, 0};  ///< the steps taken on each side, the same on every rank
+  bool smooth[2] = {false, false};
+  double halfTaken = 0;
+  bool halfSmooth = false;
+};
+
+// Central differences where both sides keep the statuses, else the one-sided difference on the side
+// that does; with each, the second difference f'' of the same residuals. Returns the bend of the
+// column on this rank: max over rows of h |f''| / 2 (the error of a one-sided first-order difference)
+// against the entry's scale.
+//
+// One side only: the one-sided difference is second-order accurate with a half step added on that
+// side, D = [b²(f_a − f_0) − a²(f_b − f_0)] / (a b (b − a)) for the signed steps a ≈ b/2 and b (a
+// first-order one would carry an error of h·f''/2, as large as the check's tolerance).
+double differenceRows(const Attempt& attempt, const Teuchos::ArrayRCP<const double>& f0,
+                      const Teuchos::ArrayRCP<const double>& a, const Teuchos::ArrayRCP<const double>& b,
+                      const Teuchos::ArrayRCP<const double>& half, const std::vector<double>& wColumn,
+                      const std::vector<double>& rowMax, double rowFloor, double shrink, ColumnDifferences& out) {
+  const int side = attempt.smooth[0] ? 0 : 1;
+  const double* taken = attempt.taken;
+  const double sign = side == 0 ? 1.0 : -1.0, stepA = sign * attempt.halfTaken, stepB = sign * taken[side];
+  const bool central = attempt.smooth[0] && attempt.smooth[1];
+  double bend = 0;
+  for (std::size_t r = 0; r < wColumn.size(); ++r) {
+    const double fb = side == 0 ? a[r] : b[r];
+    double d = 0, second = 0;
+    if (central) {
+      d = (a[r] - b[r]) / (taken[0] + taken[1]);
+      second = 2 * ((a[r] - f0[r]) / taken[0] - (f0[r] - b[r]) / taken[1]) / (taken[0] + taken[1]);
+    } else if (attempt.halfSmooth) {
+      d = (stepB * stepB * (half[r] - f0[r]) - stepA * stepA * (fb - f0[r])) / (stepA * stepB * (stepB - stepA));
+      second = 2 * ((fb - f0[r]) / stepB - (half[r] - f0[r]) / stepA) / (stepB - stepA);
+    } else {
+      d = (fb - f0[r]) / stepB;
+    }
+    // The noise of a difference grows as 1/h: a shrunk step raises the floor in proportion.
+    const double scale = std::max(std::abs(wColumn[r]), rowFloor * rowMax[r] / shrink);
+    out.differences[r] = d;
+    out.scales[r] = scale;
+    if (scale > 0) bend = std::max(bend, 0.5 * taken[side] * std::abs(second) / scale);
+  }
+  return bend;
+}
+
+// How far the differences at a shorter step moved from those at the longer one, against the longer
+// step's scales (max over this rank's rows; infinite when one is not finite).
+double disagreement(const ColumnDifferences& longer, const ColumnDifferences& shorter) {
+  double worst = 0;
+  for (std::size_t r = 0; r < longer.differences.size(); ++r) {
+    const double gap = std::abs(longer.differences[r] - shorter.differences[r]);
+    if (gap > 0) worst = std::max(worst, longer.scales[r] > 0 ? gap / longer.scales[r] : gap);
+    if (!std::isfinite(gap)) worst = std::numeric_limits<double>::infinity();
+  }
+  return worst;
+}
+
+// Differences one column of W at a step that shrinks at kinks and bends (the header's rules).
+class ColumnDifferencer {
+ public:
+  ColumnDifferencer(const ContactMechanicsModel& model, PerturbedResiduals& residuals, const std::vector<double>& rowMax,
+                    const JacobianCheck::Options& options)
+      : residuals_(residuals), rowMax_(rowMax), options_(options), f0_(residuals.centre()),
+        previous_{std::vector<double>(rowMax.size(), 0.0), std::vector<double>(rowMax.size(), 0.0)} {
+    for (auto* f : {&plus_, &minus_, &half_}) *f = Thyra::createMember(model.get_f_space());
+  }
+
+  /// The differences that stand into `out`; false when the column straddles kinks at every step tried
+  /// (not compared). Counts retried and bent columns in `result`.
+  bool difference(const Column& column, const std::vector<double>& wColumn, JacobianComparison& result,
+                  ColumnDifferences& out) {
+    // A side whose contact statuses differ from the unperturbed ones is not used; when both differ, h
+    // shrinks (by kStepShrink, kKinkShrinks times) before the column is given up as non-smooth. Where
+    // the residual bends within the step (see kMaxBend), h shrinks until it does not.
+    constexpr int kKinkShrinks = 2, kBendShrinks = 2;
+    constexpr double kStepShrink = 1e-2;
+    double shrink = 1;
+    int kinkShrinks = 0, bendShrinks = 0;
+    bool havePrevious = false, counted = false;
+    for (;;) {
+      const Attempt attempt = evaluate(column, shrink);
+      if (!attempt.smooth[0] && !attempt.smooth[1]) {
+        if (havePrevious) {  // a kink within the shorter step: the longer one's differences stand
+          standPrevious(out);
+          return true;
+        }
+        if (kinkShrinks++ < kKinkShrinks) {
+          shrink *= kStepShrink;
+          continue;
+        }
+        return false;
+      }
+      double bend = differenceRows(attempt, f0_, data(plus_), data(minus_), data(half_), wColumn, rowMax_,
+                                   options_.rowFloor, shrink, out);
+      double globalBend = 0;
+      Teuchos::reduceAll(residuals_.comm(), Teuchos::REDUCE_MAX, 1, &bend, &globalBend);
+      if (havePrevious) {
+        // The differences at the longer step against these: where they agree, the bend did no harm (f'''
+        // small: an entry whose slope is small against its curvature), and the longer step's
+        // differences, with the lower floor, stand.
+        double local = disagreement(previous_, out), global = 0;
+        Teuchos::reduceAll(residuals_.comm(), Teuchos::REDUCE_MAX, 1, &local, &global);
+        if (global <= kAgreement) {
+          standPrevious(out);
+          return true;
+        }
+        if (!counted) ++result.bentColumns;
+        counted = true;
+      }
+      // A residual that bends within the step (the slip direction of a 3D frictional node turns by
+      // ε_T h / ‖t^trial‖, which is not small when ‖t^trial‖ is a few times μ|t_N|): the central
+      // difference's error can reach (2·bend)²/6 of the entry, or more. Difference again with h shrunk
+      // so the bend is about kShortStepBend / 4 (at least tenfold), and keep the shorter step unless
+      // both agree (above).
+      if (std::isfinite(globalBend) && globalBend > kMaxBend && bendShrinks++ < kBendShrinks) {
+        previous_.differences = out.differences;
+        previous_.scales = out.scales;
+        if (!havePrevious) ++result.retriedColumns;
+        havePrevious = true;
+        shrink *= std::clamp(0.25 * kShortStepBend / globalBend, 1e-4, 0.1);
+        continue;
+      }
+      return true;
+    }
+  }
+
+ private:
+  static Teuchos::ArrayRCP<const double> data(const RCP<Thyra::VectorBase<double>>& f) {
+    return Extract::getConstTpetraVector(f)->getData(0);
+  }
+
+  // The longer step's differences stand: they go to `out` (and out's to the spare, reused next column).
+  void standPrevious(ColumnDifferences& out) {
+    out.differences.swap(previous_.differences);
+    out.scales.swap(previous_.scales);
+  }
+
+  // f(x ± shrink·h e_j), and where only one side keeps the statuses, the half step on that side.
+  Attempt evaluate(const Column& column, double shrink) {
+    Attempt attempt;
+    double steps[2] = {0, 0};
+    for (int side = 0; side < 2; ++side)
+      attempt.smooth[side] = residuals_.evaluate(column, side, shrink, side == 0 ? plus_ : minus_, steps[side]);
+    Teuchos::reduceAll(residuals_.comm(), Teuchos::REDUCE_MAX, 2, steps, attempt.taken);
+    if (attempt.smooth[0] != attempt.smooth[1]) {
+      double halfStep = 0;
+      attempt.halfSmooth = residuals_.evaluate(column, attempt.smooth[0] ? 0 : 1, 0.5 * shrink, half_, halfStep);
+      Teuchos::reduceAll(residuals_.comm(), Teuchos::REDUCE_MAX, 1, &halfStep, &attempt.halfTaken);
+    }
+    return attempt;
+  }
+
+  PerturbedResiduals& residuals_;
+  const std::vector<double>& rowMax_;
+  const JacobianCheck::Options& options_;
+  const Teuchos::ArrayRCP<const double> f0_;
+  RCP<Thyra::VectorBase<double>> plus_, minus_, half_;
+  ColumnDifferences previous_;  ///< the longer step's differences while a shorter one is tried
+};
+
+// The worst entry error e_ij on this rank and the sums of the norm-wise error.
+struct ErrorTally {
+  double worst = -1, worstW = 0, worstD = 0;
+  GO worstRow = -1, worstColumn = -1;
+  double sums[2] = {0, 0};  // Σ (W − D)², Σ W²
+
+  void add(GO column, const std::vector<double>& wColumn, const ColumnDifferences& c,
+           const Map& rowMap) {
+    for (std::size_t r = 0; r < wColumn.size(); ++r) {
+      const double w = wColumn[r], d = c.differences[r], scale = c.scales[r];
+      if (w == 0 && d == 0) continue;
+      const double difference = std::abs(w - d);
+      double e = std::numeric_limits<double>::infinity();
+      if (std::isfinite(d)) e = scale > 0 ? difference / scale : (difference > 0 ? e : 0.0);
+      sums[0] += std::isfinite(d) ? difference * difference : 0.0;
+      sums[1] += w * w;
+      if (e > worst) {
+        worst = e;
+        worstRow = rowMap.getGlobalElement(static_cast<LO>(r));
+        worstColumn = column;
+        worstW = w;
+        worstD = d;
+      }
+    }
+  }
+
+  // The worst entry over the ranks: the largest error, then the lowest (row, column); `last` is the
+  // largest global DOF id.
+  void reduceInto(JacobianComparison& result, const Teuchos::Comm<int>& comm, GO last) const {
+    double global = 0;
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &worst, &global);
+    const long long none = std::numeric_limits<long long>::max();
+    const long long span = static_cast<long long>(last) + 1;
+    long long key = worst == global && worstRow >= 0 ? worstRow * span + worstColumn : none, globalKey = none;
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, 1, &key, &globalKey);
+    double values[2] = {key == globalKey ? worstW : 0.0, key == globalKey ? worstD : 0.0}, globalValues[2];
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, values, globalValues);
+    double globalSums[2];
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, sums, globalSums);
+    result.worstRelativeError = std::max(global, 0.0);
+    if (globalKey != none) {
+      result.row = globalKey / span;
+      result.column = globalKey % span;
+    }
+    result.assembled = globalValues[0];
+    result.finiteDifference = globalValues[1];
+    result.normwiseError = globalSums[1] > 0 ? std::sqrt(globalSums[0] / globalSums[1]) : std::sqrt(globalSums[0]);
+  }
+};
+
 // Central differences of f, column by column (every rank walks all global columns in the same order;
 // the owner of column j perturbs it), against the entries of W on this rank's rows.
 JacobianComparison compareAt(const ContactMechanicsModel& model, const Thyra::VectorBase<double>& x, double lambda,
@@ -68,238 +399,33 @@ JacobianComparison compareAt(const ContactMechanicsModel& model, const Thyra::Ve
   const auto start = std::chrono::steady_clock::now();
   auto matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Extract::getConstTpetraOperator(Teuchos::rcpFromRef(W)), true);
   const auto& rowMap = *matrix->getRowMap();
-  const auto& colMap = *matrix->getColMap();
-  const auto comm = rowMap.getComm();
-  const LO numRows = static_cast<LO>(rowMap.getNodeNumElements());
-
-  // W by columns on this rank's rows, and each row's largest entry.
-  std::unordered_map<GO, std::vector<std::pair<LO, double>>> columns;
-  std::vector<double> rowMax(numRows, 0.0);
-  for (LO r = 0; r < numRows; ++r) {
-    CrsMatrix::local_inds_host_view_type indices;
-    CrsMatrix::values_host_view_type values;
-    matrix->getLocalRowView(r, indices, values);
-    for (std::size_t k = 0; k < indices.extent(0); ++k) {
-      columns[colMap.getGlobalElement(indices(k))].emplace_back(r, values(k));
-      rowMax[r] = std::max(rowMax[r], std::abs(values(k)));
-    }
-  }
-
-  auto xp = x.clone_v();
-  auto xt = Extract::getTpetraVector(xp);
-  if (!xt->getMap()->isSameAs(rowMap)) throw std::logic_error("JacobianCheck: W's rows are not distributed as x");
-  const double xNorm = xt->normInf();
-  auto fPlus = Thyra::createMember(model.get_f_space()), fMinus = Thyra::createMember(model.get_f_space());
-  auto fCentre = Thyra::createMember(model.get_f_space()), fHalf = Thyra::createMember(model.get_f_space());
-  const auto fh = Extract::getConstTpetraVector(fHalf);
-  const auto fp = Extract::getConstTpetraVector(fPlus), fm = Extract::getConstTpetraVector(fMinus);
-  residual(model, xp, lambda, fCentre);
-  const auto f0 = Extract::getConstTpetraVector(fCentre)->getData(0);
-
-  // The contact status of every slave node (open/stick/slip, slip reversed, and the master facet it is
-  // evaluated on) at the unperturbed state: W is the derivative of the residual with these held. A
-  // perturbed residual whose statuses differ lies beyond a kink of the residual (a node opening or
-  // closing, stick turning to slip, a node at a vertex changing facet), where no difference quotient
-  // measures W.
-  const auto statusesOf = [&model]() {
-    std::vector<int> s;
-    for (const auto& n : model.trialIncrement()) {
-      s.push_back(2 * static_cast<int>(n.trialStatus) + (n.slipReversed ? 1 : 0));
-      s.push_back(n.trialFacet);
-    }
-    return s;
-  };
-  const std::vector<int> baseStatuses = statusesOf();
-  const auto sameStatusesEverywhere = [&]() {
-    int same = statusesOf() == baseStatuses ? 1 : 0, all = 0;
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 1, &same, &all);
-    return all == 1;
-  };
+  const auto numRows = static_cast<std::size_t>(rowMap.getNodeNumElements());
+  const AssembledColumns w = assembledColumns(*matrix);
+  PerturbedResiduals residuals(model, x, lambda, rowMap);
+  ColumnDifferencer differencer(model, residuals, w.rowMax, options);
 
   JacobianComparison result;
-  result.residualEvaluations = 1;
-  double localWorst = -1, worstW = 0, worstD = 0, sums[2] = {0, 0};  // Σ (W − D)², Σ W²
-  GO worstRow = -1, worstColumn = -1;
-  std::vector<double> wColumn(numRows, 0.0), differences(numRows, 0.0), scales(numRows, 0.0);
-  std::vector<double> previousDifferences(numRows, 0.0), previousScales(numRows, 0.0);
+  ErrorTally tally;
+  std::vector<double> wColumn(numRows, 0.0);
+  ColumnDifferences differences{std::vector<double>(numRows, 0.0), std::vector<double>(numRows, 0.0)};
   const GO first = rowMap.getMinAllGlobalIndex(), last = rowMap.getMaxAllGlobalIndex();
   for (GO j = first; j <= last; ++j) {
-    const LO lj = rowMap.getLocalElement(j);
-    const bool mine = lj != Teuchos::OrdinalTraits<LO>::invalid();
-    double xj = 0, h = 0, hLocal = 0;
-    if (mine) {
-      xj = xt->getData(0)[lj];
-      hLocal = options.step * std::max({std::abs(xj), xNorm, 1.0});
-    }
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &hLocal, &h);
-    if (h == 0) continue;  // no rank has this DOF
-    const auto found = columns.find(j);
-    if (found != columns.end())
-      for (const auto& [r, w] : found->second) wColumn[r] = w;
-    // f(x ± h e_j), the same h on every rank; the perturbed value rounded, so the step is exactly the
-    // one taken. A side whose contact statuses differ from the unperturbed ones is not used; when both
-    // differ, h shrinks (by kStepShrink, kKinkShrinks times) before the column is given up as non-smooth.
-    // Where the residual bends within the step (see kMaxBend), h shrinks until it does not.
-    constexpr int kKinkShrinks = 2, kBendShrinks = 2;
-    constexpr double kStepShrink = 1e-2;
-    double shrink = 1;
-    int kinkShrinks = 0, bendShrinks = 0;
-    bool compared = false, havePrevious = false, counted = false;
-    for (;;) {
-      double taken[2] = {0, 0}, steps[2] = {0, 0};
-      bool smooth[2] = {false, false};
-      for (int side = 0; side < 2; ++side) {
-        if (mine) {
-          auto v = xt->getDataNonConst(0);
-          v[lj] = side == 0 ? xj + shrink * h : xj - shrink * h;
-          steps[side] = std::abs(v[lj] - xj);
-        }
-        residual(model, xp, lambda, side == 0 ? fPlus : fMinus);
-        smooth[side] = sameStatusesEverywhere();
-      }
-      if (mine) xt->getDataNonConst(0)[lj] = xj;
-      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 2, steps, taken);
-      result.residualEvaluations += 2;
-      if (!smooth[0] && !smooth[1]) {
-        if (havePrevious) {  // a kink within the shorter step: the longer one's differences stand
-          differences.swap(previousDifferences);
-          scales.swap(previousScales);
-          compared = true;
-          break;
-        }
-        if (kinkShrinks++ < kKinkShrinks) {
-          shrink *= kStepShrink;
-          continue;
-        }
-        break;
-      }
-      // One side only: the one-sided difference is second-order accurate with a half step added on that
-      // side, D = [b²(f_a − f_0) − a²(f_b − f_0)] / (a b (b − a)) for the signed steps a ≈ b/2 and b (a
-      // first-order one would carry an error of h·f''/2, as large as the check's tolerance).
-      const int side = smooth[0] ? 0 : 1;
-      double halfTaken = 0;
-      bool halfSmooth = false;
-      if (!(smooth[0] && smooth[1])) {
-        double halfStep = 0;
-        if (mine) {
-          auto v = xt->getDataNonConst(0);
-          v[lj] = side == 0 ? xj + 0.5 * shrink * h : xj - 0.5 * shrink * h;
-          halfStep = std::abs(v[lj] - xj);
-        }
-        residual(model, xp, lambda, fHalf);
-        halfSmooth = sameStatusesEverywhere();
-        if (mine) xt->getDataNonConst(0)[lj] = xj;
-        Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &halfStep, &halfTaken);
-        ++result.residualEvaluations;
-      }
-      const double sign = side == 0 ? 1.0 : -1.0, stepA = sign * halfTaken, stepB = sign * taken[side];
-      const auto a = fp->getData(0), b = fm->getData(0), half = fh->getData(0);
-      // Central differences where both sides keep the statuses, else the one-sided difference on the
-      // side that does; with each, the second difference f'' of the same residuals, and the bend of the
-      // column: max over rows of h |f''| / 2 (the error of a one-sided first-order difference) against
-      // the entry's scale (below).
-      double bend = 0;
-      for (LO r = 0; r < numRows; ++r) {
-        const double fb = side == 0 ? a[r] : b[r];
-        double d = 0, second = 0;
-        if (smooth[0] && smooth[1]) {
-          d = (a[r] - b[r]) / (taken[0] + taken[1]);
-          second = 2 * ((a[r] - f0[r]) / taken[0] - (f0[r] - b[r]) / taken[1]) / (taken[0] + taken[1]);
-        } else if (halfSmooth) {
-          d = (stepB * stepB * (half[r] - f0[r]) - stepA * stepA * (fb - f0[r])) / (stepA * stepB * (stepB - stepA));
-          second = 2 * ((fb - f0[r]) / stepB - (half[r] - f0[r]) / stepA) / (stepB - stepA);
-        } else {
-          d = (fb - f0[r]) / stepB;
-        }
-        // The noise of a difference grows as 1/h: a shrunk step raises the floor in proportion.
-        const double scale = std::max(std::abs(wColumn[r]), options.rowFloor * rowMax[r] / shrink);
-        differences[r] = d;
-        scales[r] = scale;
-        if (scale > 0) bend = std::max(bend, 0.5 * taken[side] * std::abs(second) / scale);
-      }
-      double globalBend = 0;
-      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &bend, &globalBend);
-      if (havePrevious) {
-        // The differences at the longer step against these: where they agree, the bend did no harm (f'''
-        // small: an entry whose slope is small against its curvature), and the longer step's
-        // differences, with the lower floor, stand.
-        double disagreement = 0, globalDisagreement = 0;
-        for (LO r = 0; r < numRows; ++r) {
-          const double gap = std::abs(previousDifferences[r] - differences[r]);
-          if (gap > 0) disagreement = std::max(disagreement, previousScales[r] > 0 ? gap / previousScales[r] : gap);
-          if (!std::isfinite(gap)) disagreement = std::numeric_limits<double>::infinity();
-        }
-        Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &disagreement, &globalDisagreement);
-        if (globalDisagreement <= kAgreement) {
-          differences.swap(previousDifferences);
-          scales.swap(previousScales);
-          compared = true;
-          break;
-        }
-        if (!counted) ++result.bentColumns;
-        counted = true;
-      }
-      // A residual that bends within the step (the slip direction of a 3D frictional node turns by
-      // ε_T h / ‖t^trial‖, which is not small when ‖t^trial‖ is a few times μ|t_N|): the central
-      // difference's error can reach (2·bend)²/6 of the entry, or more. Difference again with h shrunk so
-      // the bend is about kShortStepBend / 4 (at least tenfold), and keep the shorter step unless both
-      // agree (above).
-      if (std::isfinite(globalBend) && globalBend > kMaxBend && bendShrinks++ < kBendShrinks) {
-        previousDifferences = differences;
-        previousScales = scales;
-        if (!havePrevious) ++result.retriedColumns;
-        havePrevious = true;
-        shrink *= std::clamp(0.25 * kShortStepBend / globalBend, 1e-4, 0.1);
-        continue;
-      }
-      compared = true;
-      break;
-    }
-    if (!compared) {
-      if (result.nonSmoothColumns++ == 0) result.firstNonSmoothColumn = j;
-    } else {
-      for (LO r = 0; r < numRows; ++r) {
-        const double w = wColumn[r], d = differences[r], scale = scales[r];
-        if (w == 0 && d == 0) continue;
-        const double difference = std::abs(w - d);
-        double e = std::numeric_limits<double>::infinity();
-        if (std::isfinite(d)) e = scale > 0 ? difference / scale : (difference > 0 ? e : 0.0);
-        sums[0] += std::isfinite(d) ? difference * difference : 0.0;
-        sums[1] += w * w;
-        if (e > localWorst) {
-          localWorst = e;
-          worstRow = rowMap.getGlobalElement(r);
-          worstColumn = j;
-          worstW = w;
-          worstD = d;
-        }
-      }
-    }
-    if (found != columns.end())
-      for (const auto& [r, w] : found->second) wColumn[r] = 0.0;
+    const Column column = residuals.column(j, options.step);
+    if (column.h == 0) continue;  // no rank has this DOF
+    const auto found = w.entries.find(j);
+    if (found != w.entries.end())
+      for (const auto& [r, value] : found->second) wColumn[r] = value;
+    if (differencer.difference(column, wColumn, result, differences))
+      tally.add(j, wColumn, differences, rowMap);
+    else if (result.nonSmoothColumns++ == 0)
+      result.firstNonSmoothColumn = j;
+    if (found != w.entries.end())
+      for (const auto& [r, value] : found->second) wColumn[r] = 0.0;
   }
-
-  // The worst entry over the ranks: the largest error, then the lowest (row, column).
-  double global = 0;
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &localWorst, &global);
-  const long long none = std::numeric_limits<long long>::max();
-  const long long span = static_cast<long long>(last) + 1;
-  long long key = localWorst == global && worstRow >= 0 ? worstRow * span + worstColumn : none, globalKey = none;
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 1, &key, &globalKey);
-  double values[2] = {key == globalKey ? worstW : 0.0, key == globalKey ? worstD : 0.0}, globalValues[2];
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, values, globalValues);
-  double globalSums[2];
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, sums, globalSums);
-  result.worstRelativeError = std::max(global, 0.0);
-  if (globalKey != none) {
-    result.row = globalKey / span;
-    result.column = globalKey % span;
-  }
-  result.assembled = globalValues[0];
-  result.finiteDifference = globalValues[1];
-  result.normwiseError = globalSums[1] > 0 ? std::sqrt(globalSums[0] / globalSums[1]) : std::sqrt(globalSums[0]);
+  tally.reduceInto(result, residuals.comm(), last);
+  result.residualEvaluations = residuals.evaluations();
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &seconds, &result.seconds);
+  Teuchos::reduceAll(residuals.comm(), Teuchos::REDUCE_MAX, 1, &seconds, &result.seconds);
   return result;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // What one rank alone may find (its part's conflict, its file's write error) told to every rank, so
-// that all of them stop with the same one-line message and none is left waiting in a collective.
+// that all of them stop with the same one-line message and none is left waiting in a collective: the
+// rule of common/RankAgreement.hpp on the model's Teuchos communicator.
 #include <string>
 
 #include "model/TpetraTypes.hpp"

@@ -36,6 +36,35 @@ class SolveObserver : public NOX::Observer {
   const std::ostringstream& noxOutput_;
 };
 
+// The initial state, as a continuation run reports and commits it: the reference of the contact
+// history and of the tunnelling check (the solve goes from here to load factor 1 in one step).
+void reportInitialState(model::ContactMechanicsModel& model, IncrementObserver& observer) {
+  auto x0 = model.getNominalValues().get_x();
+  auto in = model.createInArgs();
+  in.set_x(x0);
+  auto p0 = Thyra::createMember(model.get_p_space(0));
+  Thyra::set_ele(0, 0.0, p0.ptr());
+  in.set_p(0, p0);
+  auto out = model.createOutArgs();
+  auto f0 = Thyra::createMember(model.get_f_space());
+  out.set_f(f0);
+  model.evalModel(in, out);
+  model.commitState();
+  IncrementReport initial;
+  observer.incrementConverged(*Extract::getConstTpetraVector(x0), initial);
+}
+
+// Piro throws when the solve fails: why, in plain words (its exception text is Piro's own, the last
+// resort).
+std::string failureReason(SolveFailure failure, NewtonStatusTests& tests, const std::exception& e) {
+  if (failure.kind == SolveFailure::Kind::None) failure = tests.linearSolverFailure();
+  if (!failure.reason.empty()) return failure.reason;
+  std::string reason = e.what();
+  for (auto& c : reason)
+    if (c == '\n') c = ' ';
+  return "solver error: " + reason.substr(0, 300);
+}
+
 }  // namespace
 
 RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
@@ -77,23 +106,7 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
   statusTests.set("Test Type", "User Defined");
   statusTests.set("User Status Test", tests.test());
 
-  // The initial state, as a continuation run reports and commits it: the reference of the contact
-  // history and of the tunnelling check (the solve goes from here to load factor 1 in one step).
-  auto x0 = model->getNominalValues().get_x();
-  {
-    auto in = model->createInArgs();
-    in.set_x(x0);
-    auto p0 = Thyra::createMember(model->get_p_space(0));
-    Thyra::set_ele(0, 0.0, p0.ptr());
-    in.set_p(0, p0);
-    auto out = model->createOutArgs();
-    auto f0 = Thyra::createMember(model->get_f_space());
-    out.set_f(f0);
-    model->evalModel(in, out);
-    model->commitState();
-  }
-  IncrementReport initial;
-  observer.incrementConverged(*Extract::getConstTpetraVector(x0), initial);
+  reportInitialState(*model, observer);
 
   RunSummary summary;
   const long solvesBefore = mumpsCounters().solves;
@@ -125,17 +138,8 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
     summary.newtonIterations = r.newtonIterations;
     summary.finalLambda = 1.0;
   } catch (const std::exception& e) {
-    // Piro throws when the solve fails: say why in plain words (its exception text is Piro's own).
-    SolveFailure failure = solveObserver->failure;
-    if (failure.kind == SolveFailure::Kind::None) failure = tests.linearSolverFailure();
-    std::string reason = failure.reason;
-    if (reason.empty()) {
-      reason = e.what();
-      for (auto& c : reason)
-        if (c == '\n') c = ' ';
-      reason = "solver error: " + reason.substr(0, 300);
-    }
-    summary.message = "the Newton solve from load factor 0 to 1 (Piro/Solver Type = NOX) failed: " + reason;
+    summary.message = "the Newton solve from load factor 0 to 1 (Piro/Solver Type = NOX) failed: " +
+                      failureReason(solveObserver->failure, tests, e);
     summary.failedAttempts = 1;
   }
   summary.linearSolves = static_cast<int>(mumpsCounters().solves - solvesBefore);

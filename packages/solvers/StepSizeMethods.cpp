@@ -5,6 +5,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include "common/Registry.hpp"
 #include "continuation/ContactBetaControl.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "solvers/ContactBetaStepSize.hpp"
@@ -61,32 +62,31 @@ Teuchos::RCP<LOCA::StepSize::AbstractStrategy> createContactBeta(const StepSizeC
   return Teuchos::rcp(new ContactBetaStepSize(context.events, context.contactBeta));
 }
 
-}  // namespace
-
-const std::vector<StepSizeMethod>& stepSizeMethodRegistry() {
-  static const std::vector<StepSizeMethod> rows = {
-      {"Constant", "fixed Δλ, cut back on failure", constantParameters, {}, false},
-      {"Adaptive", "LOCA's iteration-count control", adaptiveParameters, {}, false},
-      {"Contact Beta", "N_c contacts per increment (eq. 10-13)", contactBetaParameters, createContactBeta, true},
-  };
+const Registry<StepSizeMethod>& registry() {
+  static const Registry<StepSizeMethod> rows(
+      "step-size method",
+      {
+          {"Constant", "fixed Δλ, cut back on failure", constantParameters, {}, false},
+          {"Adaptive", "LOCA's iteration-count control", adaptiveParameters, {}, false},
+          {"Contact Beta", "N_c contacts per increment (eq. 10-13)", contactBetaParameters, createContactBeta, true},
+      });
   return rows;
 }
 
+}  // namespace
+
+const std::vector<StepSizeMethod>& stepSizeMethodRegistry() { return registry().rows(); }
+
 const StepSizeMethod& stepSizeMethod(const std::string& name) {
-  for (const auto& m : stepSizeMethodRegistry())
-    if (m.name == name) return m;
+  if (const StepSizeMethod* method = registry().find(name)) return *method;
   throw std::logic_error("step-size method '" + name + "' is not registered");
 }
 
-std::vector<std::string> stepSizeMethods() {
-  std::vector<std::string> names;
-  for (const auto& m : stepSizeMethodRegistry()) names.push_back(m.name);
-  return names;
-}
+std::vector<std::string> stepSizeMethods() { return registry().names(); }
 
 void addStepSizeParameters(ParameterList& step) {
   std::string doc;
-  for (const auto& m : stepSizeMethodRegistry()) doc += (doc.empty() ? "" : "; ") + m.name + ": " + m.description;
+  for (const auto& m : stepSizeMethodRegistry()) doc += (doc.empty() ? "" : "; ") + m.name + ": " + m.doc;
   deck::setChoice(step, "Method", "Constant", stepSizeMethods(), doc);
   // Read by every method.
   deck::setPositive(step, "Initial Step Size", 0.1, "Δλ of the first increment");

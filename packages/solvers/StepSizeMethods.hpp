@@ -30,7 +30,7 @@ struct StepSizeContext {
 
 struct StepSizeMethod {
   std::string name;
-  std::string description;  ///< one phrase, for Method's doc
+  std::string doc;  ///< one phrase, for Method's doc
   /// Adds the parameters only this method reads to the Step Size list (nullptr: none).
   void (*addParameters)(Teuchos::ParameterList& stepSize);
   /// Builds the strategy; empty for LOCA's own methods (LOCA builds them).

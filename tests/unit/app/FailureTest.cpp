@@ -107,14 +107,3 @@ TEST(ShareDeckText, ReadOnceOnRankZero) {
 }
 
 }  // namespace
-
-int main(int argc, char** argv) {
-  Tpetra::ScopeGuard scope(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  // Only rank 0 reports, so a 2-rank run prints one result.
-  if (Tpetra::getDefaultComm()->getRank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  return RUN_ALL_TESTS();
-}

@@ -7,26 +7,15 @@
 namespace contessa::mechanics::test {
 namespace {
 
-// Three distorted quadrilaterals (counter-clockwise); the 3D tests use distortedBricks().
-const std::vector<std::vector<double>> kQuads = {
-    {0.0, 0.0, 2.0, 0.3, 2.4, 1.8, -0.2, 1.5},
-    {1.0, -0.5, 2.6, 0.1, 2.2, 1.4, 0.8, 1.1},
-    {-1.0, 0.2, 0.1, -0.1, 0.3, 0.9, -0.8, 1.2}};
-
 /// The three sample elements of dimension D.
-std::vector<std::vector<double>> sampleElements(int D) { return D == 2 ? kQuads : distortedBricks(); }
+std::vector<std::vector<double>> sampleElements(int D) { return D == 2 ? distortedQuads() : distortedBricks(); }
 
 /// 2D: stretch, shear, rotation and a bending pattern (so α ≠ 0), scaled by `amplitude`; 3D:
 /// brickDeformation.
 std::vector<double> deformation(const std::vector<double>& X, double amplitude) {
   if (X.size() == 24) return brickDeformation(X, amplitude);
   const double H[2][2] = {{0.12, 0.08}, {-0.06, -0.1}};
-  const double hourglass[4] = {1, -1, 1, -1};
-  std::vector<double> u(8);
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 2; ++i)
-      u[2 * a + i] = amplitude * (H[i][0] * X[2 * a] + H[i][1] * X[2 * a + 1] + 0.1 * hourglass[a] * (i ? 0.5 : 1.0));
-  return u;
+  return quadDeformation(X, H, 0.1, amplitude);
 }
 
 std::vector<double> allCoordinates(const std::vector<std::vector<double>>& elements) {

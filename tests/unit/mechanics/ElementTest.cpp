@@ -6,24 +6,17 @@
 namespace contessa::mechanics::test {
 namespace {
 
-// A distorted quadrilateral (no parallel sides), counter-clockwise.
-const std::vector<double> kQuad = {0.0, 0.0, 2.0, 0.3, 2.4, 1.8, -0.2, 1.5};
 const double kSize = 2.0;  // characteristic length of both sample elements
 
 /// The sample element of dimension D: the quadrilateral above or the first distorted brick.
-std::vector<double> sampleElement(int D) { return D == 2 ? kQuad : distortedBricks()[0]; }
+std::vector<double> sampleElement(int D) { return D == 2 ? distortedQuads()[0] : distortedBricks()[0]; }
 
 /// In 2D a homogeneous stretch + shear plus an hourglass/bending pattern (which the EAS modes
 /// resist, so α ≠ 0), scaled by `amplitude`; in 3D brickDeformation (with a rotation as well).
 std::vector<double> deformation(const std::vector<double>& X, int D, double amplitude) {
   if (D == 3) return brickDeformation(X, amplitude);
   const double H[2][2] = {{0.15, 0.1}, {-0.05, -0.1}};
-  const double hourglass[4] = {1, -1, 1, -1};
-  std::vector<double> u(8);
-  for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 2; ++i)
-      u[2 * a + i] = amplitude * (H[i][0] * X[2 * a] + H[i][1] * X[2 * a + 1] + 0.12 * hourglass[a] * (i ? 0.5 : 1.0));
-  return u;
+  return quadDeformation(X, H, 0.12, amplitude);
 }
 
 /// A kernel, a law, and the sample element of the kernel's dimension.

@@ -121,6 +121,29 @@ inline std::vector<std::vector<double>> distortedBricks() {
   return bricks;
 }
 
+/// Three distorted quadrilaterals (no parallel sides, counter-clockwise): the 2D counterparts of
+/// distortedBricks(); the first is the element tests' sample element.
+inline const std::vector<std::vector<double>>& distortedQuads() {
+  static const std::vector<std::vector<double>> quads = {{0.0, 0.0, 2.0, 0.3, 2.4, 1.8, -0.2, 1.5},
+                                                         {1.0, -0.5, 2.6, 0.1, 2.2, 1.4, 0.8, 1.1},
+                                                         {-1.0, 0.2, 0.1, -0.1, 0.3, 0.9, -0.8, 1.2}};
+  return quads;
+}
+
+/// A deformation of quadrilateral X (8 values): the homogeneous stretch and shear H plus an
+/// hourglass/bending pattern of size `hourglassSize` (which the EAS modes resist, so α ≠ 0), all
+/// scaled by `amplitude`.
+inline std::vector<double> quadDeformation(const std::vector<double>& X, const double (&H)[2][2], double hourglassSize,
+                                           double amplitude) {
+  const double hourglass[4] = {1, -1, 1, -1};
+  std::vector<double> u(8);
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 2; ++i)
+      u[2 * a + i] =
+          amplitude * (H[i][0] * X[2 * a] + H[i][1] * X[2 * a + 1] + hourglassSize * hourglass[a] * (i ? 0.5 : 1.0));
+  return u;
+}
+
 /// A finite deformation of hexahedron X (24 values): a rotation of 0.5 a rad about an oblique axis
 /// of the homogeneous stretch and shear I + a H, plus a bending pattern u_x ∝ x (z − ½), u_z ∝ −x²
 /// and an hourglass pattern (both resisted by the enhanced modes, so α ≠ 0), for amplitude a.

@@ -12,12 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "mesh/CellGeometry.hpp"
 #include "mesh/Generators.hpp"
 
 using namespace contessa;
 using namespace contessa::mesh;
+using test_support::messageOf;
 
 namespace {
 
@@ -101,15 +103,6 @@ void expectNodeSetIsSideSetNodes(const Mesh& m, const std::string& name) {
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   EXPECT_EQ(m.nodeSet(name).nodes, nodes) << name;
-}
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
 }
 
 }  // namespace

@@ -7,11 +7,13 @@
 #include <utility>
 #include <vector>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "mesh/Generators.hpp"
 
 using namespace contessa;
 using namespace contessa::mesh;
+using test_support::messageOf;
 
 namespace {
 
@@ -50,15 +52,6 @@ void expectSidesOnNodeSet(const Mesh& m, const std::string& name) {
           << name << ": element " << sides.elements[k] << " side " << sides.sides[k] << " node " << node;
     }
   }
-}
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <functional>
 #include <string>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "io/ExodusWriter.hpp"
 #include "mesh/CellGeometry.hpp"
@@ -23,6 +24,8 @@
 
 using namespace contessa;
 using namespace contessa::mesh;
+using test_support::messageOf;
+using test_support::expectSameMesh;
 
 namespace {
 
@@ -31,15 +34,6 @@ const std::string kTwoBlocks = std::string(CONTESSA_TEST_MESHES) + "/two_blocks.
 std::string tempPath(const std::string& stem, const std::string& extension) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   return ::testing::TempDir() + "contessa_" + info->name() + "_" + stem + "_" + std::to_string(getpid()) + extension;
-}
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
 }
 
 // A file in Gmsh's MSH 2.2 ASCII format: physical names ("dim tag \"name\"" lines), nodes ("tag x y z"),
@@ -80,29 +74,6 @@ Vec sideNormal(const Mesh& m, GlobalIndex element, int side) {
   const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   for (double& c : n) c /= length;
   return n;
-}
-
-void expectSameMesh(const Mesh& a, const Mesh& b) {
-  EXPECT_EQ(a.dimension, b.dimension);
-  EXPECT_EQ(a.coordinates, b.coordinates);
-  ASSERT_EQ(a.blocks.size(), b.blocks.size());
-  for (size_t k = 0; k < a.blocks.size(); ++k) {
-    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
-    EXPECT_EQ(a.blocks[k].cellType, b.blocks[k].cellType);
-    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements);
-    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity);
-  }
-  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
-  for (size_t k = 0; k < a.nodeSets.size(); ++k) {
-    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
-    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes) << a.nodeSets[k].name;
-  }
-  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
-  for (size_t k = 0; k < a.sideSets.size(); ++k) {
-    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
-    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements) << a.sideSets[k].name;
-    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides) << a.sideSets[k].name;
-  }
 }
 
 }  // namespace

@@ -8,24 +8,17 @@
 #include <functional>
 #include <string>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/MemoryEstimate.hpp"
 
 using namespace contessa;
 using namespace contessa::mesh;
+using test_support::messageOf;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 MeshSize grid(double n0, double n1) {
   MeshSize s;

@@ -7,12 +7,14 @@
 #include <utility>
 #include <vector>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/MeshMerge.hpp"
 
 using namespace contessa;
 using namespace contessa::mesh;
+using test_support::messageOf;
 
 namespace {
 
@@ -20,15 +22,6 @@ using Parts = std::vector<std::pair<std::string, Mesh>>;
 
 double x(const Mesh& m, GlobalIndex n) { return m.coordinates[2 * n]; }
 double y(const Mesh& m, GlobalIndex n) { return m.coordinates[2 * n + 1]; }
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 Mesh rectangle(double x0, double y0, double lx, double ly, int nx, int ny) {
   RectangleSpec spec;

@@ -3,25 +3,14 @@
 #include <functional>
 #include <string>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/Mesh.hpp"
 
 using namespace contessa;
 using namespace contessa::mesh;
-
-namespace {
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
-
-}  // namespace
+using test_support::messageOf;
 
 TEST(CellTypes, NodesDimensionAndNames) {
   EXPECT_EQ(nodesPerCell(CellType::Quad4), 4);

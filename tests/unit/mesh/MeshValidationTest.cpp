@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "MeshTestSupport.hpp"
 #include "common/Error.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/Mesh.hpp"
@@ -14,17 +15,9 @@
 
 using namespace contessa;
 using namespace contessa::mesh;
+using test_support::messageOf;
 
 namespace {
-
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "<no InputError>";
-}
 
 // 2 x 2 unit squares: node (i, j) = 3j + i, element (i, j) = 2j + i, counter-clockwise.
 Mesh square() {

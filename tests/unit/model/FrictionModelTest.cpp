@@ -19,6 +19,7 @@
 #include "deck/ProblemDefinition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
+#include "BlockOnBase.hpp"
 #include "ModelHarness.hpp"
 
 namespace {
@@ -52,80 +53,17 @@ void convergeAndCommit(model::ContactMechanicsModel& m, Thyra::VectorBase<double
 // (0.005 of the facet length 1/3). The nodes close in the first half (first contact: no friction yet);
 // the second half drags them with friction.
 deck::ProblemDefinition blockOnBase(bool deformableBase, double mu, double drag) {
-  const std::string mesh = deformableBase ? R"XML(
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Parts"/>
-    <ParameterList name="base">
-      <Parameter name="Type" type="string" value="Rectangle"/>
-      <Parameter name="X Origin" type="double" value="-0.5"/>
-      <Parameter name="Y Origin" type="double" value="-1.0"/>
-      <Parameter name="Length X" type="double" value="3.0"/>
-      <Parameter name="Elements X" type="int" value="5"/>
-      <Parameter name="Elements Y" type="int" value="2"/>
-    </ParameterList>
-    <ParameterList name="top">
-      <Parameter name="Type" type="string" value="Rectangle"/>
-      <Parameter name="Length X" type="double" value="2.0"/>
-      <Parameter name="Y Origin" type="double" value="0.001"/>
-      <Parameter name="Elements X" type="int" value="6"/>
-      <Parameter name="Elements Y" type="int" value="3"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="base"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-    <ParameterList name="top"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-  </ParameterList>)XML"
-                                          : R"XML(
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="2.0"/>
-    <Parameter name="Elements X" type="int" value="6"/>
-    <Parameter name="Elements Y" type="int" value="3"/>
-    <Parameter name="Y Origin" type="double" value="0.001"/>
-    <Parameter name="Block Name" type="string" value="top"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="top"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-  </ParameterList>)XML";
-  // The generated node and side sets of a Parts mesh carry the part's name as a prefix.
-  const std::string top = deformableBase ? "top_" : "";
-  const std::string xml = "<ParameterList name=\"Problem\">" + mesh + R"XML(
-  <ParameterList name="Materials">
-    <ParameterList name="rubber"><Parameter name="Model" type="string" value="Neo-Hookean"/>
-      <Parameter name="Young's Modulus" type="double" value="100.0"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="press"><Parameter name="Node Set" type="string" value=")XML" + top + R"XML(top"/>
-      <Parameter name="Component" type="string" value="y"/><Parameter name="Value" type="double" value="-0.05"/></ParameterList>
-    <ParameterList name="drag"><Parameter name="Node Set" type="string" value=")XML" + top + R"XML(top"/>
-      <Parameter name="Component" type="string" value="x"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Contact">
-    <ParameterList name="base"><Parameter name="Slave Side Set" type="string" value=")XML" + top + R"XML(bottom"/>
-      <Parameter name="Normal Penalty" type="double" value="1e4"/>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>)XML";
-  auto p = Teuchos::getParametersFromXmlString(xml);
-  auto& contact = p->sublist("Contact").sublist("base");
-  contact.set("Friction Coefficient", mu);
-  p->sublist("Dirichlet Conditions").sublist("drag").set("Value", drag);
-  if (deformableBase) {
-    contact.set("Master Side Set", std::string("base_top"));
-    auto& bc = p->sublist("Dirichlet Conditions");
-    for (const char* c : {"x", "y"}) {
-      bc.sublist(std::string("base ") + c).set("Node Set", std::string("base_bottom"));
-      bc.sublist(std::string("base ") + c).set("Component", std::string(c));
-    }
-  } else {
-    contact.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(Teuchos::tuple<double>(3.0, 0.0, -1.0, 0.0)));
-    contact.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(2, 0.0));
-  }
-  return deck::buildProblem(*p, "");
+  test::BlockOnBase deck;
+  deck.elementsX = 6;
+  deck.elementsY = 3;
+  deck.deformableBase = deformableBase;
+  deck.blockName = "top";
+  deck.shearName = "drag";
+  deck.shear = drag;
+  deck.tangentialPenalty.reset();
+  deck.slipTolerance.reset();
+  deck.friction = mu;
+  return deck.problem();
 }
 
 class SlipToleranceModelTest : public ::testing::TestWithParam<bool> {};
@@ -141,36 +79,12 @@ TEST_P(SlipToleranceModelTest, JacobianMatchesCentralDifferences) {
   Thyra::assign(x.ptr(), 0.0);
   convergeAndCommit(*m, *x, 0.0, 1e-10);
   convergeAndCommit(*m, *x, 0.5, 1e-10);
-  {  // half a Newton step towards λ = 1
-    auto e = evaluate(*m, *x, 1.0, true);
-    auto lows = Thyra::linearOpWithSolve<double>(*m->get_W_factory(), e.W.getConst());
-    auto dx = Thyra::createMember(m->get_x_space());
-    Thyra::assign(dx.ptr(), 0.0);
-    Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
-    Thyra::Vp_StV(x.ptr(), -0.5, *dx);
-  }
-  const auto e = evaluate(*m, *x, 1.0, true);
-  const double h = 1e-7;
-  double worst = 0, scale = 0;
-  auto unit = Thyra::createMember(m->get_x_space());
-  auto column = Thyra::createMember(m->get_f_space());
-  auto fd = Thyra::createMember(m->get_f_space());
-  for (Thyra::Ordinal j = 0; j < m->get_x_space()->dim(); ++j) {
-    Thyra::assign(unit.ptr(), 0.0);
-    Thyra::set_ele(j, 1.0, unit.ptr());
-    Thyra::apply(*e.W, Thyra::NOTRANS, *unit, column.ptr());
-    auto xp = x->clone_v(), xm = x->clone_v();
-    Thyra::Vp_StV(xp.ptr(), h, *unit);
-    Thyra::Vp_StV(xm.ptr(), -h, *unit);
-    Thyra::V_StVpStV(fd.ptr(), 0.5 / h, *evaluate(*m, *xp, 1.0, false).f, -0.5 / h, *evaluate(*m, *xm, 1.0, false).f);
-    scale = std::max(scale, Thyra::norm_inf(*column));
-    Thyra::Vp_StV(fd.ptr(), -1.0, *column);
-    worst = std::max(worst, Thyra::norm_inf(*fd));
-  }
+  test::halfNewtonStep(*m, *x, 1.0);
+  const auto d = test::differenceJacobian(*m, *x, 1.0, 1e-7);
   if (Tpetra::getDefaultComm()->getRank() == 0)
     std::printf("Friction Jacobian (%s base): max |W - W_FD| / max |W| = %.2e\n", GetParam() ? "deformable" : "rigid",
-                worst / scale);
-  EXPECT_LT(worst / scale, 1e-6);
+                d.worst / d.scale);
+  EXPECT_LT(d.worst / d.scale, 1e-6);
 }
 
 // Newton from the committed half load to the full load (μ = 0.15, drag 0.05: 3–4 nodes stick, the others
@@ -314,13 +228,3 @@ INSTANTIATE_TEST_SUITE_P(Friction, CoulombBlockReversal, ::testing::Values(0.0, 
                          [](const auto& info) { return info.param == 0.0 ? std::string("ConstantPenalty") : std::string("SlipTolerance"); });
 
 }  // namespace
-
-int main(int argc, char** argv) {
-  Tpetra::ScopeGuard scope(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  if (Tpetra::getDefaultComm()->getRank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  return RUN_ALL_TESTS();
-}

@@ -13,6 +13,8 @@
 #include "deck/ProblemDefinition.hpp"
 #include "model/JacobianCheck.hpp"
 #include "solvers/LinearSolverFactory.hpp"
+#include "BlockOnBase.hpp"
+#include "ModelHarness.hpp"
 
 namespace {
 
@@ -22,43 +24,11 @@ using Extract = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::
 
 // A 3 × 2 Neo-Hookean enhanced block pressed onto a rigid base and sheared (friction, stick).
 deck::ProblemDefinition blockOnBase() {
-  auto p = Teuchos::getParametersFromXmlString(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="2.0"/>
-    <Parameter name="Elements X" type="int" value="3"/>
-    <Parameter name="Elements Y" type="int" value="2"/>
-    <Parameter name="Y Origin" type="double" value="0.001"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="block_1"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="rubber"><Parameter name="Model" type="string" value="Neo-Hookean"/>
-      <Parameter name="Young's Modulus" type="double" value="100.0"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="press"><Parameter name="Node Set" type="string" value="top"/>
-      <Parameter name="Component" type="string" value="y"/><Parameter name="Value" type="double" value="-0.05"/></ParameterList>
-    <ParameterList name="shear"><Parameter name="Node Set" type="string" value="top"/>
-      <Parameter name="Component" type="string" value="x"/><Parameter name="Value" type="double" value="0.02"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Contact">
-    <ParameterList name="base"><Parameter name="Slave Side Set" type="string" value="bottom"/>
-      <Parameter name="Normal Penalty" type="double" value="1e4"/>
-      <Parameter name="Tangential Penalty" type="double" value="1e4"/>
-      <Parameter name="Friction Coefficient" type="double" value="1.0"/>
-      <ParameterList name="Rigid Surface">
-        <Parameter name="Points" type="Array(double)" value="{3.0, 0.0, -1.0, 0.0}"/>
-        <Parameter name="Motion" type="Array(double)" value="{0.0, 0.0}"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>)XML");
-  return deck::buildProblem(*p, "");
+  test::BlockOnBase deck;
+  deck.elementsX = 3;
+  deck.slipTolerance.reset();
+  deck.friction = 1.0;
+  return deck.problem();
 }
 
 // A 1 x 1 x 1 mm linear elastic block (2 x 1 x 1 Hex8) pressed lightly onto a rigid base (t_N = -2 MPa at zero displacement)
@@ -110,10 +80,7 @@ struct Fixture {
   RCP<model::ContactMechanicsModel> model;
   RCP<Thyra::VectorBase<double>> x;
   void setUp() {
-    auto comm = Tpetra::getDefaultComm();
-    Teuchos::ParameterList strat("Stratimikos");
-    strat.set("Linear Solver Type", std::string("MUMPS"));
-    model = Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, solvers::createLinearSolverFactory(strat)));
+    model = test::makeModel(problem);
     // Every DOF moved by a smooth field, the bottom pushed into the base (the same on every partition).
     x = Thyra::createMember(model->get_x_space());
     auto tx = Extract::getTpetraVector(x);
@@ -277,13 +244,3 @@ TEST(JacobianCheck, DifferencesA3DSlippingNodeWithAShortEnoughStep) {
 }
 
 }  // namespace
-
-int main(int argc, char** argv) {
-  Tpetra::ScopeGuard scope(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  if (Tpetra::getDefaultComm()->getRank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  return RUN_ALL_TESTS();
-}

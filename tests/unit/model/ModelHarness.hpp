@@ -1,6 +1,7 @@
 #pragma once
 // What the model tests share: a model with MUMPS, one evaluation through the Thyra ModelEvaluator
 // (f, and W with ∂f/∂λ when asked), and a plain full Newton at a fixed load factor.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -80,6 +81,52 @@ inline std::vector<double> newtonAt(model::ContactMechanicsModel& m, Thyra::Vect
     Thyra::Vp_StV(Teuchos::ptrFromRef(x), -1.0, *dx);
   }
   return norms;
+}
+
+/// x moved half a Newton step towards λ (x ← x − ½ W⁻¹ f): a state away from equilibrium where the
+/// contact stays active, for the Jacobian checks.
+inline void halfNewtonStep(model::ContactMechanicsModel& m, Thyra::VectorBase<double>& x, double lambda) {
+  auto e = evaluate(m, x, lambda, true);
+  auto lows = Thyra::linearOpWithSolve<double>(*m.get_W_factory(), e.W.getConst());
+  auto dx = Thyra::createMember(m.get_x_space());
+  Thyra::assign(dx.ptr(), 0.0);
+  Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
+  Thyra::Vp_StV(Teuchos::ptrFromRef(x), -0.5, *dx);
+}
+
+/// The model's W at (x, λ) against central differences of its residual with step h, column by column:
+/// the largest max-norm of a column's difference W e_j − D e_j, the largest |W| entry it is measured
+/// against, and the column of the largest difference.
+struct JacobianDifference {
+  double worst = 0, scale = 0;
+  Thyra::Ordinal worstColumn = -1;
+};
+
+inline JacobianDifference differenceJacobian(model::ContactMechanicsModel& m, const Thyra::VectorBase<double>& x,
+                                             double lambda, double h) {
+  const auto e = evaluate(m, x, lambda, true);
+  JacobianDifference d;
+  auto unit = Thyra::createMember(m.get_x_space());
+  auto column = Thyra::createMember(m.get_f_space());
+  auto fd = Thyra::createMember(m.get_f_space());
+  for (Thyra::Ordinal j = 0; j < m.get_x_space()->dim(); ++j) {
+    Thyra::assign(unit.ptr(), 0.0);
+    Thyra::set_ele(j, 1.0, unit.ptr());
+    Thyra::apply(*e.W, Thyra::NOTRANS, *unit, column.ptr());
+    auto xp = x.clone_v(), xm = x.clone_v();
+    Thyra::Vp_StV(xp.ptr(), h, *unit);
+    Thyra::Vp_StV(xm.ptr(), -h, *unit);
+    // f(x − h e_j) first: the enhanced elements start their local solve from the last evaluation's α,
+    // so the order shows in the last bits of the differences.
+    const auto fm = evaluate(m, *xm, lambda, false).f;
+    const auto fp = evaluate(m, *xp, lambda, false).f;
+    Thyra::V_StVpStV(fd.ptr(), 0.5 / h, *fp, -0.5 / h, *fm);
+    d.scale = std::max(d.scale, Thyra::norm_inf(*column));
+    Thyra::Vp_StV(fd.ptr(), -1.0, *column);
+    if (Thyra::norm_inf(*fd) > d.worst) d.worstColumn = j;
+    d.worst = std::max(d.worst, Thyra::norm_inf(*fd));
+  }
+  return d;
 }
 
 }  // namespace contessa::test

@@ -14,6 +14,7 @@
 #include "deck/ProblemDefinition.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
+#include "BlockOnBase.hpp"
 #include "ModelHarness.hpp"
 
 namespace {
@@ -247,85 +248,14 @@ TEST_P(ModelTest, JacobianAfterResidualEqualsJacobianAlone) {
 // A 2 × 1 Neo-Hookean block on a rigid base (y = 0), its top pushed down and sideways: stick or slip
 // by μ. With `deformableBase`, the base is a second (meshed) block instead, so the master nodes move.
 deck::ProblemDefinition makeContactProblem(double mu, bool deformableBase, bool twoPass) {
-  const std::string rigidMesh = R"XML(
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="2.0"/>
-    <Parameter name="Elements X" type="int" value="4"/>
-    <Parameter name="Elements Y" type="int" value="2"/>
-    <Parameter name="Y Origin" type="double" value="0.001"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="block_1"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-  </ParameterList>)XML";
-  const std::string partsMesh = R"XML(
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Parts"/>
-    <ParameterList name="base">
-      <Parameter name="Type" type="string" value="Rectangle"/>
-      <Parameter name="X Origin" type="double" value="-0.5"/>
-      <Parameter name="Y Origin" type="double" value="-1.0"/>
-      <Parameter name="Length X" type="double" value="3.0"/>
-      <Parameter name="Elements X" type="int" value="5"/>
-      <Parameter name="Elements Y" type="int" value="2"/>
-    </ParameterList>
-    <ParameterList name="top">
-      <Parameter name="Type" type="string" value="Rectangle"/>
-      <Parameter name="Length X" type="double" value="2.0"/>
-      <Parameter name="Y Origin" type="double" value="0.001"/>
-      <Parameter name="Elements X" type="int" value="4"/>
-      <Parameter name="Elements Y" type="int" value="2"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="base"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-    <ParameterList name="top"><Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/></ParameterList>
-  </ParameterList>)XML";
-  const std::string top = deformableBase ? "top_" : "";
-  std::string xml = "<ParameterList name=\"Problem\">" + (deformableBase ? partsMesh : rigidMesh) + R"XML(
-  <ParameterList name="Materials">
-    <ParameterList name="rubber"><Parameter name="Model" type="string" value="Neo-Hookean"/>
-      <Parameter name="Young's Modulus" type="double" value="100.0"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="press"><Parameter name="Node Set" type="string" value="TOPtop"/>
-      <Parameter name="Component" type="string" value="y"/><Parameter name="Value" type="double" value="-0.05"/></ParameterList>
-    <ParameterList name="shear"><Parameter name="Node Set" type="string" value="TOPtop"/>
-      <Parameter name="Component" type="string" value="x"/><Parameter name="Value" type="double" value="0.02"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Contact">
-    <ParameterList name="base"><Parameter name="Slave Side Set" type="string" value="TOPbottom"/>
-      <Parameter name="Normal Penalty" type="double" value="1e4"/>
-      <Parameter name="Tangential Penalty" type="double" value="1e4"/>
-      <Parameter name="Slip Tolerance" type="double" value="0"/>  <!-- the paper's constant ε_T -->
-    </ParameterList>
-  </ParameterList>
-</ParameterList>)XML";
-  for (std::size_t at; (at = xml.find("TOP")) != std::string::npos;) xml.replace(at, 3, top);
-  auto p = Teuchos::getParametersFromXmlString(xml);
-  auto& contact = p->sublist("Contact").sublist("base");
-  contact.set("Friction Coefficient", mu);
-  if (deformableBase) {
-    contact.set("Master Side Set", std::string("base_top"));
-    contact.set("Two Pass", twoPass);
-    // Two-pass: upper nodes (x = 0, 2/3, 4/3, 2) interleave with the base's (0.1, 0.7, 1.3, 1.9), so
-    // base nodes penetrate the upper block's segments and the second pass carries force too.
-    if (twoPass) p->sublist("Mesh").sublist("top").set("Elements X", 3);
-    // The base is clamped at its bottom.
-    auto& bc = p->sublist("Dirichlet Conditions");
-    bc.sublist("base x").set("Node Set", std::string("base_bottom"));
-    bc.sublist("base x").set("Component", std::string("x"));
-    bc.sublist("base y").set("Node Set", std::string("base_bottom"));
-    bc.sublist("base y").set("Component", std::string("y"));
-  } else {
-    contact.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(Teuchos::tuple<double>(3.0, 0.0, -1.0, 0.0)));
-    contact.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(2, 0.0));
-  }
-  return deck::buildProblem(*p, "");
+  test::BlockOnBase deck;
+  deck.friction = mu;
+  deck.deformableBase = deformableBase;
+  if (deformableBase) deck.twoPass = twoPass;
+  // Two-pass: upper nodes (x = 0, 2/3, 4/3, 2) interleave with the base's (0.1, 0.7, 1.3, 1.9), so
+  // base nodes penetrate the upper block's segments and the second pass carries force too.
+  if (deformableBase && twoPass) deck.elementsX = 3;
+  return deck.problem();
 }
 
 struct ContactCase {
@@ -353,37 +283,9 @@ TEST_P(ContactModelTest, JacobianMatchesCentralDifferences) {
   ASSERT_GT(m->contactCounts().active, 0);
   // The second pass is active: base nodes as slaves too (the upper block has 3 bottom nodes).
   if (GetParam().twoPass) { EXPECT_GT(m->contactCounts().active, 3) << m->contactCounts().active; }
-  // One Newton iterate towards λ = 1: a state away from equilibrium, contact still active.
-  {
-    auto e = evaluate(*m, *x, 1.0, true);
-    auto lows = Thyra::linearOpWithSolve<double>(*m->get_W_factory(), e.W.getConst());
-    auto dx = Thyra::createMember(m->get_x_space());
-    Thyra::assign(dx.ptr(), 0.0);
-    Thyra::solve<double>(*lows, Thyra::NOTRANS, *e.f, dx.ptr());
-    Thyra::Vp_StV(x.ptr(), -0.5, *dx);
-  }
-  const auto e = evaluate(*m, *x, 1.0, true);
-  const double h = 1e-7;
-  double worst = 0, scale = 0;
-  Thyra::Ordinal worstColumn = -1;
-  auto unit = Thyra::createMember(m->get_x_space());
-  auto Wcol = Thyra::createMember(m->get_f_space());
-  auto fd = Thyra::createMember(m->get_f_space());
-  for (Thyra::Ordinal j = 0; j < m->get_x_space()->dim(); ++j) {
-    Thyra::assign(unit.ptr(), 0.0);
-    Thyra::set_ele(j, 1.0, unit.ptr());
-    Thyra::apply(*e.W, Thyra::NOTRANS, *unit, Wcol.ptr());
-    auto xp = x->clone_v(), xm = x->clone_v();
-    Thyra::Vp_StV(xp.ptr(), h, *unit);
-    Thyra::Vp_StV(xm.ptr(), -h, *unit);
-    const auto fp = evaluate(*m, *xp, 1.0, false).f;
-    const auto fm = evaluate(*m, *xm, 1.0, false).f;
-    Thyra::V_StVpStV(fd.ptr(), 0.5 / h, *fp, -0.5 / h, *fm);
-    scale = std::max(scale, Thyra::norm_inf(*Wcol));
-    Thyra::Vp_StV(fd.ptr(), -1.0, *Wcol);
-    if (Thyra::norm_inf(*fd) > worst) worstColumn = j;
-    worst = std::max(worst, Thyra::norm_inf(*fd));
-  }
+  // Half a Newton step towards λ = 1: a state away from equilibrium, contact still active.
+  test::halfNewtonStep(*m, *x, 1.0);
+  const auto [worst, scale, worstColumn] = test::differenceJacobian(*m, *x, 1.0, 1e-7);
   EXPECT_LT(worst / scale, 1e-6) << GetParam().name << ": worst column " << worstColumn;
 }
 
@@ -559,14 +461,3 @@ INSTANTIATE_TEST_SUITE_P(Elements, ModelTest, ::testing::Values("Q4", "Q4 Enhanc
                          [](const auto& info) { return info.param == "Q4" ? std::string("Q4") : std::string("Q4Enhanced"); });
 
 }  // namespace
-
-int main(int argc, char** argv) {
-  Tpetra::ScopeGuard scope(&argc, &argv);
-  ::testing::InitGoogleTest(&argc, argv);
-  // Only rank 0 reports, so a 2-rank run prints one result.
-  if (Tpetra::getDefaultComm()->getRank() != 0) {
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  return RUN_ALL_TESTS();
-}

@@ -1,0 +1,56 @@
+#pragma once
+// What the mesh tests share: the message of the InputError an action throws, and two meshes compared
+// field by field (coordinates, blocks, node sets, side sets).
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "common/Error.hpp"
+#include "mesh/Mesh.hpp"
+
+namespace contessa::mesh::test_support {
+
+/// The InputError's message, or "<no InputError>" when `action` throws none.
+inline std::string messageOf(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "<no InputError>";
+}
+
+/// How coordinates must agree: bit for bit (a mesh read two ways), or within 4 ulps (EXPECT_DOUBLE_EQ:
+/// a mesh written to a file and read back).
+enum class Coordinates { Exact, WithinFourUlps };
+
+inline void expectSameMesh(const Mesh& a, const Mesh& b, Coordinates match = Coordinates::Exact) {
+  EXPECT_EQ(a.dimension, b.dimension);
+  if (match == Coordinates::Exact) {
+    EXPECT_EQ(a.coordinates, b.coordinates);
+  } else {
+    ASSERT_EQ(a.coordinates.size(), b.coordinates.size());
+    for (size_t k = 0; k < a.coordinates.size(); ++k) EXPECT_DOUBLE_EQ(a.coordinates[k], b.coordinates[k]) << k;
+  }
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (size_t k = 0; k < a.blocks.size(); ++k) {
+    EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
+    EXPECT_EQ(a.blocks[k].cellType, b.blocks[k].cellType);
+    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements);
+    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity);
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (size_t k = 0; k < a.nodeSets.size(); ++k) {
+    EXPECT_EQ(a.nodeSets[k].name, b.nodeSets[k].name);
+    EXPECT_EQ(a.nodeSets[k].nodes, b.nodeSets[k].nodes) << a.nodeSets[k].name;
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (size_t k = 0; k < a.sideSets.size(); ++k) {
+    EXPECT_EQ(a.sideSets[k].name, b.sideSets[k].name);
+    EXPECT_EQ(a.sideSets[k].elements, b.sideSets[k].elements) << a.sideSets[k].name;
+    EXPECT_EQ(a.sideSets[k].sides, b.sideSets[k].sides) << a.sideSets[k].name;
+  }
+}
+
+}  // namespace contessa::mesh::test_support
