@@ -33,9 +33,12 @@ struct FacetSelection {
 
 struct FacetSelectorOptions {
   /// A projection with ξ̄ within the parent domain enlarged by insideTolerance counts as inside its facet.
-  /// Slightly positive so a node sitting exactly on an edge or vertex does not flicker between "on facet"
-  /// and "at edge/vertex".
-  double insideTolerance = 1e-8;
+  /// 0: the facet's own domain. Past it, the node touches the facet's edge or vertex (ContactPoint), whose
+  /// element equals the facet's on the domain's boundary, so nothing jumps as a node sitting on an edge or
+  /// vertex flickers between the two by round-off. A tolerance band (it was 1e-8) evaluated a node just
+  /// past the boundary on the facet extended: under a valley that turned the force by the valley's angle
+  /// as the node crossed the band, and a node on a line of master nodes stalled the run (issue 22).
+  double insideTolerance = 0.0;
   /// A PENETRATING node past a free boundary of the master surface stays on the boundary facet while its
   /// distance beyond that boundary, measured on the facet's extension (‖x̄(ξ̄) − x̄(clamped ξ̄)‖), is at most
   /// freeEdgeTolerance × L_k, L_k being the size of the slave facets at the node (the `slaveSize` given to
