@@ -172,34 +172,16 @@ void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::Paramet
   }
 }
 
-void setPositive(Teuchos::ParameterList& list, const std::string& name, double value, const std::string& doc) {
-  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
-  v->setMin(std::nextafter(0.0, 1.0));
-  list.set(name, value, doc + " (> 0)", v);
-}
-
 void setNonNegative(Teuchos::ParameterList& list, const std::string& name, double value, const std::string& doc) {
   auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>());
   v->setMin(0.0);
   list.set(name, value, doc + " (>= 0)", v);
 }
 
-void setPositiveInt(Teuchos::ParameterList& list, const std::string& name, int value, const std::string& doc) {
-  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
-  v->setMin(1);
-  list.set(name, value, doc + " (>= 1)", v);
-}
-
 void setBounded(Teuchos::ParameterList& list, const std::string& name, double value, double min, double max,
                 const std::string& doc) {
   auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(min, max));
   list.set(name, value, doc + " ([" + formatNumber(min) + ", " + formatNumber(max) + "])", v);
-}
-
-void setChoice(Teuchos::ParameterList& list, const std::string& name, const std::string& value,
-               const std::vector<std::string>& choices, const std::string& doc) {
-  auto v = Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(choices.begin(), choices.end())));
-  list.set(name, value, doc + " (one of: " + joinNames(choices) + ")", v);
 }
 
 }  // namespace contessa::deck

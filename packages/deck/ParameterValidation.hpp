@@ -7,6 +7,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "common/ParameterPublishing.hpp"
+
 namespace contessa::deck {
 
 /// "a/b" from "a" and "b" (no leading slash when `parent` is empty).
@@ -24,13 +26,13 @@ void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::Paramet
 void requireOneOf(const std::string& path, const std::string& value, const std::vector<std::string>& allowed);
 
 /// Helpers to publish parameters with a documented range (the validator documents the range in the
-/// deck reference; validateAndSetDefaults enforces it).
-void setPositive(Teuchos::ParameterList& list, const std::string& name, double value, const std::string& doc);
+/// deck reference; validateAndSetDefaults enforces it). setPositive, setPositiveInt and setChoice are
+/// common/ParameterPublishing's, shared with the packages below the deck.
+using contessa::setChoice;
+using contessa::setPositive;
+using contessa::setPositiveInt;
 void setNonNegative(Teuchos::ParameterList& list, const std::string& name, double value, const std::string& doc);
-void setPositiveInt(Teuchos::ParameterList& list, const std::string& name, int value, const std::string& doc);
 void setBounded(Teuchos::ParameterList& list, const std::string& name, double value, double min, double max,
                 const std::string& doc);
-void setChoice(Teuchos::ParameterList& list, const std::string& name, const std::string& value,
-               const std::vector<std::string>& choices, const std::string& doc);
 
 }  // namespace contessa::deck

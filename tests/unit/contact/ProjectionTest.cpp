@@ -313,8 +313,8 @@ TEST(FacetSelectorLine2, NodeLeavingTheMasterSurfaceIsNotInContact) {
   EXPECT_EQ(gone.kind, cc::SelectionKind::None);
   EXPECT_FALSE(gone.isPenetrating());
   EXPECT_EQ(gone.facet, -1);
-  // Within the tolerance at the free end it is still on the segment.
-  const auto atEnd = selector.select({-2.0 - 1e-10, -0.01}, candidates);
+  // Within the free-edge reach (1e-3 of the slave facet size L_k = 1) it is still on the segment.
+  const auto atEnd = selector.select({-2.0 - 1e-10, -0.01}, candidates, 1.0);
   EXPECT_EQ(atEnd.kind, cc::SelectionKind::OnFacet);
   EXPECT_EQ(atEnd.facet, 1);
   EXPECT_TRUE(atEnd.isPenetrating());

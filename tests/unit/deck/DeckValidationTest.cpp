@@ -204,7 +204,7 @@ Teuchos::RCP<ParameterList> contactProblem() {
   auto p = goodProblem();
   auto& c = p->sublist("Contact").sublist("plate");
   c.set("Slave Side Set", std::string("top"));
-  c.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(Teuchos::tuple<double>(3.0, 1.5, -1.0, 1.5)));
+  c.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(Teuchos::tuple<double>(-1.0, 1.5, 3.0, 1.5)));
   c.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(Teuchos::tuple<double>(0.0, -1.0)));
   c.set("Normal Penalty", 1e6);
   return p;
