@@ -38,6 +38,40 @@ bool MumpsDistributedInput::update(const model::CrsMatrix& A, MPI_Comm comm) {
   return newPattern != 0;
 }
 
+void MumpsHostInput::update(const MumpsMatrixView& local, MPI_Comm comm) {
+  static_assert(sizeof(MUMPS_INT) == sizeof(int), "MUMPS_INT is sent as MPI_INT");
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  if (local.patternGeneration != generation_) {
+    // MPI counts are int: a rank's part, and the whole matrix on rank 0, must fit (2^31 entries).
+    int tooMany = local.numEntries > std::numeric_limits<int>::max() ? 1 : 0;
+    localEntries_ = static_cast<int>(local.numEntries);
+    counts_.assign(rank == 0 ? size : 0, 0);
+    MPI_Gather(&localEntries_, 1, MPI_INT, counts_.data(), 1, MPI_INT, 0, comm);
+    offsets_.assign(counts_.size(), 0);
+    long long total = 0;
+    for (std::size_t r = 0; r < counts_.size(); ++r) {
+      tooMany = tooMany || total > std::numeric_limits<int>::max();
+      offsets_[r] = static_cast<int>(std::min<long long>(total, std::numeric_limits<int>::max()));
+      total += counts_[r];
+    }
+    tooMany = tooMany || total > std::numeric_limits<int>::max();
+    MPI_Allreduce(MPI_IN_PLACE, &tooMany, 1, MPI_INT, MPI_MAX, comm);
+    TEUCHOS_TEST_FOR_EXCEPTION(tooMany != 0, std::runtime_error,
+                               "MUMPS input: too many matrix entries to gather on one rank (Reproducible)");
+    rows_.resize(static_cast<std::size_t>(total));
+    cols_.resize(static_cast<std::size_t>(total));
+    values_.resize(static_cast<std::size_t>(total));
+    MPI_Gatherv(local.rows, localEntries_, MPI_INT, rows_.data(), counts_.data(), offsets_.data(), MPI_INT, 0, comm);
+    MPI_Gatherv(local.columns, localEntries_, MPI_INT, cols_.data(), counts_.data(), offsets_.data(), MPI_INT, 0, comm);
+    n_ = local.order;
+    generation_ = local.patternGeneration;
+  }
+  MPI_Gatherv(local.values, localEntries_, MPI_DOUBLE, values_.data(), counts_.data(), offsets_.data(), MPI_DOUBLE, 0,
+              comm);
+}
+
 void MumpsSymmetricInput::buildPattern(const MumpsMatrixView& general) {
   const MUMPS_INT* rows = general.rows;
   const MUMPS_INT* cols = general.columns;

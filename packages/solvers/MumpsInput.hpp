@@ -44,6 +44,29 @@ class MumpsDistributedInput {
   std::vector<double> values_;
 };
 
+/// The whole matrix on rank 0, for MUMPS run there alone (`Reproducible`): the ranks' triplets gathered in
+/// rank order. MUMPS on several ranks adds the contributions of the other ranks' fronts, in the
+/// factorisation and in the forward solve, in the order their messages arrive, so its answer changes in
+/// the last bits from run to run; on one rank the order is fixed. The pattern is gathered once per
+/// pattern generation (the same on every rank: MumpsDistributedInput::update), the values at every call.
+class MumpsHostInput {
+ public:
+  /// Collective over `comm`. Afterwards view() is the whole matrix on rank 0 and empty on the others.
+  void update(const MumpsMatrixView& local, MPI_Comm comm);
+
+  MumpsMatrixView view() {
+    return {n_, static_cast<MUMPS_INT8>(values_.size()), rows_.data(), cols_.data(), values_.data(), generation_};
+  }
+
+ private:
+  long generation_ = -1;
+  MUMPS_INT n_ = 0;
+  int localEntries_ = 0;
+  std::vector<int> counts_, offsets_;  ///< per rank, on rank 0: its number of entries, its first entry
+  std::vector<MUMPS_INT> rows_, cols_;
+  std::vector<double> values_;
+};
+
 /// The same matrix as MUMPS' symmetric input (SYM = 2: LDLᵀ, about half the operations of LU), on one
 /// rank, when it is symmetric apart from decoupled rows. A decoupled row has every off-diagonal value
 /// zero: the identity row of a prescribed DOF, which leaves the matrix unsymmetric because its column

@@ -47,6 +47,7 @@ struct MumpsSettings {
   double nullPivotThreshold = 1e-11;
   bool verbose = false;
   bool exploitSymmetry = true;
+  bool reproducible = false;
 };
 
 // One MUMPS instance of one symmetry: analysis once per pattern, factorization per matrix.
@@ -126,8 +127,6 @@ class MumpsContext {
       if (id_.infog[0] != -8 && id_.infog[0] != -9) break;
       id_.icntl[icntl(14)] *= 2;
     }
-    ++mumpsCounters().factorizations;
-    if (id_.sym != 0) ++mumpsCounters().symmetricFactorizations;
     const int nullPivots = id_.infog[0] >= 0 ? id_.infog[infog(28)] : 0;
     if (id_.infog[0] >= 0 && nullPivots == 0) return true;
     // INFOG(1) and INFOG(28) are global: every rank takes this branch.
@@ -146,7 +145,6 @@ class MumpsContext {
     id_.lrhs = static_cast<MUMPS_INT>(n_);
     id_.rhs = rhs.empty() ? nullptr : rhs.data();
     dmumps_c(&id_);
-    ++mumpsCounters().solves;
     return id_.infog[0] >= 0;
   }
 
@@ -197,6 +195,9 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
       // LDLᵀ only on one rank: there every row is at hand to check the symmetry and move the prescribed
       // columns to the right-hand side (docs/architecture.md, MUMPS).
       exploitSymmetry_ = settings.exploitSymmetry && A->getComm()->getSize() == 1;
+      // Reproducible on several ranks: MUMPS runs on rank 0 alone (MumpsHostInput says why).
+      onHostAlone_ = settings.reproducible && A->getComm()->getSize() > 1;
+      rank_ = A->getComm()->getRank();
       const GO n = static_cast<GO>(A->getGlobalNumRows());
       TEUCHOS_TEST_FOR_EXCEPTION(A->getRowMap()->getMaxAllGlobalIndex() != n - 1 || A->getRowMap()->getMinAllGlobalIndex() != 0,
                                  std::logic_error, "MUMPS solver: row ids must be 0 .. n-1");
@@ -213,9 +214,21 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
     }
     std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
     input_.update(*A, comm_);
-    symmetricNow_ = exploitSymmetry_ && symmetricInput_.update(input_.view());
+    if (onHostAlone_) hostInput_.update(input_.view(), comm_);
+    const MumpsMatrixView general = onHostAlone_ ? hostInput_.view() : input_.view();
+    symmetricNow_ = exploitSymmetry_ && symmetricInput_.update(general);
     inputScope.reset();
-    factorized_ = context(symmetricNow_).factorize(symmetricNow_ ? symmetricInput_.view() : input_.view());
+    ++mumpsCounters().factorizations;
+    if (symmetricNow_) ++mumpsCounters().symmetricFactorizations;
+    if (!onHostAlone_) {
+      factorized_ = context(symmetricNow_).factorize(symmetricNow_ ? symmetricInput_.view() : general);
+      return;
+    }
+    // MUMPS on rank 0 alone: its verdict, and what a failure found, to every rank.
+    int factorized = rank_ == 0 ? static_cast<int>(context(false).factorize(general)) : 0;
+    MPI_Bcast(&factorized, 1, MPI_INT, 0, comm_);
+    factorized_ = factorized != 0;
+    if (!factorized_) broadcastFailures(static_cast<int>(general.order));
   }
   void uninitialize() {
     src_ = Teuchos::null;
@@ -259,7 +272,14 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
         rhs.assign(hv.begin(), hv.end());
       }
       if (symmetricNow_) symmetricInput_.eliminateColumns(rhs);
-      ok = context(symmetricNow_).solve(rhs) && ok;
+      ++mumpsCounters().solves;
+      if (onHostAlone_) {
+        int solved = rank_ == 0 ? static_cast<int>(context(false).solve(rhs)) : 0;
+        MPI_Bcast(&solved, 1, MPI_INT, 0, comm_);
+        ok = solved != 0 && ok;
+      } else {
+        ok = context(symmetricNow_).solve(rhs) && ok;
+      }
       {
         auto hv = host.getDataNonConst(0);
         std::copy(rhs.begin(), rhs.end(), hv.begin());
@@ -276,11 +296,27 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
   }
 
  private:
-  // The MUMPS instance of one symmetry, made at its first use (each keeps its own analysis).
+  // Rank 0's failure record (count, INFOG(1), null pivots, null space of `order` values) to every rank.
+  void broadcastFailures(int order) const {
+    MumpsFailures& f = *failures_;
+    long header[4] = {f.count, f.info, f.nullPivots, static_cast<long>(f.nullSpace.size())};
+    MPI_Bcast(header, 4, MPI_LONG, 0, comm_);
+    f.count = header[0];
+    f.info = static_cast<int>(header[1]);
+    f.nullPivots = static_cast<int>(header[2]);
+    f.nullSpace.resize(static_cast<std::size_t>(header[3]));
+    for (auto& v : f.nullSpace) {
+      v.resize(static_cast<std::size_t>(order));
+      MPI_Bcast(v.data(), order, MPI_DOUBLE, 0, comm_);
+    }
+  }
+
+  // The MUMPS instance of one symmetry, made at its first use (each keeps its own analysis); with
+  // onHostAlone_, on rank 0 only, over that rank alone.
   MumpsContext& context(bool symmetric) const {
     auto& c = symmetric ? symmetricContext_ : generalContext_;
     if (c == nullptr)
-      c = std::make_unique<MumpsContext>(comm_, symmetric, settings_.memoryRelaxation, settings_.ordering,
+      c = std::make_unique<MumpsContext>(onHostAlone_ ? MPI_COMM_SELF : comm_, symmetric, settings_.memoryRelaxation, settings_.ordering,
                                          settings_.nullPivotThreshold, settings_.verbose, failures_);
     return *c;
   }
@@ -291,7 +327,10 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
   MumpsSettings settings_;
   std::shared_ptr<MumpsFailures> failures_;
   bool exploitSymmetry_ = false, symmetricNow_ = false;
+  bool onHostAlone_ = false;
+  int rank_ = 0;
   MumpsDistributedInput input_;
+  MumpsHostInput hostInput_;
   mutable MumpsSymmetricInput symmetricInput_;
   mutable std::unique_ptr<MumpsContext> generalContext_, symmetricContext_;
   RCP<const Map> hostMap_;
@@ -333,6 +372,7 @@ void MumpsLinearOpWithSolveFactory::initializeOp(const RCP<const Thyra::LinearOp
   settings.nullPivotThreshold = params->get<double>("Null Pivot Threshold");
   settings.verbose = params->get<bool>("Verbose");
   settings.exploitSymmetry = params->get<bool>("Exploit Symmetry");
+  settings.reproducible = params->get<bool>("Reproducible");
   dynamic_cast<MumpsLinearOpWithSolve&>(*op).initialize(fwdOpSrc, settings, failures_);
 }
 
@@ -389,6 +429,12 @@ RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParamet
                "On one rank, factorise with LDLᵀ (MUMPS SYM = 2, about half the operations of LU) whenever the Jacobian "
                "is symmetric apart from the prescribed rows, checked at every factorisation (hyperelastic solids with "
                "frictionless contact are; a slipping Coulomb contact is not, and gets LU)",
+               rcp(new Teuchos::BoolParameterEntryValidator));
+    valid->set("Reproducible", false,
+               "On more than one rank, gather the matrix on rank 0 and factorise and solve it there alone, so that "
+               "two runs on the same number of ranks agree bit for bit (MUMPS on several ranks adds the ranks' "
+               "contributions in the order its messages arrive: runs then differ in the last digits); costs the "
+               "parallel factorisation's speed-up and rank 0 holds the whole factor. No effect on one rank",
                rcp(new Teuchos::BoolParameterEntryValidator));
   }
   return valid;

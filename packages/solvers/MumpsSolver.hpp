@@ -2,7 +2,8 @@
 // A parallel direct solver for Thyra/Stratimikos: MUMPS (distributed assembled matrix, centralised
 // right-hand side). Amesos2 in this Trilinos build has only KLU2 (wrong answers on more than one
 // rank) and Tacho (crashes), so this is the solver that gives the same answer on 1 and N ranks.
-// Registered with Stratimikos under "Linear Solver Type" = "MUMPS".
+// Registered with Stratimikos under "Linear Solver Type" = "MUMPS". With "Reproducible" the matrix is
+// gathered on rank 0 and MUMPS runs there alone: N-rank runs then repeat bit for bit (MumpsHostInput).
 #include <memory>
 #include <vector>
 
