@@ -176,6 +176,38 @@ bool interiorVertex(const std::vector<QuadNodes>& candidates, int v) {
   return true;
 }
 
+/// The candidate faces holding a point of a face's boundary (with `atVertex` the vertex `vertex`, else the
+/// point at t on the edge a–b; rigid points have negative ids), with their unit normals there (eq. 5) and the normals' sum; the apex of a
+/// collapsed face does not hold it.
+struct PointHolders {
+  std::vector<std::size_t> faces;
+  std::vector<Quad4Facet::Point> normals;
+  Quad4Facet::Point averaged{};
+};
+
+PointHolders holdersOf(const std::vector<QuadNodes>& candidates, const Quad4Facet::Point& slave, bool atVertex,
+                       int vertex, int a, int b, double t) {
+  PointHolders held;
+  for (std::size_t f = 0; f < candidates.size(); ++f) {
+    Quad4Facet::SurfaceCoords xi{};
+    if (atVertex) {
+      const int l = localIndex(candidates[f], vertex);
+      if (l < 0) continue;
+      xi = Quad4Facet::nodeCoords(l);
+    } else {
+      if (!holdsEdge(candidates[f], a, b)) continue;
+      const int la = localIndex(candidates[f], a), lb = localIndex(candidates[f], b);
+      xi = add(scaled(1.0 - t, Quad4Facet::nodeCoords(la)), scaled(t, Quad4Facet::nodeCoords(lb)));
+    }
+    const auto at = Projection<Quad4Facet>::evaluateAt(slave, candidates[f].x, xi);
+    if (!(norm(Quad4Facet::areaNormal(at.covariantBasis)) > 0.0)) continue;  // the apex of a collapsed face
+    held.faces.push_back(f);
+    held.normals.push_back(at.normal);
+    held.averaged = add(held.averaged, at.normal);
+  }
+  return held;
+}
+
 /// Area Jacobian ‖ā_1 × ā_2‖ of face x at ξ.
 double areaJacobian(const std::array<Quad4Facet::Point, 4>& x, const Quad4Facet::SurfaceCoords& xi) {
   return norm(Quad4Facet::areaNormal(Projection<Quad4Facet>::evaluateAt(Quad4Facet::Point{}, x, xi).covariantBasis));
@@ -234,26 +266,10 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
         continue;
       }
       // The faces holding the point, and their unit normals there (eq. 5).
-      std::vector<std::size_t> holders;
-      std::vector<Point> normals;
-      Point averaged{};
-      for (std::size_t f = 0; f < n; ++f) {
-        Quad4Facet::SurfaceCoords xi{};
-        if (atVertex) {
-          const int l = localIndex(candidates[f], vertex);
-          if (l < 0) continue;
-          xi = Quad4Facet::nodeCoords(l);
-        } else {
-          if (!holdsEdge(candidates[f], face.nodes[i], face.nodes[j])) continue;
-          const int li = localIndex(candidates[f], face.nodes[i]), lj = localIndex(candidates[f], face.nodes[j]);
-          xi = add(scaled(1.0 - t, Quad4Facet::nodeCoords(li)), scaled(t, Quad4Facet::nodeCoords(lj)));
-        }
-        const auto at = Projection<Quad4Facet>::evaluateAt(slave, candidates[f].x, xi);
-        if (!(norm(Quad4Facet::areaNormal(at.covariantBasis)) > 0.0)) continue;  // the apex of a collapsed face
-        holders.push_back(f);
-        normals.push_back(at.normal);
-        averaged = add(averaged, at.normal);
-      }
+      const PointHolders held = holdersOf(candidates, slave, atVertex, vertex, face.nodes[i], face.nodes[j], t);
+      const std::vector<std::size_t>& holders = held.faces;
+      const std::vector<Point>& normals = held.normals;
+      const Point& averaged = held.averaged;
       if (holders.size() < 2) {  // a free edge (or a vertex held by one face)
         freeBoundaryDistance = std::min(freeBoundaryDistance, distance);
         continue;
