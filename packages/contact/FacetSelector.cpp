@@ -177,8 +177,8 @@ bool interiorVertex(const std::vector<QuadNodes>& candidates, int v) {
 }
 
 /// The candidate faces holding a point of a face's boundary (with `atVertex` the vertex `vertex`, else the
-/// point at t on the edge a–b; rigid points have negative ids), with their unit normals there (eq. 5) and the normals' sum; the apex of a
-/// collapsed face does not hold it.
+/// point at t on the edge a–b; rigid points have negative ids), with their unit normals there (eq. 5) and
+/// the normals' sum; the apex of a collapsed face does not hold it.
 struct PointHolders {
   std::vector<std::size_t> faces;
   std::vector<Quad4Facet::Point> normals;
