@@ -1,8 +1,8 @@
 #pragma once
 // One shape for the registries that create things by their deck name (docs/style.md 4: register by
-// name, no central if/else): materials, elements, mesh sources, step-size methods (contact laws: the
-// deck package's, still its own). A row names a thing, says in one line what it is (for the deck
-// reference) and makes it; one lookup gives every registry the same error for a name it does not know.
+// name, no central if/else): materials, elements, mesh sources, step-size methods, contact laws. A row
+// names a thing, says in one line what it is (for the deck reference) and makes it; one lookup gives
+// every registry the same error for a name it does not know.
 #include <string>
 #include <utility>
 #include <vector>

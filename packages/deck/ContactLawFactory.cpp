@@ -1,9 +1,10 @@
-// Contact law registry: one row per law (name, description, parameters, build).
+// Contact law registry: one row per law (name, doc, parameters, build), on the common Registry.
 #include "deck/ContactLawFactory.hpp"
 
 #include <functional>
 
 #include "common/Error.hpp"
+#include "common/Registry.hpp"
 #include "deck/ParameterValidation.hpp"
 
 namespace contessa::deck {
@@ -43,47 +44,37 @@ contact::ContactLawParameters createPenaltyCoulomb(const ParameterList& list, co
   return law;
 }
 
-struct LawEntry {
-  const char* name;
-  const char* description;
+// A law's row: its deck parameters and what makes its ContactLawParameters (common/Registry.hpp).
+struct LawFactory {
   RCP<ParameterList> (*parameters)();
   contact::ContactLawParameters (*create)(const ParameterList&, const std::string&);
 };
+using LawRow = RegistryRow<LawFactory>;
 
-const std::vector<LawEntry>& registry() {
-  static const std::vector<LawEntry> rows = {
-      {"Penalty Coulomb",
-       "Penalty normal contact, t_N = ε_N g_N for a penetration g_N < 0 (eq. 16), and Coulomb friction by return "
-       "mapping (eq. 17–23): stick with the penalty ε_T while |t_T| < μ|t_N|, slip on the cone otherwise; the "
-       "stick penalty follows the pressure through Slip Tolerance (docs/theory-contact.md §5)",
-       penaltyCoulombParameters, createPenaltyCoulomb},
-  };
+const Registry<LawRow>& registry() {
+  static const Registry<LawRow> rows(
+      "contact law",
+      {{"Penalty Coulomb",
+        "Penalty normal contact, t_N = ε_N g_N for a penetration g_N < 0 (eq. 16), and Coulomb friction by return "
+        "mapping (eq. 17–23): stick with the penalty ε_T while |t_T| < μ|t_N|, slip on the cone otherwise; the "
+        "stick penalty follows the pressure through Slip Tolerance (docs/theory-contact.md §5)",
+        {penaltyCoulombParameters, createPenaltyCoulomb}}});
   return rows;
-}
-
-const LawEntry& entry(const std::string& law) {
-  for (const auto& row : registry())
-    if (law == row.name) return row;
-  std::string known;
-  for (const auto& row : registry()) known += (known.empty() ? "" : ", ") + std::string(row.name);
-  throw InputError("unknown contact law '" + law + "' (known: " + known + ")");
 }
 
 }  // namespace
 
-std::vector<std::string> ContactLawFactory::names() {
-  std::vector<std::string> out;
-  for (const auto& row : registry()) out.push_back(row.name);
-  return out;
+std::vector<std::string> ContactLawFactory::names() { return registry().names(); }
+
+std::string ContactLawFactory::description(const std::string& law) { return registry().lookup(law, "Law").doc; }
+
+RCP<const ParameterList> ContactLawFactory::validParameters(const std::string& law) {
+  return registry().lookup(law, "Law").factory.parameters();
 }
-
-std::string ContactLawFactory::description(const std::string& law) { return entry(law).description; }
-
-RCP<const ParameterList> ContactLawFactory::validParameters(const std::string& law) { return entry(law).parameters(); }
 
 contact::ContactLawParameters ContactLawFactory::create(const std::string& law, const ParameterList& params,
                                                         const std::string& where) {
-  return entry(law).create(params, where);
+  return registry().lookup(law, where + "/Law").factory.create(params, where);
 }
 
 }  // namespace contessa::deck
