@@ -15,7 +15,7 @@
 #include "io/OutputLock.hpp"
 #include "mesh/MeshPiece.hpp"
 #include "model/ContactMechanicsModel.hpp"
-#include "solvers/ContinuationDriver.hpp"
+#include "solvers/RunReports.hpp"
 
 namespace contessa::output {
 
