@@ -113,6 +113,11 @@ class ExodusWriter {
   mesh::GlobalIndex numNodes() const { return numNodes_; }
 
  private:
+  /// Creates the file under its starting name with its disk space reserved (twice `meshBytes`, before
+  /// and after HDF5 truncates it): sets startingPath_, spaceFd_ and id_; OutputWriteError, and nothing
+  /// left on disk, when that fails.
+  void createFile(ExodusNaming naming, long long meshBytes);
+
   std::string path_;
   std::string startingPath_;  ///< where the file is until its first step
   /// Per mesh block: its name and the elements' indices into an element variable (the mesh itself is not
