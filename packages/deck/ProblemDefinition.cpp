@@ -22,7 +22,7 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 using mesh::GlobalIndex;
 
-const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Regression", "Contact"};
+const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Regression", "Contact", "Output/History"};
 
 std::string joinNames(const std::vector<std::string>& names) {
   std::string out;
@@ -321,6 +321,10 @@ RCP<const ParameterList> problemValidParameters() {
             "Single File: <name>.exo, gathered to rank 0 and written there; Per Rank: each of the N ranks writes "
             "its own piece, <name>.exo.N.r (a spatially decomposed set: ParaView opens it as one data set, "
             "SEACAS epu joins it), nothing gathered");
+  out.sublist("History", false,
+              "Point histories: one sublist per request (any name), written every increment as history columns and "
+              "Exodus globals")
+      .setParameters(*historyListValidParameters());
   auto& checkpoint = out.sublist("Checkpoint", false,
                                  "Restart files: <name>.restart in the output directory, continued with --restart FILE "
                                  "(also written on SIGTERM, SIGUSR1 and SIGINT, which stop the run with exit status 4)");
@@ -450,6 +454,8 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     def.contactNodes.push_back(node);
     def.contactNodeCoordinates.insert(def.contactNodeCoordinates.end(), x.begin(), x.end());
   }
+
+  def.history = buildHistoryRequests(problem.sublist("Output").sublist("History"), def);
 
   auto& regressionList = problem.sublist("Regression");
   for (const auto& name : validateChildren(regressionList, *regressionValidParameters(), "Problem/Regression")) {

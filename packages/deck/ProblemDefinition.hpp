@@ -11,6 +11,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "contact/InterfaceSpec.hpp"
+#include "deck/OutputRequests.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
 #include "mesh/DistributedMesh.hpp"
@@ -66,6 +67,7 @@ struct ProblemDefinition {
   int checkpointEvery = 0;      ///< Problem/Output/Checkpoint/Every N Increments (0: none)
   double maxWallSeconds = 0;    ///< Problem/Output/Checkpoint/Max Wall Time (0: no limit)
   std::vector<RegressionCheck> regression;
+  std::vector<HistoryRequest> history;  ///< Problem/Output/History: point histories (OutputRequests.hpp)
   /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
   std::vector<contact::ContactInterfaceSpec> contacts;
 };
