@@ -86,6 +86,29 @@ class Calls {
   std::string path_, action_;
 };
 
+// Nemesis' global node set and side set records (ids, counts, no distribution factors): ex_put_init_global
+// defines them and leaves them unwritten, so a file would otherwise hold whatever the memory held.
+void writeGlobalSetSizes(int id, const ExodusDecomposition& d, const mesh::Mesh& mesh, const Calls& check) {
+  const auto put = [&](std::size_t count, const std::vector<GlobalIndex>& global, auto localSize, auto write,
+                       const char* what) {
+    if (count == 0) return;
+    if (!global.empty() && global.size() != count)
+      throw std::logic_error("ExodusWriter: the decomposition's set sizes do not match the piece");
+    std::vector<int64_t> ids, sizes, factors(count, 0);
+    for (std::size_t s = 0; s < count; ++s) {
+      ids.push_back(static_cast<int64_t>(s) + 1);
+      sizes.push_back(global.empty() ? localSize(s) : static_cast<int64_t>(global[s]));
+    }
+    check(write(id, ids.data(), sizes.data(), factors.data()), what);
+  };
+  put(mesh.nodeSets.size(), d.globalNodeSetSizes,
+      [&](std::size_t s) { return static_cast<int64_t>(mesh.nodeSets[s].nodes.size()); }, ex_put_ns_param_global,
+      "the decomposition (global node sets)");
+  put(mesh.sideSets.size(), d.globalSideSetSizes,
+      [&](std::size_t s) { return static_cast<int64_t>(mesh.sideSets[s].elements.size()); }, ex_put_ss_param_global,
+      "the decomposition (global side sets)");
+}
+
 // The global ids (1-based, as Exodus numbers) and the Nemesis records of one file of a decomposed set.
 // Nemesis numbers nodes and elements locally (1-based) in its maps; a border node is one that another
 // piece holds too, a border element one with a border node; one node communication map per neighbour,
@@ -112,6 +135,7 @@ void writeDecomposition(int id, const ExodusDecomposition& d, const mesh::Mesh& 
   for (std::size_t b = 0; b < blockSizes.size(); ++b) blockIds.push_back(static_cast<int64_t>(b) + 1);
   if (!blockIds.empty())
     check(ex_put_eb_info_global(id, blockIds.data(), blockSizes.data()), "the decomposition (global blocks)");
+  writeGlobalSetSizes(id, d, mesh, check);
 
   std::vector<int64_t> interiorNodes, borderNodes, interiorElements, borderElements;
   std::vector<char> border(d.sharedWith.size(), 0);

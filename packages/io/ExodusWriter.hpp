@@ -44,6 +44,9 @@ struct ExodusDecomposition {
   std::vector<mesh::GlobalIndex> globalElements;  ///< 0-based global id of each element of the file (surface elements too)
   mesh::GlobalIndex globalNumNodes = 0, globalNumElements = 0;  ///< of the whole set
   std::vector<mesh::GlobalIndex> globalBlockSizes;  ///< elements of each block over the whole set
+  /// Nodes of each node set and sides of each side set over the whole set, in the piece's set order
+  /// (empty: the piece's own sizes are written).
+  std::vector<mesh::GlobalIndex> globalNodeSetSizes, globalSideSetSizes;
   /// For each mesh node of the file, the other processors whose files hold it (empty: interior).
   std::vector<std::vector<int>> sharedWith;
 };
