@@ -60,6 +60,9 @@ struct ProblemDefinition {
   std::vector<double> contactNodeCoordinates;  ///< dimension values per contactNodes entry
   int dimension() const { return mesh.local().dimension; }
   std::vector<BlockPhysics> blocks;  ///< in mesh block order
+  /// Every block's element is revolved about the y axis (r = x, Axisymmetry.hpp): forces, areas and
+  /// volumes are those of the full circumference.
+  bool axisymmetric = false;
   std::vector<DirichletCondition> dirichlet;
   std::vector<NodalForce> nodalForces;
   std::vector<std::string> reactionNodeSets;
