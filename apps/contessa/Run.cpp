@@ -164,9 +164,9 @@ solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::Conta
                                                                  : *jacobianCheck;
   try {
     if (!continuation) {
-      summary = solvers::solveStatic(model, piro, observer, jacobianCheck);
+      summary = solvers::solveStatic(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
     } else {
-      solvers::ContinuationDriver driver(model, piro, observer, jacobianCheck);
+      solvers::ContinuationDriver driver(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
       driver.setCheckpointControl(&checkpoints);
       if (resumed) driver.resumeFrom(resumed);
       summary = driver.run();
@@ -276,7 +276,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (!cl.restart.empty())
     agreeOnInput(*comm, [&] {
       model->restoreCommittedState(restart.content.state);
-      resumed = solvers::readContinuationPoint(*model, restart.content.state);
+      resumed = solvers::readContinuationPoint(model->ownedDofMap(), model->dimension(), restart.content.state);
       restart.content.state.requireAllRead();
     });
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, input.description,
