@@ -51,8 +51,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public continuation::ContactEventSource,
                               public SolveDiagnostics {
  public:
-  /// The model of this rank's part of `problem`'s mesh (problem.mesh, made for `comm`'s rank and size).
-  ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
+  /// The model of this rank's part of `problem`'s mesh (problem->mesh, made for `comm`'s rank and size;
+  /// std::logic_error otherwise). The model shares the problem: the caller need not keep it alive.
+  ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, std::shared_ptr<const deck::ProblemDefinition> problem,
                         const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory);
   ~ContactMechanicsModel() override;
 
@@ -175,7 +176,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   Teuchos::ArrayRCP<const double> overlapped(const Vector& x) const;
 
   Teuchos::RCP<const Comm> comm_;
-  const deck::ProblemDefinition& problem_;
+  std::shared_ptr<const deck::ProblemDefinition> sharedProblem_;
+  const deck::ProblemDefinition& problem_;  ///< *sharedProblem_
   // Each owned element's DOFs (overlapped local numbering, in the element loop's order), flattened: the
   // element part of the graph, kept for rebuilds (the element loop itself would move the trial state).
   std::vector<int> elementDofs_;
