@@ -11,6 +11,8 @@
 
 #include <LOCA_StepSize_AbstractStrategy.H>
 #include <NOX_Abstract_Group.H>
+#include <NOX_Solver_Generic.H>
+#include <NOX_StatusTest_Generic.H>
 #include <NOX_Thyra_Vector.H>
 #include <Thyra_DefaultSpmdVectorSpace.hpp>
 
@@ -82,6 +84,33 @@ class CountingGroup : public NOX::Abstract::Group {
   const FakeEvents& events_;
   Teuchos::RCP<NOX::Abstract::Vector> x_;
   bool validF_ = false;
+};
+
+// A Newton solver at a given iteration on a given group: what a status test reads.
+class SolverAt : public NOX::Solver::Generic {
+ public:
+  SolverAt(const NOX::Abstract::Group& group, int iteration) : group_(group), iteration_(iteration) {}
+  void reset() override {}
+  void reset(const NOX::Abstract::Vector&) override {}
+  void reset(const NOX::Abstract::Vector&, const Teuchos::RCP<NOX::StatusTest::Generic>&) override {}
+  NOX::StatusTest::StatusType step() override { throw std::logic_error("unused"); }
+  NOX::StatusTest::StatusType solve() override { throw std::logic_error("unused"); }
+  const NOX::Abstract::Group& getSolutionGroup() const override { return group_; }
+  const NOX::Abstract::Group& getPreviousSolutionGroup() const override { return group_; }
+  NOX::StatusTest::StatusType getStatus() const override { return NOX::StatusTest::Unconverged; }
+  int getNumIterations() const override { return iteration_; }
+  const Teuchos::ParameterList& getList() const override { return list_; }
+  Teuchos::RCP<const NOX::Abstract::Group> getSolutionGroupPtr() const override { return Teuchos::rcpFromRef(group_); }
+  Teuchos::RCP<const NOX::Abstract::Group> getPreviousSolutionGroupPtr() const override {
+    return Teuchos::rcpFromRef(group_);
+  }
+  Teuchos::RCP<const Teuchos::ParameterList> getListPtr() const override { return Teuchos::rcpFromRef(list_); }
+  Teuchos::RCP<const NOX::SolverStats> getSolverStatistics() const override { return Teuchos::null; }
+
+ private:
+  const NOX::Abstract::Group& group_;
+  int iteration_;
+  Teuchos::ParameterList list_;
 };
 
 // The validated Step Size list of a deck that sets Method (and what `set` adds).
@@ -222,4 +251,29 @@ TEST(StepControl, ContactBetaStopWordsNameNc) {
   pendingCheck(control, [](StateRecord& beta) { beta.put("hit_minimum_step", std::vector<std::int64_t>{1}, {}); });
   EXPECT_EQ(control.stopReason(),
             "Contact Beta asked for a step below Min Step Size = 1e-06 to let only 3 contacts close per increment");
+}
+
+TEST(StepControl, ContactBetaRestartTestOnlyTests) {
+  FakeEvents events;
+  const auto list = stepSizeList("Contact Beta");
+  ContactBetaStepControl control(StepControlContext{list, 1.0, events});
+  auto test = control.correctionTest();
+  ASSERT_FALSE(test.is_null());
+  pendingCheck(control);
+  events.frozen = true;
+  CountingGroup group(events);
+  const SolverAt first(group, 1);
+  // A first iterate that reaches the test unchecked (no iterateSet before it) is a wiring error, not a pass.
+  EXPECT_THROW(test->checkStatus(first, NOX::StatusTest::Minimal), std::logic_error);
+
+  events.trial = {closingAt(0.25), closingAt(0.5), closingAt(0.75)};  // restart (as above)
+  control.startIterate();
+  control.iterateSet([&group]() -> NOX::Abstract::Group& { return group; }, 1);
+  const auto evaluations = group.frozenAtEvaluation.size();
+  EXPECT_EQ(test->checkStatus(first, NOX::StatusTest::Minimal), NOX::StatusTest::Failed);
+  EXPECT_EQ(group.frozenAtEvaluation.size(), evaluations);  // the test evaluated nothing
+  EXPECT_TRUE(events.frozen);                                // and switched nothing
+  control.startIterate();
+  const SolverAt second(group, 2);
+  EXPECT_EQ(test->checkStatus(second, NOX::StatusTest::Minimal), NOX::StatusTest::Unconverged);
 }
