@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -93,7 +94,7 @@ std::string commandLineText(const CommandLine& cl) {
 // the linear solver, and the run's description for the results file.
 struct ValidatedInput {
   Teuchos::RCP<Teuchos::ParameterList> deck;
-  deck::ProblemDefinition problem;
+  std::shared_ptr<const deck::ProblemDefinition> problem;  ///< shared with the model
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
   output::RunDescription description;
 };
@@ -117,7 +118,8 @@ ValidatedInput readInput(const CommandLine& cl, const Teuchos::Comm<int>& comm) 
                  "Problem/Mesh: required (the deck has no mesh)");
 
     const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
-    input.problem = deck::buildProblem(input.deck->sublist("Problem"), deckDirectory);
+    input.problem = std::make_shared<const deck::ProblemDefinition>(
+        deck::buildProblem(input.deck->sublist("Problem"), deckDirectory));
     solvers::validatePiro(input.deck->sublist("Piro"), comm.getSize());
     input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"));
 
@@ -142,7 +144,7 @@ Teuchos::RCP<model::ContactMechanicsModel> buildModel(const CommandLine& cl,
       std::fflush(stdout);
     });
   // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
-  solvers::provideNearNullSpace(*input.linearSolver, *model->ownedDofMap(), input.problem.mesh);
+  solvers::provideNearNullSpace(*input.linearSolver, *model->ownedDofMap(), input.problem->mesh);
   return model;
 }
 
@@ -164,9 +166,9 @@ solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::Conta
                                                                  : *jacobianCheck;
   try {
     if (!continuation) {
-      summary = solvers::solveStatic(model, piro, observer, jacobianCheck);
+      summary = solvers::solveStatic(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
     } else {
-      solvers::ContinuationDriver driver(model, piro, observer, jacobianCheck);
+      solvers::ContinuationDriver driver(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
       driver.setCheckpointControl(&checkpoints);
       if (resumed) driver.resumeFrom(resumed);
       summary = driver.run();
@@ -249,7 +251,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   io::disableHdf5FileLocking();
   // 1. The deck, validated on every rank, and the mesh.
   ValidatedInput input = readInput(cl, *comm);
-  const deck::ProblemDefinition& problem = input.problem;
+  const deck::ProblemDefinition& problem = *input.problem;
   auto& piro = input.deck->sublist("Piro");
   const std::string name = fs::path(cl.deck).stem().string();
   const bool continuation = piro.get<std::string>("Solver Type") != "NOX";
@@ -276,7 +278,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (!cl.restart.empty())
     agreeOnInput(*comm, [&] {
       model->restoreCommittedState(restart.content.state);
-      resumed = solvers::readContinuationPoint(*model, restart.content.state);
+      resumed = solvers::readContinuationPoint(model->ownedDofMap(), model->dimension(), restart.content.state);
       restart.content.state.requireAllRead();
     });
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, input.description,
