@@ -217,8 +217,10 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
 // results are complete). Collective (peak memory and mesh parts are gathered).
 void writeRunReport(const CommandLine& cl, const std::string& name, const solvers::RunSummary& summary, int exitStatus,
                     const model::ContactMechanicsModel& model, const mesh::DistributedMesh& mesh,
-                    std::chrono::steady_clock::time_point start, const Teuchos::Comm<int>& comm) {
+                    std::chrono::steady_clock::time_point start, const std::optional<EarlierJobs>& earlier,
+                    const Teuchos::Comm<int>& comm) {
   RunReport report;
+  report.earlier = earlier;
   report.deck = cl.deck;
   report.ranks = comm.getSize();
   report.summary = summary;
@@ -294,7 +296,9 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
                              problem.maxWallSeconds, start, !cl.quiet);
   const solvers::RunSummary summary = solve(cl, model, piro, continuation, results, checkpoints, resumed);
   const int exitStatus = reportOutcome(summary, problem, results, restartPath, *comm);
-  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, *comm);
+  std::optional<EarlierJobs> earlier;
+  if (!cl.restart.empty()) earlier = earlierJobs(results.historyColumns(), restart.historyRows);
+  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, earlier, *comm);
   return exitStatus;
 }
 
