@@ -4,7 +4,7 @@
 The example batch script (SCRIPT, examples/slurm/contessa.sbatch) on a real single-node Slurm started by
 this test (slurm_cluster.py): submitted as a user would, with a 1-minute time limit, it must carry the
 run through its time limit (the job requeues itself and continues) and through a `scontrol requeue` in
-the middle of its first run, and end with the history of an uninterrupted 2-rank run.
+the middle of a run, and end with the history of an uninterrupted 2-rank run.
 
 1. The uninterrupted run: `mpiexec -n 2 CONTESSA DECK options`; its wall time W sets the margin below.
 2. Slurm's time limits are whole minutes; for a short test the job keeps most of its minute free:
@@ -12,8 +12,8 @@ the middle of its first run, and end with the history of an uninterrupted 2-rank
    about a third of W for increments, whatever the machine's speed, hence a time-limit stop after the
    requeue.
 3. `sbatch --time=1 SCRIPT DECK options --job-end-margin M` (the sbatch option and the contessa
-   options must reach every run of the job); once the first run has written a periodic restart file,
-   `scontrol requeue` (Slurm stops the run with SIGTERM and starts the job again: it must continue, not
+   options must reach every run of the job); once a run has written a periodic restart file (Every N
+   Increments = 2), `scontrol requeue` (Slurm stops the run with SIGTERM and starts the job again: it must continue, not
    start over).
 4. Checks: the job completed with exit status 0 after at least 3 runs (the requeue and at least one
    time-limit stop), each later run continued from the restart file (--restart auto), the log kept every
@@ -78,8 +78,8 @@ def main():
     # taken from the uninterrupted run's history); the rest of the minute goes to the job's start (the
     # script, the launcher, MPI, the deck and mesh: measured 2.4-4.9 s under load 11 where the
     # uninterrupted run spent 1.5 s outside its own wall time, hence twice that, plus 0.5 s) and the margin.
-    # A longer start leaves less (more runs); a shorter one more, and a run after the requeue (early in the
-    # first run) must still meet the limit, so the allowance stays close to the measurement.
+    # A longer start leaves less (more runs); a shorter one more, and a run after the requeue (in one of the
+    # first runs) must still meet the limit, so the allowance stays close to the measurement.
     run_wall = json.load(open(os.path.join(reference, name + ".summary.json")))["wall_seconds"]
     walls = [float(row["wall_s"]) for row in csv.DictReader(open(os.path.join(reference, name + ".history.csv")))]
     longest = max(b - a for a, b in zip(walls, walls[1:]))
@@ -108,11 +108,14 @@ def main():
             if state in {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "OUT_OF_MEMORY"}:
                 break
             text = open(log, errors="replace").read() if os.path.exists(log) else ""
+            # The requeue: once a run has written a periodic restart file (the stop's own write prints
+            # no such line), in the middle of that run.
             if not requeued and state == "RUNNING" and "contessa: checkpoint: wrote" in text:
                 r = cluster.run(["scontrol", "requeue", job])
                 if r.returncode == 0:
                     requeued = True
-                    print(f"requeued job {job} in the middle of its first run ({time.monotonic() - start:.0f} s)")
+                    run = len(re.findall(r"^job \d+ \(run \d+ ", text, re.M))
+                    print(f"requeued job {job} in the middle of its run {run} ({time.monotonic() - start:.0f} s)")
             time.sleep(0.3)
         else:
             fail(f"job {job} not done after {TIMEOUT} s (state {fields.get('JobState')}); log:\n" +
@@ -153,6 +156,16 @@ def main():
     summary = json.load(open(summary_path)) if os.path.exists(summary_path) else {}
     check(summary.get("exit_status") == 0 and summary.get("whole_run", {}).get("continued"),
           f"summary: exit status {summary.get('exit_status')}, whole run {summary.get('whole_run')}")
+    # Both scopes of the last run: it began after step 1; the whole run has every increment of the
+    # history, at least the history's Newton iterations, and more wall time than this job.
+    rows = list(csv.DictReader(open(os.path.join(out, name + ".history.csv"))))
+    job, whole = summary.get("this_job", {}), summary.get("whole_run", {})
+    check(job.get("first_step", 0) > 1 and job.get("first_step", 0) + job.get("increments", 0) == len(rows),
+          f"this_job {job} with {len(rows) - 1} increments in the history")
+    check(whole.get("increments") == len(rows) - 1 and summary.get("increments") == len(rows) - 1,
+          f"whole_run {whole}, {len(rows) - 1} increments in the history")
+    check(whole.get("newton_iterations", 0) >= sum(int(r["newton_iterations"]) for r in rows[1:]) and
+          whole.get("wall_seconds", 0) > job.get("wall_seconds", 0), f"whole_run {whole}, this job {job}")
     history = subprocess.run([COMPARE, os.path.join(reference, name + ".history.csv"),
                               os.path.join(out, name + ".history.csv")] + COMPARE_OPTIONS,
                              capture_output=True, text=True, timeout=60)
@@ -161,7 +174,8 @@ def main():
     if errors:
         print(text[-6000:])
         fail("; ".join(errors))
-    print(f"PASS: {runs} runs ({limit_stops} at the time limit, 1 requeued by scontrol), history as uninterrupted")
+    print(f"PASS: {runs} runs ({limit_stops} requeued by the job at its time limit, 1 by scontrol), history as "
+          f"uninterrupted")
     return 0
 
 
