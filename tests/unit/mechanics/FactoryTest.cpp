@@ -90,7 +90,8 @@ TEST(MaterialFactory, RejectsMissingOrNonPositiveYoungsModulus) {
 }
 
 TEST(ElementFactory, CreatesRegisteredKernels) {
-  EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced", "Hex8", "Hex8 Enhanced"}));
+  EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced", "Q4 Axisymmetric", "Q4 Enhanced Axisymmetric", "Hex8",
+                                                              "Hex8 Enhanced"}));
   const auto q4 = ElementFactory::create("Q4", "E");
   EXPECT_EQ(q4->name(), "Q4");
   EXPECT_EQ(q4->numDofs(), 8);
@@ -116,7 +117,8 @@ TEST(ElementFactory, CreatesRegisteredKernels) {
 
 TEST(ElementFactory, UnknownNameListsKnownNames) {
   EXPECT_EQ(messageOf([] { ElementFactory::create("Q9", "Problem/Discretization/Element"); }),
-            "Problem/Discretization/Element: unknown element 'Q9' (known: Q4, Q4 Enhanced, Hex8, Hex8 Enhanced)");
+            "Problem/Discretization/Element: unknown element 'Q9' (known: Q4, Q4 Enhanced, Q4 Axisymmetric, Q4 "
+            "Enhanced Axisymmetric, Hex8, Hex8 Enhanced)");
 }
 
 }  // namespace
