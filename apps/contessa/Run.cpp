@@ -185,7 +185,8 @@ solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::Conta
 // check failed, 4 stopped for a restart (not an error: the run can go on from its restart file,
 // docs/user-guide.md), 1 stopped.
 int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinition& problem,
-                  const output::ResultsOutput& results, const std::string& restartPath, const Teuchos::Comm<int>& comm) {
+                  const output::ResultsOutput& results, const std::string& restartPath,
+                  const std::string& continueCommand, const Teuchos::Comm<int>& comm) {
   const bool root = comm.getRank() == 0;
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
@@ -198,10 +199,9 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
   timers::printTable(mpiCommOf(comm), stdout);
   if (summary.checkpointed) {
     if (root)
-      std::printf("contessa: stopped: %s; restart file %s holds step %d (load factor %.6g); continue with "
-                  "--restart %s\n",
+      std::printf("contessa: stopped: %s; restart file %s holds step %d (load factor %.6g); continue with: %s\n",
                   summary.message.c_str(), restartPath.c_str(), summary.increments, summary.finalLambda,
-                  restartPath.c_str());
+                  continueCommand.c_str());
     return 4;
   }
   if (!summary.finished) {
@@ -219,8 +219,10 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
 // results are complete). Collective (peak memory and mesh parts are gathered).
 void writeRunReport(const CommandLine& cl, const std::string& name, const solvers::RunSummary& summary, int exitStatus,
                     const model::ContactMechanicsModel& model, const mesh::DistributedMesh& mesh,
-                    std::chrono::steady_clock::time_point start, const Teuchos::Comm<int>& comm) {
+                    std::chrono::steady_clock::time_point start, const std::optional<EarlierJobs>& earlier,
+                    const Teuchos::Comm<int>& comm) {
   RunReport report;
+  report.earlier = earlier;
   report.deck = cl.deck;
   report.ranks = comm.getSize();
   report.summary = summary;
@@ -295,8 +297,12 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
                              problem.maxWallSeconds, start, !cl.quiet);
   const solvers::RunSummary summary = solve(cl, model, piro, continuation, results, checkpoints, resumed);
-  const int exitStatus = reportOutcome(summary, problem, results, restartPath, *comm);
-  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, *comm);
+  CommandLine continued = cl;  // the command that continues the run, literally (with the same launcher)
+  continued.restart = restartPath;
+  const int exitStatus = reportOutcome(summary, problem, results, restartPath, commandLineText(continued), *comm);
+  std::optional<EarlierJobs> earlier;
+  if (!cl.restart.empty()) earlier = earlierJobs(results.historyColumns(), restart.historyRows);
+  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, earlier, *comm);
   return exitStatus;
 }
 
