@@ -98,7 +98,20 @@ class ContactInterface final : public ContactInterfaceBase {
     geometry.slave = xs;
     geometry.master = facet.x;
     return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent,
-                             contactPointOf(selection, facet));
+                             contactPointOf(selection, facet), approachOf(k, facet.id, committed));
+  }
+  /// Where slave node k, open at the commit, was relative to master `facet` then: its gap at the commit and
+  /// its committed position projected on the facet's committed position (CommittedApproach: the element
+  /// puts its stick reference where it touched). Unknown before the first commit, for a node that had no
+  /// master in reach, and for a node in contact at the commit (its history is the reference).
+  CommittedApproach<kXi> approachOf(std::size_t k, int facet, const ContactHistory<kXi>& committed) const {
+    const double gap = committedOutput_[k].gap;
+    if (committed.isInContact() || !std::isfinite(gap) || committedSlave_.size() != spec_.slaveNodes.size() ||
+        facet < 0 || facet >= static_cast<int>(committedMaster_.size()))
+      return {};
+    const auto p = Projection<Facet>().project(committedSlave_[k], committedMaster_[facet].x);
+    if (!p.converged) return {};
+    return CommittedApproach<kXi>::at(gap, p.xi);
   }
   /// The selection's contact point in the facet's local node numbers.
   static ContactPoint contactPointOf(const FacetSelection<Facet>& selection, const MasterFacetNodes<Facet>& facet) {
