@@ -98,7 +98,41 @@ class ContactInterface final : public ContactInterfaceBase {
     geometry.slave = xs;
     geometry.master = facet.x;
     return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent,
-                             contactPointOf(selection, facet));
+                             contactPointOf(selection, facet), approachOf(k, facet.id, committed));
+  }
+  /// Where slave node k, open at the commit, was relative to master `facet` then: its gap at the commit and
+  /// its committed position projected on the facet's committed position (CommittedApproach: the element
+  /// puts its stick reference where it touched). Unknown before the first commit, for a node that had no
+  /// master in reach, and for a node in contact at the commit (its history is the reference).
+  CommittedApproach<kXi> approachOf(std::size_t k, int facet, const ContactHistory<kXi>& committed) const {
+    const double gap = committedOutput_[k].gap;
+    if (committed.isInContact() || !std::isfinite(gap) || committedSlave_.size() != spec_.slaveNodes.size() ||
+        facet < 0 || facet >= static_cast<int>(committedMaster_.size()))
+      return {};
+    const auto p = Projection<Facet>().project(committedSlave_[k], committedMaster_[facet].x);
+    if (!p.converged) return {};
+    return CommittedApproach<kXi>::at(gap, p.xi);
+  }
+  /// The global search's tree: master facet boxes enlarged by the largest facet, so a slave node finds every
+  /// facet it could project on, and its neighbours (edges, corners).
+  static BoundingBoxTree<kDim> searchTree(const Facets& facets) {
+    double reach = 0;
+    for (const auto& m : facets) reach = std::max(reach, facetSize(m));
+    std::vector<BoundingBox<kDim>> boxes(facets.size());
+    for (std::size_t s = 0; s < facets.size(); ++s) {
+      for (const auto& x : facets[s].x) boxes[s].include(x);
+      boxes[s].enlarge(reach);
+    }
+    return BoundingBoxTree<kDim>(std::move(boxes));
+  }
+  /// Slave node k at `xs` among the facets whose boxes hold it (`hits`, `candidates`: reused storage).
+  FacetSelection<Facet> select(std::size_t k, const Point& xs, const Facets& facets, const BoundingBoxTree<kDim>& tree,
+                               std::vector<int>& hits, Facets& candidates) const {
+    hits.clear();
+    tree.query(xs, hits);
+    candidates.clear();
+    for (int h : hits) candidates.push_back(facets[h]);
+    return selector_.select(xs, candidates, spec_.slaveFacetLengths[k]);
   }
   /// The selection's contact point in the facet's local node numbers.
   static ContactPoint contactPointOf(const FacetSelection<Facet>& selection, const MasterFacetNodes<Facet>& facet) {
@@ -143,17 +177,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
                                        const Sink& sink) {
   const Facets facets = master_.facets(position, loadFactor);
   if (committedMaster_.empty()) committedMaster_ = facets;
-
-  // Global search: master facet boxes enlarged by the largest facet, so a slave node finds every facet it
-  // could project on, and its neighbours (edges, corners).
-  double reach = 0;
-  for (const auto& m : facets) reach = std::max(reach, facetSize(m));
-  std::vector<BoundingBox<kDim>> boxes(facets.size());
-  for (std::size_t s = 0; s < facets.size(); ++s) {
-    for (const auto& x : facets[s].x) boxes[s].include(x);
-    boxes[s].enlarge(reach);
-  }
-  const BoundingBoxTree<kDim> tree(std::move(boxes));
+  const BoundingBoxTree<kDim> tree = searchTree(facets);
 
   std::vector<double> force(kDim, 0.0);
   std::vector<int> hits;
@@ -162,11 +186,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
     if (!evaluatesSlave_[k]) continue;
     const Point xs = slavePosition(position, k);
     if (updateTrial) lastSlave_[k] = xs;
-    hits.clear();
-    tree.query(xs, hits);
-    candidates.clear();
-    for (int h : hits) candidates.push_back(facets[h]);
-    const FacetSelection<Facet> selection = selector_.select(xs, candidates, spec_.slaveFacetLengths[k]);
+    const FacetSelection<Facet> selection = select(k, xs, facets, tree, hits, candidates);
 
     SlaveNodeState out;
     out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
@@ -327,12 +347,16 @@ SlaveNodeChange ContactInterface<Facet>::unchanged(std::size_t k) const {
 
 template <class Facet>
 std::vector<SlaveNodeChange> ContactInterface<Facet>::changesAt(const NodePosition& position, double loadFactor) const {
+  // The run-time search (evaluate): the candidates of the tree, not every facet, O((n + m) log m).
   const Facets facets = master_.facets(position, loadFactor);
+  const BoundingBoxTree<kDim> tree = searchTree(facets);
+  std::vector<int> hits;
+  Facets candidates;
   std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
     const Point xs = slavePosition(position, k);
-    const FacetSelection<Facet> selection = selector_.select(xs, facets, spec_.slaveFacetLengths[k]);
+    const FacetSelection<Facet> selection = select(k, xs, facets, tree, hits, candidates);
     if (selection.kind == SelectionKind::None) {
       out.push_back(changeOf(k, std::numeric_limits<double>::infinity(), nullptr, history_.committed(k)));
       continue;

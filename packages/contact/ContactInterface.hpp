@@ -69,7 +69,7 @@ class ContactInterfaceBase {
   virtual void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) = 0;
   /// The owned slave nodes at the given positions and load factor against the last commit (contact
   /// evaluated with every node free to close, no force assembled, no history stored: a look ahead at a
-  /// predicted state).
+  /// predicted state). The same search as evaluate's (the tree's candidates), O((n + m) log m).
   virtual std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const = 0;
   /// Slave nodes of this rank that crossed a master facet, from its front to its back, between the last
   /// commit and the latest trial evaluation and are not in contact now (no master in reach, or a positive

@@ -183,14 +183,34 @@ struct BoundaryPointKinematics {
 };
 
 /// The tangential traction t_Tα of the contact law and its partial derivatives (all zero without friction
-/// and at a first contact).
+/// and at a first contact whose approach is unknown). The slip increment Δξ varies as
+/// ∂Δξ^β/∂u = slipScale Ξ^β + slipPerGap^β N: Ξ^β for a node in contact at the commit; (1 − τ) Ξ^β and
+/// −(ξ̄^β − ξ_0^β) ∂τ/∂g_N for a node that touched during the increment (CommittedApproach).
 template <int M>
 struct TangentialLaw {
   Vector<M> traction{};
   Matrix<M, M> dT_dXi{};                 // ∂t_α/∂Δξ^β
   std::array<Matrix<M, M>, M> dT_dMetric{};  // ∂t_α/∂ā_βγ
   Vector<M> dT_dNormal{};                // ∂t_α/∂t_N
+  double slipScale = 1.0;                // ∂Δξ/∂ξ̄
+  Vector<M> slipPerGap{};                // ∂Δξ^β/∂g_N
 };
+
+/// The slip increment of the return mapping (eq. 20) and how it varies with ξ̄ and g_N: against the
+/// committed ξ_n for a node in contact at the commit; for a node open at the commit, against the point
+/// where it touched, ξ_0 + τ(ξ̄ − ξ_0), τ = g_N,0/(g_N,0 − g_N) (CommittedApproach).
+template <int M>
+Vector<M> slipIncrement(const Vector<M>& xi, double gap, const ContactHistory<M>& committed,
+                        const CommittedApproach<M>& approach, TangentialLaw<M>& law) {
+  if (committed.isInContact()) return subtract(xi, committed.xi);
+  const Vector<M> path = subtract(xi, approach.xi);
+  if (!(approach.gap > 0.0)) return path;  // touching at the commit: τ = 0
+  const double closing = approach.gap - gap;  // > 0: g_N < 0 ≤ g_N,0
+  const double tau = approach.gap / closing;
+  law.slipScale = 1.0 - tau;
+  law.slipPerGap = scaled(-approach.gap / (closing * closing), path);  // −(ξ̄ − ξ_0) ∂τ/∂g_N
+  return scaled(1.0 - tau, path);
+}
 
 /// The Coulomb law at the projection ξ̄: the return mapping of eq. (20)–(23) against the committed history;
 /// sets the status, tractions and trial history of `out`.
@@ -198,19 +218,20 @@ template <class Facet, class Result>
 TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters& parameters,
                                                      const CoulombReturnMapping<Facet::kSurfaceDim>& returnMapping,
                                                      const ProjectionResult<Facet>& p,
-                                                     const ContactHistory<Facet::kSurfaceDim>& committed, double tN,
+                                                     const ContactHistory<Facet::kSurfaceDim>& committed,
+                                                     const CommittedApproach<Facet::kSurfaceDim>& approach, double tN,
                                                      double facetLength, SlipTangent slipTangent, Result& out) {
   constexpr int M = Facet::kSurfaceDim;
   TangentialLaw<M> law;
   if (parameters.isFrictionless()) {
     out.status = ContactStatus::Slip;  // free sliding, t_T ≡ 0
-  } else if (!committed.isInContact()) {
-    // First contact: ξ_n := ξ̄, t_T,n := 0, so Δξ ≡ 0 and t_T ≡ 0 in this increment (see header).
+  } else if (!committed.isInContact() && !approach.known) {
+    // First contact, approach unknown: ξ_n := ξ̄, t_T,n := 0, so Δξ ≡ 0 and t_T ≡ 0 in this increment.
     out.status = ContactStatus::Stick;
   } else {
     ReturnMappingInput<M> in;
-    in.committedTraction = committed.tangentialTraction;
-    in.slipIncrement = subtract(p.xi, committed.xi);  // Δξ_{n+1}, eq. (20)
+    in.committedTraction = committed.isInContact() ? committed.tangentialTraction : Vector<M>{};
+    in.slipIncrement = slipIncrement(p.xi, out.gap, committed, approach, law);  // Δξ_{n+1}, eq. (20)
     in.metric = p.metric;
     in.normalTraction = tN;
     in.facetLength = facetLength;
@@ -239,7 +260,7 @@ TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters&
 }
 
 /// Tangent term (b): Ξ^α (dt_Tα/du)ᵀ with the exact variation of the traction:
-///   dt_α = ∂t_α/∂Δξ^β Ξ^β + ∂t_α/∂ā_βγ dā_βγ + ∂t_α/∂t_N ε_N N,
+///   dt_α = ∂t_α/∂Δξ^β ∂Δξ^β/∂u + ∂t_α/∂ā_βγ dā_βγ + ∂t_α/∂t_N ε_N N,   (∂Δξ/∂u: TangentialLaw)
 ///   dā_βγ = [0, H_i,β] ⊗ ā_γ + [0, H_i,γ] ⊗ ā_β + (Γ_βεγ + Γ_γεβ) Ξ^ε     (Γ_αβγ = x̄,αβ·ā_γ)
 /// (the stretch term makes even the stick tangent slightly non-symmetric when Δξ ≠ 0: the covariant
 ///  t_T,n is held fixed while the facet stretches). N is the contact law's ∂g_N/∂u.
@@ -259,7 +280,8 @@ void addTractionVariation(typename Operators<Facet>::Square& K, const FacetKinem
   for (int al = 0; al < M; ++al) {
     Column dt = scaled(law.dT_dNormal[al] * epsN, N);
     for (int be = 0; be < M; ++be) {
-      addScaled(dt, law.dT_dXi(al, be), k.Xi[be]);
+      addScaled(dt, law.dT_dXi(al, be) * law.slipScale, k.Xi[be]);  // ∂Δξ/∂u (TangentialLaw)
+      addScaled(dt, law.dT_dXi(al, be) * law.slipPerGap[be], N);
       for (int ga = 0; ga < M; ++ga) addScaled(dt, law.dT_dMetric[al](be, ga), dMetric[be][ga]);
     }
     addOuter(K, 1.0, k.Xi[al], dt);
@@ -313,7 +335,7 @@ NodeToFacetContact<Facet>::NodeToFacetContact(const ContactLawParameters& parame
 template <class Facet>
 typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
     const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed, double facetLength,
-    SlipTangent slipTangent, const ContactPoint& point) const {
+    SlipTangent slipTangent, const ContactPoint& point, const CommittedApproach<kSurfaceDim>& approach) const {
   constexpr int M = kSurfaceDim;
   using Op = Operators<Facet>;
   using Column = typename Op::Column;
@@ -351,7 +373,7 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
   const double epsN = normalLaw_.tractionDerivative(out.gap);
   out.normalTraction = tN;
   const auto tangential =
-      applyTangentialLaw<Facet>(parameters_, returnMapping_, p, committed, tN, facetLength, slipTangent, out);
+      applyTangentialLaw<Facet>(parameters_, returnMapping_, p, committed, approach, tN, facetLength, slipTangent, out);
 
   // ---- Residual: r_c = t_N N + t_Tα Ξ^α --------------------------------------------------------------
   const Vector<M>& tT = tangential.traction;
@@ -367,7 +389,10 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
     // the eq. (27) term. With a slip tolerance the ∂t/∂t_N term also acts in stick (ε_T depends on t_N).
     for (int al = 0; al < M; ++al) {
       Column dt = scaled(tangential.dT_dNormal[al] * epsN, N);
-      for (int be = 0; be < M; ++be) addScaled(dt, tangential.dT_dXi(al, be), k.D[be]);
+      for (int be = 0; be < M; ++be) {
+        addScaled(dt, tangential.dT_dXi(al, be) * tangential.slipScale, k.D[be]);
+        addScaled(dt, tangential.dT_dXi(al, be) * tangential.slipPerGap[be], N);
+      }
       addOuter(K, 1.0, k.D[al], dt);
     }
     return out;

@@ -61,6 +61,25 @@ struct ContactPoint {
   static ContactPoint edge(int a, int b, double side) { return {Kind::Edge, {a, b}, side}; }
 };
 
+/// Where a slave node that is open at the last commit was, relative to the facet it now touches, at that
+/// commit: its gap g_N,0 and the parameter ξ_0 of its projection on the facet's committed position
+/// (ContactInterface measures them). Such a node closes during the increment; taking its path relative to
+/// the master as straight from (ξ_0, g_N,0) to the current (ξ̄, g_N), it touched the facet at the fraction
+///   τ = g_N,0 / (g_N,0 − g_N)   (the closure fraction β^k of eq. 10; τ = 0 when g_N,0 ≤ 0)
+/// at the point ξ_0 + τ (ξ̄ − ξ_0). That point is its stick reference: the return mapping of eq. (20)–(23)
+/// runs with t_T,n = 0 and Δξ = (1 − τ)(ξ̄ − ξ_0), so friction acts from the first touch and the answer
+/// does not depend on how far into the step the node closed (docs/theory-contact.md §5.2). Not known (the
+/// node has no committed state, or no master was in reach at the commit): the reference is the current ξ̄
+/// and the node carries no tangential traction in this increment.
+template <int M>
+struct CommittedApproach {
+  bool known = false;
+  double gap = 0.0;  ///< g_N,0 at the commit (finite)
+  Vector<M> xi{};    ///< ξ_0: the committed slave position projected on the facet's committed position
+
+  static CommittedApproach at(double gap, const Vector<M>& xi) { return {true, gap, xi}; }
+};
+
 template <class Facet>
 struct NodeToFacetResult {
   static constexpr int kSurfaceDim = Facet::kSurfaceDim;
@@ -115,8 +134,10 @@ struct NodeToFacetResult {
 ///
 /// History: the element reads the committed history of the node on THIS facet (after a facet change,
 /// first map it with transferHistory) and returns the trial history. A node whose committed status is
-/// Open is a first contact: its stick reference point is the current ξ̄ and it carries no tangential
-/// traction in this increment (friction starts from the first converged contact point).
+/// Open is a first contact: its stick reference point is where it touched the facet (CommittedApproach):
+/// Δξ = (1 − τ)(ξ̄ − ξ_0) with τ(g_N) of eq. (10), whose variation adds to ∂Δξ/∂u = Ξ the terms
+///   ∂Δξ^β/∂u = (1 − τ) Ξ^β − (ξ̄^β − ξ_0^β) g_N,0/(g_N,0 − g_N)² N
+/// (N the contact law's ∂g_N/∂u). Without an approach the reference is the current ξ̄ (no traction).
 template <class Facet>
 class NodeToFacetContact {
  public:
@@ -130,10 +151,12 @@ class NodeToFacetContact {
   /// Residual, tangent and trial history for the current positions `x` on master facet `facet`.
   /// `facetLength` is L_k, the mean size of the slave facets at the node (reference configuration): the
   /// length the slip tolerance refers to (ε_T = μ|t_N|/(s L_k), ContactLawParameters); unused when s = 0.
-  /// `point`: where on the facet the node touches (the selector's choice; ContactPoint).
+  /// `point`: where on the facet the node touches (the selector's choice; ContactPoint). `approach`: for a
+  /// node open at the commit, where it was at the commit (CommittedApproach); unused otherwise.
   Result evaluate(const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed,
                   double facetLength = 0.0, SlipTangent slipTangent = SlipTangent::consistent(),
-                  const ContactPoint& point = ContactPoint::projection()) const;
+                  const ContactPoint& point = ContactPoint::projection(),
+                  const CommittedApproach<kSurfaceDim>& approach = {}) const;
 
   const ContactLawParameters& parameters() const { return parameters_; }
 

@@ -35,7 +35,8 @@ Matrix<kDofs<Facet>, kDofs<Facet>> finiteDifferenceTangent(const NodeToFacetCont
                                                              const NodeToFacetGeometry<Facet>& g, int facet,
                                                              const ContactHistory<Facet::kSurfaceDim>& committed,
                                                              double h, double facetLength = 0.0,
-                                                             const ContactPoint& point = ContactPoint::projection()) {
+                                                             const ContactPoint& point = ContactPoint::projection(),
+                                                             const CommittedApproach<Facet::kSurfaceDim>& approach = {}) {
   constexpr int n = kDofs<Facet>;
   Matrix<n, n> k;
   const auto x = toDofs(g);
@@ -44,10 +45,10 @@ Matrix<kDofs<Facet>, kDofs<Facet>> finiteDifferenceTangent(const NodeToFacetCont
     auto minus = x;
     plus[j] += h;
     minus[j] -= h;
-    const auto rp =
-        element.evaluate(fromDofs<Facet>(plus), facet, committed, facetLength, SlipTangent::consistent(), point).residual;
-    const auto rm =
-        element.evaluate(fromDofs<Facet>(minus), facet, committed, facetLength, SlipTangent::consistent(), point).residual;
+    const auto rp = element.evaluate(fromDofs<Facet>(plus), facet, committed, facetLength, SlipTangent::consistent(),
+                                     point, approach).residual;
+    const auto rm = element.evaluate(fromDofs<Facet>(minus), facet, committed, facetLength, SlipTangent::consistent(),
+                                     point, approach).residual;
     for (int i = 0; i < n; ++i) k(i, j) = (rp[i] - rm[i]) / (2.0 * h);
   }
   return k;

@@ -50,8 +50,8 @@ void convergeAndCommit(model::ContactMechanicsModel& m, Thyra::VectorBase<double
 // A 2 × 1 block (6 × 3 enhanced quads, Neo-Hookean) 0.001 above a rigid base y = 0, or above a deformable
 // base block (the master nodes move: the geometric terms of the element tangent act together with
 // ∂ε_T/∂t_N). Its top is pushed down 0.05 × λ and sideways `drag` × λ, with the default slip tolerance
-// (0.005 of the facet length 1/3). The nodes close in the first half (first contact: no friction yet);
-// the second half drags them with friction.
+// (0.005 of the facet length 1/3). The nodes close in the first half, with friction from where they touch
+// (docs/theory-contact.md §5.2); the second half drags them on.
 deck::ProblemDefinition blockOnBase(bool deformableBase, double mu, double drag) {
   test::BlockOnBase deck;
   deck.elementsX = 6;
@@ -87,12 +87,16 @@ TEST_P(SlipToleranceModelTest, JacobianMatchesCentralDifferences) {
   EXPECT_LT(d.worst / d.scale, 1e-6);
 }
 
-// Newton from the committed half load to the full load (μ = 0.15, drag 0.05: 3–4 nodes stick, the others
-// slip): quadratic once the stick/slip set has settled. e_k = r_k / max r: e_{k+1} <= 100 e_k² whenever
-// e_k <= 5e-2; steps ending below 1e-11 (the rounding of internal forces of order 1e2, about 1e-13 per
-// entry and up to 7e-13 in the norm as measured) are not counted, at least one is.
+// Newton from the committed half load to the full load (μ = 0.15, drag 0.03: 3 nodes stick, 4 slip; with
+// the former drag 0.05 every node slips on the deformable base since friction acts from the first touch).
+// Nodes committed in slip start the increment exactly at their Coulomb limit, so round-off decides their
+// status at the first iterate and the first step may differ between 1 and 2 ranks (measured: ‖f‖ 0.144
+// and 0.170 after it), not the answer nor the quadratic end. Quadratic once the stick/slip set has
+// settled: e_k = r_k / max r: e_{k+1} <= 100 e_k² whenever e_k <= 5e-2; steps ending below 1e-11 (the
+// rounding of internal forces of order 1e2, about 1e-13 per entry and up to 7e-13 in the norm as
+// measured) are not counted, at least one is.
 TEST_P(SlipToleranceModelTest, NewtonConvergesQuadraticallyOnAFrictionalIncrement) {
-  const auto problem = blockOnBase(GetParam(), 0.15, 0.05);
+  const auto problem = blockOnBase(GetParam(), 0.15, 0.03);
   auto m = makeModel(problem);
   auto x = Thyra::createMember(m->get_x_space());
   Thyra::assign(x.ptr(), 0.0);
