@@ -368,11 +368,13 @@ const Registry<RegistryRow<MeshSource>>& registry() {
      &sphereOctantParameters, &createGenerated<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctant>,
      &createGeneratedPart<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctantPart>},
     {"Exodus File",
-     "An Exodus II mesh: QUAD4 or HEX8 element blocks, node sets and side sets with their names",
+     "An Exodus II mesh: element blocks of TRI3, TRI6, QUAD4, QUAD8, QUAD9 (2D) or TETRA4, TETRA10, HEX8, "
+     "HEX20, HEX27, WEDGE6, WEDGE15 (3D), node sets and side sets with their names",
      &exodusFileParameters, &createExodusFile, &createExodusFilePart},
     {"Gmsh File",
-     "A Gmsh mesh (.msh): physical volumes (2D: surfaces) become HEX8 (QUAD4) element blocks, physical groups "
-     "one dimension lower side sets and node sets, physical points and curves node sets",
+     "A Gmsh mesh (.msh) of order 1 or 2: physical volumes (2D: surfaces) become element blocks (one per "
+     "cell type: a group of several is split into <group>_<type> blocks), their nodes put in the Exodus order; "
+     "physical groups one dimension lower side sets and node sets, physical points and curves node sets",
      &gmshFileParameters, &createGmshFile},
     {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension", &meshFileParameters,
      &createMeshFile},
