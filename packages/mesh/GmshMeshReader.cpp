@@ -427,7 +427,6 @@ class Reader {
   void readBlocks(Mesh& mesh, const std::vector<Group>& groups) {
     const int d = mesh.dimension;
     std::map<std::size_t, std::string> blockOf;  // Gmsh element tag → group, to find one in two groups
-    GlobalIndex next = 0;
     for (const Group& g : groups) {
       if (g.dim != d) continue;
       std::vector<ElementBlock> byType;
@@ -446,7 +445,7 @@ class Reader {
           auto [it, inserted] = blockOf.emplace(tags[e], g.name);
           requireInput(inserted, path_ + ": element " + std::to_string(tags[e]) + " is in physical groups '" +
                                      it->second + "' and '" + g.name + "'; an element belongs to one block");
-          block->elements.push_back(next++);
+          block->elements.push_back(0);  // numbered below
           for (int a = 0; a < nn; ++a)
             block->connectivity.push_back(static_cast<GlobalIndex>(nodes[nn * e + (cell->order.empty() ? a : cell->order[a])]));
         }
@@ -460,6 +459,10 @@ class Reader {
         mesh.blocks.push_back(std::move(block));
       }
     }
+    // Element ids run over the blocks in order, each block's contiguous (Mesh::locate's fast path).
+    GlobalIndex next = 0;
+    for (ElementBlock& block : mesh.blocks)
+      for (GlobalIndex& id : block.elements) id = next++;
   }
 
   // Keeps the nodes of block elements, numbered by ascending Gmsh tag; connectivity still holds tags.

@@ -17,6 +17,11 @@ Written: good.exo, good_netcdf4.exo and
   interior_side_set.exo       side set 'right' holds the side between elements 2 and 3
   side_out_of_range.exo       side set 'top' refers to side 7 of a QUAD4
   node_set_out_of_range.exo   node set 'left' refers to node 40 of 15
+  quad8_mid_edge_off.exo      the good mesh as QUAD8, the mid-edge node of element 3's bottom edge moved
+                              along it by 40 % of its length
+  tri6_inverted.exo           the good mesh's quadrilaterals split into TRI6, element 5 listed clockwise
+  tri3_interior_side_set.exo  the quadrilaterals split into TRI3, side set 'right' holding the diagonal
+                              of the first quadrilateral (side 3 of element 1, shared with element 2)
   empty.exo, random_bytes.exo, truncated_classic.exo (good.exo cut to 2/3), truncated_classic_tail.exo
   (good.exo without its last 16 bytes), truncated_netcdf4.exo
   (good_netcdf4.exo cut in half), not_exodus.nc (a netCDF file of another kind), directory.exo/
@@ -51,6 +56,45 @@ def good_mesh():
     return {"x": x, "y": y, "connect": connect, "node_sets": node_sets, "side_sets": side_sets}
 
 
+def split_into_triangles(mesh):
+    """Each quadrilateral (a, b, c, d) as the triangles (a, b, c) and (a, c, d); the side sets of the
+    quadrilaterals' sides 2 (b, c) and 3 (c, d) become sides 2 of the first and second triangles."""
+    quads = mesh["connect"]
+    mesh["connect"] = np.array([t for q in quads for t in ([q[0], q[1], q[2]], [q[0], q[2], q[3]])], dtype=np.int32)
+    mesh["type"] = "TRI3"
+    for name, (elements, sides) in mesh["side_sets"].items():
+        mesh["side_sets"][name] = ([2 * e - (1 if s == 2 else 0) for e, s in zip(elements, sides)], [2] * len(sides))
+    return mesh
+
+
+def with_mid_edge_nodes(mesh, corners_per_cell, edges, name):
+    """The cells made quadratic: one node at the middle of each edge (numbered after the corners, in the
+    order of first use), appended to each cell in the Exodus order of `edges` (pairs of local corners)."""
+    middle = {}
+    x, y = list(mesh["x"]), list(mesh["y"])
+    cells = []
+    for cell in mesh["connect"]:
+        extra = []
+        for a, b in edges:
+            key = tuple(sorted((cell[a], cell[b])))
+            if key not in middle:
+                x.append((x[key[0] - 1] + x[key[1] - 1]) / 2)
+                y.append((y[key[0] - 1] + y[key[1] - 1]) / 2)
+                middle[key] = len(x)
+            extra.append(middle[key])
+        cells.append(list(cell[:corners_per_cell]) + extra)
+    mesh.update({"x": np.array(x), "y": np.array(y), "connect": np.array(cells, dtype=np.int32), "type": name})
+    return mesh
+
+
+def quad8_mesh():
+    return with_mid_edge_nodes(good_mesh(), 4, [(0, 1), (1, 2), (2, 3), (3, 0)], "QUAD8")
+
+
+def tri6_mesh():
+    return with_mid_edge_nodes(split_into_triangles(good_mesh()), 3, [(0, 1), (1, 2), (2, 0)], "TRI6")
+
+
 def names_array(names):
     out = np.zeros((len(names), 33), dtype="S1")
     for k, name in enumerate(names):
@@ -70,7 +114,7 @@ def write_exodus(path, mesh, fmt="NETCDF3_64BIT_OFFSET"):
     for name, size in [("len_string", 33), ("len_line", 81), ("four", 4), ("len_name", 33), ("time_step", None),
                        ("num_dim", 2), ("num_nodes", len(mesh["x"])), ("num_elem", len(connect)),
                        ("num_el_blk", 1), ("num_node_sets", len(node_sets)), ("num_side_sets", len(side_sets)),
-                       ("num_el_in_blk1", len(connect)), ("num_nod_per_el1", 4)]:
+                       ("num_el_in_blk1", len(connect)), ("num_nod_per_el1", connect.shape[1])]:
         ds.createDimension(name, size)
     for k, nodes in enumerate(node_sets.values(), 1):
         ds.createDimension(f"num_nod_ns{k}", len(nodes))
@@ -90,7 +134,7 @@ def write_exodus(path, mesh, fmt="NETCDF3_64BIT_OFFSET"):
     ds.createVariable("ss_names", "S1", ("num_side_sets", "len_name"))[:] = names_array(list(side_sets))
     ds.createVariable("coor_names", "S1", ("num_dim", "len_name"))[:] = names_array(["x", "y"])
     conn = ds.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
-    conn.setncattr("elem_type", "QUAD4")
+    conn.setncattr("elem_type", mesh.get("type", "QUAD4"))
     conn[:] = connect
     for k, nodes in enumerate(node_sets.values(), 1):
         ds.createVariable(f"node_ns{k}", "i4", (f"num_nod_ns{k}",))[:] = np.array(nodes, dtype=np.int32)
@@ -127,6 +171,18 @@ def main():
     variant("interior_side_set", lambda m: m["side_sets"].__setitem__("right", ([2], [2])))
     variant("side_out_of_range", lambda m: m["side_sets"]["top"][1].__setitem__(0, 7))
     variant("node_set_out_of_range", lambda m: m["node_sets"]["left"].append(40))
+
+    def moved_mid_edge_node(m):  # element 3's side 1 (y = 0): its mid-edge node, 5th of the cell
+        m["x"][m["connect"][2][4] - 1] -= 0.4 * 0.5
+        return m
+
+    write_exodus(os.path.join(out, "quad8_mid_edge_off.exo"), moved_mid_edge_node(quad8_mesh()))
+    tri6 = tri6_mesh()
+    tri6["connect"][4] = tri6["connect"][4][[0, 2, 1, 5, 4, 3]]
+    write_exodus(os.path.join(out, "tri6_inverted.exo"), tri6)
+    tri3 = split_into_triangles(good_mesh())
+    tri3["side_sets"]["right"] = ([1], [3])  # triangle 1 (a, b, c): side 3 (c, a) is the diagonal
+    write_exodus(os.path.join(out, "tri3_interior_side_set.exo"), tri3)
 
     open(os.path.join(out, "empty.exo"), "wb").close()
     with open(os.path.join(out, "random_bytes.exo"), "wb") as f:

@@ -486,3 +486,36 @@ TEST(ExodusRoundTrip, EveryFamilyInItsNativeExodusType) {
     std::remove(path.c_str());
   }
 }
+
+// What the conversion prevents: the Gmsh-made Tet10 and Hex20 meshes with their cells in Gmsh's own
+// node order (rebuilt here from the Gmsh manual's edge lists), taken as Exodus order, are refused by
+// the mid-edge check, naming a node and its wrong edge.
+TEST(GmshMeshReader, GmshOrderTakenAsExodusIsRefused) {
+  struct Case {
+    const char* file;
+    CellType type;
+    std::vector<std::pair<int, int>> gmshEdges;  ///< the corners of Gmsh's mid-edge nodes, in its order
+  };
+  const Case cases[] = {
+      {"tet10.msh", CellType::Tet10, {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}}},
+      {"hex20.msh", CellType::Hex20,
+       {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3}, {2, 6}, {3, 7}, {4, 5}, {4, 7}, {5, 6}, {6, 7}}},
+  };
+  for (const Case& c : cases) {
+    Mesh m = readGmshMesh(std::string(CONTESSA_TEST_MESHES) + "/" + c.file);
+    ElementBlock& b = m.blocks[0];
+    ASSERT_EQ(b.cellType, c.type);
+    const int nn = nodesPerCell(c.type), corners = numCorners(c.type);
+    for (std::size_t e = 0; e < b.elements.size(); ++e) {
+      std::vector<GlobalIndex> gmsh(b.connectivity.begin() + nn * e, b.connectivity.begin() + nn * (e + 1));
+      for (std::size_t k = 0; k < c.gmshEdges.size(); ++k)
+        for (const MidEdgeNode& edge : midEdgeNodes(c.type))
+          if ((edge.first == c.gmshEdges[k].first && edge.second == c.gmshEdges[k].second) ||
+              (edge.first == c.gmshEdges[k].second && edge.second == c.gmshEdges[k].first))
+            gmsh[corners + k] = b.connectivity[nn * e + edge.middle];
+      std::copy(gmsh.begin(), gmsh.end(), b.connectivity.begin() + nn * e);
+    }
+    const std::string message = messageOf([&] { m.validate(c.file); });
+    EXPECT_NE(message.find("has its mid-edge node"), std::string::npos) << c.file << ": " << message;
+  }
+}
