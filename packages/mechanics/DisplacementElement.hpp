@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "mechanics/Element.hpp"
 #include "mechanics/Kinematics.hpp"
@@ -30,6 +31,11 @@ class DisplacementElement final : public ElementKernel {
   int dimension() const override { return D; }
   int numNodes() const override { return N; }
   bool axisymmetric() const override { return Kinematics::kHoop; }
+  std::vector<double> parentNodeCoordinates() const override {
+    std::vector<double> xi;
+    for (const auto& node : Shape::parentNodes()) xi.insert(xi.end(), node.begin(), node.end());
+    return xi;
+  }
 
   std::unique_ptr<ElementGeometry> referenceGeometry(int count, const double* X) const override {
     auto set = std::make_unique<GeometrySet>(count);

@@ -34,6 +34,9 @@ class ElementKernel {
   /// True for a 2D kernel of a solid of revolution about the y axis (r = x, z = y): its forces are
   /// those of the full circumference and its stress's zz component is the hoop stress σ_θθ.
   virtual bool axisymmetric() const { return false; }
+  /// Parent (reference-element) coordinates ξ of the nodes, numNodes × dimension, node-major: where the
+  /// kernel's shape functions are 1 (tests map them into distorted elements of every family).
+  virtual std::vector<double> parentNodeCoordinates() const = 0;
   /// Internal (condensed) variables per element, e.g. 4 (Q4) or 9 (Hex8) enhanced-strain parameters.
   virtual int numInternalVariables() const { return 0; }
   /// Values of the element state: the internal variables first, then what the kernel keeps to
@@ -72,7 +75,8 @@ class ElementKernel {
                                     const Material& material, Tensor2& sigma) const;
 };
 
-/// Creates element kernels by the deck's "Element" name: "Q4" (bilinear, 2 × 2 Gauss), "Q4 Enhanced"
+/// Creates element kernels by the deck's "Element" name (ElementFactory.cpp lists them all): "Q4"
+/// (bilinear, 2 × 2 Gauss), "Q4 Enhanced"
 /// (Simo–Armero enhanced assumed strain, 4 modes, condensed), and their 3D counterparts "Hex8"
 /// (trilinear, 2 × 2 × 2 Gauss) and "Hex8 Enhanced" (9 modes, condensed); "Q4 Axisymmetric" and "Q4
 /// Enhanced Axisymmetric" revolve the 2D ones about the y axis (Kinematics.hpp).

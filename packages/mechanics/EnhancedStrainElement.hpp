@@ -18,6 +18,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "mechanics/DenseSolve.hpp"
 #include "mechanics/Element.hpp"
@@ -55,6 +56,11 @@ class EnhancedStrainElement final : public ElementKernel {
   int dimension() const override { return D; }
   int numNodes() const override { return N; }
   bool axisymmetric() const override { return Kinematics::kHoop; }
+  std::vector<double> parentNodeCoordinates() const override {
+    std::vector<double> xi;
+    for (const auto& node : Shape::parentNodes()) xi.insert(xi.end(), node.begin(), node.end());
+    return xi;
+  }
   int numInternalVariables() const override { return NA; }
   int numStateValues() const override { return kStateSize; }
 

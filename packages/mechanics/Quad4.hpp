@@ -20,6 +20,7 @@ struct BilinearQuadrilateral {
   static std::array<QuadraturePoint<2>, kPoints> quadrature() { return gaussLegendreRule<2, 2>(); }
   static void shapeGradients(const double* xi, double* dNdxi);
   static void shapeValues(const double* xi, double* N);  ///< N_a at ξ (the axisymmetric radius, N_a / R)
+  static std::array<std::array<double, 2>, kNodes> parentNodes() { return {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}; }
 };
 
 /// The kernels, under the name the registry (ElementFactory.cpp) gives them.

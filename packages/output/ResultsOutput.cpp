@@ -208,7 +208,7 @@ io::ExodusFields ResultsOutput::exodusFields() const {
   for (int c = 0; c < dim; ++c) fields.nodal.push_back(std::string("displ_") + kAxes[c]);
   if (model_.hasContact())
     for (const auto& f : model::ContactMechanicsModel::contactFieldNames()) fields.nodal.push_back(f);
-  fields.element = model::ContactMechanicsModel::elementStressNames(dim, problem.axisymmetric);
+  fields.element = model::ContactMechanicsModel::elementStressNames(dim, problem_.axisymmetric);
   // The history's reactions and contact forces are globals too: force-displacement curves can
   // be plotted from the Exodus file alone, under the same names.
   fields.global = kGlobals;
