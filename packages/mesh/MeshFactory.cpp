@@ -53,12 +53,12 @@ DistributedMesh createGeneratedPart(const ParameterList& list, const std::string
 // the middle of each edge) of a structured generator.
 void addCellVariant(ParameterList& p, const std::string& cells, const std::string& simplices) {
   setChoice(p, "Cell Type", cells, {cells, simplices},
-            cells + " (QUAD4 / HEX8), or " + simplices + ": each cell split into " +
+            cells + (simplices == "Triangles" ? " (QUAD4)" : " (HEX8)") + ", or " + simplices + ": each cell split into " +
                 (simplices == "Triangles" ? "2 TRI3 along its diagonal from node 1 to node 3"
                                           : "the 6 TETRA4 around its diagonal from node 1 to node 7 (faces matching)"));
   setPositiveInt(p, "Element Order", 1,
-                 "1: linear cells; 2: a node at the middle of every edge (QUAD8, HEX20, TRI6, TETRA10; mid-edge "
-                 "nodes on the straight chord)");
+                 "1 or 2: 1 linear cells; 2 a node at the middle of every edge (QUAD8, HEX20, TRI6, TETRA10; "
+                 "mid-edge nodes on the straight chord)");
 }
 
 struct CellVariant {
