@@ -4,7 +4,8 @@
 //   kind = 2: hexahedra on [0, 1] x [0, 1] and prisms on [1, 2] x [0, 1], extruded 2 layers to z = 1
 //             (one physical volume holding both: two blocks "body_hex..", "body_wedge..").
 // Element order 1 or 2; incomplete = 1 makes the 20-node hexahedra and 15-node prisms, 0 the 27-node
-// hexahedra. Physical surfaces "bottom" (z = 0) and "top" (z = 1). Regenerate with
+// hexahedra. Physical surfaces "bottom" (z = 0), "top" (z = 1), "left" (x = 0), "right" (x = 1 or 2) and
+// "south" (y = 0). Regenerate with
 // tests/unit/mesh/gmsh/make_meshes.sh.
 DefineConstant[ kind = 0, order = 1, incomplete = 0 ];
 e = 1e-6;
@@ -37,3 +38,7 @@ Mesh.SecondOrderIncomplete = incomplete;
 Physical Volume("body") = Volume{:};
 Physical Surface("bottom") = Surface In BoundingBox{-e, -e, -e, 2 + e, 1 + e, e};
 Physical Surface("top") = Surface In BoundingBox{-e, -e, 1 - e, 2 + e, 1 + e, 1 + e};
+xmax = kind == 1 ? 1 : 2;
+Physical Surface("left") = Surface In BoundingBox{-e, -e, -e, e, 1 + e, 1 + e};
+Physical Surface("right") = Surface In BoundingBox{xmax - e, -e, -e, xmax + e, 1 + e, 1 + e};
+Physical Surface("south") = Surface In BoundingBox{-e, -e, -e, 2 + e, e, 1 + e};
