@@ -22,6 +22,9 @@ Written: good.exo, good_netcdf4.exo and
   tri6_inverted.exo           the good mesh's quadrilaterals split into TRI6, element 5 listed clockwise
   tri3_interior_side_set.exo  the quadrilaterals split into TRI3, side set 'right' holding the diagonal
                               of the first quadrilateral (side 3 of element 1, shared with element 2)
+  tet10_inverted.exo          a 3D mesh of two TETRA10 (the unit cube's corner tetrahedra at the origin and
+                              at (1, 1, 1)), the second listed with its nodes 2 and 3 swapped (and their
+                              mid-edge nodes with them)
   empty.exo, random_bytes.exo, truncated_classic.exo (good.exo cut to 2/3), truncated_classic_tail.exo
   (good.exo without its last 16 bytes), truncated_netcdf4.exo
   (good_netcdf4.exo cut in half), not_exodus.nc (a netCDF file of another kind), directory.exo/
@@ -87,6 +90,25 @@ def with_mid_edge_nodes(mesh, corners_per_cell, edges, name):
     return mesh
 
 
+def tet10_pair(swap_second):
+    """Two TETRA10 of the unit cube: (0,0,0) (1,0,0) (0,1,0) (0,0,1) and (1,1,1) (1,0,1) (0,1,1) (1,1,0)
+    (both right-handed), mid-edge nodes in the Exodus order (1-2, 2-3, 3-1, 1-4, 2-4, 3-4)."""
+    corners = [[(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], [(1, 1, 1), (1, 0, 1), (0, 1, 1), (1, 1, 0)]]
+    edges = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
+    points, cells = [], []
+    for c in corners:
+        cell = []
+        for p in c + [tuple((c[a][i] + c[b][i]) / 2 for i in range(3)) for a, b in edges]:
+            cell.append(len(points) + 1)
+            points.append(p)
+        cells.append(cell)
+    if swap_second:  # nodes 2 and 3, so edges 1-2 and 3-1 swap too, and 2-4 with 3-4
+        cells[1] = [cells[1][k] for k in [0, 2, 1, 3, 6, 5, 4, 7, 9, 8]]
+    x, y, z = (np.array([p[i] for p in points], dtype=float) for i in range(3))
+    return {"x": x, "y": y, "z": z, "connect": np.array(cells, dtype=np.int32), "type": "TETRA10",
+            "node_sets": {"origin": [1]}, "side_sets": {"base": ([1], [4])}}
+
+
 def quad8_mesh():
     return with_mid_edge_nodes(good_mesh(), 4, [(0, 1), (1, 2), (2, 3), (3, 0)], "QUAD8")
 
@@ -112,7 +134,7 @@ def write_exodus(path, mesh, fmt="NETCDF3_64BIT_OFFSET"):
     connect = mesh["connect"]
     node_sets, side_sets = mesh["node_sets"], mesh["side_sets"]
     for name, size in [("len_string", 33), ("len_line", 81), ("four", 4), ("len_name", 33), ("time_step", None),
-                       ("num_dim", 2), ("num_nodes", len(mesh["x"])), ("num_elem", len(connect)),
+                       ("num_dim", 3 if "z" in mesh else 2), ("num_nodes", len(mesh["x"])), ("num_elem", len(connect)),
                        ("num_el_blk", 1), ("num_node_sets", len(node_sets)), ("num_side_sets", len(side_sets)),
                        ("num_el_in_blk1", len(connect)), ("num_nod_per_el1", connect.shape[1])]:
         ds.createDimension(name, size)
@@ -129,10 +151,12 @@ def write_exodus(path, mesh, fmt="NETCDF3_64BIT_OFFSET"):
         prop[:] = np.arange(1, count + 1, dtype=np.int32)
     ds.createVariable("coordx", "f8", ("num_nodes",))[:] = mesh["x"]
     ds.createVariable("coordy", "f8", ("num_nodes",))[:] = mesh["y"]
+    if "z" in mesh:
+        ds.createVariable("coordz", "f8", ("num_nodes",))[:] = mesh["z"]
     ds.createVariable("eb_names", "S1", ("num_el_blk", "len_name"))[:] = names_array(["block_1"])
     ds.createVariable("ns_names", "S1", ("num_node_sets", "len_name"))[:] = names_array(list(node_sets))
     ds.createVariable("ss_names", "S1", ("num_side_sets", "len_name"))[:] = names_array(list(side_sets))
-    ds.createVariable("coor_names", "S1", ("num_dim", "len_name"))[:] = names_array(["x", "y"])
+    ds.createVariable("coor_names", "S1", ("num_dim", "len_name"))[:] = names_array(["x", "y", "z"][:3 if "z" in mesh else 2])
     conn = ds.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
     conn.setncattr("elem_type", mesh.get("type", "QUAD4"))
     conn[:] = connect
@@ -183,6 +207,8 @@ def main():
     tri3 = split_into_triangles(good_mesh())
     tri3["side_sets"]["right"] = ([1], [3])  # triangle 1 (a, b, c): side 3 (c, a) is the diagonal
     write_exodus(os.path.join(out, "tri3_interior_side_set.exo"), tri3)
+    write_exodus(os.path.join(out, "tet10_good.exo"), tet10_pair(False))
+    write_exodus(os.path.join(out, "tet10_inverted.exo"), tet10_pair(True))
 
     open(os.path.join(out, "empty.exo"), "wb").close()
     with open(os.path.join(out, "random_bytes.exo"), "wb") as f:
