@@ -295,3 +295,13 @@ TEST(CellFamilies, ContactSurfacesOnOtherCellTypesAreRefused) {
             "on the sides of the other cell types is not supported yet)");
   EXPECT_EQ(surfaceOfSideSet(generateBox(spec), "top").elements.size(), 1u);
 }
+
+// A flat simplex has zero Jacobian everywhere: degenerate, named so.
+TEST(CellFamilies, FlatSimplicesAreDegenerate) {
+  const Mesh tet = oneCell(CellType::Tet4, {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+  EXPECT_EQ(messageOf([&] { tet.validate("flat"); }),
+            "flat: element 1 of block 'b' is degenerate (zero volume): its nodes lie on one plane");
+  const Mesh tri = oneCell(CellType::Tri3, {0, 0, 1, 1, 2, 2});
+  EXPECT_EQ(messageOf([&] { tri.validate("flat"); }),
+            "flat: element 1 of block 'b' is degenerate (zero area): its nodes lie on one line");
+}
