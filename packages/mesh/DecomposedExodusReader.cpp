@@ -334,6 +334,27 @@ void requireOneDecomposition(const DistributedMesh& part, const RecordedSizes& r
 
 }  // namespace
 
+namespace {
+
+// A file without elements of a block stores no cell type for it (topology "NULL"): the block takes
+// the type the other files give it, so that every rank matches the same element kernel to it. Files
+// that give one block different types are refused.
+void agreeOnCellTypes(Mesh& local, const std::string& files) {
+  constexpr unsigned long long kNone = 1000;  // more than any CellType value
+  for (ElementBlock& block : local.blocks) {
+    const unsigned long long mine = block.elements.empty() ? kNone : static_cast<unsigned long long>(block.cellType);
+    const unsigned long long lowest = worldValue(mine, MPI_MIN);
+    const unsigned long long highest = worldValue(block.elements.empty() ? 0 : mine, MPI_MAX);
+    if (lowest == kNone) continue;  // empty in every file
+    requireInput(lowest == highest, files + ": block '" + block.name + "' holds " +
+                                        exodusCellName(static_cast<CellType>(lowest)) + " elements in one file, " +
+                                        exodusCellName(static_cast<CellType>(highest)) + " in another");
+    block.cellType = static_cast<CellType>(lowest);
+  }
+}
+
+}  // namespace
+
 DistributedMesh readDecomposedExodus(const std::string& base) {
   const WorldRanks world = worldRanks();
   const int rank = world.rank, numRanks = world.size;
@@ -357,6 +378,7 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
                decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different element blocks, "
                                                        "node sets or side sets (names and order must agree)");
   requireOneDecomposition(part, recorded, base);
+  agreeOnCellTypes(part.part.mesh, decomposedFileName(base, numRanks, 0) + " ...");
 
   // Global sizes: each element is in one file, each node owned by one.
   std::vector<GlobalIndex> sizes{static_cast<GlobalIndex>(part.ownedNodes().size()), local.numElements()};

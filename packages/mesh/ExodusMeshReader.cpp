@@ -34,7 +34,7 @@ class Reader {
     size.nodes = static_cast<double>(init.num_nodes);
     size.elements = static_cast<double>(init.num_elem);
     size.dimension = static_cast<int>(init.num_dim);
-    size.nodesPerElement = size.dimension == 2 ? 4 : 8;
+    size.nodesPerElement = largestNodesPerElement(init.num_elem_blk, size.dimension == 2 ? 4 : 8);
     requireRunFits(size, path(), "use a coarser mesh or a machine with more memory");
     // Names longer than the library's default of 32 characters would be truncated otherwise.
     const int64_t nameLength = std::max<int64_t>(32, ex_inquire_int(id(), EX_INQ_DB_MAX_USED_NAME_LENGTH));
@@ -113,16 +113,45 @@ class Reader {
     }
   }
 
-  static bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+  // The Exodus topology names common tools write ("HEX8", "hex", "HEX20", "TETRA10", "tetra", "TET4",
+  // "WEDGE6", "TRI6", "TRIANGLE", "QUAD8", ...): the family is the name without its digits, the cell
+  // the family's of the block's node count and dimension ("QUAD" of 4 nodes is QUAD4, of 8 QUAD8).
+  static std::string family(const std::string& topology) {
+    std::string upper;
+    for (char c : topology)
+      if (!std::isdigit(static_cast<unsigned char>(c))) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (upper == "HEXAHEDRON") return "HEX";
+    if (upper == "TET" || upper == "TETRAHEDRON") return "TETRA";
+    if (upper == "TRIANGLE") return "TRI";
+    if (upper == "QUADRILATERAL") return "QUAD";
+    return upper;
+  }
 
-  CellType cellType(const std::string& blockName, const std::string& topology, int64_t nodesPerElement) const {
-    std::string upper = topology;
-    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    // "QUAD", "QUAD4" and "HEX", "HEX8" mean the same linear cells; QUAD8, HEX20... do not.
-    if (startsWith(upper, "QUAD") && nodesPerElement == 4) return CellType::Quad4;
-    if (startsWith(upper, "HEX") && nodesPerElement == 8) return CellType::Hex8;
-    throw InputError(path() + ": element block '" + blockName + "' has unsupported type '" + topology +
-                     "' (supported: QUAD4, HEX8)");
+  CellType cellType(const std::string& blockName, const std::string& topology, int64_t nodesPerElement,
+                    int dimension) const {
+    CellType type = CellType::Quad4;
+    std::string cellFamily = "?";
+    if (cellTypeOf(dimension, static_cast<int>(nodesPerElement), type)) cellFamily = family(exodusCellName(type));
+    if (cellFamily == family(topology)) return type;
+    throw InputError(path() + ": element block '" + blockName + "' has unsupported type '" + topology + "' with " +
+                     std::to_string(nodesPerElement) + " nodes per element in a " + std::to_string(dimension) +
+                     "D mesh (supported: " +
+                     (dimension == 2 ? "TRI3, TRI6, QUAD4, QUAD8, QUAD9" : "TETRA4, TETRA10, HEX8, HEX20, HEX27, WEDGE6, WEDGE15") +
+                     ")");
+  }
+
+  // The most nodes per element of any block (quadratic cells hold 2 to 3 times those of linear ones),
+  // at least `atLeast`; read from the block headers only.
+  int largestNodesPerElement(int64_t numBlocks, int atLeast) {
+    int largest = atLeast;
+    for (int64_t blockId : ids(EX_ELEM_BLOCK, numBlocks, "element block ids")) {
+      ex_block param{};
+      param.id = blockId;
+      param.type = EX_ELEM_BLOCK;
+      check(ex_get_block_param(id(), &param), "element block " + std::to_string(blockId));
+      largest = std::max(largest, static_cast<int>(param.num_nodes_per_entry));
+    }
+    return largest;
   }
 
   void readBlocks(Mesh& mesh, int64_t numBlocks) {
@@ -139,7 +168,8 @@ class Reader {
       // An empty block (a piece of a decomposed set where the rank has none of its elements) is
       // written with topology "NULL": its cells are the mesh dimension's.
       block.cellType = param.num_entry == 0 ? (mesh.dimension == 2 ? CellType::Quad4 : CellType::Hex8)
-                                            : cellType(block.name, param.topology, param.num_nodes_per_entry);
+                                            : cellType(block.name, param.topology, param.num_nodes_per_entry,
+                                                       mesh.dimension);
       requireInput(cellDimension(block.cellType) == mesh.dimension,
                    path() + ": element block '" + block.name + "' has " + exodusCellName(block.cellType) +
                        " cells in a " + std::to_string(mesh.dimension) + "D mesh");

@@ -59,8 +59,60 @@ GmshLibrary& gmshLibrary() {
 
 namespace {
 
-// Gmsh element type numbers (its MSH format's): 2-node line, 4-node quadrilateral, 8-node hexahedron.
-constexpr int kGmshLine2 = 1, kGmshQuad4 = 3, kGmshHex8 = 5;
+// A Gmsh element type (its MSH format's number) as a Contessa cell: Exodus node k is Gmsh's node
+// order[k]. Gmsh's orders (the Gmsh reference manual, "Node ordering") put the corners first in the
+// Exodus order, but number the edges of tetrahedra, hexahedra and prisms differently, and the face
+// centres of the 27-node hexahedron.
+struct GmshCell {
+  int gmshType;
+  CellType cell;
+  std::vector<int> order;  ///< empty: the same order
+};
+
+const std::vector<GmshCell>& gmshCells() {
+  static const std::vector<GmshCell> cells = [] {
+    // Gmsh's hexahedron edges: 8 (0,1), 9 (0,3), 10 (0,4), 11 (1,2), 12 (1,5), 13 (2,3), 14 (2,6),
+    // 15 (3,7), 16 (4,5), 17 (4,7), 18 (5,6), 19 (6,7); Exodus's: the bottom edges, the vertical
+    // ones, the top ones, each in corner order.
+    std::vector<int> hex20{0, 1, 2, 3, 4, 5, 6, 7, 8, 11, 13, 9, 10, 12, 14, 15, 16, 18, 19, 17};
+    // Gmsh's face centres: 20 (z = −1), 21 (y = −1), 22 (x = −1), 23 (x = +1), 24 (y = +1), 25 (z = +1),
+    // then the centre 26; Exodus's: the centre, then the faces z = −1, z = +1, x = −1, x = +1, y = −1, y = +1.
+    std::vector<int> hex27 = hex20;
+    hex27.insert(hex27.end(), {26, 20, 25, 22, 23, 21, 24});
+    return std::vector<GmshCell>{
+        {2, CellType::Tri3, {}},
+        {9, CellType::Tri6, {}},
+        {3, CellType::Quad4, {}},
+        {16, CellType::Quad8, {}},
+        {10, CellType::Quad9, {}},
+        {4, CellType::Tet4, {}},
+        // Gmsh: 7 (3,0), 8 (3,2), 9 (3,1); Exodus: 7 (0,3), 8 (1,3), 9 (2,3).
+        {11, CellType::Tet10, {0, 1, 2, 3, 4, 5, 6, 7, 9, 8}},
+        {5, CellType::Hex8, {}},
+        {17, CellType::Hex20, hex20},
+        {12, CellType::Hex27, hex27},
+        {6, CellType::Wedge6, {}},
+        // Gmsh: 6 (0,1), 7 (0,2), 8 (0,3), 9 (1,2), 10 (1,4), 11 (2,5), 12 (3,4), 13 (3,5), 14 (4,5);
+        // Exodus: 6 (0,1), 7 (1,2), 8 (2,0), 9 (0,3), 10 (1,4), 11 (2,5), 12 (3,4), 13 (4,5), 14 (5,3).
+        {18, CellType::Wedge15, {0, 1, 2, 3, 4, 5, 6, 9, 7, 8, 10, 11, 12, 14, 13}},
+    };
+  }();
+  return cells;
+}
+
+const GmshCell* gmshCell(int gmshType) {
+  for (const GmshCell& c : gmshCells())
+    if (c.gmshType == gmshType) return &c;
+  return nullptr;
+}
+
+// Sides of cells as Gmsh elements: lines of 2 or 3 nodes (1, 8) in 2D; triangles of 3 or 6 nodes (2, 9)
+// and quadrilaterals of 4, 8 or 9 (3, 16, 10) in 3D. Their corners come first; 0 for any other type.
+int gmshSideCorners(int gmshType, int dimension) {
+  if (dimension == 2) return gmshType == 1 || gmshType == 8 ? 2 : 0;
+  if (gmshType == 2 || gmshType == 9) return 3;
+  return gmshType == 3 || gmshType == 16 || gmshType == 10 ? 4 : 0;
+}
 
 std::string oneLine(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
@@ -364,35 +416,53 @@ class Reader {
     return name;
   }
 
-  void requireType(int type, int expected, const Group& g) const {
-    requireInput(type == expected, path_ + ": element type '" + typeName(type) + "' in physical group '" + g.name +
-                                       "' is not supported (Contessa reads 4-node quadrilaterals and 8-node hexahedra)");
+  [[noreturn]] void failType(int type, const Group& g, const char* supported) const {
+    throw InputError(path_ + ": element type '" + typeName(type) + "' in physical group '" + g.name +
+                     "' is not supported (Contessa reads " + supported + ")");
   }
 
+  // One block per physical group of the mesh's dimension and cell type: a group of one type is the
+  // block of its name; a group of several (hexahedra and prisms) is split into blocks named
+  // <group>_<type> ("body_hex20", "body_wedge15"), each of one cell type.
   void readBlocks(Mesh& mesh, const std::vector<Group>& groups) {
     const int d = mesh.dimension;
-    const CellType cell = d == 3 ? CellType::Hex8 : CellType::Quad4;
-    const int nn = nodesPerCell(cell);
-    std::map<std::size_t, std::string> blockOf;  // Gmsh element tag → block, to find one in two blocks
-    GlobalIndex next = 0;
+    std::map<std::size_t, std::string> blockOf;  // Gmsh element tag → group, to find one in two groups
     for (const Group& g : groups) {
       if (g.dim != d) continue;
-      ElementBlock block;
-      block.name = g.name;
-      block.cellType = cell;
+      std::vector<ElementBlock> byType;
       forElements(g, [&](int type, const std::vector<std::size_t>& tags, const std::vector<std::size_t>& nodes) {
-        requireType(type, d == 3 ? kGmshHex8 : kGmshQuad4, g);
+        const GmshCell* cell = gmshCell(type);
+        if (cell == nullptr || cellDimension(cell->cell) != d)
+          failType(type, g, d == 2 ? "triangles of 3 and 6 nodes and quadrilaterals of 4, 8 and 9 nodes"
+                                   : "tetrahedra of 4 and 10 nodes, hexahedra of 8, 20 and 27 and prisms of 6 and 15");
+        auto block = std::find_if(byType.begin(), byType.end(), [&](const ElementBlock& b) { return b.cellType == cell->cell; });
+        if (block == byType.end()) {
+          byType.push_back(ElementBlock{g.name, cell->cell, {}, {}});
+          block = byType.end() - 1;
+        }
+        const int nn = nodesPerCell(cell->cell);
         for (size_t e = 0; e < tags.size(); ++e) {
           auto [it, inserted] = blockOf.emplace(tags[e], g.name);
           requireInput(inserted, path_ + ": element " + std::to_string(tags[e]) + " is in physical groups '" +
                                      it->second + "' and '" + g.name + "'; an element belongs to one block");
-          block.elements.push_back(next++);
-          // Gmsh's node order of these cells is Exodus' (bottom face counter-clockwise, then top).
-          for (int a = 0; a < nn; ++a) block.connectivity.push_back(static_cast<GlobalIndex>(nodes[nn * e + a]));
+          block->elements.push_back(0);  // numbered below
+          for (int a = 0; a < nn; ++a)
+            block->connectivity.push_back(static_cast<GlobalIndex>(nodes[nn * e + (cell->order.empty() ? a : cell->order[a])]));
         }
       });
-      mesh.blocks.push_back(std::move(block));
+      for (ElementBlock& block : byType) {
+        if (byType.size() > 1) {
+          std::string type = exodusCellName(block.cellType);
+          std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return std::tolower(c); });
+          block.name += "_" + type;
+        }
+        mesh.blocks.push_back(std::move(block));
+      }
     }
+    // Element ids run over the blocks in order, each block's contiguous (Mesh::locate's fast path).
+    GlobalIndex next = 0;
+    for (ElementBlock& block : mesh.blocks)
+      for (GlobalIndex& id : block.elements) id = next++;
   }
 
   // Keeps the nodes of block elements, numbered by ascending Gmsh tag; connectivity still holds tags.
@@ -406,6 +476,7 @@ class Reader {
     size.elements = static_cast<double>(mesh.numElements());
     size.dimension = mesh.dimension;
     size.nodesPerElement = mesh.dimension == 2 ? 4 : 8;
+    for (const auto& b : mesh.blocks) size.nodesPerElement = std::max(size.nodesPerElement, nodesPerCell(b.cellType));
     requireRunFits(size, path_, "use a coarser mesh or a machine with more memory");
 
     std::vector<std::size_t> tags;
@@ -442,16 +513,16 @@ class Reader {
     return n;
   }
 
-  using FaceKey = std::array<GlobalIndex, 4>;  // sorted node numbers; −1 pads the 2-node sides of 2D
+  using FaceKey = std::array<GlobalIndex, 4>;  // sorted corner node numbers; −1 pads 2- and 3-corner sides
 
-  static FaceKey key(std::vector<GlobalIndex> nodes) {
-    std::sort(nodes.begin(), nodes.end());
+  static FaceKey key(std::vector<GlobalIndex> corners) {
+    std::sort(corners.begin(), corners.end());
     FaceKey k{-1, -1, -1, -1};
-    std::copy(nodes.begin(), nodes.end(), k.begin());
+    std::copy(corners.begin(), corners.end(), k.begin());
     return k;
   }
 
-  // Every side of every block element by its nodes (built once, when a side set needs it).
+  // Every side of every block element by its corners (built once, when a side set needs it).
   void buildFaces(const Mesh& mesh) {
     if (sidesBuilt_) return;
     sidesBuilt_ = true;
@@ -459,28 +530,35 @@ class Reader {
       const int nn = nodesPerCell(b.cellType);
       for (size_t e = 0; e < b.elements.size(); ++e)
         for (int s = 0; s < numSides(b.cellType); ++s) {
-          std::vector<GlobalIndex> nodes;
-          for (int a : sideNodes(b.cellType, s)) nodes.push_back(b.connectivity[nn * e + a]);
-          faces_.emplace(key(nodes), std::make_pair(b.elements[e], s));
+          const auto local = sideNodes(b.cellType, s);
+          std::vector<GlobalIndex> corners;
+          for (int i = 0; i < numSideCorners(b.cellType, s); ++i) corners.push_back(b.connectivity[nn * e + local[i]]);
+          faces_.emplace(key(corners), std::make_pair(b.elements[e], s));
         }
     }
   }
 
+  // A side set from the lines (2D) or faces (3D) of a physical group, each matched to the element
+  // side with the same corners; its mid-side nodes are the element's.
   void readSideSet(Mesh& mesh, const Group& g) {
     buildFaces(mesh);
-    const int nn = mesh.dimension == 3 ? 4 : 2;
     SideSet set;
     set.name = g.name;
-    forElements(g, [&](int type, const std::vector<std::size_t>&, const std::vector<std::size_t>& nodes) {
-      requireType(type, mesh.dimension == 3 ? kGmshQuad4 : kGmshLine2, g);
-      for (size_t f = 0; f < nodes.size() / nn; ++f) {
+    forElements(g, [&](int type, const std::vector<std::size_t>& tags, const std::vector<std::size_t>& nodes) {
+      const int corners = gmshSideCorners(type, mesh.dimension);
+      if (corners == 0)
+        failType(type, g, mesh.dimension == 2 ? "lines of 2 and 3 nodes as sides of 2D cells"
+                                              : "triangles of 3 and 6 nodes and quadrilaterals of 4, 8 and 9 as faces");
+      const size_t nn = tags.empty() ? 0 : nodes.size() / tags.size();
+      for (size_t f = 0; f < tags.size(); ++f) {
         std::vector<GlobalIndex> face;
-        for (int a = 0; a < nn; ++a) face.push_back(requireNode(nodes[nn * f + a], g));
+        for (int a = 0; a < corners; ++a) face.push_back(requireNode(nodes[nn * f + a], g));
         // A boundary face bounds one element; a face shared by two is inside the mesh, which
         // Mesh::validate reports (naming the set and both elements) when the first is listed.
         auto it = faces_.find(key(face));
         requireInput(it != faces_.end(), path_ + ": physical group '" + g.name + "' holds a " +
-                                             (nn == 4 ? "face" : "line") + " (nodes " + std::to_string(nodes[nn * f]) +
+                                             (mesh.dimension == 3 ? "face" : "line") + " (nodes " +
+                                             std::to_string(nodes[nn * f]) +
                                              ", ...) that is not a side of any element of the blocks");
         set.elements.push_back(it->second.first);
         set.sides.push_back(it->second.second);

@@ -386,10 +386,29 @@ std::vector<T> allGatherOf(const std::vector<T>& mine, MPI_Datatype type) {
   return all;
 }
 
+// The first cell type (as an int) of a side of `set` that is no Quad4 edge or Hex8 face, −1 if none:
+// contact surfaces are made of those (2 or 4 nodes per facet); the faces of the other families are
+// issue 20's point 2.
+int unsupportedFacetType(const Mesh& mesh, const SideSet& set) {
+  for (GlobalIndex e : set.elements) {
+    const CellType type = mesh.blocks[mesh.locate(e).block].cellType;
+    if (type != CellType::Quad4 && type != CellType::Hex8) return static_cast<int>(type);
+  }
+  return -1;
+}
+
+void requireContactFacets(const std::string& name, int type) {
+  if (type < 0) return;
+  throw InputError("side set '" + name + "' lies on " + exodusCellName(static_cast<CellType>(type)) +
+                   " elements: a contact surface is made of QUAD4 edges or HEX8 faces (contact on the sides of "
+                   "the other cell types is not supported yet)");
+}
+
 }  // namespace
 
 ReplicatedSurface surfaceOfSideSet(const Mesh& mesh, const std::string& name) {
   const SideSet& set = mesh.sideSets[setIndex(mesh, name)];
+  requireContactFacets(name, unsupportedFacetType(mesh, set));
   const auto same = [](GlobalIndex id) { return id; };
   const FacetRecords records =
       facetRecords(mesh, set, same, same, [](std::size_t k) { return static_cast<GlobalIndex>(k); });
@@ -400,6 +419,10 @@ ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& 
   const Mesh& local = part.local();
   const std::size_t s = setIndex(local, name);
   const auto& positions = part.sideSetPositions[s];
+  // Decided together: a rank without such a side must throw too, not wait in the gather below.
+  int unsupported = unsupportedFacetType(local, local.sideSets[s]);
+  if (worldSize() > 1) MPI_Allreduce(MPI_IN_PLACE, &unsupported, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  requireContactFacets(name, unsupported);
   FacetRecords records = facetRecords(
       local, local.sideSets[s], [&](GlobalIndex n) { return part.part.globalNodes[n]; },
       [&](GlobalIndex e) { return part.part.globalElements[e]; }, [&](std::size_t k) { return positions[k]; });

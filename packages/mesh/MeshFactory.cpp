@@ -13,6 +13,7 @@
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/GmshMeshReader.hpp"
 #include "mesh/Generators.hpp"
+#include "mesh/MeshConversion.hpp"
 #include "mesh/MeshDistribution.hpp"
 
 namespace contessa::mesh {
@@ -46,6 +47,61 @@ DistributedMesh createGeneratedPart(const ParameterList& list, const std::string
   return generate(where, [&] { return part(spec, world.rank, world.size); });
 }
 
+// ---- Cell variants of the Rectangle and the Box: triangles or tetrahedra, quadratic cells ----
+
+// `Cell Type` (the grid's cells, or simplices made from them) and `Element Order` (1, or 2: a node at
+// the middle of each edge) of a structured generator.
+void addCellVariant(ParameterList& p, const std::string& cells, const std::string& simplices) {
+  setChoice(p, "Cell Type", cells, {cells, simplices},
+            cells + (simplices == "Triangles" ? " (QUAD4)" : " (HEX8)") + ", or " + simplices + ": each cell split into " +
+                (simplices == "Triangles" ? "2 TRI3 along its diagonal from node 1 to node 3"
+                                          : "the 6 TETRA4 around its diagonal from node 1 to node 7 (faces matching)"));
+  setPositiveInt(p, "Element Order", 1,
+                 "1 or 2: 1 linear cells; 2 a node at the middle of every edge (QUAD8, HEX20, TRI6, TETRA10; "
+                 "mid-edge nodes on the straight chord)");
+}
+
+struct CellVariant {
+  bool simplices = false;
+  int order = 1;
+  bool isDefault() const { return !simplices && order == 1; }
+};
+
+CellVariant cellVariant(const ParameterList& list, const std::string& cells) {
+  CellVariant v;
+  v.simplices = list.get<std::string>("Cell Type") != cells;
+  v.order = list.get<int>("Element Order");
+  requireInput(v.order <= 2, "Element Order: " + std::to_string(v.order) + " is not an element order (expected 1 or 2)");
+  return v;
+}
+
+Mesh converted(Mesh mesh, const CellVariant& v, const std::string& where) {
+  if (v.isDefault()) return mesh;
+  if (v.simplices) mesh = splitIntoSimplices(mesh);
+  if (v.order == 2) mesh = withMidEdgeNodes(mesh);
+  mesh.validate(where);
+  return mesh;
+}
+
+// A generator row with the cell variants: the grid made, then converted (the whole mesh; its parts are
+// sent out from rank 0 unless the variant is the grid's own cells, which each rank makes alone).
+template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&), const char* cells>
+Mesh createVariant(const ParameterList& list, const std::string& where, const std::string&) {
+  const Spec spec = read(list);
+  return generate(where, [&] { return converted(whole(spec), cellVariant(list, cells), where); });
+}
+
+template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&),
+          DistributedMesh (*part)(const Spec&, int, int), const char* cells>
+DistributedMesh createVariantPart(const ParameterList& list, const std::string& where, const std::string& directory) {
+  const CellVariant v = generate(where, [&] { return cellVariant(list, cells); });
+  if (v.isDefault()) return createGeneratedPart<Spec, read, part>(list, where, directory);
+  return distributeMesh([&] { return createVariant<Spec, read, whole, cells>(list, where, directory); });
+}
+
+constexpr char kQuadrilaterals[] = "Quadrilaterals";
+constexpr char kHexahedra[] = "Hexahedra";
+
 // ---- Rectangle (Quad4) ----
 
 RCP<ParameterList> rectangleParameters() {
@@ -59,6 +115,7 @@ RCP<ParameterList> rectangleParameters() {
   setPositive(*p, "Bias X", 1.0, "Last over first element width along x (geometric grading; 1 = uniform)");
   setPositive(*p, "Bias Y", 1.0, "Last over first element height along y (geometric grading; 1 = uniform)");
   p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: left, right, bottom, top (node set 'all' too)");
+  addCellVariant(*p, kQuadrilaterals, "Triangles");
   return p;
 }
 
@@ -153,6 +210,7 @@ RCP<ParameterList> boxParameters() {
   setPositive(*p, "Bias Z", 1.0, "Last over first element size along z (geometric grading; 1 = uniform)");
   p->set("Block Name", std::string("block_1"),
          "Element block name; node/side sets: left, right (x), bottom, top (y), back, front (z) (node set 'all' too)");
+  addCellVariant(*p, kHexahedra, "Tetrahedra");
   return p;
 }
 
@@ -348,14 +406,15 @@ struct MeshSource {
 const Registry<RegistryRow<MeshSource>>& registry() {
   static const Registry<RegistryRow<MeshSource>> rows("mesh type", {
     {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters,
-     &createGenerated<RectangleSpec, &rectangleSpec, &generateRectangle>,
-     &createGeneratedPart<RectangleSpec, &rectangleSpec, &generateRectanglePart>},
+     &createVariant<RectangleSpec, &rectangleSpec, &generateRectangle, kQuadrilaterals>,
+     &createVariantPart<RectangleSpec, &rectangleSpec, &generateRectangle, &generateRectanglePart, kQuadrilaterals>},
     {"Annulus Sector",
      "A ring segment of QUAD4 (2D) centred at the origin, graded through the wall and along the arc",
      &annulusSectorParameters, &createGenerated<AnnulusSectorSpec, &annulusSectorSpec, &generateAnnulusSector>,
      &createGeneratedPart<AnnulusSectorSpec, &annulusSectorSpec, &generateAnnulusSectorPart>},
     {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &boxParameters,
-     &createGenerated<BoxSpec, &boxSpec, &generateBox>, &createGeneratedPart<BoxSpec, &boxSpec, &generateBoxPart>},
+     &createVariant<BoxSpec, &boxSpec, &generateBox, kHexahedra>,
+     &createVariantPart<BoxSpec, &boxSpec, &generateBox, &generateBoxPart, kHexahedra>},
     {"Hollow Cylinder Sector",
      "The Annulus Sector extruded along z into layers of HEX8 (3D); its first layer of nodes is the Annulus "
      "Sector's (same numbers, same x and y), so one layer with u_z = 0 reproduces a plane-strain 2D run",
@@ -368,11 +427,13 @@ const Registry<RegistryRow<MeshSource>>& registry() {
      &sphereOctantParameters, &createGenerated<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctant>,
      &createGeneratedPart<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctantPart>},
     {"Exodus File",
-     "An Exodus II mesh: QUAD4 or HEX8 element blocks, node sets and side sets with their names",
+     "An Exodus II mesh: element blocks of TRI3, TRI6, QUAD4, QUAD8, QUAD9 (2D) or TETRA4, TETRA10, HEX8, "
+     "HEX20, HEX27, WEDGE6, WEDGE15 (3D), node sets and side sets with their names",
      &exodusFileParameters, &createExodusFile, &createExodusFilePart},
     {"Gmsh File",
-     "A Gmsh mesh (.msh): physical volumes (2D: surfaces) become HEX8 (QUAD4) element blocks, physical groups "
-     "one dimension lower side sets and node sets, physical points and curves node sets",
+     "A Gmsh mesh (.msh) of order 1 or 2: physical volumes (2D: surfaces) become element blocks (one per "
+     "cell type: a group of several is split into <group>_<type> blocks), their nodes put in the Exodus order; "
+     "physical groups one dimension lower side sets and node sets, physical points and curves node sets",
      &gmshFileParameters, &createGmshFile},
     {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension", &meshFileParameters,
      &createMeshFile},

@@ -12,6 +12,7 @@
 #include "common/Error.hpp"
 #include "mesh/CellGeometry.hpp"
 #include "mesh/Mesh.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 namespace contessa::mesh {
 
@@ -21,8 +22,15 @@ namespace {
 // zero: the element is degenerate there. Round-off in coordinates alone stays orders below it.
 constexpr double kDegenerateCorner = 1e-10;
 
-constexpr int kMaxNodesPerCell = 8;
 constexpr int kMaxDimension = 3;
+
+// A mid-edge node may sit off the middle of its edge by at most this fraction of the edge's length.
+// Along a straight edge the quadratic map's Jacobian vanishes at a corner when its mid-edge node sits
+// at the quarter point (the quarter-point element of fracture mechanics, Barsoum 1976), so a shift of
+// a quarter or more is never a usable element; across the edge, a quarter is the sagitta of a
+// circular arc of 106°, far more curvature than any mesh of a curved face has on one edge. What is
+// beyond it is a node order read wrongly (Gmsh's and Exodus's orders differ) or a node misplaced.
+constexpr double kMidEdgeTolerance = 0.25;
 
 // Entities are numbered from 1 in messages, as in the Exodus file (and in ParaView's ids).
 std::string number(GlobalIndex zeroBased) { return std::to_string(zeroBased + 1); }
@@ -124,7 +132,7 @@ class Validator {
       const auto& b = mesh_.blocks[bi];
       const int npe = nodesPerCell(b.cellType);
       double x[kMaxNodesPerCell * kMaxDimension];
-      double jacobian[kMaxNodesPerCell];
+      double jacobian[kMaxShapeCheckPoints];
       for (size_t k = 0; k < b.elements.size(); ++k) {
         const GlobalIndex* nodes = &b.connectivity[k * npe];
         for (int a = 0; a < npe; ++a) {
@@ -137,8 +145,8 @@ class Validator {
                    " twice (a collapsed element): give it " + std::to_string(npe) + " distinct nodes");
           for (int i = 0; i < dim; ++i) x[a * dim + i] = mesh_.coordinates[nodes[a] * dim + i];
         }
-        scaledCornerJacobians(b.cellType, x, jacobian);
-        const std::string problem = shapeProblem(b.cellType, nodes, jacobian);
+        std::string problem = midEdgeProblem(b.cellType, nodes, x);
+        if (problem.empty()) problem = shapeProblem(b.cellType, nodes, x, jacobian);
         if (problem.empty()) continue;
         if (badShapes++ == 0) firstBadShape = elementName(b.elements[k], bi) + " " + problem;
       }
@@ -151,11 +159,36 @@ class Validator {
     if (badShapes > 1) fail(firstBadShape + " (" + std::to_string(badShapes) + " elements fail this check)");
   }
 
-  // "" when the Jacobian is positive at every corner; otherwise what is wrong and what to do.
-  std::string shapeProblem(CellType type, const GlobalIndex* nodes, const double* jacobian) const {
-    const int corners = nodesPerCell(type);
+  // "" when every mid-edge node lies within kMidEdgeTolerance of its edge's length from the middle of
+  // the edge between its corners; otherwise the first that does not.
+  std::string midEdgeProblem(CellType type, const GlobalIndex* nodes, const double* x) const {
+    const int d = mesh_.dimension;
+    for (const MidEdgeNode& e : midEdgeNodes(type)) {
+      double edge2 = 0, offset2 = 0;
+      for (int i = 0; i < d; ++i) {
+        const double a = x[e.first * d + i], b = x[e.second * d + i], m = x[e.middle * d + i];
+        edge2 += (b - a) * (b - a);
+        offset2 += (m - (a + b) / 2) * (m - (a + b) / 2);
+      }
+      if (offset2 <= kMidEdgeTolerance * kMidEdgeTolerance * edge2) continue;
+      const double percent = edge2 > 0 ? std::round(100 * std::sqrt(offset2 / edge2)) : 100;
+      return "has its mid-edge node " + numbering_.node(nodes[e.middle]) + " off the middle of the edge from node " +
+             numbering_.node(nodes[e.first]) + " to node " + numbering_.node(nodes[e.second]) + " by " +
+             format(percent) + " % of the edge's length (at most 25 % is accepted): check the mid-edge node order (" +
+             exodusCellName(type) + " in Exodus order) and the node's coordinates";
+    }
+    return "";
+  }
+
+  // "" when the Jacobian is positive at every check point (Quad4, Hex8: the corners; every other type:
+  // every node and integration point); otherwise what is wrong and what to do.
+  std::string shapeProblem(CellType type, const GlobalIndex* nodes, const double* x, double* jacobian) const {
+    const bool box = type == CellType::Quad4 || type == CellType::Hex8;
+    int points = nodesPerCell(type);
+    if (box) scaledCornerJacobians(type, x, jacobian);
+    else points = shapeCheckJacobians(type, x, jacobian);
     int negative = 0, zero = 0, firstNegative = -1, firstZero = -1;
-    for (int a = 0; a < corners; ++a) {
+    for (int a = 0; a < points; ++a) {
       if (jacobian[a] < -kDegenerateCorner) {
         if (negative++ == 0) firstNegative = a;
       } else if (jacobian[a] <= kDegenerateCorner) {
@@ -164,20 +197,42 @@ class Validator {
     }
     if (negative == 0 && zero == 0) return "";
     const bool twoD = cellDimension(type) == 2;
-    if (negative + zero == corners && negative > 0)
-      return twoD ? "is inverted (clockwise node order): list its nodes counter-clockwise"
-                  : "is inverted (left-handed node order): list the bottom face counter-clockwise seen from "
-                    "the top face, then the top face in the same order";
-    if (negative == 0 && zero == corners)
+    const std::string shape = shapeName(type);
+    if (negative + zero == points && negative > 0) return "is inverted (" + inversionAdvice(type);
+    if (negative == 0 && zero == points)
       return std::string("is degenerate (zero ") + (twoD ? "area" : "volume") +
              "): its nodes lie on one " + (twoD ? "line" : "plane");
+    const auto at = [&](int point) {
+      return point < nodesPerCell(type) ? "node " + numbering_.node(nodes[point])
+                                        : "integration point " + std::to_string(point - nodesPerCell(type) + 1);
+    };
     if (negative > 0)
-      return "is tangled (its Jacobian is negative at node " + numbering_.node(nodes[firstNegative]) + "): " +
-             (twoD ? "a self-intersecting or non-convex quadrilateral" : "a self-intersecting or non-convex hexahedron") +
-             "; check its node order and coordinates";
-    return "is degenerate at node " + numbering_.node(nodes[firstZero]) + " (zero Jacobian: " +
-           (twoD ? "the two edges there are in line" : "the three edges there lie in one plane") +
-           "): move the node or split the element";
+      return "is tangled (its Jacobian is negative at " + at(firstNegative) + "): a self-intersecting or non-convex " +
+             shape + "; check its node order and coordinates";
+    if (box)
+      return "is degenerate at node " + numbering_.node(nodes[firstZero]) + " (zero Jacobian: " +
+             (twoD ? "the two edges there are in line" : "the three edges there lie in one plane") +
+             "): move the node or split the element";
+    return "is degenerate at " + at(firstZero) + " (zero Jacobian): a flattened " + shape +
+           "; move the node or split the element";
+  }
+
+  static std::string shapeName(CellType type) {
+    switch (numCorners(type)) {
+      case 3: return "triangle";
+      case 4: return cellDimension(type) == 2 ? "quadrilateral" : "tetrahedron";
+      case 6: return "wedge";
+      default: return "hexahedron";
+    }
+  }
+
+  // How to list the nodes of a cell the right way round.
+  static std::string inversionAdvice(CellType type) {
+    if (cellDimension(type) == 2) return "clockwise node order): list its nodes counter-clockwise";
+    if (numCorners(type) == 4)
+      return "left-handed node order): list nodes 1, 2, 3 counter-clockwise seen from node 4";
+    return std::string("left-handed node order): list the bottom face counter-clockwise seen from ") +
+           "the top face, then the top face in the same order";
   }
 
   void nodeSets() const {
@@ -192,7 +247,8 @@ class Validator {
     }
   }
 
-  // A side is identified by its nodes, sorted: two elements share a side when they share its nodes.
+  // A side is identified by its corner nodes, sorted: two elements share a side when they share its
+  // corners (a triangular and a quadrilateral face never do: −1 pads the 2 or 3 corners).
   using SideKey = std::array<GlobalIndex, 4>;
 
   SideKey sideKey(int block, GlobalIndex local, int side) const {
@@ -201,8 +257,9 @@ class Validator {
     SideKey key;
     key.fill(-1);
     const auto sideLocal = sideNodes(b.cellType, side);
-    for (size_t i = 0; i < sideLocal.size(); ++i) key[i] = nodes[sideLocal[i]];
-    std::sort(key.begin(), key.begin() + sideLocal.size());
+    const int corners = numSideCorners(b.cellType, side);
+    for (int i = 0; i < corners; ++i) key[i] = nodes[sideLocal[i]];
+    std::sort(key.begin(), key.begin() + corners);
     return key;
   }
 
@@ -248,7 +305,11 @@ class Validator {
       const auto& b = mesh_.blocks[bi];
       const int npe = nodesPerCell(b.cellType);
       std::vector<std::vector<int>> sides;
-      for (int side = 0; side < numSides(b.cellType); ++side) sides.push_back(sideNodes(b.cellType, side));
+      for (int side = 0; side < numSides(b.cellType); ++side) {
+        auto corners = sideNodes(b.cellType, side);
+        corners.resize(static_cast<size_t>(numSideCorners(b.cellType, side)));
+        sides.push_back(corners);
+      }
       for (size_t k = 0; k < b.elements.size(); ++k) {
         const GlobalIndex* nodes = &b.connectivity[k * npe];
         for (int side = 0; side < static_cast<int>(sides.size()); ++side) {

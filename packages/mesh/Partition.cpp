@@ -31,8 +31,13 @@ std::vector<int> metisElementParts(const Mesh& mesh, int numParts) {
 
   idx_t ne = static_cast<idx_t>(numElements);
   idx_t nn = static_cast<idx_t>(mesh.numNodes());
-  // Neighbours share a side: an edge (2 nodes) in 2D, a face (3+ nodes) in 3D.
-  idx_t ncommon = mesh.dimension == 2 ? 2 : 3;
+  // Neighbours share a side: an edge (2 nodes, 3 when quadratic; a corner alone is 1) in 2D, a face in
+  // 3D (3 or 4 corners, 6 or 8 nodes when quadratic). Quadratic cells sharing only an edge share 3
+  // nodes: a mesh of quadratic cells alone asks for 4.
+  bool allQuadratic = numElements > 0;
+  for (const auto& b : mesh.blocks)
+    if (!b.elements.empty()) allQuadratic = allQuadratic && cellOrder(b.cellType) == 2;
+  idx_t ncommon = mesh.dimension == 2 ? 2 : allQuadratic ? 4 : 3;
   idx_t nparts = numParts;
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);

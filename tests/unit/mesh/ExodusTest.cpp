@@ -15,6 +15,7 @@
 #include "io/ExodusWriter.hpp"
 #include "mesh/ExodusMeshReader.hpp"
 #include "mesh/Generators.hpp"
+#include "mesh/ShapeFunctions.hpp"
 
 using namespace contessa;
 using namespace contessa::mesh;
@@ -218,13 +219,60 @@ TEST(ExodusMeshReader, UnnamedEntitiesGetDefaultNames) {
 
 TEST(ExodusMeshReader, RejectsUnsupportedElementTypes) {
   const std::string path = tempPath("tri");
-  writeRawFile(path, "TRI3", 3);
+  writeRawFile(path, "TRI4", 4);
   EXPECT_EQ(messageOf([&] { readExodusMesh(path); }),
-            path + ": element block 'block_10' has unsupported type 'TRI3' (supported: QUAD4, HEX8)");
-  writeRawFile(path, "QUAD8", 8);
+            path + ": element block 'block_10' has unsupported type 'TRI4' with 4 nodes per element in a 2D mesh "
+                   "(supported: TRI3, TRI6, QUAD4, QUAD8, QUAD9)");
+  writeRawFile(path, "SHELL4", 4);
   EXPECT_EQ(messageOf([&] { readExodusMesh(path); }),
-            path + ": element block 'block_10' has unsupported type 'QUAD8' (supported: QUAD4, HEX8)");
+            path + ": element block 'block_10' has unsupported type 'SHELL4' with 4 nodes per element in a 2D mesh "
+                   "(supported: TRI3, TRI6, QUAD4, QUAD8, QUAD9)");
+  writeRawFile(path, "QUAD5", 5);
+  EXPECT_EQ(messageOf([&] { readExodusMesh(path); }),
+            path + ": element block 'block_10' has unsupported type 'QUAD5' with 5 nodes per element in a 2D mesh "
+                   "(supported: TRI3, TRI6, QUAD4, QUAD8, QUAD9)");
   std::remove(path.c_str());
+}
+
+// The topology names other tools write: any case, with or without the node count, long forms.
+TEST(ExodusMeshReader, TopologyNamesOfCommonTools) {
+  struct Case {
+    const char* topology;
+    int nodes;
+    CellType type;
+  };
+  const Case cases[] = {{"TETRA10", 10, CellType::Tet10}, {"tetra10", 10, CellType::Tet10}, {"TETRA", 4, CellType::Tet4},
+                        {"tet4", 4, CellType::Tet4},      {"HEX20", 20, CellType::Hex20},  {"hex", 27, CellType::Hex27},
+                        {"WEDGE6", 6, CellType::Wedge6},  {"wedge15", 15, CellType::Wedge15}, {"HEX8", 8, CellType::Hex8}};
+  for (const Case& c : cases) {
+    // One cell, the reference cell of its type, its nodes in order; its side 1 in a side set.
+    const std::string path = tempPath("topology");
+    int cpu = 8, io = 8;
+    const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+    ASSERT_GE(id, 0);
+    ASSERT_EQ(ex_put_init(id, "tools", 3, c.nodes, 1, 1, 0, 1), 0);
+    std::vector<double> x, y, z;
+    for (int a = 0; a < c.nodes; ++a) {
+      const auto p = referenceNode(c.type, a);
+      x.push_back(p[0]);
+      y.push_back(p[1]);
+      z.push_back(p[2]);
+    }
+    ASSERT_EQ(ex_put_coord(id, x.data(), y.data(), z.data()), 0);
+    ASSERT_EQ(ex_put_block(id, EX_ELEM_BLOCK, 1, c.topology, 1, c.nodes, 0, 0, 0), 0);
+    std::vector<int> conn;
+    for (int a = 1; a <= c.nodes; ++a) conn.push_back(a);
+    ASSERT_EQ(ex_put_conn(id, EX_ELEM_BLOCK, 1, conn.data(), nullptr, nullptr), 0);
+    ASSERT_EQ(ex_put_set_param(id, EX_SIDE_SET, 1, 1, 0), 0);
+    const int elements[1] = {1}, sides[1] = {1};
+    ASSERT_EQ(ex_put_set(id, EX_SIDE_SET, 1, elements, sides), 0);
+    ASSERT_EQ(ex_close(id), 0);
+    const Mesh mesh = readExodusMesh(path);
+    ASSERT_EQ(mesh.blocks.size(), 1u);
+    EXPECT_EQ(mesh.blocks[0].cellType, c.type) << c.topology;
+    EXPECT_EQ(mesh.sideSets[0].sides, (std::vector<int>{0})) << c.topology;
+    std::remove(path.c_str());
+  }
 }
 
 TEST(ExodusWriter, UnwritablePathThrowsNamingIt) {
