@@ -1,7 +1,5 @@
 #include "model/ExternalLoads.hpp"
 
-#include <stdexcept>
-
 namespace contessa::model {
 namespace {
 
