@@ -4,6 +4,7 @@
 // 2D and 3D, on 1 and 2 ranks (the sums are over all ranks, so they are the same on any rank count).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -67,6 +68,10 @@ deck::ProblemDefinition makeProblem(int dim, bool clamped) {
   loads.sublist("drag").set("Traction", array(kTraction));
   loads.sublist("weight").set("Force Per Volume", array(kBody));
   loads.sublist("support").set("Stiffness", array(kSpring));
+  Teuchos::Array<std::string> reactionSets;
+  reactionSets.push_back("top");
+  reactionSets.push_back("bottom");
+  p->sublist("Output").set("Reaction Node Sets", reactionSets);
   if (clamped)
     for (int c = 0; c < dim; ++c) {
       auto& bc = p->sublist("Dirichlet Conditions").sublist("clamp " + std::to_string(c));
@@ -180,6 +185,41 @@ TEST_P(LoadsIn, JacobianMatchesDifferencesUnderFollowerPressureAndSprings) {
   ew.W->apply(Thyra::NOTRANS, *v, Wv0.ptr(), 1.0, 0.0);
   Thyra::Vp_StV(Wv0.ptr(), -1.0, *Wv);
   EXPECT_GT(Thyra::norm_inf(*Wv0), 1e-3 * Thyra::norm_inf(*Wv));
+}
+
+TEST_P(LoadsIn, ReactionsSubtractTheLoadsAndReportTheSpringsForce) {
+  // Reaction of a set = Σ (f_int − λ f_p − λ f_ext) over its nodes (theory-solids §7): the residual
+  // minus the springs' k x. At any x (equilibrium is not needed for the identity): 'top' has pressure and
+  // traction on it and no spring, so its reaction is the residual's sum; 'bottom' carries the springs,
+  // whose force k x the reaction leaves out (at equilibrium it is −Σ k u, the springs' force on the body).
+  const int dim = GetParam();
+  const auto problem = makeProblem(dim, false);
+  auto m = test::makeModel(problem);
+  auto x = displacement(*m, problem, 0.05, false);
+  const double lambda = 0.8;
+  const auto e = evaluate(*m, *x, lambda, false);
+  const auto reactions = m->reactions(*Extract::getConstTpetraVector(x), lambda);
+  auto ft = Extract::getConstTpetraVector(e.f);
+  auto xt = Extract::getConstTpetraVector(x);
+  const auto& map = *ft->getMap();
+  const auto f = ft->getData(0), xv = xt->getData(0);
+  const mesh::Mesh& local = problem.mesh.local();
+  for (const auto& reaction : reactions) {
+    const auto& nodes = local.nodeSet(reaction.nodeSet).nodes;
+    const bool springs = reaction.nodeSet == "bottom";
+    std::vector<double> mine(dim, 0.0), expected(dim, 0.0);
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      const auto gid = map.getGlobalElement(static_cast<model::LO>(k));
+      const int c = static_cast<int>(gid % dim);
+      if (!std::binary_search(nodes.begin(), nodes.end(), problem.mesh.localNode(gid / dim))) continue;
+      mine[c] += f[k] - (springs ? kSpring[c] * xv[k] : 0.0);
+    }
+    Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_SUM, dim, mine.data(), expected.data());
+    double scale = 0.0;
+    for (int c = 0; c < dim; ++c) scale = std::max(scale, std::abs(expected[c]));
+    EXPECT_GT(scale, 0.1) << reaction.nodeSet;  // loads and springs do act on both sets
+    for (int c = 0; c < dim; ++c) EXPECT_NEAR(reaction.force[c], expected[c], 1e-11 * scale) << reaction.nodeSet << " " << c;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, LoadsIn, ::testing::Values(2, 3),
