@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "common/Error.hpp"
 #include "contact/BoundingBoxTree.hpp"
@@ -14,16 +15,21 @@ namespace contessa::contact {
 namespace {
 
 /// ∫ H_i dA of each node of a facet and its area, by Gauss quadrature exact for the facet (a straight
-/// segment: the midpoint rule, ∫ H_i = l/2; a bilinear face: 2×2 points).
+/// segment: the midpoint rule, ∫ H_i = l/2; a bilinear face: 2×2 points). A segment revolved about the
+/// y axis sweeps a band of the surface: ∫ H_i 2π r ds = 2π l (2 r_i + r_j) / 6, exact for r linear along
+/// it; `area` stays the segment's length (the facet size L_k).
 template <class Facet>
-std::array<double, Facet::kNodes> nodalAreas(const std::array<typename Facet::Point, Facet::kNodes>& x, double& area) {
+std::array<double, Facet::kNodes> nodalAreas(const std::array<typename Facet::Point, Facet::kNodes>& x, bool revolved,
+                                             double& area) {
   std::array<double, Facet::kNodes> a{};
   area = 0;
   if constexpr (Facet::kSurfaceDim == 1) {
     // hypot, as the 2D code always measured sides: the 2D histories stay bit-identical.
     area = std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]);
     a = {0.5 * area, 0.5 * area};
+    if (revolved) a = {M_PI * area * (2.0 * x[0][0] + x[1][0]) / 3.0, M_PI * area * (x[0][0] + 2.0 * x[1][0]) / 3.0};
   } else {
+    (void)revolved;
     const double g = 1.0 / std::sqrt(3.0);
     for (double s : {-g, g})
       for (double t : {-g, g}) {
@@ -38,7 +44,7 @@ std::array<double, Facet::kNodes> nodalAreas(const std::array<typename Facet::Po
 }
 
 template <class Facet>
-void addFacets(const mesh::ReplicatedSurface& facets, ContactSurface& surface) {
+void addFacets(const mesh::ReplicatedSurface& facets, bool revolved, ContactSurface& surface) {
   constexpr int n = Facet::kNodes, dim = Facet::kSpaceDim;
   std::map<GlobalIndex, double> area, size;
   std::map<GlobalIndex, int> count;
@@ -53,7 +59,7 @@ void addFacets(const mesh::ReplicatedSurface& facets, ContactSurface& surface) {
       surface.facets.push_back(nodes[a]);
     }
     double facetArea = 0;
-    const auto nodal = nodalAreas<Facet>(x, facetArea);
+    const auto nodal = nodalAreas<Facet>(x, revolved, facetArea);
     // L_k: the side's length in 2D, √(area) of the face in 3D.
     const double facetSize = Facet::kSurfaceDim == 1 ? facetArea : std::sqrt(facetArea);
     for (int a = 0; a < n; ++a) {
@@ -77,15 +83,17 @@ ContactSurface ContactSurface::fromSideSet(const mesh::Mesh& mesh, const mesh::S
   return fromSurface(mesh::surfaceOfSideSet(mesh, set.name), where);
 }
 
-ContactSurface ContactSurface::fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where) {
+ContactSurface ContactSurface::fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where,
+                                           bool revolved) {
   requireInput(facets.dimension == 2 || facets.dimension == 3, where + ": contact needs a 2D or 3D mesh");
+  if (revolved && facets.dimension != 2) throw std::logic_error("ContactSurface: only a 2D surface can be revolved");
   requireInput(!facets.elements.empty(), where + ": side set '" + facets.name + "' is empty");
   ContactSurface surface;
   surface.nodesPerFacet = facets.dimension == 2 ? 2 : 4;
   if (facets.dimension == 2)
-    addFacets<Line2Facet>(facets, surface);
+    addFacets<Line2Facet>(facets, revolved, surface);
   else
-    addFacets<Quad4Facet>(facets, surface);
+    addFacets<Quad4Facet>(facets, revolved, surface);
   return surface;
 }
 

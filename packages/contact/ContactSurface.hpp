@@ -15,7 +15,8 @@ struct ContactSurface {
   int nodesPerFacet = 2;
   std::vector<GlobalIndex> nodes;      ///< the side set's nodes, sorted
   /// Tributary area A_k = Σ_faces ∫ H_k dA of each node (2D: half of each adjacent side's length, per unit
-  /// thickness; 3D: over the adjacent bilinear faces, 2×2 Gauss): a traction times A_k is the nodal force.
+  /// thickness; revolved: ∫ H_k 2π r ds; 3D: over the adjacent bilinear faces, 2×2 Gauss): a traction
+  /// times A_k is the nodal force.
   std::vector<double> areas;
   /// L_k, the mean size of the facets at each node (2D: side length; 3D: √(face area)), the length the
   /// slip tolerance refers to (ContactLawParameters).
@@ -27,8 +28,10 @@ struct ContactSurface {
   /// Throws InputError starting with `where` for a side set that is not a surface of the mesh's dimension.
   static ContactSurface fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where);
   /// The same from the side set's facets alone (mesh::surfaceOfSideSet of a replicated mesh, or
-  /// mesh::gatherSurface from the ranks' parts of a distributed one): identical, bit for bit.
-  static ContactSurface fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where);
+  /// mesh::gatherSurface from the ranks' parts of a distributed one): identical, bit for bit. `revolved`:
+  /// a 2D surface of an axisymmetric body (r = x): its areas are those of the full circumference.
+  static ContactSurface fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where,
+                                   bool revolved = false);
 };
 
 /// Checks a rigid master surface of the given dimension (one-line InputError naming `where`/Points,

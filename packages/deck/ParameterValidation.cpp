@@ -95,6 +95,15 @@ void requireFinite(const std::string& path, const Teuchos::ParameterEntry& entry
   }
 }
 
+// The open sublists of `name`'s sublist: the entries "name/rest" of `openSublists`, as "rest".
+std::set<std::string> openWithin(const std::set<std::string>& openSublists, const std::string& name) {
+  std::set<std::string> within;
+  for (const auto& path : openSublists)
+    if (path.size() > name.size() + 1 && path.compare(0, name.size() + 1, name + "/") == 0)
+      within.insert(path.substr(name.size() + 1));
+  return within;
+}
+
 }  // namespace
 
 std::string joinPath(const std::string& parent, const std::string& name) {
@@ -125,7 +134,7 @@ void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::Paramet
     }
     if (given.isList()) {
       if (openSublists.count(name) == 0)
-        validateAndSetDefaults(deck.sublist(name), valid.sublist(name), where);
+        validateAndSetDefaults(deck.sublist(name), valid.sublist(name), where, openWithin(openSublists, name));
       continue;
     }
     const auto& expectedType = expected->getAny(false).type();
@@ -163,7 +172,8 @@ void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::Paramet
     const Teuchos::ParameterEntry& entry = valid.entry(it);
     if (entry.isList()) {
       if (openSublists.count(name) == 0)
-        validateAndSetDefaults(deck.sublist(name), valid.sublist(name), joinPath(path, name));
+        validateAndSetDefaults(deck.sublist(name), valid.sublist(name), joinPath(path, name),
+                               openWithin(openSublists, name));
       else
         deck.sublist(name);
     } else {

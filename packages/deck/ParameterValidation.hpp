@@ -16,7 +16,7 @@ std::string joinPath(const std::string& parent, const std::string& name);
 
 /// Checks every entry of `deck` against `valid` and fills in the defaults of entries the deck
 /// leaves out. `path` names `deck` in messages. Sublists named in `openSublists` are skipped (their
-/// children are user-named and validated by the caller). An int given where a double is expected is
+/// children are user-named and validated by the caller); a name "A/B" there is B within A. An int given where a double is expected is
 /// converted. Throws contessa::InputError with a one-line message on the first problem.
 void validateAndSetDefaults(Teuchos::ParameterList& deck, const Teuchos::ParameterList& valid,
                             const std::string& path, const std::set<std::string>& openSublists = {});

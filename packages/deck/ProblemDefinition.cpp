@@ -7,6 +7,7 @@
 #include <Teuchos_Array.hpp>
 
 #include "common/Error.hpp"
+#include "deck/Axisymmetry.hpp"
 #include "deck/ContactLawFactory.hpp"
 #include "deck/LoadDefinitions.hpp"
 #include "deck/MeshReferences.hpp"
@@ -24,7 +25,8 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 using mesh::GlobalIndex;
 
-const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Loads", "Regression", "Contact"};
+const char* kOpenLists[] = {"Mesh",         "Blocks",     "Materials", "Dirichlet Conditions", "Nodal Forces",
+                            "Loads",        "Regression", "Contact",   "Output/History"};
 
 // A mesh list's parameters validated (defaults filled in) on every rank; returns its type.
 std::string validateMeshList(ParameterList& list, const std::string& where, bool isPart) {
@@ -126,7 +128,7 @@ using SurfaceCoordinates = std::map<GlobalIndex, std::vector<double>>;
 
 // A side set's contact surface, gathered from every rank's part (collective); its nodes' coordinates kept.
 contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const std::string& set,
-                                        const std::string& where, SurfaceCoordinates& coordinates,
+                                        const std::string& where, SurfaceCoordinates& coordinates, bool revolved,
                                         mesh::ReplicatedSurface* gathered = nullptr) {
   const mesh::ReplicatedSurface facets = mesh::gatherSurface(part, set);
   if (gathered) *gathered = facets;
@@ -134,12 +136,12 @@ contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const
   for (std::size_t k = 0; k < facets.nodes.size(); ++k)
     coordinates[facets.nodes[k]].assign(facets.coordinates.begin() + static_cast<std::ptrdiff_t>(k * dim),
                                         facets.coordinates.begin() + static_cast<std::ptrdiff_t>((k + 1) * dim));
-  return contact::ContactSurface::fromSurface(facets, where);
+  return contact::ContactSurface::fromSurface(facets, where, revolved);
 }
 
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
                                                         const mesh::DistributedMesh& part,
-                                                        SurfaceCoordinates& coordinates) {
+                                                        SurfaceCoordinates& coordinates, bool revolved) {
   const mesh::Mesh& mesh = part.local();
   const std::string where = "Problem/Contact/" + name;
   contact::ContactInterfaceSpec spec;
@@ -163,7 +165,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
   mesh::ReplicatedSurface slaveFacets;
-  const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, &slaveFacets);
+  const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
   spec.slaveFacetLengths = slave.facetLengths;
@@ -185,7 +187,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
                where + "/Rigid Surface: Facets and Motion belong to a rigid master (no Master Side Set)");
   requireSideSet(mesh, masterSet, where + "/Master Side Set");
   requireInput(masterSet != slaveSet, where + "/Master Side Set: must differ from the Slave Side Set");
-  const auto master = gatheredSurface(part, masterSet, where + "/Master Side Set", coordinates);
+  const auto master = gatheredSurface(part, masterSet, where + "/Master Side Set", coordinates, revolved);
   spec.masterFacets = master.facets;
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
@@ -306,6 +308,10 @@ RCP<const ParameterList> problemValidParameters() {
             "Single File: <name>.exo, gathered to rank 0 and written there; Per Rank: each of the N ranks writes "
             "its own piece, <name>.exo.N.r (a spatially decomposed set: ParaView opens it as one data set, "
             "SEACAS epu joins it), nothing gathered");
+  out.sublist("History", false,
+              "Point histories: one sublist per request (any name), written every increment as history columns and "
+              "Exodus globals")
+      .setParameters(*historyListValidParameters());
   auto& checkpoint = out.sublist("Checkpoint", false,
                                  "Restart files: <name>.restart in the output directory, continued with --restart FILE "
                                  "(also written on SIGTERM, SIGUSR1 and SIGINT, which stop the run with exit status 4)");
@@ -440,7 +446,7 @@ void readOutput(const ParameterList& output, const mesh::Mesh& mesh, ProblemDefi
 void buildContacts(ParameterList& contactList, ProblemDefinition& def) {
   SurfaceCoordinates surfaceCoordinates;
   for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact"))
-    for (auto& spec : buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates))
+    for (auto& spec : buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates, def.axisymmetric))
       def.contacts.push_back(std::move(spec));
   for (const auto& [node, x] : surfaceCoordinates) {
     def.contactNodes.push_back(node);
@@ -475,11 +481,13 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
   def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory);
   const mesh::Mesh& mesh = def.mesh.local();
   def.blocks = buildBlocks(problem.sublist("Blocks"), problem.sublist("Materials"), mesh);
+  def.axisymmetric = axisymmetricProblem(def.blocks, def.mesh);
   def.dirichlet = buildDirichlet(problem.sublist("Dirichlet Conditions"), mesh);
   def.nodalForces = buildNodalForces(problem.sublist("Nodal Forces"), mesh);
   def.loads = buildLoads(problem.sublist("Loads"), mesh);
   readOutput(problem.sublist("Output"), mesh, def);
   buildContacts(problem.sublist("Contact"), def);
+  def.history = buildHistoryRequests(problem.sublist("Output").sublist("History"), def);
   def.regression = buildRegression(problem.sublist("Regression"));
   return def;
 }

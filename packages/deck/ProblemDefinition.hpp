@@ -12,6 +12,7 @@
 
 #include "contact/InterfaceSpec.hpp"
 #include "deck/LoadDefinitions.hpp"
+#include "deck/OutputRequests.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
 #include "mesh/DistributedMesh.hpp"
@@ -60,6 +61,9 @@ struct ProblemDefinition {
   std::vector<double> contactNodeCoordinates;  ///< dimension values per contactNodes entry
   int dimension() const { return mesh.local().dimension; }
   std::vector<BlockPhysics> blocks;  ///< in mesh block order
+  /// Every block's element is revolved about the y axis (r = x, Axisymmetry.hpp): forces, areas and
+  /// volumes are those of the full circumference.
+  bool axisymmetric = false;
   std::vector<DirichletCondition> dirichlet;
   std::vector<NodalForce> nodalForces;
   std::vector<LoadDefinition> loads;  ///< Problem/Loads: pressure, traction, body force, springs
@@ -68,6 +72,7 @@ struct ProblemDefinition {
   int checkpointEvery = 0;      ///< Problem/Output/Checkpoint/Every N Increments (0: none)
   double maxWallSeconds = 0;    ///< Problem/Output/Checkpoint/Max Wall Time (0: no limit)
   std::vector<RegressionCheck> regression;
+  std::vector<HistoryRequest> history;  ///< Problem/Output/History: point histories (OutputRequests.hpp)
   /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
   std::vector<contact::ContactInterfaceSpec> contacts;
 };

@@ -15,6 +15,8 @@ inline ExodusDecomposition decompositionOf(const mesh::DistributedMesh& part) {
   d.globalNumNodes = part.numGlobalNodes;
   d.globalNumElements = part.numGlobalElements;
   d.globalBlockSizes = part.globalBlockSizes;
+  d.globalNodeSetSizes = part.globalNodeSetSizes;
+  d.globalSideSetSizes = part.globalSideSetSizes;
   d.sharedWith = part.part.sharedWith;
   return d;
 }

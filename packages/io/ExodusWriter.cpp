@@ -86,6 +86,29 @@ class Calls {
   std::string path_, action_;
 };
 
+// Nemesis' global node set and side set records (ids, counts, no distribution factors): ex_put_init_global
+// defines them and leaves them unwritten, so a file would otherwise hold whatever the memory held.
+void writeGlobalSetSizes(int id, const ExodusDecomposition& d, const mesh::Mesh& mesh, const Calls& check) {
+  const auto put = [&](std::size_t count, const std::vector<GlobalIndex>& global, auto localSize, auto write,
+                       const char* what) {
+    if (count == 0) return;
+    if (!global.empty() && global.size() != count)
+      throw std::logic_error("ExodusWriter: the decomposition's set sizes do not match the piece");
+    std::vector<int64_t> ids, sizes, factors(count, 0);
+    for (std::size_t s = 0; s < count; ++s) {
+      ids.push_back(static_cast<int64_t>(s) + 1);
+      sizes.push_back(global.empty() ? localSize(s) : static_cast<int64_t>(global[s]));
+    }
+    check(write(id, ids.data(), sizes.data(), factors.data()), what);
+  };
+  put(mesh.nodeSets.size(), d.globalNodeSetSizes,
+      [&](std::size_t s) { return static_cast<int64_t>(mesh.nodeSets[s].nodes.size()); }, ex_put_ns_param_global,
+      "the decomposition (global node sets)");
+  put(mesh.sideSets.size(), d.globalSideSetSizes,
+      [&](std::size_t s) { return static_cast<int64_t>(mesh.sideSets[s].elements.size()); }, ex_put_ss_param_global,
+      "the decomposition (global side sets)");
+}
+
 // The global ids (1-based, as Exodus numbers) and the Nemesis records of one file of a decomposed set.
 // Nemesis numbers nodes and elements locally (1-based) in its maps; a border node is one that another
 // piece holds too, a border element one with a border node; one node communication map per neighbour,
@@ -112,6 +135,7 @@ void writeDecomposition(int id, const ExodusDecomposition& d, const mesh::Mesh& 
   for (std::size_t b = 0; b < blockSizes.size(); ++b) blockIds.push_back(static_cast<int64_t>(b) + 1);
   if (!blockIds.empty())
     check(ex_put_eb_info_global(id, blockIds.data(), blockSizes.data()), "the decomposition (global blocks)");
+  writeGlobalSetSizes(id, d, mesh, check);
 
   std::vector<int64_t> interiorNodes, borderNodes, interiorElements, borderElements;
   std::vector<char> border(d.sharedWith.size(), 0);
@@ -163,6 +187,161 @@ void writeDecomposition(int id, const ExodusDecomposition& d, const mesh::Mesh& 
   }
 }
 
+// Coordinates: the mesh nodes, then the surface blocks' points.
+void writeCoordinates(int id, const mesh::Mesh& mesh, const std::vector<ExodusSurfaceBlock>& surfaceBlocks,
+                      GlobalIndex numNodes, const Calls& check) {
+  const int dim = mesh.dimension;
+  std::vector<std::vector<double>> xyz(static_cast<size_t>(dim), std::vector<double>(numNodes));
+  const GlobalIndex meshNodes = mesh.numNodes();
+  for (GlobalIndex n = 0; n < meshNodes; ++n)
+    for (int d = 0; d < dim; ++d) xyz[d][n] = mesh.coordinates[n * dim + d];
+  GlobalIndex nextNode = meshNodes;
+  for (const auto& surface : surfaceBlocks)
+    for (size_t p = 0; p + dim <= surface.points.size(); p += dim, ++nextNode)
+      for (int d = 0; d < dim; ++d) xyz[d][nextNode] = surface.points[p + d];
+  check(ex_put_coord(id, xyz[0].data(), xyz[1].data(), dim == 3 ? xyz[2].data() : nullptr), "coordinates");
+  auto coordNames = coordinateNames(dim);
+  auto coordPointers = namePointers(coordNames);
+  check(ex_put_coord_names(id, coordPointers.data()), "coordinate names");
+}
+
+// The mesh blocks (ids 1..), their names appended to `blockNames`. Returns each element's Exodus number:
+// Exodus numbers elements 1.. over the blocks in order, and side sets refer to that numbering.
+std::vector<int64_t> writeMeshBlocks(int id, const mesh::Mesh& mesh, std::vector<std::string>& blockNames,
+                                     const Calls& check) {
+  std::vector<int64_t> exodusElement(static_cast<size_t>(mesh.numElements()));
+  int64_t next = 1;
+  for (size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const auto& block = mesh.blocks[b];
+    const int64_t blockId = static_cast<int64_t>(b) + 1;
+    const std::string what = "element block '" + block.name + "'";
+    check(ex_put_block(id, EX_ELEM_BLOCK, blockId, mesh::exodusCellName(block.cellType), block.numElements(),
+                       mesh::nodesPerCell(block.cellType), 0, 0, 0),
+          what);
+    if (block.numElements() > 0) {
+      std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
+      for (int64_t& node : connectivity) ++node;
+      check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
+    }
+    for (GlobalIndex e : block.elements) exodusElement[e] = next++;
+    blockNames.push_back(block.name);
+  }
+  return exodusElement;
+}
+
+// The surface blocks after the mesh blocks (BAR2 or SHELL4 on their points, which follow the mesh nodes),
+// their names appended to `blockNames`.
+void writeSurfaceBlocks(int id, const mesh::Mesh& mesh, const std::vector<ExodusSurfaceBlock>& surfaceBlocks,
+                        std::vector<std::string>& blockNames, const Calls& check) {
+  int64_t firstPoint = mesh.numNodes() + 1;  // Exodus node number of the block's first point
+  for (size_t l = 0; l < surfaceBlocks.size(); ++l) {
+    const auto& surface = surfaceBlocks[l];
+    const int64_t blockId = static_cast<int64_t>(mesh.blocks.size() + l) + 1;
+    const int64_t points = static_cast<int64_t>(surface.points.size()) / mesh.dimension;
+    const std::string what = "surface block '" + surface.name + "'";
+    if (surface.nodesPerElement != 2 && surface.nodesPerElement != 4)
+      throw std::runtime_error(what + ": " + std::to_string(surface.nodesPerElement) +
+                               " nodes per element (2: BAR2 or 4: SHELL4 expected)");
+    const char* type = surface.nodesPerElement == 2 ? "BAR2" : "SHELL4";
+    check(ex_put_block(id, EX_ELEM_BLOCK, blockId, type, surface.numElements(), surface.nodesPerElement, 0, 0, 0),
+          what);
+    if (surface.numElements() > 0) {
+      std::vector<int64_t> connectivity;
+      for (GlobalIndex point : surface.connectivity) {
+        if (point < 0 || point >= points)
+          throw std::runtime_error(what + ": point " + std::to_string(point) + " out of range (" +
+                                   std::to_string(points) + " points)");
+        connectivity.push_back(firstPoint + point);
+      }
+      check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
+    }
+    firstPoint += points;
+    blockNames.push_back(surface.name);
+  }
+}
+
+void writeNodeSets(int id, const mesh::Mesh& mesh, const Calls& check) {
+  std::vector<std::string> nodeSetNames;
+  for (size_t s = 0; s < mesh.nodeSets.size(); ++s) {
+    const auto& set = mesh.nodeSets[s];
+    const int64_t setId = static_cast<int64_t>(s) + 1;
+    const std::string what = "node set '" + set.name + "'";
+    check(ex_put_set_param(id, EX_NODE_SET, setId, static_cast<int64_t>(set.nodes.size()), 0), what);
+    if (!set.nodes.empty()) {
+      std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
+      for (int64_t& node : nodes) ++node;
+      check(ex_put_set(id, EX_NODE_SET, setId, nodes.data(), nullptr), what);
+    }
+    nodeSetNames.push_back(set.name);
+  }
+  if (!nodeSetNames.empty()) {
+    auto pointers = namePointers(nodeSetNames);
+    check(ex_put_names(id, EX_NODE_SET, pointers.data()), "node set names");
+  }
+}
+
+// Side sets by the elements' Exodus numbers (writeMeshBlocks) and 1-based sides.
+void writeSideSets(int id, const mesh::Mesh& mesh, const std::vector<int64_t>& exodusElement, const Calls& check) {
+  std::vector<std::string> sideSetNames;
+  for (size_t s = 0; s < mesh.sideSets.size(); ++s) {
+    const auto& set = mesh.sideSets[s];
+    const int64_t setId = static_cast<int64_t>(s) + 1;
+    const std::string what = "side set '" + set.name + "'";
+    check(ex_put_set_param(id, EX_SIDE_SET, setId, static_cast<int64_t>(set.elements.size()), 0), what);
+    if (!set.elements.empty()) {
+      std::vector<int64_t> elements, sides;
+      for (GlobalIndex e : set.elements) elements.push_back(exodusElement[e]);
+      for (int side : set.sides) sides.push_back(side + 1);
+      check(ex_put_set(id, EX_SIDE_SET, setId, elements.data(), sides.data()), what);
+    }
+    sideSetNames.push_back(set.name);
+  }
+  if (!sideSetNames.empty()) {
+    auto pointers = namePointers(sideSetNames);
+    check(ex_put_names(id, EX_SIDE_SET, pointers.data()), "side set names");
+  }
+}
+
+// QA and information records.
+void writeRecords(int id, const ExodusRecords& records, const Calls& check) {
+  if (!records.qa.empty()) {
+    std::vector<std::array<std::string, 4>> qa = records.qa;
+    std::vector<std::array<char*, 4>> pointers(qa.size());
+    for (size_t r = 0; r < qa.size(); ++r)
+      for (int k = 0; k < 4; ++k) {
+        qa[r][k] = qa[r][k].substr(0, MAX_STR_LENGTH);
+        pointers[r][k] = qa[r][k].data();
+      }
+    check(ex_put_qa(id, static_cast<int>(qa.size()), reinterpret_cast<char* (*)[4]>(pointers.data())), "QA records");
+  }
+  if (!records.info.empty()) {
+    auto info = infoRecords(records.info);
+    auto pointers = namePointers(info);
+    check(ex_put_info(id, static_cast<int>(info.size()), pointers.data()), "information records");
+  }
+}
+
+// The nodal, element and global variable names, and where the element variables live: on the mesh
+// blocks, not on the surface blocks (declared up front, which avoids per-step redefinition).
+void writeVariableNames(int id, const ExodusFields& fields, size_t meshBlocks, size_t numBlocks, const Calls& check) {
+  auto putNames = [&](ex_entity_type type, std::vector<std::string> names, const char* what) {
+    if (names.empty()) return;
+    check(ex_put_variable_param(id, type, static_cast<int>(names.size())), what);
+    auto pointers = namePointers(names);
+    check(ex_put_variable_names(id, type, static_cast<int>(names.size()), pointers.data()), what);
+  };
+  putNames(EX_NODAL, fields.nodal, "nodal variable names");
+  putNames(EX_ELEM_BLOCK, fields.element, "element variable names");
+  putNames(EX_GLOBAL, fields.global, "global variable names");
+  if (fields.element.empty() || numBlocks == 0) return;
+  std::vector<int> truth(numBlocks * fields.element.size(), 0);
+  for (size_t b = 0; b < meshBlocks; ++b)
+    std::fill_n(truth.begin() + static_cast<std::ptrdiff_t>(b * fields.element.size()), fields.element.size(), 1);
+  check(ex_put_truth_table(id, EX_ELEM_BLOCK, static_cast<int>(numBlocks), static_cast<int>(fields.element.size()),
+                           truth.data()),
+        "the element variable truth table");
+}
+
 }  // namespace
 
 std::vector<std::string> infoRecords(const std::vector<std::string>& lines) {
@@ -189,24 +368,59 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
   const int dim = mesh.dimension;
   numNodes_ = mesh.numNodes();
   for (const auto& surface : surfaceBlocks) numNodes_ += static_cast<GlobalIndex>(surface.points.size()) / dim;
+  createFile(naming, 8 * (static_cast<long long>(numNodes_) * dim + static_cast<long long>(mesh.numElements()) * 8) +
+                         kMargin);
+  try {
+    const Calls check(path, "cannot create");
+    const int id = id_;
+    GlobalIndex surfaceElements = 0;
+    for (const auto& surface : surfaceBlocks) surfaceElements += surface.numElements();
+    check(ex_set_max_name_length(id, longestName(mesh, fields, surfaceBlocks)), "the name length");
+    const std::string title = records.title.substr(0, MAX_LINE_LENGTH);
+    check(ex_put_init(id, title.c_str(), dim, numNodes_, mesh.numElements() + surfaceElements,
+                      static_cast<int64_t>(mesh.blocks.size() + surfaceBlocks.size()),
+                      static_cast<int64_t>(mesh.nodeSets.size()), static_cast<int64_t>(mesh.sideSets.size())),
+          "the header");
+    writeCoordinates(id, mesh, surfaceBlocks, numNodes_, check);
+    std::vector<std::string> blockNames;
+    const std::vector<int64_t> exodusElement = writeMeshBlocks(id, mesh, blockNames, check);
+    writeSurfaceBlocks(id, mesh, surfaceBlocks, blockNames, check);
+    if (!blockNames.empty()) {
+      auto pointers = namePointers(blockNames);
+      check(ex_put_names(id, EX_ELEM_BLOCK, pointers.data()), "element block names");
+    }
+    writeNodeSets(id, mesh, check);
+    writeSideSets(id, mesh, exodusElement, check);
+    writeRecords(id, records, check);
+    writeVariableNames(id, fields, mesh.blocks.size(), mesh.blocks.size() + surfaceBlocks.size(), check);
+    if (decomposition != nullptr)
+      writeDecomposition(id, *decomposition, mesh, numNodes_, mesh.numElements() + surfaceElements, check);
+    // On disk before the first step: a run that dies at once still leaves a valid file with the mesh.
+    check(ex_update(id), "the file (flush)");
+  } catch (...) {
+    ex_close(id_);
+    ::close(spaceFd_);
+    ::unlink(startingPath_.c_str());
+    throw;
+  }
+}
 
+void ExodusWriter::createFile(ExodusNaming naming, long long meshBytes) {
   // A results file is made under startingPath_ and takes its name at its first step (a file of another
   // run there is left alone until then); a path that is a directory would only fail at that rename.
   struct stat existing {};
-  if (::stat(path.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode))
-    throw OutputWriteError(path, "cannot create", systemMessage(EISDIR));
-  startingPath_ = naming == ExodusNaming::AtFirstStep ? path + ".starting" : path;
+  if (::stat(path_.c_str(), &existing) == 0 && S_ISDIR(existing.st_mode))
+    throw OutputWriteError(path_, "cannot create", systemMessage(EISDIR));
+  startingPath_ = naming == ExodusNaming::AtFirstStep ? path_ + ".starting" : path_;
   // The system's reason for a path that cannot be written (no permission, a read-only file system, a
   // full disk): the library's own message would blame netCDF-4 support for any failure.
   spaceFd_ = ::open(startingPath_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (spaceFd_ < 0) throw OutputWriteError(path, "cannot create", systemMessage(errno));
+  if (spaceFd_ < 0) throw OutputWriteError(path_, "cannot create", systemMessage(errno));
   const auto giveUp = [this](const std::string& reason) {
     ::close(spaceFd_);
     ::unlink(startingPath_.c_str());
     throw OutputWriteError(path_, "cannot create", reason);
   };
-  const long long meshBytes =
-      8 * (static_cast<long long>(numNodes_) * dim + static_cast<long long>(mesh.numElements()) * 8) + kMargin;
   if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) giveUp(systemMessage(error));
 
   int cpuWordSize = 8, ioWordSize = 8;
@@ -223,165 +437,6 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::Mesh& mesh, cons
   if (const int error = reserveAfterEnd(spaceFd_, 2 * meshBytes)) {
     ex_close(id_);
     giveUp(systemMessage(error));
-  }
-  try {
-    const Calls check(path, "cannot create");
-    const int id = id_;
-    check(ex_set_max_name_length(id, longestName(mesh, fields, surfaceBlocks)), "the name length");
-
-    const size_t meshBlocks = mesh.blocks.size(), numBlocks = meshBlocks + surfaceBlocks.size();
-    const std::string title = records.title.substr(0, MAX_LINE_LENGTH);
-    GlobalIndex surfaceElements = 0;
-    for (const auto& surface : surfaceBlocks) surfaceElements += surface.numElements();
-    check(ex_put_init(id, title.c_str(), dim, numNodes_, mesh.numElements() + surfaceElements,
-                      static_cast<int64_t>(numBlocks), static_cast<int64_t>(mesh.nodeSets.size()),
-                      static_cast<int64_t>(mesh.sideSets.size())),
-          "the header");
-
-    // Coordinates: the mesh nodes, then the surface blocks' points.
-    std::vector<std::vector<double>> xyz(static_cast<size_t>(dim), std::vector<double>(numNodes_));
-    const GlobalIndex meshNodes = mesh.numNodes();
-    for (GlobalIndex n = 0; n < meshNodes; ++n)
-      for (int d = 0; d < dim; ++d) xyz[d][n] = mesh.coordinates[n * dim + d];
-    GlobalIndex nextNode = meshNodes;
-    for (const auto& surface : surfaceBlocks)
-      for (size_t p = 0; p + dim <= surface.points.size(); p += dim, ++nextNode)
-        for (int d = 0; d < dim; ++d) xyz[d][nextNode] = surface.points[p + d];
-    check(ex_put_coord(id, xyz[0].data(), xyz[1].data(), dim == 3 ? xyz[2].data() : nullptr), "coordinates");
-    auto coordNames = coordinateNames(dim);
-    auto coordPointers = namePointers(coordNames);
-    check(ex_put_coord_names(id, coordPointers.data()), "coordinate names");
-
-    // Exodus numbers elements 1.. over the blocks in order; side sets refer to that numbering.
-    std::vector<int64_t> exodusElement(static_cast<size_t>(mesh.numElements()));
-    int64_t next = 1;
-    std::vector<std::string> blockNames;
-    for (size_t b = 0; b < meshBlocks; ++b) {
-      const auto& block = mesh.blocks[b];
-      const int64_t blockId = static_cast<int64_t>(b) + 1;
-      const std::string what = "element block '" + block.name + "'";
-      check(ex_put_block(id, EX_ELEM_BLOCK, blockId, mesh::exodusCellName(block.cellType), block.numElements(),
-                         mesh::nodesPerCell(block.cellType), 0, 0, 0),
-            what);
-      if (block.numElements() > 0) {
-        std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
-        for (int64_t& node : connectivity) ++node;
-        check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
-      }
-      for (GlobalIndex e : block.elements) exodusElement[e] = next++;
-      blockNames.push_back(block.name);
-    }
-    int64_t firstPoint = meshNodes + 1;  // Exodus node number of the block's first point
-    for (size_t l = 0; l < surfaceBlocks.size(); ++l) {
-      const auto& surface = surfaceBlocks[l];
-      const int64_t blockId = static_cast<int64_t>(meshBlocks + l) + 1;
-      const int64_t points = static_cast<int64_t>(surface.points.size()) / dim;
-      const std::string what = "surface block '" + surface.name + "'";
-      if (surface.nodesPerElement != 2 && surface.nodesPerElement != 4)
-        throw std::runtime_error(what + ": " + std::to_string(surface.nodesPerElement) +
-                                 " nodes per element (2: BAR2 or 4: SHELL4 expected)");
-      const char* type = surface.nodesPerElement == 2 ? "BAR2" : "SHELL4";
-      check(ex_put_block(id, EX_ELEM_BLOCK, blockId, type, surface.numElements(), surface.nodesPerElement, 0, 0, 0),
-            what);
-      if (surface.numElements() > 0) {
-        std::vector<int64_t> connectivity;
-        for (GlobalIndex point : surface.connectivity) {
-          if (point < 0 || point >= points)
-            throw std::runtime_error(what + ": point " + std::to_string(point) + " out of range (" +
-                                     std::to_string(points) + " points)");
-          connectivity.push_back(firstPoint + point);
-        }
-        check(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr), what);
-      }
-      firstPoint += points;
-      blockNames.push_back(surface.name);
-    }
-    if (!blockNames.empty()) {
-      auto pointers = namePointers(blockNames);
-      check(ex_put_names(id, EX_ELEM_BLOCK, pointers.data()), "element block names");
-    }
-
-    std::vector<std::string> nodeSetNames;
-    for (size_t s = 0; s < mesh.nodeSets.size(); ++s) {
-      const auto& set = mesh.nodeSets[s];
-      const int64_t setId = static_cast<int64_t>(s) + 1;
-      const std::string what = "node set '" + set.name + "'";
-      check(ex_put_set_param(id, EX_NODE_SET, setId, static_cast<int64_t>(set.nodes.size()), 0), what);
-      if (!set.nodes.empty()) {
-        std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
-        for (int64_t& node : nodes) ++node;
-        check(ex_put_set(id, EX_NODE_SET, setId, nodes.data(), nullptr), what);
-      }
-      nodeSetNames.push_back(set.name);
-    }
-    if (!nodeSetNames.empty()) {
-      auto pointers = namePointers(nodeSetNames);
-      check(ex_put_names(id, EX_NODE_SET, pointers.data()), "node set names");
-    }
-
-    std::vector<std::string> sideSetNames;
-    for (size_t s = 0; s < mesh.sideSets.size(); ++s) {
-      const auto& set = mesh.sideSets[s];
-      const int64_t setId = static_cast<int64_t>(s) + 1;
-      const std::string what = "side set '" + set.name + "'";
-      check(ex_put_set_param(id, EX_SIDE_SET, setId, static_cast<int64_t>(set.elements.size()), 0), what);
-      if (!set.elements.empty()) {
-        std::vector<int64_t> elements, sides;
-        for (GlobalIndex e : set.elements) elements.push_back(exodusElement[e]);
-        for (int side : set.sides) sides.push_back(side + 1);
-        check(ex_put_set(id, EX_SIDE_SET, setId, elements.data(), sides.data()), what);
-      }
-      sideSetNames.push_back(set.name);
-    }
-    if (!sideSetNames.empty()) {
-      auto pointers = namePointers(sideSetNames);
-      check(ex_put_names(id, EX_SIDE_SET, pointers.data()), "side set names");
-    }
-
-    if (!records.qa.empty()) {
-      std::vector<std::array<std::string, 4>> qa = records.qa;
-      std::vector<std::array<char*, 4>> pointers(qa.size());
-      for (size_t r = 0; r < qa.size(); ++r)
-        for (int k = 0; k < 4; ++k) {
-          qa[r][k] = qa[r][k].substr(0, MAX_STR_LENGTH);
-          pointers[r][k] = qa[r][k].data();
-        }
-      check(ex_put_qa(id, static_cast<int>(qa.size()), reinterpret_cast<char* (*)[4]>(pointers.data())), "QA records");
-    }
-    if (!records.info.empty()) {
-      auto info = infoRecords(records.info);
-      auto pointers = namePointers(info);
-      check(ex_put_info(id, static_cast<int>(info.size()), pointers.data()), "information records");
-    }
-
-    auto putNames = [&](ex_entity_type type, std::vector<std::string> names, const char* what) {
-      if (names.empty()) return;
-      check(ex_put_variable_param(id, type, static_cast<int>(names.size())), what);
-      auto pointers = namePointers(names);
-      check(ex_put_variable_names(id, type, static_cast<int>(names.size()), pointers.data()), what);
-    };
-    putNames(EX_NODAL, fields.nodal, "nodal variable names");
-    putNames(EX_ELEM_BLOCK, fields.element, "element variable names");
-    putNames(EX_GLOBAL, fields.global, "global variable names");
-    if (!fields.element.empty() && numBlocks > 0) {
-      // Element variables live on the mesh blocks, not on the surface blocks. Declaring them up front
-      // avoids per-step redefinition.
-      std::vector<int> truth(numBlocks * fields.element.size(), 0);
-      for (size_t b = 0; b < meshBlocks; ++b)
-        std::fill_n(truth.begin() + static_cast<std::ptrdiff_t>(b * fields.element.size()), fields.element.size(), 1);
-      check(ex_put_truth_table(id, EX_ELEM_BLOCK, static_cast<int>(numBlocks), static_cast<int>(fields.element.size()),
-                               truth.data()),
-            "the element variable truth table");
-    }
-    if (decomposition != nullptr)
-      writeDecomposition(id, *decomposition, mesh, numNodes_, mesh.numElements() + surfaceElements, check);
-    // On disk before the first step: a run that dies at once still leaves a valid file with the mesh.
-    check(ex_update(id), "the file (flush)");
-  } catch (...) {
-    ex_close(id_);
-    ::close(spaceFd_);
-    ::unlink(startingPath_.c_str());
-    throw;
   }
 }
 

@@ -44,6 +44,9 @@ struct ExodusDecomposition {
   std::vector<mesh::GlobalIndex> globalElements;  ///< 0-based global id of each element of the file (surface elements too)
   mesh::GlobalIndex globalNumNodes = 0, globalNumElements = 0;  ///< of the whole set
   std::vector<mesh::GlobalIndex> globalBlockSizes;  ///< elements of each block over the whole set
+  /// Nodes of each node set and sides of each side set over the whole set, in the piece's set order
+  /// (empty: the piece's own sizes are written).
+  std::vector<mesh::GlobalIndex> globalNodeSetSizes, globalSideSetSizes;
   /// For each mesh node of the file, the other processors whose files hold it (empty: interior).
   std::vector<std::vector<int>> sharedWith;
 };
@@ -113,6 +116,11 @@ class ExodusWriter {
   mesh::GlobalIndex numNodes() const { return numNodes_; }
 
  private:
+  /// Creates the file under its starting name with its disk space reserved (twice `meshBytes`, before
+  /// and after HDF5 truncates it): sets startingPath_, spaceFd_ and id_; OutputWriteError, and nothing
+  /// left on disk, when that fails.
+  void createFile(ExodusNaming naming, long long meshBytes);
+
   std::string path_;
   std::string startingPath_;  ///< where the file is until its first step
   /// Per mesh block: its name and the elements' indices into an element variable (the mesh itself is not

@@ -1,7 +1,8 @@
 #pragma once
 // Standard (displacement-only) total-Lagrangian solid kernel over a reference element Shape
-// (ReferenceElement.hpp): f_int = Σ_gp Bᵀ P w j, K = Σ_gp Bᵀ A B w j. "Q4" is this with the bilinear
-// quadrilateral, "Hex8" with the trilinear hexahedron (Hex8.hpp). Fixed-size arithmetic throughout, the
+// (ReferenceElement.hpp) and a Kinematics (Kinematics.hpp): f_int = Σ_gp Bᵀ P w j, K = Σ_gp Bᵀ A B w j.
+// "Q4" is this with the bilinear quadrilateral in plane strain, "Q4 Axisymmetric" the same revolved,
+// "Hex8" with the trilinear hexahedron (Hex8.hpp). Fixed-size arithmetic throughout, the
 // reference gradients precomputed per element, one material call per evaluation for all points.
 // evaluate() returns InadmissibleDeformation when the material rejects F at a Gauss point or when the
 // reference element itself has j ≤ 0 (clockwise node order or a degenerate element).
@@ -9,27 +10,36 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "mechanics/Element.hpp"
+#include "mechanics/Kinematics.hpp"
 #include "mechanics/SolidOperators.hpp"
 
 namespace contessa::mechanics {
 
-template <class Shape>
+template <class Shape, class Kinematics = PlanarKinematics<Shape::kDimension>>
 class DisplacementElement final : public ElementKernel {
  public:
   static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints, ND = D * N;
-  using Geometry = ReferenceGeometry<Shape>;
+  static constexpr int MD = Kinematics::kMaterialDimension;  ///< the law's F is MD × MD
+  using Geometry = ReferenceGeometry<Shape, Kinematics::kHoop>;
   using GeometrySet = ElementGeometrySet<Geometry>;
 
   explicit DisplacementElement(std::string name) : name_(std::move(name)) {}
   std::string name() const override { return name_; }
   int dimension() const override { return D; }
   int numNodes() const override { return N; }
+  bool axisymmetric() const override { return Kinematics::kHoop; }
+  std::vector<double> parentNodeCoordinates() const override {
+    std::vector<double> xi;
+    for (const auto& node : Shape::parentNodes()) xi.insert(xi.end(), node.begin(), node.end());
+    return xi;
+  }
 
   std::unique_ptr<ElementGeometry> referenceGeometry(int count, const double* X) const override {
     auto set = std::make_unique<GeometrySet>(count);
-    for (int e = 0; e < count; ++e) set->setValid(e, computeReferenceGeometry<Shape>(X + ND * e, set->record(e)));
+    for (int e = 0; e < count; ++e) set->setValid(e, computeReferenceGeometry<Shape, Kinematics>(X + ND * e, set->record(e)));
     return set;
   }
 
@@ -41,20 +51,22 @@ class DisplacementElement final : public ElementKernel {
     const auto& set = static_cast<const GeometrySet&>(geometry);
     if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
     const Geometry& g = set[element];
-    std::array<Matrix<D>, Q> F, P;
-    std::array<Tangent<D>, Q> A;
+    std::array<Matrix<MD>, Q> F, P;
+    std::array<Tangent<MD>, Q> A;
     // F = I + GRAD u; for small-strain laws the same F gives ε = sym GRAD u, i.e. linear elasticity.
     for (int q = 0; q < Q; ++q) F[q] = deformationGradient(g, q, u);
     if (!material.firstPiolaKirchhoffAtPoints(Q, F.data(), P.data(), stiffness ? A.data() : nullptr))
       return ElementStatus::InadmissibleDeformation;
     if (internalForce) {
       std::fill(internalForce, internalForce + ND, 0.0);
-      for (int q = 0; q < Q; ++q) addDivergence<D, N>(g.dNdX[q].data(), P[q], g.weightedVolume[q], internalForce);
+      for (int q = 0; q < Q; ++q)
+        Kinematics::template addDivergence<N>(g.dNdX[q].data(), g.hoop.at(q), P[q], g.weightedVolume[q], internalForce);
     }
     if (stiffness) {
       std::fill(stiffness, stiffness + ND * ND, 0.0);
       for (int q = 0; q < Q; ++q)
-        addTangent<D, N, N>(g.dNdX[q].data(), g.dNdX[q].data(), A[q], g.weightedVolume[q], stiffness, ND);
+        Kinematics::template addTangent<N, N>(g.dNdX[q].data(), g.hoop.at(q), g.dNdX[q].data(), g.hoop.at(q), A[q],
+                                              g.weightedVolume[q], stiffness, ND);
     }
     return ElementStatus::Ok;
   }
@@ -68,8 +80,8 @@ class DisplacementElement final : public ElementKernel {
     sigma = Tensor2{};
     Tensor2 s{};
     for (int q = 0; q < Q; ++q) {
-      // Output only: the 3 × 3 path of the law (plane strain: F_33 = 1), which gives σ_zz too.
-      if (!material.cauchyStress(embedIn3D<D>(deformationGradient(g, q, u), 1.0), s))
+      // Output only: the 3 × 3 path of the law (plane strain: F_33 = 1), which gives σ_zz (σ_θθ) too.
+      if (!material.cauchyStress(Kinematics::threeByThree(deformationGradient(g, q, u)), s))
         return ElementStatus::InadmissibleDeformation;
       sigma = add(sigma, s);
     }
@@ -78,10 +90,10 @@ class DisplacementElement final : public ElementKernel {
   }
 
  private:
-  static Matrix<D> deformationGradient(const Geometry& g, int q, const double* u) {
-    Matrix<D> H{};
-    addGradient<D, N>(g.dNdX[q].data(), u, H);
-    for (int i = 0; i < D; ++i) H[D * i + i] += 1.0;
+  static Matrix<MD> deformationGradient(const Geometry& g, int q, const double* u) {
+    Matrix<MD> H{};
+    Kinematics::template addGradient<N>(g.dNdX[q].data(), g.hoop.at(q), u, H);
+    for (int i = 0; i < MD; ++i) H[MD * i + i] += 1.0;
     return H;
   }
 

@@ -31,6 +31,12 @@ class ElementKernel {
   virtual int dimension() const = 0;
   virtual int numNodes() const = 0;
   int numDofs() const { return dimension() * numNodes(); }
+  /// True for a 2D kernel of a solid of revolution about the y axis (r = x, z = y): its forces are
+  /// those of the full circumference and its stress's zz component is the hoop stress σ_θθ.
+  virtual bool axisymmetric() const { return false; }
+  /// Parent (reference-element) coordinates ξ of the nodes, numNodes × dimension, node-major: where the
+  /// kernel's shape functions are 1 (tests map them into distorted elements of every family).
+  virtual std::vector<double> parentNodeCoordinates() const = 0;
   /// Internal (condensed) variables per element, e.g. 4 (Q4) or 9 (Hex8) enhanced-strain parameters.
   virtual int numInternalVariables() const { return 0; }
   /// Values of the element state: the internal variables first, then what the kernel keeps to
@@ -47,7 +53,8 @@ class ElementKernel {
   /// `stiffness` is not null, the consistent tangent ∂f_int/∂u (numDofs², row-major), of element
   /// `element` of `geometry` at displacements u (numNodes × dimension). `internalForce` may be null.
   /// state (numStateValues, may be null when numInternalVariables() is 0): in = the last state, out =
-  /// updated (left unchanged on failure). Plane strain, unit thickness in 2D; the full 3 × 3 F in 3D.
+  /// updated (left unchanged on failure). Plane strain, unit thickness in 2D; the full 3 × 3 F in 3D;
+  /// axisymmetric kernels integrate over the full circumference (2π R).
   virtual ElementStatus evaluate(const ElementGeometry& geometry, int element, const double* u, double* state,
                                  const Material& material, double* internalForce, double* stiffness) const = 0;
 
@@ -68,9 +75,11 @@ class ElementKernel {
                                     const Material& material, Tensor2& sigma) const;
 };
 
-/// Creates element kernels by the deck's "Element" name: "Q4" (bilinear, 2 × 2 Gauss), "Q4 Enhanced"
+/// Creates element kernels by the deck's "Element" name (ElementFactory.cpp lists them all): "Q4"
+/// (bilinear, 2 × 2 Gauss), "Q4 Enhanced"
 /// (Simo–Armero enhanced assumed strain, 4 modes, condensed), and their 3D counterparts "Hex8"
-/// (trilinear, 2 × 2 × 2 Gauss) and "Hex8 Enhanced" (9 modes, condensed).
+/// (trilinear, 2 × 2 × 2 Gauss) and "Hex8 Enhanced" (9 modes, condensed); "Q4 Axisymmetric" and "Q4
+/// Enhanced Axisymmetric" revolve the 2D ones about the y axis (Kinematics.hpp).
 class ElementFactory {
  public:
   static std::vector<std::string> names();

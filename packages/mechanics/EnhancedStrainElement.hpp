@@ -3,7 +3,9 @@
 // Shape and its enhanced modes Modes (EnhancedStrain.hpp): F = I + GRAD u + H̃(α), with the element
 // parameters α condensed out at every evaluation by a local Newton solve of R_α(u, α) = 0. "Q4
 // Enhanced" is this with the bilinear quadrilateral and its 4 Wilson-bubble modes, "Hex8 Enhanced"
-// the same template with the trilinear hexahedron and its 9 modes (Hex8.hpp).
+// the same template with the trilinear hexahedron and its 9 modes (Hex8.hpp). With the axisymmetric
+// Kinematics ("Q4 Enhanced Axisymmetric"), the modes enhance the in-plane gradient only: the hoop
+// stretch stays 1 + u_r / R (Simo & Armero's axisymmetric version, §5 of their paper).
 //
 // Lean by construction (docs/theory-solids.md §4): sizes are compile-time constants; per element,
 // ∂N/∂X, the mode gradients g_β, w j and the tolerance scales are precomputed (Geometry); the modes
@@ -16,18 +18,21 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "mechanics/DenseSolve.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/EnhancedStrain.hpp"
+#include "mechanics/Kinematics.hpp"
 #include "mechanics/SolidOperators.hpp"
 
 namespace contessa::mechanics {
 
-template <class Shape, class Modes>
+template <class Shape, class Modes, class Kinematics = PlanarKinematics<Shape::kDimension>>
 class EnhancedStrainElement final : public ElementKernel {
  public:
   static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
+  static constexpr int MD = Kinematics::kMaterialDimension;  ///< the law's F is MD × MD
   static constexpr int M = Modes::kPseudoNodes;  ///< mode "nodes", D parameters each
   static constexpr int ND = D * N, NA = D * M, NE = ND + NA, G = N + M;
   /// State: α (NA values, α_(β,i) at D·β + i), then the displacements u_α at which α was converged
@@ -39,7 +44,8 @@ class EnhancedStrainElement final : public ElementKernel {
   /// What an evaluation needs from the reference configuration, computed once per element.
   struct Geometry {
     std::array<std::array<double, G * D>, Q> gradients{};  ///< ∂N_a/∂X_J (a < N), then g_β,J
-    std::array<double, Q> weightedVolume{};                ///< w j
+    std::array<double, Q> weightedVolume{};                ///< w j (× 2πR revolved)
+    HoopCoefficients<G, Q, Kinematics::kHoop> hoop;        ///< N_a / R for the nodes, 0 for the modes
     std::array<double, Q> modeNormSum{};                   ///< Σ_m ‖G_m‖ (Frobenius) over the NA modes
     double length = 0.0;                                   ///< V^(1/D): α has units of length
   };
@@ -49,6 +55,12 @@ class EnhancedStrainElement final : public ElementKernel {
   std::string name() const override { return name_; }
   int dimension() const override { return D; }
   int numNodes() const override { return N; }
+  bool axisymmetric() const override { return Kinematics::kHoop; }
+  std::vector<double> parentNodeCoordinates() const override {
+    std::vector<double> xi;
+    for (const auto& node : Shape::parentNodes()) xi.insert(xi.end(), node.begin(), node.end());
+    return xi;
+  }
   int numInternalVariables() const override { return NA; }
   int numStateValues() const override { return kStateSize; }
 
@@ -71,7 +83,7 @@ class EnhancedStrainElement final : public ElementKernel {
     const auto& set = static_cast<const GeometrySet&>(geometry);
     if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
     const Geometry& g = set[element];
-    std::array<Matrix<D>, Q> Fc;  // I + GRAD u, fixed during the local solve
+    std::array<Matrix<MD>, Q> Fc;  // I + GRAD u, fixed during the local solve
     for (int q = 0; q < Q; ++q) Fc[q] = compatibleGradient(g, q, u);
 
     Alpha alpha{}, shift{};
@@ -102,14 +114,16 @@ class EnhancedStrainElement final : public ElementKernel {
     if (internalForce) {
       std::fill(internalForce, internalForce + ND, 0.0);
       for (int q = 0; q < Q; ++q)
-        addDivergence<D, N>(g.gradients[q].data(), s.P[q], g.weightedVolume[q], internalForce);
+        Kinematics::template addDivergence<N>(g.gradients[q].data(), g.hoop.at(q), s.P[q], g.weightedVolume[q],
+                                              internalForce);
     }
     std::array<double, NA * ND> W{};  // K_αα⁻¹ K_αu
     if (stiffness) {
       // All four blocks at α* at once: nodes and modes are one list of gradients.
       std::array<double, NE * NE> Ke{};
       for (int q = 0; q < Q; ++q)
-        addTangent<D, G, G>(g.gradients[q].data(), g.gradients[q].data(), s.A[q], g.weightedVolume[q], Ke.data(), NE);
+        Kinematics::template addTangent<G, G>(g.gradients[q].data(), g.hoop.at(q), g.gradients[q].data(),
+                                              g.hoop.at(q), s.A[q], g.weightedVolume[q], Ke.data(), NE);
       // Static condensation: K = K_uu − K_uα W with K_αα W = K_αu.
       std::array<double, NA * NA> Kaa;
       for (int m = 0; m < NA; ++m) {
@@ -151,8 +165,8 @@ class EnhancedStrainElement final : public ElementKernel {
     sigma = Tensor2{};
     Tensor2 s{};
     for (int q = 0; q < Q; ++q) {
-      // Output only: the 3 × 3 path of the law (plane strain: F_33 = 1), which gives σ_zz too.
-      if (!material.cauchyStress(embedIn3D<D>(enhancedGradient(g, q, compatibleGradient(g, q, u), alpha), 1.0), s))
+      // Output only: the 3 × 3 path of the law (plane strain: F_33 = 1), which gives σ_zz (σ_θθ) too.
+      if (!material.cauchyStress(Kinematics::threeByThree(enhancedGradient(g, q, compatibleGradient(g, q, u), alpha)), s))
         return ElementStatus::InadmissibleDeformation;
       sigma = add(sigma, s);
     }
@@ -164,8 +178,8 @@ class EnhancedStrainElement final : public ElementKernel {
   using Alpha = std::array<double, NA>;
   /// F, P and A at every integration point for the current α.
   struct PointStates {
-    std::array<Matrix<D>, Q> F, P;
-    std::array<Tangent<D>, Q> A;
+    std::array<Matrix<MD>, Q> F, P;
+    std::array<Tangent<MD>, Q> A;
   };
 
   // Local Newton stopping rules. R_α is converged when ‖R_α‖ ≤ kResidualTolerance · s, where
@@ -180,8 +194,8 @@ class EnhancedStrainElement final : public ElementKernel {
   static constexpr double kStepTolerance = 1e-14;
 
   static bool computeGeometry(const double* X, Geometry& g) {
-    ReferenceGeometry<Shape> reference;
-    if (!computeReferenceGeometry<Shape>(X, reference)) return false;
+    ReferenceGeometry<Shape, Kinematics::kHoop> reference;
+    if (!computeReferenceGeometry<Shape, Kinematics>(X, reference)) return false;
     const double centre[D] = {};
     const Matrix<D> J0 = parentJacobian<Shape>(centre, X);
     const double j0 = determinantOf<D>(J0);
@@ -192,7 +206,11 @@ class EnhancedStrainElement final : public ElementKernel {
     for (int q = 0; q < Q; ++q) {
       std::copy(reference.dNdX[q].begin(), reference.dNdX[q].end(), g.gradients[q].begin());
       double* modes = g.gradients[q].data() + ND;
-      Modes::gradients(rule[q].xi.data(), j0 / reference.detJ[q], J0inv, modes);
+      // The modes' scale j0 / j makes ∫ H̃ dV vanish (EnhancedStrain.hpp); revolved, dV = 2π R j dξ, so
+      // the scale is j0 R0 / (j R) (R0: the radius at the centre) and the patch test still holds.
+      const double measureRatio = j0 * Kinematics::template measureFactor<Shape>(centre, X) /
+                                  (reference.detJ[q] * Kinematics::template measureFactor<Shape>(rule[q].xi.data(), X));
+      Modes::gradients(rule[q].xi.data(), measureRatio, J0inv, modes);
       // Each of the NA modes G_m, m = (β, i), has the single non-zero row g_β: ‖G_m‖ = |g_β|.
       double sum = 0.0;
       for (int beta = 0; beta < M; ++beta) {
@@ -202,24 +220,25 @@ class EnhancedStrainElement final : public ElementKernel {
       }
       g.modeNormSum[q] = sum;
       g.weightedVolume[q] = reference.weightedVolume[q];
+      if constexpr (Kinematics::kHoop) std::copy(reference.hoop.at(q), reference.hoop.at(q) + N, g.hoop.at(q));
       volume += g.weightedVolume[q];
     }
     g.length = std::pow(volume, 1.0 / D);
     return true;
   }
 
-  static Matrix<D> compatibleGradient(const Geometry& g, int q, const double* u) {
-    Matrix<D> H{};
-    addGradient<D, N>(g.gradients[q].data(), u, H);
-    for (int i = 0; i < D; ++i) H[D * i + i] += 1.0;
+  static Matrix<MD> compatibleGradient(const Geometry& g, int q, const double* u) {
+    Matrix<MD> H{};
+    Kinematics::template addGradient<N>(g.gradients[q].data(), g.hoop.at(q), u, H);
+    for (int i = 0; i < MD; ++i) H[MD * i + i] += 1.0;
     return H;
   }
 
   /// F = (I + GRAD u) + H̃(α).
-  static Matrix<D> enhancedGradient(const Geometry& g, int q, const Matrix<D>& compatible, const Alpha& alpha) {
-    Matrix<D> H{};
-    addGradient<D, M>(g.gradients[q].data() + ND, alpha.data(), H);
-    for (int n = 0; n < D * D; ++n) H[n] += compatible[n];
+  static Matrix<MD> enhancedGradient(const Geometry& g, int q, const Matrix<MD>& compatible, const Alpha& alpha) {
+    Matrix<MD> H{};
+    Kinematics::template addGradient<M>(g.gradients[q].data() + ND, nullptr, alpha.data(), H);
+    for (int n = 0; n < MD * MD; ++n) H[n] += compatible[n];
     return H;
   }
 
@@ -232,7 +251,7 @@ class EnhancedStrainElement final : public ElementKernel {
 
   /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F,
   /// P, A there.
-  ElementStatus solveLocal(const Geometry& g, const std::array<Matrix<D>, Q>& Fc, const Material& material,
+  ElementStatus solveLocal(const Geometry& g, const std::array<Matrix<MD>, Q>& Fc, const Material& material,
                            Alpha& alpha, PointStates& s) const {
     Alpha step{};
     double previousNorm = HUGE_VAL;
@@ -251,8 +270,8 @@ class EnhancedStrainElement final : public ElementKernel {
       Alpha R{};
       double scale = 0.0;
       for (int q = 0; q < Q; ++q) {
-        addDivergence<D, M>(g.gradients[q].data() + ND, s.P[q], g.weightedVolume[q], R.data());
-        scale += normOf<D>(s.P[q]) * g.modeNormSum[q] * g.weightedVolume[q];
+        Kinematics::template addDivergence<M>(g.gradients[q].data() + ND, nullptr, s.P[q], g.weightedVolume[q], R.data());
+        scale += normOf<MD>(s.P[q]) * g.modeNormSum[q] * g.weightedVolume[q];
       }
       const double rNorm = norm<NA>(R.data());
       if (!std::isfinite(rNorm)) return ElementStatus::InternalSolveFailed;
@@ -263,7 +282,7 @@ class EnhancedStrainElement final : public ElementKernel {
       std::array<double, NA * NA> Kaa{};
       for (int q = 0; q < Q; ++q) {
         const double* modes = g.gradients[q].data() + ND;
-        addTangent<D, M, M>(modes, modes, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
+        Kinematics::template addTangent<M, M>(modes, nullptr, modes, nullptr, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
       }
       for (int m = 0; m < NA; ++m) step[m] = -R[m];
       if (!solveDenseInPlace<NA, 1>(Kaa.data(), step.data())) return ElementStatus::InternalSolveFailed;

@@ -19,6 +19,9 @@ struct TrilinearHexahedron {
   static constexpr int kDimension = 3, kNodes = 8, kPoints = 8;
   static std::array<QuadraturePoint<3>, kPoints> quadrature() { return gaussLegendreRule<3, 2>(); }
   static void shapeGradients(const double* xi, double* dNdxi);
+  static std::array<std::array<double, 3>, kNodes> parentNodes() {
+    return {{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
+  }
 };
 
 /// The kernels, under the name the registry (ElementFactory.cpp) gives them.

@@ -95,28 +95,46 @@ Matrix<Shape::kDimension> parentJacobian(const double* xi, const double* X) {
   return J;
 }
 
+/// Hoop coefficients c_a = N_a / R of Count shape functions at Q points (axisymmetric kinematics,
+/// Kinematics.hpp); nothing is stored, and at() is null, when the kinematics has no hoop strain.
+template <int Count, int Q, bool Stored>
+struct HoopCoefficients {
+  const double* at(int) const { return nullptr; }
+  double* at(int) { return nullptr; }
+};
+template <int Count, int Q>
+struct HoopCoefficients<Count, Q, true> {
+  std::array<std::array<double, Count>, Q> c{};
+  const double* at(int q) const { return c[q].data(); }
+  double* at(int q) { return c[q].data(); }
+};
+
 /// Reference geometry of one element at its integration points: what every residual and Jacobian
 /// needs from X, computed once (ElementKernel::referenceGeometry).
-template <class Shape>
+template <class Shape, bool Hoop = false>
 struct ReferenceGeometry {
   static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
   std::array<std::array<double, N * D>, Q> dNdX{};  ///< ∂N_a/∂X_J at D·a + J
   std::array<double, Q> detJ{};                     ///< j = det ∂X/∂ξ
-  std::array<double, Q> weightedVolume{};           ///< w · j (unit thickness in 2D)
+  std::array<double, Q> weightedVolume{};           ///< w · j (unit thickness in 2D; × 2πR revolved)
+  HoopCoefficients<N, Q, Hoop> hoop;                ///< N_a / R (revolved only)
 };
 
-/// ∂N_a/∂X_J = ∂N_a/∂ξ_β (J⁻¹)_βJ, j and w j at every integration point. False when some j ≤ 0
-/// (nodes not counter-clockwise, or a degenerate element): the reference configuration cannot be
-/// integrated.
-template <class Shape>
-bool computeReferenceGeometry(const double* X, ReferenceGeometry<Shape>& g) {
+/// ∂N_a/∂X_J = ∂N_a/∂ξ_β (J⁻¹)_βJ, j and w j at every integration point, and what the Kinematics
+/// (Kinematics.hpp) adds: the axisymmetric 2πR and N_a / R. False when some j ≤ 0 (nodes not
+/// counter-clockwise, or a degenerate element), or the kinematics refuses a point (R ≤ 0): the
+/// reference configuration cannot be integrated.
+template <class Shape, class Kinematics, bool Hoop>
+bool computeReferenceGeometry(const double* X, ReferenceGeometry<Shape, Hoop>& g) {
   constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
+  static_assert(Hoop == Kinematics::kHoop);
   const auto rule = Shape::quadrature();
   for (int q = 0; q < Q; ++q) {
     const Matrix<D> J = parentJacobian<Shape>(rule[q].xi.data(), X);
     g.detJ[q] = determinantOf<D>(J);
     if (!(g.detJ[q] > 0.0)) return false;
     g.weightedVolume[q] = rule[q].weight * g.detJ[q];
+    if (!Kinematics::template revolve<Shape>(rule[q].xi.data(), X, g.weightedVolume[q], g.hoop.at(q))) return false;
     const Matrix<D> Jinv = inverseOf<D>(J, g.detJ[q]);
     std::array<double, N * D> dNdxi{};
     Shape::shapeGradients(rule[q].xi.data(), dNdxi.data());

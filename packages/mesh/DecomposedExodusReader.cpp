@@ -188,6 +188,105 @@ std::string rankList(std::vector<GlobalIndex> ranks) {
   return text;
 }
 
+// The names a set's messages use: the set, and the file of rank r.
+struct SetNames {
+  std::string set;
+  std::function<std::string(GlobalIndex)> file;
+};
+
+// What one rank sends another about the ids that rank checks: (id, holder) per element; (id, holder,
+// number of files holding it by the holder's maps) and x, y, z per node.
+struct IdsToCheck {
+  std::vector<std::vector<GlobalIndex>> elements, nodes;
+  std::vector<std::vector<double>> coordinates;
+  double extent = 0;  ///< the largest coordinate magnitude of the part
+};
+
+// Global ids in range (InputError naming the file otherwise), sorted by their checking rank (id % N).
+IdsToCheck idsToCheck(const DistributedMesh& part, const RecordedSizes& recorded, const SetNames& names) {
+  const int rank = part.rank, numRanks = part.numRanks;
+  const Mesh& local = part.local();
+  const int dim = local.dimension;
+  IdsToCheck out{std::vector<std::vector<GlobalIndex>>(numRanks), std::vector<std::vector<GlobalIndex>>(numRanks),
+                 std::vector<std::vector<double>>(numRanks), 0.0};
+  for (GlobalIndex g : part.part.globalElements) {
+    requireInput(g >= 0 && g < recorded.elements,
+                 names.set + ": " + names.file(rank) + " holds global element id " + std::to_string(g + 1) +
+                     ", beyond the " + std::to_string(recorded.elements) + " elements its records give the mesh");
+    out.elements[g % numRanks].insert(out.elements[g % numRanks].end(), {g, rank});
+  }
+  for (std::size_t n = 0; n < part.part.globalNodes.size(); ++n) {
+    const GlobalIndex g = part.part.globalNodes[n];
+    requireInput(g >= 0 && g < recorded.nodes, names.set + ": " + names.file(rank) + " holds global node id " +
+                                                   std::to_string(g + 1) + ", beyond the " +
+                                                   std::to_string(recorded.nodes) + " nodes its records give the mesh");
+    const auto holders = static_cast<GlobalIndex>(part.part.sharedWith[n].size()) + 1;
+    out.nodes[g % numRanks].insert(out.nodes[g % numRanks].end(), {g, rank, holders});
+    for (int i = 0; i < 3; ++i) {
+      const double x = i < dim ? local.coordinates[n * dim + i] : 0.0;
+      out.coordinates[g % numRanks].push_back(x);
+      out.extent = std::max(out.extent, std::abs(x));
+    }
+  }
+  return out;
+}
+
+// Each element id of this rank's share (id % N == rank) in exactly one file; `elements` holds the
+// (id, holder) pairs the ranks sent.
+void requireEachElementOnce(const std::vector<GlobalIndex>& elements, GlobalIndex numElements, int rank,
+                            int numRanks, const SetNames& names) {
+  std::vector<std::vector<GlobalIndex>> elementHolders(static_cast<std::size_t>(numElements / numRanks + 1));
+  for (std::size_t k = 0; k < elements.size(); k += 2) elementHolders[elements[k] / numRanks].push_back(elements[k + 1]);
+  for (GlobalIndex g = rank; g < numElements; g += numRanks) {
+    const auto& holders = elementHolders[g / numRanks];
+    requireInput(!holders.empty(), names.set + ": global element id " + std::to_string(g + 1) +
+                                       " is in none of the files (the files cover the elements of another "
+                                       "decomposition or mesh)");
+    requireInput(holders.size() == 1, names.set + ": global element id " + std::to_string(g + 1) +
+                                          " is in the files of ranks " + rankList(holders) +
+                                          " (pieces of two decompositions or meshes)");
+  }
+}
+
+// Each node id of this rank's share in a file at least, held by as many files as each holder's maps
+// say, at one place (within `tolerance`); `nodes` holds the (id, holder, holders) triples the ranks
+// sent and `coordinates` their x, y, z.
+void requireNodesAgree(const std::vector<GlobalIndex>& nodes, const std::vector<double>& coordinates,
+                       GlobalIndex numNodes, int rank, int numRanks, int dim, double tolerance, const SetNames& names) {
+  struct Copy {
+    GlobalIndex holder, holders;
+    const double* x;
+  };
+  std::vector<std::vector<Copy>> nodeCopies(static_cast<std::size_t>(numNodes / numRanks + 1));
+  for (std::size_t k = 0, c = 0; k < nodes.size(); k += 3, c += 3)
+    nodeCopies[nodes[k] / numRanks].push_back({nodes[k + 1], nodes[k + 2], coordinates.data() + c});
+  for (GlobalIndex g = rank; g < numNodes; g += numRanks) {
+    const auto& copies = nodeCopies[g / numRanks];
+    const std::string node = names.set + ": global node id " + std::to_string(g + 1);
+    requireInput(!copies.empty(), node + " is in none of the files (the files cover the nodes of another "
+                                         "decomposition or mesh)");
+    std::vector<GlobalIndex> holders;
+    for (const Copy& c : copies) holders.push_back(c.holder);
+    for (const Copy& c : copies) {
+      requireInput(c.holders == static_cast<GlobalIndex>(copies.size()),
+                   node + " is in the files of ranks " + rankList(holders) + ", but the communication maps of " +
+                       names.file(c.holder) + " share it with " + std::to_string(c.holders - 1) +
+                       " other file(s) (pieces of two decompositions or meshes)");
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(c.x[i] - copies.front().x[i]) > tolerance) {
+          std::ostringstream where;
+          where.precision(9);
+          for (const Copy* copy : {&copies.front(), &c}) {
+            where << (copy == &c ? " and (" : " (");
+            for (int j = 0; j < dim; ++j) where << (j > 0 ? ", " : "") << copy->x[j];
+            where << ") in " << names.file(copy->holder);
+          }
+          throw InputError(node + " lies at different places:" + where.str() + " (pieces of two meshes)");
+        }
+    }
+  }
+}
+
 // Collective. The files of a set must be pieces of one decomposition of one mesh: the same global sizes
 // in every file's records, every global element in exactly one file, every global node in at least
 // one, held by as many files as the communication maps of each say, at the same coordinates in all.
@@ -197,104 +296,36 @@ std::string rankList(std::vector<GlobalIndex> ranks) {
 // on every rank, the InputError of the lowest rank that finds a difference, naming the set.
 void requireOneDecomposition(const DistributedMesh& part, const RecordedSizes& recorded, const std::string& base) {
   const int rank = part.rank, numRanks = part.numRanks;
-  const std::string set = decomposedFileName(base, numRanks, 0) + " ...";
-  const auto file = [&](GlobalIndex r) { return decomposedFileName(base, numRanks, static_cast<int>(r)); };
-  const Mesh& local = part.local();
-  const int dim = local.dimension;
+  const SetNames names{decomposedFileName(base, numRanks, 0) + " ...",
+                       [&](GlobalIndex r) { return decomposedFileName(base, numRanks, static_cast<int>(r)); }};
+  const int dim = part.local().dimension;
 
   // The records and the dimension, compared on every rank alike.
   const std::vector<GlobalIndex> facts = allGather({recorded.nodes, recorded.elements, dim});
   for (int r = 1; r < numRanks; ++r)
     requireInput(std::equal(facts.begin(), facts.begin() + 3, facts.begin() + 3 * r),
-                 set + ": the files are not pieces of one mesh: " + file(0) + " records " + std::to_string(facts[0]) +
-                     " nodes, " + std::to_string(facts[1]) + " elements in " + std::to_string(facts[2]) + "D, " +
-                     file(r) + " " + std::to_string(facts[3 * r]) + " nodes, " + std::to_string(facts[3 * r + 1]) +
-                     " elements in " + std::to_string(facts[3 * r + 2]) + "D");
-  const GlobalIndex numNodes = recorded.nodes, numElements = recorded.elements;
+                 names.set + ": the files are not pieces of one mesh: " + names.file(0) + " records " +
+                     std::to_string(facts[0]) + " nodes, " + std::to_string(facts[1]) + " elements in " +
+                     std::to_string(facts[2]) + "D, " + names.file(r) + " " + std::to_string(facts[3 * r]) +
+                     " nodes, " + std::to_string(facts[3 * r + 1]) + " elements in " +
+                     std::to_string(facts[3 * r + 2]) + "D");
 
-  // Global ids in range, then sent to their checking rank: (id, holder) for an element, (id, holder,
-  // number of files holding it by this file's maps) and the coordinates for a node.
   std::exception_ptr failure;
-  std::vector<std::vector<GlobalIndex>> elementsOut(numRanks), nodesOut(numRanks);
-  std::vector<std::vector<double>> coordinatesOut(numRanks);
-  double extent = 0;
+  IdsToCheck out;
   try {
-    for (GlobalIndex g : part.part.globalElements) {
-      requireInput(g >= 0 && g < numElements, set + ": " + file(rank) + " holds global element id " +
-                                                  std::to_string(g + 1) + ", beyond the " + std::to_string(numElements) +
-                                                  " elements its records give the mesh");
-      elementsOut[g % numRanks].insert(elementsOut[g % numRanks].end(), {g, rank});
-    }
-    for (std::size_t n = 0; n < part.part.globalNodes.size(); ++n) {
-      const GlobalIndex g = part.part.globalNodes[n];
-      requireInput(g >= 0 && g < numNodes, set + ": " + file(rank) + " holds global node id " + std::to_string(g + 1) +
-                                               ", beyond the " + std::to_string(numNodes) +
-                                               " nodes its records give the mesh");
-      const auto holders = static_cast<GlobalIndex>(part.part.sharedWith[n].size()) + 1;
-      nodesOut[g % numRanks].insert(nodesOut[g % numRanks].end(), {g, rank, holders});
-      for (int i = 0; i < 3; ++i) {
-        const double x = i < dim ? local.coordinates[n * dim + i] : 0.0;
-        coordinatesOut[g % numRanks].push_back(x);
-        extent = std::max(extent, std::abs(x));
-      }
-    }
+    out = idsToCheck(part, recorded, names);
   } catch (...) {
     failure = std::current_exception();
   }
   throwIfAnyRankFailed(failure);
-  MPI_Allreduce(MPI_IN_PLACE, &extent, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  const std::vector<GlobalIndex> elements = exchanged(elementsOut, MPI_LONG_LONG);
-  const std::vector<GlobalIndex> nodes = exchanged(nodesOut, MPI_LONG_LONG);
-  const std::vector<double> coordinates = exchanged(coordinatesOut, MPI_DOUBLE);
-
+  MPI_Allreduce(MPI_IN_PLACE, &out.extent, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  const std::vector<GlobalIndex> elements = exchanged(out.elements, MPI_LONG_LONG);
+  const std::vector<GlobalIndex> nodes = exchanged(out.nodes, MPI_LONG_LONG);
+  const std::vector<double> coordinates = exchanged(out.coordinates, MPI_DOUBLE);
   try {
-    // Elements: each id of this rank's share (id % N == rank) in exactly one file.
-    std::vector<std::vector<GlobalIndex>> elementHolders(static_cast<std::size_t>(numElements / numRanks + 1));
-    for (std::size_t k = 0; k < elements.size(); k += 2)
-      elementHolders[elements[k] / numRanks].push_back(elements[k + 1]);
-    for (GlobalIndex g = rank; g < numElements; g += numRanks) {
-      const auto& holders = elementHolders[g / numRanks];
-      requireInput(!holders.empty(), set + ": global element id " + std::to_string(g + 1) +
-                                         " is in none of the files (the files cover the elements of another "
-                                         "decomposition or mesh)");
-      requireInput(holders.size() == 1, set + ": global element id " + std::to_string(g + 1) +
-                                            " is in the files of ranks " + rankList(holders) +
-                                            " (pieces of two decompositions or meshes)");
-    }
-    // Nodes: each in a file at least, held by as many files as each holder's maps say, at one place.
-    struct Copy {
-      GlobalIndex holder, holders;
-      const double* x;
-    };
-    std::vector<std::vector<Copy>> nodeCopies(static_cast<std::size_t>(numNodes / numRanks + 1));
-    for (std::size_t k = 0, c = 0; k < nodes.size(); k += 3, c += 3)
-      nodeCopies[nodes[k] / numRanks].push_back({nodes[k + 1], nodes[k + 2], coordinates.data() + c});
-    const double tolerance = 1e-12 * std::max(extent, 1.0);
-    for (GlobalIndex g = rank; g < numNodes; g += numRanks) {
-      const auto& copies = nodeCopies[g / numRanks];
-      const std::string node = set + ": global node id " + std::to_string(g + 1);
-      requireInput(!copies.empty(), node + " is in none of the files (the files cover the nodes of another "
-                                           "decomposition or mesh)");
-      std::vector<GlobalIndex> holders;
-      for (const Copy& c : copies) holders.push_back(c.holder);
-      for (const Copy& c : copies) {
-        requireInput(c.holders == static_cast<GlobalIndex>(copies.size()),
-                     node + " is in the files of ranks " + rankList(holders) + ", but the communication maps of " +
-                         file(c.holder) + " share it with " + std::to_string(c.holders - 1) +
-                         " other file(s) (pieces of two decompositions or meshes)");
-        for (int i = 0; i < 3; ++i)
-          if (std::abs(c.x[i] - copies.front().x[i]) > tolerance) {
-            std::ostringstream where;
-            where.precision(9);
-            for (const Copy* copy : {&copies.front(), &c}) {
-              where << (copy == &c ? " and (" : " (");
-              for (int j = 0; j < dim; ++j) where << (j > 0 ? ", " : "") << copy->x[j];
-              where << ") in " << file(copy->holder);
-            }
-            throw InputError(node + " lies at different places:" + where.str() + " (pieces of two meshes)");
-          }
-      }
-    }
+    requireEachElementOnce(elements, recorded.elements, rank, numRanks, names);
+    requireNodesAgree(nodes, coordinates, recorded.nodes, rank, numRanks, dim, 1e-12 * std::max(out.extent, 1.0),
+                      names);
   } catch (...) {
     failure = std::current_exception();
   }

@@ -84,7 +84,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   const Teuchos::RCP<const Map>& ownedNodeMap() const;
   /// Columns: σ_xx σ_yy σ_zz σ_xy [σ_yz σ_xz] von Mises, one row per owned element.
   Teuchos::RCP<MultiVector> elementStresses(const Vector& x) const;
-  static std::vector<std::string> elementStressNames(int dimension) { return PostProcessing::elementStressNames(dimension); }
+  static std::vector<std::string> elementStressNames(int dimension, bool axisymmetric = false) {
+    return PostProcessing::elementStressNames(dimension, axisymmetric);
+  }
   std::vector<NodeSetReaction> reactions(const Vector& x, double loadFactor) const;
 
   // Contact results at the last committed state.

@@ -16,15 +16,16 @@ PostProcessing::PostProcessing(const deck::ProblemDefinition& problem, const Dof
                                const SolidAssembler& solids, const ContactAssembly& contact)
     : problem_(problem), layout_(layout), solids_(solids), contact_(contact) {}
 
-std::vector<std::string> PostProcessing::elementStressNames(int dimension) {
-  if (dimension == 2) return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "von_mises"};
+std::vector<std::string> PostProcessing::elementStressNames(int dimension, bool axisymmetric) {
+  // Revolved about y (x = r): the out-of-plane component is the hoop stress σ_θθ.
+  if (dimension == 2) return {"stress_xx", "stress_yy", axisymmetric ? "stress_hoop" : "stress_zz", "stress_xy", "von_mises"};
   return {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"};
 }
 
 RCP<MultiVector> PostProcessing::elementStresses(const double* u) const {
   const int dim = layout_.dimension();
   const auto sigmas = solids_.elementStresses(u);
-  const auto names = elementStressNames(dim);
+  const auto names = elementStressNames(dim, problem_.axisymmetric);
   auto out = rcp(new MultiVector(layout_.elementMap(), names.size()));
   const std::vector<std::pair<int, int>> comps = dim == 2
       ? std::vector<std::pair<int, int>>{{0, 0}, {1, 1}, {2, 2}, {0, 1}}

@@ -29,8 +29,8 @@ class PostProcessing {
   PostProcessing(const deck::ProblemDefinition& problem, const DofLayout& layout, const SolidAssembler& solids,
                  const ContactAssembly& contact);
 
-  /// Columns: σ_xx σ_yy σ_zz σ_xy [σ_yz σ_xz] von Mises.
-  static std::vector<std::string> elementStressNames(int dimension);
+  /// Columns: σ_xx σ_yy σ_zz σ_xy [σ_yz σ_xz] von Mises (axisymmetric: σ_zz is the hoop stress, stress_hoop).
+  static std::vector<std::string> elementStressNames(int dimension, bool axisymmetric = false);
   /// One row per owned element at the overlapped displacement `u`.
   Teuchos::RCP<MultiVector> elementStresses(const double* u) const;
   /// The net nodal force (f_int + contact − λ f_ext, owned) summed over each of the deck's reaction node

@@ -8,12 +8,14 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <algorithm>
 #include <functional>
 
 #include <Teuchos_CommHelpers.hpp>
 
 #include "common/Error.hpp"
 #include "common/Version.hpp"
+#include "io/DecomposedMesh.hpp"
 #include "io/ExodusResults.hpp"
 #include "io/OutputWriteError.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
@@ -52,6 +54,29 @@ const std::vector<std::string> kFixedColumns = {"step", "lambda", "dlambda", "be
                                                 "new_events", "stick", "slip", "residual_norm", "wall_s",
                                                 "linear_iterations"};
 
+const char* const kAxes[] = {"x", "y", "z"};
+
+// Whether the deck asked for a set's reaction columns (Reaction Node Sets): a Reaction Force history
+// request may have added its set to the model's list (deck::HistoryRequest::addedReactionSet).
+bool hasReactionColumns(const deck::ProblemDefinition& problem, const std::string& set) {
+  return std::none_of(problem.history.begin(), problem.history.end(),
+                      [&set](const deck::HistoryRequest& r) { return r.addedReactionSet && r.nodeSet == set; });
+}
+
+// The history's columns before the point histories: the fixed ones, then each reaction node set's and
+// each interface's contact force, one per component.
+std::vector<std::string> forceColumns(const deck::ProblemDefinition& problem,
+                                      const model::ContactMechanicsModel& model) {
+  const int dim = problem.dimension();
+  std::vector<std::string> columns = kFixedColumns;
+  for (const auto& set : problem.reactionNodeSets)
+    if (hasReactionColumns(problem, set))
+      for (int c = 0; c < dim; ++c) columns.push_back("reaction_" + set + "_" + kAxes[c]);
+  for (const auto& [name, force] : model.contactForces())
+    for (int c = 0; c < dim; ++c) columns.push_back("contact_force_" + columnName(name) + "_" + kAxes[c]);
+  return columns;
+}
+
 // A map of the given global ids, in that order, on this rank (others have their own).
 RCP<const model::Map> mapOf(const std::vector<model::GO>& ids, const RCP<const model::Comm>& comm) {
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
@@ -70,8 +95,16 @@ std::string version() {
   return std::string(kVersion) + (git.empty() || git == "unknown" ? "" : " " + git);
 }
 
-// Exodus records: who wrote the file, when, from which command and deck.
-io::ExodusRecords runRecords(const std::string& title, const RunDescription& run, int ranks) {
+std::string formatNumber(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", x);
+  return text;
+}
+
+// Exodus records: who wrote the file, when, from which command and deck, and the node (Exodus
+// numbering) each point history at given coordinates measures.
+io::ExodusRecords runRecords(const std::string& title, const RunDescription& run, int ranks,
+                             const std::vector<deck::HistoryRequest>& histories) {
   io::ExodusRecords records;
   records.title = title.empty() ? "Contessa results" : title;
   records.qa.push_back({"contessa", version(), formatTime("%Y/%m/%d"), formatTime("%H:%M:%S")});
@@ -80,6 +113,12 @@ io::ExodusRecords runRecords(const std::string& title, const RunDescription& run
   records.info = {"Contessa " + version(),
                   "run " + formatTime("%Y-%m-%d %H:%M:%S") + " on " + std::to_string(ranks) + " rank(s), host " + host};
   if (!run.commandLine.empty()) records.info.push_back("command: " + run.commandLine);
+  for (const auto& request : histories) {
+    if (request.node < 0) continue;
+    std::string at;
+    for (double x : request.nodeCoordinates) at += (at.empty() ? "" : ", ") + formatNumber(x);
+    records.info.push_back("history " + request.name + ": node " + std::to_string(request.node + 1) + " at (" + at + ")");
+  }
   if (!run.deck.empty()) {
     records.info.push_back("deck as run (after --set overrides):");
     records.info.insert(records.info.end(), run.deck.begin(), run.deck.end());
@@ -95,9 +134,34 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     : problem_(problem), model_(model), printTable_(printTable) {
   const auto comm = model.ownedDofMap()->getComm();
   root_ = comm->getRank() == 0;
-  const int dim = problem.dimension();
-  const mesh::DistributedMesh& part = problem.mesh;
   perRank_ = problem.exodusPerRank;
+  makeFileMaps();
+  columns_ = forceColumns(problem, model);
+  histories_ = std::make_unique<PointHistories>(problem, model, columns_);
+  columns_.insert(columns_.end(), histories_->columns().begin(), histories_->columns().end());
+  const int ranks = comm->getSize();
+  exodusPath_ = directory + "/" + name + ".exo" + (perRank_ ? "." + std::to_string(ranks) + ".*" : "");
+  historyPath_ = directory + "/" + name + ".history.csv";
+  ExodusSetup exodus{exodusFields(), runRecords(problem.title, run, ranks, problem.history), rigidSurfaceBlocks(),
+                     directory + "/" + name + ".exo", restartRows};
+  openFiles(directory, name, exodus);
+  if (restartRows != nullptr) {
+    for (const auto& row : *restartRows)
+      requireInput(row.size() == columns_.size(), "restart file: a history row has " + std::to_string(row.size()) +
+                                                      " columns, this deck's history " + std::to_string(columns_.size()));
+    rows_ = *restartRows;
+  }
+  if (root_ && printTable_) {
+    std::printf("%5s %12s %12s %7s %4s %6s %7s %11s %9s\n", "incr", "lambda", "dlambda", "beta", "att", "newton",
+                "contact", "|f|", "time[s]");
+    std::fflush(stdout);
+  }
+}
+
+void ResultsOutput::makeFileMaps() {
+  const auto comm = model_.ownedDofMap()->getComm();
+  const int dim = problem_.dimension();
+  const mesh::DistributedMesh& part = problem_.mesh;
   if (perRank_) {
     // Each rank's file is its part of the mesh: the elements it assembles and the nodes they use.
     piece_ = &part.part;
@@ -112,25 +176,21 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
     fileElementMap_ = rootMap(part.numGlobalElements, comm);
     fileNodeMap_ = rootMap(part.numGlobalNodes, comm);
   }
-  dofToFile_ = rcp(new model::Import(model.ownedDofMap(), fileDofMap_));
-  elementToFile_ = rcp(new model::Import(model.ownedElementMap(), fileElementMap_));
-  nodeToFile_ = rcp(new model::Import(model.ownedNodeMap(), fileNodeMap_));
+  dofToFile_ = rcp(new model::Import(model_.ownedDofMap(), fileDofMap_));
+  elementToFile_ = rcp(new model::Import(model_.ownedElementMap(), fileElementMap_));
+  nodeToFile_ = rcp(new model::Import(model_.ownedNodeMap(), fileNodeMap_));
+}
 
-  columns_ = kFixedColumns;
-  const char* axes[] = {"x", "y", "z"};
-  for (const auto& set : problem.reactionNodeSets)
-    for (int c = 0; c < dim; ++c) columns_.push_back("reaction_" + set + "_" + axes[c]);
-  for (const auto& [name, force] : model.contactForces())
-    for (int c = 0; c < dim; ++c) columns_.push_back("contact_force_" + columnName(name) + "_" + axes[c]);
-
+std::vector<io::ExodusSurfaceBlock> ResultsOutput::rigidSurfaceBlocks() {
   // Rigid contact surfaces are not part of the mesh: each becomes a block of its own, named after its
   // interface, so that ParaView shows the plate moving with λ: its facets on its points, segments (BAR2)
   // in 2D, quadrilaterals (SHELL4, drawn as surfaces) in 3D.
+  const int dim = problem_.dimension();
   std::vector<io::ExodusSurfaceBlock> surfaceBlocks;
-  for (const auto& contact : problem.contacts) {
+  for (const auto& contact : problem_.contacts) {
     if (!contact.rigidMaster) continue;
     std::string blockName = contact.name;
-    if (part.local().hasBlock(blockName)) blockName += "_rigid";
+    if (problem_.mesh.local().hasBlock(blockName)) blockName += "_rigid";
     const auto& surface = contact.rigidSurface;
     io::ExodusSurfaceBlock block{blockName, surface.points, contact.nodesPerFacet(),
                                  {surface.facets.begin(), surface.facets.end()}};
@@ -139,143 +199,139 @@ ResultsOutput::ResultsOutput(const deck::ProblemDefinition& problem, const model
                                           std::vector<double>(surface.motion.begin(), surface.motion.end())});
     surfaceBlocks.push_back(std::move(block));
   }
+  return surfaceBlocks;
+}
 
-  const int ranks = comm->getSize();
-  exodusPath_ = directory + "/" + name + ".exo" + (perRank_ ? "." + std::to_string(ranks) + ".*" : "");
-  historyPath_ = directory + "/" + name + ".history.csv";
+io::ExodusFields ResultsOutput::exodusFields() const {
+  const int dim = problem_.dimension();
   io::ExodusFields fields;
-  for (int c = 0; c < dim; ++c) fields.nodal.push_back(std::string("displ_") + axes[c]);
-  if (model.hasContact())
+  for (int c = 0; c < dim; ++c) fields.nodal.push_back(std::string("displ_") + kAxes[c]);
+  if (model_.hasContact())
     for (const auto& f : model::ContactMechanicsModel::contactFieldNames()) fields.nodal.push_back(f);
-  fields.element = model::ContactMechanicsModel::elementStressNames(dim);
+  fields.element = model::ContactMechanicsModel::elementStressNames(dim, problem_.axisymmetric);
   // The history's reactions and contact forces are globals too: force-displacement curves can
   // be plotted from the Exodus file alone, under the same names.
   fields.global = kGlobals;
   fields.global.insert(fields.global.end(), columns_.begin() + kFixedColumns.size(), columns_.end());
-  // A restart re-creates each Exodus file with the steps up to the restart file's increment, copied
-  // from the file it replaces (set aside until then, and put back if that fails).
-  const auto continuing = [&](const std::string& path, const std::function<void()>& create) {
-    if (restartRows == nullptr) return create();
-    const std::string old = path + ".before-restart";
-    requireInput(std::filesystem::exists(path) || std::filesystem::exists(old),
-                 path + ": the results file of the run to continue is missing (a restart appends to it; with Exodus "
-                        "Layout = Per Rank, run on as many ranks as before)");
-    std::error_code ec;
-    if (std::filesystem::exists(path)) std::filesystem::rename(path, old, ec);
-    requireInput(!ec, path + ": cannot set the results file aside for the restart (" + ec.message() + ")");
-    try {
-      create();
-      exodus_->copySteps(io::ExodusResults(old), static_cast<int>(restartRows->size()));
-    } catch (...) {
-      exodus_.reset();
-      std::filesystem::rename(old, path, ec);
-      throw;
-    }
-    std::filesystem::remove(old, ec);
-  };
-  // One file: rank 0 writes the whole mesh, gathered from the parts for the writer only.
-  const mesh::Mesh whole = perRank_ ? mesh::Mesh{} : mesh::gatherMeshOnRoot(part);
-  const auto createExodus = [&]() {
-    if (!perRank_) {
-      continuing(exodusPath_, [&] {
-        exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, whole, fields, runRecords(problem.title, run, ranks),
-                                                     surfaceBlocks, nullptr, io::ExodusNaming::AtFirstStep);
-      });
-      return;
-    }
-    // The rigid surfaces are drawn by rank 0's piece; the other pieces hold their blocks empty.
-    io::ExodusDecomposition decomposition;
-    decomposition.processor = comm->getRank();
-    decomposition.processors = ranks;
-    decomposition.globalNodes = piece_->globalNodes;
-    decomposition.globalElements = piece_->globalElements;
-    decomposition.sharedWith = piece_->sharedWith;
-    decomposition.globalNumNodes = part.numGlobalNodes;
-    decomposition.globalNumElements = part.numGlobalElements;
-    decomposition.globalBlockSizes = part.globalBlockSizes;
-    std::vector<io::ExodusSurfaceBlock> pieceSurfaces = surfaceBlocks;
-    for (auto& surface : pieceSurfaces) {
-      const auto points = static_cast<mesh::GlobalIndex>(surface.points.size()) / dim;
-      const mesh::GlobalIndex elements = surface.numElements();
-      decomposition.globalBlockSizes.push_back(elements);
-      if (root_) {
-        for (mesh::GlobalIndex p = 0; p < points; ++p) decomposition.globalNodes.push_back(decomposition.globalNumNodes + p);
-        for (mesh::GlobalIndex e = 0; e < elements; ++e)
-          decomposition.globalElements.push_back(decomposition.globalNumElements + e);
-      } else {
-        surface.points.clear();
-        surface.connectivity.clear();
-      }
-      decomposition.globalNumNodes += points;
-      decomposition.globalNumElements += elements;
-    }
-    if (!root_) rigidSurfaces_.clear();
-    const std::string piecePath = mesh::decomposedFileName(directory + "/" + name + ".exo", ranks, comm->getRank());
-    continuing(piecePath, [&] {
-      exodus_ = std::make_unique<io::ExodusWriter>(piecePath, piece_->mesh, fields, runRecords(problem.title, run, ranks),
-                                                   pieceSurfaces, &decomposition, io::ExodusNaming::AtFirstStep);
-    });
-  };
+  return fields;
+}
+
+void ResultsOutput::openFiles(const std::string& directory, const std::string& name, const ExodusSetup& exodus) {
   // Rank 0 takes the lock before any file is created, so a second run on the same files stops before
   // it touches them; per rank, every rank creates its piece once the lock is held. The history is
   // created (replacing an earlier run's) once every Exodus file is.
+  const auto& comm = *model_.ownedDofMap()->getComm();
+  // One file: rank 0 writes the whole mesh, gathered from the parts (collective) for the writer only.
+  const mesh::Mesh whole = perRank_ ? mesh::Mesh{} : mesh::gatherMeshOnRoot(problem_.mesh);
   std::string error;
   if (root_) {
     try {
       lock_ = std::make_unique<io::OutputLock>(directory, name);
       warning_ = lock_->warning();
-      if (!perRank_) createExodus();
+      if (!perRank_) createWholeExodus(whole, exodus);
     } catch (const std::exception& e) {
       error = e.what();
       exodus_.reset();
       lock_.reset();
     }
   }
-  error = model::firstMessageOfAnyRank(*comm, error);
+  error = model::firstMessageOfAnyRank(comm, error);
   if (!error.empty()) throw InputError(error);
   if (perRank_) {
     try {
-      createExodus();
+      createPieceExodus(exodus);
     } catch (const std::exception& e) {
       error = e.what();
     }
   }
-  if (root_ && error.empty()) {
-    try {
-      const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
-                                                       "new_contacts", "new_events", "stick", "slip",
-                                                       "linear_iterations"};
-      // A directory in the way would only show at the rename: say it now, as creating the file would.
-      if (std::filesystem::is_directory(historyPath_))
-        throw io::OutputWriteError(historyPath_, "cannot create", std::strerror(EISDIR));
-      history_ = std::make_unique<io::HistoryWriter>(historyStartingPath(), columns_, integerColumns);
-      if (restartRows != nullptr) {
-        for (const auto& row : *restartRows) history_->writeRow(row);
-        nameHistory();
-      }
-    } catch (const std::exception& e) {
-      error = e.what();
-      const std::size_t at = error.find(historyStartingPath());  // the history by its name
-      if (at != std::string::npos) error.replace(at, historyStartingPath().size(), historyPath_);
-    }
-  }
-  error = model::firstMessageOfAnyRank(*comm, error);
+  if (root_ && error.empty()) error = createHistory(exodus.restartRows);
+  error = model::firstMessageOfAnyRank(comm, error);
   if (!error.empty()) {
     removeUnwrittenFiles();
     lock_.reset();
     throw InputError(error);
   }
-  if (restartRows != nullptr) {
-    for (const auto& row : *restartRows)
-      requireInput(row.size() == columns_.size(), "restart file: a history row has " + std::to_string(row.size()) +
-                                                      " columns, this deck's history " + std::to_string(columns_.size()));
-    rows_ = *restartRows;
+}
+
+void ResultsOutput::createWholeExodus(const mesh::Mesh& whole, const ExodusSetup& exodus) {
+  continueRun(exodusPath_, exodus.restartRows, [&] {
+    exodus_ = std::make_unique<io::ExodusWriter>(exodusPath_, whole, exodus.fields, exodus.records, exodus.surfaces,
+                                                 nullptr, io::ExodusNaming::AtFirstStep);
+  });
+}
+
+void ResultsOutput::createPieceExodus(const ExodusSetup& exodus) {
+  // The rigid surfaces are drawn by rank 0's piece; the other pieces hold their blocks empty.
+  const int dim = problem_.dimension();
+  io::ExodusDecomposition decomposition = io::decompositionOf(problem_.mesh);
+  std::vector<io::ExodusSurfaceBlock> pieceSurfaces = exodus.surfaces;
+  for (auto& surface : pieceSurfaces) {
+    const auto points = static_cast<mesh::GlobalIndex>(surface.points.size()) / dim;
+    const mesh::GlobalIndex elements = surface.numElements();
+    decomposition.globalBlockSizes.push_back(elements);
+    if (root_) {
+      for (mesh::GlobalIndex p = 0; p < points; ++p) decomposition.globalNodes.push_back(decomposition.globalNumNodes + p);
+      for (mesh::GlobalIndex e = 0; e < elements; ++e)
+        decomposition.globalElements.push_back(decomposition.globalNumElements + e);
+    } else {
+      surface.points.clear();
+      surface.connectivity.clear();
+    }
+    decomposition.globalNumNodes += points;
+    decomposition.globalNumElements += elements;
   }
-  if (root_ && printTable_) {
-    std::printf("%5s %12s %12s %7s %4s %6s %7s %11s %9s\n", "incr", "lambda", "dlambda", "beta", "att", "newton",
-                "contact", "|f|", "time[s]");
-    std::fflush(stdout);
+  if (!root_) rigidSurfaces_.clear();
+  const std::string piecePath =
+      mesh::decomposedFileName(exodus.base, decomposition.processors, decomposition.processor);
+  continueRun(piecePath, exodus.restartRows, [&] {
+    exodus_ = std::make_unique<io::ExodusWriter>(piecePath, piece_->mesh, exodus.fields, exodus.records,
+                                                 pieceSurfaces, &decomposition, io::ExodusNaming::AtFirstStep);
+  });
+}
+
+void ResultsOutput::continueRun(const std::string& path, const std::vector<std::vector<double>>* restartRows,
+                                const std::function<void()>& create) {
+  // A restart re-creates each Exodus file with the steps up to the restart file's increment, copied
+  // from the file it replaces (set aside until then, and put back if that fails).
+  if (restartRows == nullptr) return create();
+  const std::string old = path + ".before-restart";
+  requireInput(std::filesystem::exists(path) || std::filesystem::exists(old),
+               path + ": the results file of the run to continue is missing (a restart appends to it; with Exodus "
+                      "Layout = Per Rank, run on as many ranks as before)");
+  std::error_code ec;
+  if (std::filesystem::exists(path)) std::filesystem::rename(path, old, ec);
+  requireInput(!ec, path + ": cannot set the results file aside for the restart (" + ec.message() + ")");
+  try {
+    create();
+    exodus_->copySteps(io::ExodusResults(old), static_cast<int>(restartRows->size()));
+  } catch (...) {
+    exodus_.reset();
+    std::filesystem::rename(old, path, ec);
+    throw;
   }
+  std::filesystem::remove(old, ec);
+}
+
+std::string ResultsOutput::createHistory(const std::vector<std::vector<double>>* restartRows) {
+  try {
+    const std::vector<std::string> integerColumns = {"step", "attempts", "newton_iterations", "active_contacts",
+                                                     "new_contacts", "new_events", "stick", "slip",
+                                                     "linear_iterations"};
+    // A directory in the way would only show at the rename: say it now, as creating the file would.
+    if (std::filesystem::is_directory(historyPath_))
+      throw io::OutputWriteError(historyPath_, "cannot create", std::strerror(EISDIR));
+    history_ = std::make_unique<io::HistoryWriter>(historyStartingPath(), columns_, integerColumns);
+    if (restartRows != nullptr) {
+      for (const auto& row : *restartRows) history_->writeRow(row);
+      nameHistory();
+    }
+  } catch (const std::exception& e) {
+    std::string error = e.what();
+    const std::size_t at = error.find(historyStartingPath());  // the history by its name
+    if (at != std::string::npos) error.replace(at, historyStartingPath().size(), historyPath_);
+    return error;
+  }
+  return "";
 }
 
 ResultsOutput::~ResultsOutput() { removeUnwrittenFiles(); }
@@ -303,33 +359,12 @@ void ResultsOutput::nameHistory() {
 
 void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::IncrementReport& report) {
   timers::Scope timed(timers::Phase::Output);
-  const int dim = problem_.dimension();
   const auto& comm = *model_.ownedDofMap()->getComm();
   // Collective part: every rank computes and sends what the Exodus files show (to rank 0's file, or
-  // to each rank's piece).
-  model::Vector fileX(fileDofMap_);
-  fileX.doImport(x, *dofToFile_, Tpetra::INSERT);
-  const auto stresses = model_.elementStresses(x);
-  model::MultiVector fileStress(fileElementMap_, stresses->getNumVectors());
-  fileStress.doImport(*stresses, *elementToFile_, Tpetra::INSERT);
-  const auto reactions = model_.reactions(x, report.lambda);
+  // to each rank's piece), and the history row (its sums are known everywhere).
+  const FileValues values = fileValues(x);
   const auto counts = model_.contactCounts();
-  const auto contactForces = model_.contactForces();
-  model::MultiVector fileContact(fileNodeMap_, 4);
-  if (model_.hasContact()) fileContact.doImport(*model_.contactNodalFields(), *nodeToFile_, Tpetra::INSERT);
-
-  // The history row (its reactions and contact forces are sums over the ranks, known everywhere).
-  std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
-                             static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
-                             static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
-                             static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
-                             static_cast<double>(counts.slip),
-                             report.residualNorm, report.wallSeconds,
-                             static_cast<double>(report.linearIterations)};
-  for (const auto& r : reactions)
-    for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
-  for (const auto& [name, force] : contactForces)
-    for (int c = 0; c < dim; ++c) row.push_back(force[c]);
+  const std::vector<double> row = historyRow(x, report, counts);
 
   const std::string stepText = "cannot write step " + std::to_string(report.step);
   const auto describe = [this, &stepText](const std::exception& e) {
@@ -348,35 +383,7 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   std::string error;
   try {
     if (history_) history_->reserveRow();
-    if (exodus_) {
-      // Nodal values: the file's mesh nodes, then the rigid surfaces' points (displaced by λ · motion,
-      // no contact values of their own).
-      const auto meshNodes = static_cast<std::size_t>(fileNodeMap_->getNodeNumElements());
-      const auto totalNodes = static_cast<std::size_t>(exodus_->numNodes());
-      const auto u = fileX.getData(0);
-      std::vector<std::vector<double>> nodal(dim, std::vector<double>(totalNodes, 0.0));
-      for (std::size_t n = 0; n < meshNodes; ++n)
-        for (int c = 0; c < dim; ++c) nodal[c][n] = u[n * dim + c];
-      std::size_t point = meshNodes;
-      for (const auto& surface : rigidSurfaces_)
-        for (std::size_t p = 0; p < surface.points; ++p, ++point)
-          for (int c = 0; c < dim; ++c) nodal[c][point] = report.lambda * surface.motion[c];
-      if (model_.hasContact())
-        for (std::size_t v = 0; v < 4; ++v) {
-          const auto col = fileContact.getData(v);
-          nodal.emplace_back(col.begin(), col.end());
-          nodal.back().resize(totalNodes, 0.0);
-        }
-      std::vector<std::vector<double>> element(fileStress.getNumVectors());
-      for (std::size_t v = 0; v < element.size(); ++v) {
-        const auto col = fileStress.getData(v);
-        element[v].assign(col.begin(), col.end());
-      }
-      std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
-                                     static_cast<double>(report.newtonIterations)};
-      globals.insert(globals.end(), row.begin() + kFixedColumns.size(), row.end());
-      exodus_->writeStep(report.lambda, nodal, element, globals);
-    }
+    if (exodus_) writeExodusStep(values, report, counts, row);
   } catch (const std::exception& e) {
     error = describe(e) + kept();
   }
@@ -401,6 +408,69 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
                 report.wallSeconds);
     std::fflush(stdout);
   }
+}
+
+ResultsOutput::FileValues ResultsOutput::fileValues(const model::Vector& x) const {
+  const auto stresses = model_.elementStresses(x);
+  FileValues values{model::Vector(fileDofMap_), model::MultiVector(fileElementMap_, stresses->getNumVectors()),
+                    model::MultiVector(fileNodeMap_, 4)};
+  values.displacement.doImport(x, *dofToFile_, Tpetra::INSERT);
+  values.stress.doImport(*stresses, *elementToFile_, Tpetra::INSERT);
+  if (model_.hasContact()) values.contact.doImport(*model_.contactNodalFields(), *nodeToFile_, Tpetra::INSERT);
+  return values;
+}
+
+std::vector<double> ResultsOutput::historyRow(const model::Vector& x, const solvers::IncrementReport& report,
+                                              const contact::ContactCounts& counts) const {
+  const int dim = problem_.dimension();
+  std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
+                             static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
+                             static_cast<double>(counts.active), static_cast<double>(counts.newlyActive),
+                             static_cast<double>(report.newEvents), static_cast<double>(counts.stick),
+                             static_cast<double>(counts.slip),
+                             report.residualNorm, report.wallSeconds,
+                             static_cast<double>(report.linearIterations)};
+  const auto reactions = model_.reactions(x, report.lambda);
+  for (const auto& r : reactions)
+    if (hasReactionColumns(problem_, r.nodeSet))
+      for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
+  for (const auto& [name, force] : model_.contactForces())
+    for (int c = 0; c < dim; ++c) row.push_back(force[c]);
+  const auto histories = histories_->values(x, report.lambda, reactions);
+  row.insert(row.end(), histories.begin(), histories.end());
+  return row;
+}
+
+void ResultsOutput::writeExodusStep(const FileValues& values, const solvers::IncrementReport& report,
+                                    const contact::ContactCounts& counts, const std::vector<double>& row) {
+  // Nodal values: the file's mesh nodes, then the rigid surfaces' points (displaced by λ · motion,
+  // no contact values of their own).
+  const int dim = problem_.dimension();
+  const auto meshNodes = static_cast<std::size_t>(fileNodeMap_->getNodeNumElements());
+  const auto totalNodes = static_cast<std::size_t>(exodus_->numNodes());
+  const auto u = values.displacement.getData(0);
+  std::vector<std::vector<double>> nodal(dim, std::vector<double>(totalNodes, 0.0));
+  for (std::size_t n = 0; n < meshNodes; ++n)
+    for (int c = 0; c < dim; ++c) nodal[c][n] = u[n * dim + c];
+  std::size_t point = meshNodes;
+  for (const auto& surface : rigidSurfaces_)
+    for (std::size_t p = 0; p < surface.points; ++p, ++point)
+      for (int c = 0; c < dim; ++c) nodal[c][point] = report.lambda * surface.motion[c];
+  if (model_.hasContact())
+    for (std::size_t v = 0; v < 4; ++v) {
+      const auto col = values.contact.getData(v);
+      nodal.emplace_back(col.begin(), col.end());
+      nodal.back().resize(totalNodes, 0.0);
+    }
+  std::vector<std::vector<double>> element(values.stress.getNumVectors());
+  for (std::size_t v = 0; v < element.size(); ++v) {
+    const auto col = values.stress.getData(v);
+    element[v].assign(col.begin(), col.end());
+  }
+  std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
+                                 static_cast<double>(report.newtonIterations)};
+  globals.insert(globals.end(), row.begin() + kFixedColumns.size(), row.end());
+  exodus_->writeStep(report.lambda, nodal, element, globals);
 }
 
 void ResultsOutput::attemptFailed(const solvers::IncrementReport& report) {

@@ -5,6 +5,7 @@
 // each rank from what it holds; the history is written by rank 0. Whether the writes succeeded is then
 // agreed by all ranks, so that an output error ends the run on every rank instead of leaving the
 // others waiting in the next collective call.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "io/OutputLock.hpp"
 #include "mesh/MeshPiece.hpp"
 #include "model/ContactMechanicsModel.hpp"
+#include "output/PointHistories.hpp"
 #include "solvers/RunReports.hpp"
 
 namespace contessa::output {
@@ -72,6 +74,46 @@ class ResultsOutput : public solvers::IncrementObserver {
     std::vector<double> motion;  ///< displacement at λ = 1, one entry per component
   };
 
+  /// What the Exodus file(s) are made of.
+  struct ExodusSetup {
+    io::ExodusFields fields;
+    io::ExodusRecords records;
+    std::vector<io::ExodusSurfaceBlock> surfaces;  ///< the rigid surfaces, whole
+    std::string base;                              ///< <directory>/<name>.exo
+    const std::vector<std::vector<double>>* restartRows = nullptr;
+  };
+
+  /// What this rank's Exodus file shows of an increment, in the file's order.
+  struct FileValues {
+    model::Vector displacement;
+    model::MultiVector stress, contact;
+  };
+
+  /// Collective: the increment's values imported into the file maps.
+  FileValues fileValues(const model::Vector& x) const;
+  /// Collective: the history row (sums over the ranks, the same on every rank).
+  std::vector<double> historyRow(const model::Vector& x, const solvers::IncrementReport& report,
+                                 const contact::ContactCounts& counts) const;
+  /// This rank's Exodus step: nodal, element and global values.
+  void writeExodusStep(const FileValues& values, const solvers::IncrementReport& report,
+                       const contact::ContactCounts& counts, const std::vector<double>& row);
+  /// The maps of what this rank's file shows and the imports into them.
+  void makeFileMaps();
+  /// The rigid surfaces' blocks (and rigidSurfaces_, their motion).
+  std::vector<io::ExodusSurfaceBlock> rigidSurfaceBlocks();
+  io::ExodusFields exodusFields() const;
+  /// Collective: the lock, the Exodus file(s) and the history, in that order (InputError, and no file
+  /// left, when one cannot be made).
+  void openFiles(const std::string& directory, const std::string& name, const ExodusSetup& exodus);
+  /// Rank 0: the whole mesh's file.
+  void createWholeExodus(const mesh::Mesh& whole, const ExodusSetup& exodus);
+  /// Per rank: this rank's piece, the rigid surfaces in rank 0's.
+  void createPieceExodus(const ExodusSetup& exodus);
+  /// `create` makes the Exodus file `path`; for a restarted run, the old file's first steps are copied in.
+  void continueRun(const std::string& path, const std::vector<std::vector<double>>* restartRows,
+                   const std::function<void()>& create);
+  /// Rank 0: the history file (with the restart rows); the reason it cannot be made, "" if it can.
+  std::string createHistory(const std::vector<std::vector<double>>* restartRows);
   void removeUnwrittenFiles();
   std::string historyStartingPath() const;
   void nameHistory();
@@ -86,6 +128,7 @@ class ResultsOutput : public solvers::IncrementObserver {
   std::unique_ptr<io::ExodusWriter> exodus_;
   std::unique_ptr<io::HistoryWriter> history_;
   bool historyNamed_ = false;  ///< the history has its name (historyPath_), after its first row
+  std::unique_ptr<PointHistories> histories_;  ///< the deck's point histories, the history's last columns
   std::vector<std::string> columns_;
   std::vector<std::vector<double>> rows_;
   // What this rank's Exodus file shows (Single File: the whole mesh on rank 0, nothing elsewhere; Per

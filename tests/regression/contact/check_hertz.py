@@ -1,5 +1,9 @@
 #!/usr/bin/python3
-"""check_hertz.py EXO HISTORY [--R 10 --E 1000 --nu 0.3] [tolerances]
+"""check_hertz.py EXO HISTORY [--R 10 --E 1000 --nu 0.3] [--sphere] [tolerances]
+
+With --sphere: inputs/verification/hertz_axisymmetric.xml, the same quarter section revolved about the
+y axis (a hemisphere), compared with Hertz for a sphere, P = contact_force_flat_y (the full circumference):
+  a_H = (3 P R / (4 E*))^(1/3),  p0_H = 3 P / (2 pi a_H^2).
 
 Compares the contact pressure of inputs/verification/hertz_cylinder.xml (quarter cylinder on a rigid
 flat) with Hertz for the force P the run transmits (P = 2 x contact_force_flat_y):
@@ -34,10 +38,17 @@ parser.add_argument("--nu", type=float, default=0.3)
 parser.add_argument("--p0-rtol", type=float, default=1e-3)
 parser.add_argument("--a-rtol", type=float, default=2e-3)
 parser.add_argument("--profile-tol", type=float, default=2e-3)
+parser.add_argument("--sphere", action="store_true", help="axisymmetric sphere (Hertz for a sphere, P = force)")
 args = parser.parse_args()
 
-r = cr.hertz_analysis(args.exo, args.history, args.R, args.E, args.nu)
-print(f"P = {r['P']:.8f} N/mm (2 x contact_force_flat_y), a_H = {r['a_hertz']:.6f}, p0_H = {r['p0_hertz']:.6f}")
+if args.sphere:
+    r = cr.hertz_analysis(args.exo, args.history, args.R, args.E, args.nu, symmetry_factor=1.0,
+                          formula=cr.hertz_sphere)
+    print(f"P = {r['P']:.8f} N (contact_force_flat_y, full circumference), a_H = {r['a_hertz']:.6f}, "
+          f"p0_H = {r['p0_hertz']:.6f}")
+else:
+    r = cr.hertz_analysis(args.exo, args.history, args.R, args.E, args.nu)
+    print(f"P = {r['P']:.8f} N/mm (2 x contact_force_flat_y), a_H = {r['a_hertz']:.6f}, p0_H = {r['p0_hertz']:.6f}")
 print(f"contact nodes {r['contact_nodes']}, element size at the axis {r['h0']:.5f}, at the edge {r['h_edge']:.5f}")
 checks = [
     ("peak pressure", f"p0 = {r['p0']:.6f}, error {r['p0_error']:+.2e}", abs(r["p0_error"]) <= args.p0_rtol,

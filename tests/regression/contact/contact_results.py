@@ -71,9 +71,19 @@ def hertz(P, R, E, nu):
     return a, 2.0 * P / (math.pi * a)
 
 
+def hertz_sphere(P, R, E, nu):
+    """Contact radius a and peak pressure p0 of a sphere (radius R, E, nu) on a rigid flat under the total
+    force P: a = (3 P R / (4 E*))^(1/3), p0 = 3 P / (2 pi a^2), E* = E/(1-nu^2) (Johnson, Contact
+    Mechanics, eq. 4.22-4.23). The pressure is the same ellipse as the cylinder's, p0 sqrt(1 - r^2/a^2)."""
+    e_star = E / (1.0 - nu * nu)
+    a = (3.0 * P * R / (4.0 * e_star)) ** (1.0 / 3.0)
+    return a, 3.0 * P / (2.0 * math.pi * a * a)
+
+
 def hertz_analysis(exo, history, R, E, nu, interface="flat", surface="outer", symmetry_factor=2.0,
-                   interior=0.8):
-    """Compares the contact pressure of a cylinder quarter/half model with Hertz.
+                   interior=0.8, formula=hertz):
+    """Compares the contact pressure of a cylinder quarter/half model (or, with formula=hertz_sphere and
+    symmetry_factor=1, an axisymmetric sphere, whose forces are those of the full circumference) with Hertz.
 
     The contact nodes are those of the `surface` node set with contact_pressure > 0 at the last step,
     sorted by |X| (reference x, distance from the symmetry line x = 0 through the initial contact point:
@@ -84,7 +94,7 @@ def hertz_analysis(exo, history, R, E, nu, interface="flat", surface="outer", sy
     last = rows[-1]
     force = last[f"contact_force_{interface}_y"]
     P = symmetry_factor * force
-    a_h, p0_h = hertz(P, R, E, nu)
+    a_h, p0_h = formula(P, R, E, nu)
     nodes = res.node_set(surface)
     x = np.abs(res.x[nodes])
     order = np.argsort(x)

@@ -174,3 +174,48 @@ TEST(ExodusWriter, PathThatIsADirectoryNamesTheSystemReason) {
     EXPECT_EQ(e.reason(), "Is a directory");
   }
 }
+
+// A piece of a decomposed set records the whole set's node set and side set sizes (Nemesis' global set
+// records, which ex_put_init_global defines but leaves unwritten).
+TEST(ExodusWriter, DecomposedPieceRecordsTheGlobalSetSizes) {
+  mesh::RectangleSpec spec;
+  spec.nx = 2;
+  spec.ny = 1;
+  const mesh::Mesh mesh = mesh::generateRectangle(spec);  // node sets and side sets left, right, bottom, top, ...
+  io::ExodusDecomposition d;
+  for (mesh::GlobalIndex n = 0; n < mesh.numNodes(); ++n) d.globalNodes.push_back(n);
+  for (mesh::GlobalIndex e = 0; e < mesh.numElements(); ++e) d.globalElements.push_back(e);
+  d.sharedWith.resize(static_cast<std::size_t>(mesh.numNodes()));
+  d.globalNumNodes = 100;
+  d.globalNumElements = 50;
+  d.globalBlockSizes = {50};
+  for (const auto& set : mesh.nodeSets) d.globalNodeSetSizes.push_back(static_cast<mesh::GlobalIndex>(set.nodes.size()) + 10);
+  for (const auto& set : mesh.sideSets) d.globalSideSetSizes.push_back(static_cast<mesh::GlobalIndex>(set.elements.size()) + 5);
+  const std::string path = tempPath("piece");
+  { ExodusWriter writer(path, mesh, {}, {}, {}, &d); }
+  int cpu = 8, io = 8;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ | EX_ALL_INT64_API, &cpu, &io, &version);
+  ASSERT_GE(id, 0);
+  const std::size_t nodeSets = mesh.nodeSets.size(), sideSets = mesh.sideSets.size();
+  ASSERT_GT(nodeSets, 0u);
+  ASSERT_GT(sideSets, 0u);
+  std::vector<int64_t> ids(nodeSets), counts(nodeSets), factors(nodeSets);
+  ASSERT_GE(ex_get_ns_param_global(id, ids.data(), counts.data(), factors.data()), 0);
+  for (std::size_t s = 0; s < nodeSets; ++s) {
+    EXPECT_EQ(ids[s], static_cast<int64_t>(s) + 1);
+    EXPECT_EQ(counts[s], d.globalNodeSetSizes[s]);
+    EXPECT_EQ(factors[s], 0);
+  }
+  ids.assign(sideSets, -1);
+  counts.assign(sideSets, -1);
+  factors.assign(sideSets, -1);
+  ASSERT_GE(ex_get_ss_param_global(id, ids.data(), counts.data(), factors.data()), 0);
+  for (std::size_t s = 0; s < sideSets; ++s) {
+    EXPECT_EQ(ids[s], static_cast<int64_t>(s) + 1);
+    EXPECT_EQ(counts[s], d.globalSideSetSizes[s]);
+    EXPECT_EQ(factors[s], 0);
+  }
+  ex_close(id);
+  std::remove(path.c_str());
+}

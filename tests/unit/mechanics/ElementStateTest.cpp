@@ -7,15 +7,11 @@
 namespace contessa::mechanics::test {
 namespace {
 
-/// The three sample elements of dimension D.
-std::vector<std::vector<double>> sampleElements(int D) { return D == 2 ? distortedQuads() : distortedBricks(); }
-
 /// 2D: stretch, shear, rotation and a bending pattern (so α ≠ 0), scaled by `amplitude`; 3D:
-/// brickDeformation.
-std::vector<double> deformation(const std::vector<double>& X, double amplitude) {
-  if (X.size() == 24) return brickDeformation(X, amplitude);
+/// brickDeformation; other families familyDeformation.
+std::vector<double> deformation(const std::vector<double>& X, const ElementKernel& kernel, double amplitude) {
   const double H[2][2] = {{0.12, 0.08}, {-0.06, -0.1}};
-  return quadDeformation(X, H, 0.1, amplitude);
+  return familyDeformation(X, kernel, amplitude, H, 0.1);
 }
 
 std::vector<double> allCoordinates(const std::vector<std::vector<double>>& elements) {
@@ -49,7 +45,7 @@ class CountingMaterial final : public Material {
 class ElementState : public ElementMaterial {
  protected:
   const int D = kernel->dimension(), nd = kernel->numDofs();
-  const std::vector<std::vector<double>> elements = sampleElements(D);
+  const std::vector<std::vector<double>> elements = sampleElementsOf(*kernel);
 };
 
 TEST_P(ElementState, PrecomputedGeometryOfASetGivesTheSingleElementAnswer) {
@@ -59,7 +55,7 @@ TEST_P(ElementState, PrecomputedGeometryOfASetGivesTheSingleElementAnswer) {
   const int ns = kernel->numStateValues(), ni = kernel->numInternalVariables();
   ASSERT_GE(ns, ni);
   for (std::size_t e = 0; e < elements.size(); ++e) {
-    const auto u = deformation(elements[e], 1.0);
+    const auto u = deformation(elements[e], *kernel, 1.0);
     std::vector<double> state(ns, 0.0), internal(ni, 0.0);
     std::vector<double> f(nd), fSingle(nd), K(nd * nd), KSingle(nd * nd);
     ASSERT_EQ(kernel->evaluate(*geometry, static_cast<int>(e), u.data(), state.data(), *material, f.data(), K.data()),
@@ -95,7 +91,7 @@ TEST_P(ElementState, MirroredElementInASetIsInadmissibleAndLeavesTheOthersAlone)
   EXPECT_EQ(kernel->averageCauchyStress(*geometry, 1, zero.data(), state.data(), *material, s),
             ElementStatus::InadmissibleDeformation);
   for (int e : {0, 2}) {
-    const auto u = deformation(elements[e == 0 ? 0 : 1], 0.5);
+    const auto u = deformation(elements[e == 0 ? 0 : 1], *kernel, 0.5);
     std::vector<double> fresh(kernel->numStateValues(), 0.0);
     EXPECT_EQ(kernel->evaluate(*geometry, e, u.data(), fresh.data(), *material, f.data(), nullptr), ElementStatus::Ok);
   }
@@ -110,7 +106,7 @@ TEST_P(ElementState, TangentWithCarriedStateMatchesCentralDifferences) {
   const int ns = kernel->numStateValues();
   std::vector<double> state(ns, 0.0);
   std::vector<double> f(nd), K(nd * nd);
-  const auto u0 = deformation(Xe, 0.9), u = deformation(Xe, 1.0);
+  const auto u0 = deformation(Xe, *kernel, 0.9), u = deformation(Xe, *kernel, 1.0);
   ASSERT_EQ(kernel->evaluate(*geometry, 0, u0.data(), state.data(), *material, f.data(), K.data()), ElementStatus::Ok);
   const std::vector<double> base = state;
   ASSERT_EQ(kernel->evaluate(*geometry, 0, u.data(), state.data(), *material, f.data(), K.data()), ElementStatus::Ok);
@@ -146,7 +142,7 @@ std::vector<Case> warmStartCases() {
 class WarmStart : public ElementMaterial {
  protected:
   const int D = kernel->dimension(), nd = kernel->numDofs(), na = kernel->numInternalVariables();
-  const std::vector<double> X = sampleElements(D)[0];
+  const std::vector<double> X = sampleElementsOf(*kernel)[0];
   std::unique_ptr<ElementGeometry> geometry = kernel->referenceGeometry(1, X.data());
   /// How closely two local solves from different starts agree (relative to max |α|): each stops at
   /// ‖R_α‖ ≤ 1e-13 s (EnhancedStrainElement.hpp), i.e. within K_αα⁻¹ of that residual of α*. With the
@@ -162,7 +158,7 @@ class WarmStart : public ElementMaterial {
 };
 
 TEST_P(WarmStart, SmallChangeAfterAJacobianConvergesInOneLocalIteration) {
-  const auto u0 = deformation(X, 1.0);
+  const auto u0 = deformation(X, *kernel, 1.0);
   std::vector<double> state(kernel->numStateValues(), 0.0);
   std::vector<double> f(nd), K(nd * nd);
   ASSERT_EQ(kernel->evaluate(*geometry, 0, u0.data(), state.data(), *material, f.data(), K.data()), ElementStatus::Ok);
@@ -196,7 +192,7 @@ TEST_P(WarmStart, SmallChangeAfterAJacobianConvergesInOneLocalIteration) {
 TEST_P(WarmStart, LargeChangeGivesTheColdAnswerWithFewerIterations) {
   // A whole load increment (u0 → u1 = 1.1 u0 plus a rotation of 0.05 rad): the prediction is only
   // first order, but it is still closer than the last α, and the answer is the same.
-  const auto u0 = deformation(X, 0.8);
+  const auto u0 = deformation(X, *kernel, 0.8);
   const Tensor2 Q = rotation(0.05, D == 2 ? 0.0 : 1.0, D == 2 ? 0.0 : 1.0, 1.0);
   std::vector<double> u1(nd);
   for (int a = 0; a < kernel->numNodes(); ++a)
@@ -227,7 +223,7 @@ TEST_P(WarmStart, LargeChangeGivesTheColdAnswerWithFewerIterations) {
 TEST_P(WarmStart, AWildPredictionFallsBackToTheLastAlpha) {
   // Corrupt dα/du so that the predicted α inverts the element: the solve restarts from α itself and
   // reaches the same answer.
-  const auto u0 = deformation(X, 1.0), u1 = deformation(X, 1.05);
+  const auto u0 = deformation(X, *kernel, 1.0), u1 = deformation(X, *kernel, 1.05);
   std::vector<double> state(kernel->numStateValues(), 0.0);
   std::vector<double> f(nd), fReference(nd), K(nd * nd);
   ASSERT_EQ(kernel->evaluate(*geometry, 0, u0.data(), state.data(), *material, f.data(), K.data()), ElementStatus::Ok);
@@ -241,7 +237,7 @@ TEST_P(WarmStart, AWildPredictionFallsBackToTheLastAlpha) {
 }
 
 TEST_P(WarmStart, StateIsUnchangedWhenTheEvaluationFails) {
-  const auto u0 = deformation(X, 1.0);
+  const auto u0 = deformation(X, *kernel, 1.0);
   std::vector<double> state(kernel->numStateValues(), 0.0);
   std::vector<double> f(nd), K(nd * nd);
   ASSERT_EQ(kernel->evaluate(*geometry, 0, u0.data(), state.data(), *material, f.data(), K.data()), ElementStatus::Ok);

@@ -90,7 +90,10 @@ TEST(MaterialFactory, RejectsMissingOrNonPositiveYoungsModulus) {
 }
 
 TEST(ElementFactory, CreatesRegisteredKernels) {
-  EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced", "Hex8", "Hex8 Enhanced"}));
+  EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced", "Q4 Axisymmetric", "Q4 Enhanced Axisymmetric", "Hex8",
+                                                              "Hex8 Enhanced", "Tri3", "Tri6", "Q8", "Q9", "Tri3 Axisymmetric",
+                                                              "Tri6 Axisymmetric", "Q8 Axisymmetric", "Q9 Axisymmetric", "Tet4",
+                                                              "Tet10", "Hex20", "Wedge6", "Wedge15"}));
   const auto q4 = ElementFactory::create("Q4", "E");
   EXPECT_EQ(q4->name(), "Q4");
   EXPECT_EQ(q4->numDofs(), 8);
@@ -115,8 +118,10 @@ TEST(ElementFactory, CreatesRegisteredKernels) {
 }
 
 TEST(ElementFactory, UnknownNameListsKnownNames) {
-  EXPECT_EQ(messageOf([] { ElementFactory::create("Q9", "Problem/Discretization/Element"); }),
-            "Problem/Discretization/Element: unknown element 'Q9' (known: Q4, Q4 Enhanced, Hex8, Hex8 Enhanced)");
+  EXPECT_EQ(messageOf([] { ElementFactory::create("Q12", "Problem/Discretization/Element"); }),
+            "Problem/Discretization/Element: unknown element 'Q12' (known: Q4, Q4 Enhanced, Q4 Axisymmetric, Q4 "
+            "Enhanced Axisymmetric, Hex8, Hex8 Enhanced, Tri3, Tri6, Q8, Q9, Tri3 Axisymmetric, Tri6 Axisymmetric, Q8 "
+            "Axisymmetric, Q9 Axisymmetric, Tet4, Tet10, Hex20, Wedge6, Wedge15)");
 }
 
 }  // namespace

@@ -37,10 +37,19 @@ struct Case {
 };
 inline void PrintTo(const Case& c, std::ostream* os) { *os << c.element << " / " << c.material; }
 
-/// Every registered element with every registered law.
+/// The registered elements of plane strain and 3D (`axisymmetric` false) or the axisymmetric ones.
+inline std::vector<std::string> elementNames(bool axisymmetric) {
+  std::vector<std::string> names;
+  for (const auto& e : ElementFactory::names())
+    if (ElementFactory::create(e, "Test/Element")->axisymmetric() == axisymmetric) names.push_back(e);
+  return names;
+}
+
+/// Every registered element of plane strain and 3D with every registered law (the axisymmetric ones
+/// have tests of their own: a rigid radial motion strains them, AxisymmetricTest.cpp).
 inline std::vector<Case> allCases() {
   std::vector<Case> cases;
-  for (const auto& e : ElementFactory::names())
+  for (const auto& e : elementNames(false))
     for (const auto& m : MaterialFactory::names()) cases.push_back({e, m});
   return cases;
 }
@@ -162,6 +171,94 @@ inline std::vector<double> brickDeformation(const std::vector<double>& X, double
     u[3 * a + 2] -= amplitude * 0.05 * x[0] * x[0];
   }
   return u;
+}
+
+/// The sample elements of a kernel's family: for Q4 and Hex8 distortedQuads() / distortedBricks(); for
+/// every other family its parent nodes mapped through each of those bilinear / trilinear maps (so the
+/// quadratic elements get curved edges and off-centre mid-side nodes). Parent coordinates of triangles,
+/// tetrahedra and the wedges' triangles (in [0, 1]) are first stretched to [−1, 1], so that the corner
+/// nodes of a simplex land on corners of the carrier element.
+inline std::vector<std::vector<double>> sampleElementsOf(const ElementKernel& kernel,
+                                                         const std::vector<std::vector<double>>& carriers) {
+  const int D = kernel.dimension(), n = kernel.numNodes();
+  if ((D == 2 && n == 4) || (D == 3 && n == 8)) return carriers;
+  const std::string name = kernel.name();
+  const bool simplex = name.rfind("Tri", 0) == 0 || name.rfind("Tet", 0) == 0;
+  const bool wedge = name.rfind("Wedge", 0) == 0;
+  const auto xi = kernel.parentNodeCoordinates();
+  std::vector<std::vector<double>> elements;
+  for (const auto& carrier : carriers) {
+    std::vector<double> X(n * D, 0.0);
+    for (int a = 0; a < n; ++a) {
+      double p[3] = {};
+      for (int i = 0; i < D; ++i) {
+        p[i] = xi[D * a + i];
+        if (simplex || (wedge && i < 2)) p[i] = 2.0 * p[i] - 1.0;
+      }
+      // The carrier's multilinear map at p: corner c has parent signs (±1, ±1[, ±1]) in Exodus order.
+      const double sign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                 {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+      for (int c = 0; c < (D == 2 ? 4 : 8); ++c) {
+        double w = 1.0;
+        for (int i = 0; i < D; ++i) w *= 0.5 * (1.0 + sign[c][i] * p[i]);
+        for (int i = 0; i < D; ++i) X[D * a + i] += w * carrier[D * c + i];
+      }
+    }
+    elements.push_back(X);
+  }
+  return elements;
+}
+
+inline std::vector<std::vector<double>> sampleElementsOf(const ElementKernel& kernel) {
+  return sampleElementsOf(kernel, kernel.dimension() == 2 ? distortedQuads() : distortedBricks());
+}
+
+/// A finite deformation of an element of `kernel`'s family with reference coordinates X, scaled by
+/// `amplitude`: for Q4 quadDeformation (with the given homogeneous part H2 and hourglass size), for
+/// Hex8 brickDeformation; for the other families a smooth quadratic field with stretch, shear and
+/// bending (which every family represents only approximately, so the stress varies in the element).
+inline std::vector<double> familyDeformation(const std::vector<double>& X, const ElementKernel& kernel, double amplitude,
+                                             const double (&H2)[2][2], double hourglassSize) {
+  const int D = kernel.dimension(), n = kernel.numNodes();
+  if (D == 2 && n == 4) return quadDeformation(X, H2, hourglassSize, amplitude);
+  if (D == 3 && n == 8) return brickDeformation(X, amplitude);
+  std::vector<double> u(X.size());
+  for (int a = 0; a < n; ++a) {
+    const double* x = &X[D * a];
+    if (D == 2) {
+      u[2 * a] = amplitude * (H2[0][0] * x[0] + H2[0][1] * x[1] + 0.08 * x[0] * x[1]);
+      u[2 * a + 1] = amplitude * (H2[1][0] * x[0] + H2[1][1] * x[1] - 0.06 * x[0] * x[0]);
+    } else {
+      const double H[3][3] = {{0.12, 0.05, -0.04}, {-0.03, -0.08, 0.06}, {0.02, 0.04, 0.1}};
+      const Tensor2 R = rotation(0.5 * amplitude, 1.0, -2.0, 3.0);
+      double y[3];
+      for (int i = 0; i < 3; ++i) y[i] = x[i] + amplitude * (H[i][0] * x[0] + H[i][1] * x[1] + H[i][2] * x[2]);
+      for (int i = 0; i < 3; ++i) u[3 * a + i] = R[idx2(i, 0)] * y[0] + R[idx2(i, 1)] * y[1] + R[idx2(i, 2)] * y[2] - x[i];
+      u[3 * a] += amplitude * 0.1 * (x[2] - 0.5) * x[0];
+      u[3 * a + 2] -= amplitude * 0.05 * x[0] * x[0];
+    }
+  }
+  return u;
+}
+
+/// Number of zero pivots (below 1e-10 of the largest) of a symmetric n × n matrix by Gaussian
+/// elimination with full pivoting: the dimension of its null space.
+inline int nullity(std::vector<double> K, int n) {
+  double largest = maxAbs(K);
+  for (int k = 0; k < n; ++k) {
+    int pr = k, pc = k;
+    for (int r = k; r < n; ++r)
+      for (int c = k; c < n; ++c)
+        if (std::fabs(K[r * n + c]) > std::fabs(K[pr * n + pc])) pr = r, pc = c;
+    if (std::fabs(K[pr * n + pc]) <= 1e-10 * largest) return n - k;
+    for (int c = 0; c < n; ++c) std::swap(K[k * n + c], K[pr * n + c]);
+    for (int r = 0; r < n; ++r) std::swap(K[r * n + k], K[r * n + pc]);
+    for (int r = k + 1; r < n; ++r) {
+      const double f = K[r * n + k] / K[k * n + k];
+      for (int c = k; c < n; ++c) K[r * n + c] -= f * K[k * n + c];
+    }
+  }
+  return 0;
 }
 
 /// Reference element X mirrored through the plane y = 0: negatively oriented (a

@@ -1,0 +1,49 @@
+#pragma once
+// The values of the deck's point histories (Problem/Output/History, deck/OutputRequests.hpp) at a
+// converged increment: a node's displacement or a node set's mean, a node set's reaction or applied
+// force, an interface slave node's contact pressure or slip. Each rank adds what it owns and the sums
+// are reduced, so every rank gets the same row whichever rank owns the node.
+#include <string>
+#include <vector>
+
+#include "deck/ProblemDefinition.hpp"
+#include "model/ContactMechanicsModel.hpp"
+
+namespace contessa::output {
+
+class PointHistories {
+ public:
+  /// Throws InputError naming the request when one of its columns repeats another history column
+  /// (`taken`: the history's other columns) or another request's.
+  PointHistories(const deck::ProblemDefinition& problem, const model::ContactMechanicsModel& model,
+                 const std::vector<std::string>& taken);
+
+  /// The requests' columns, in deck order (also their Exodus globals).
+  const std::vector<std::string>& columns() const { return columns_; }
+  /// Collective: the values of columns() at the converged displacement `x` and load factor λ, given the
+  /// model's reactions there (over problem.reactionNodeSets).
+  std::vector<double> values(const model::Vector& x, double loadFactor,
+                             const std::vector<model::NodeSetReaction>& reactions) const;
+
+ private:
+  /// What this rank adds to one column: Σ weight · source[row] over its owned rows, plus a constant that
+  /// the load factor multiplies (Applied Force); Reaction Force columns are copied from the reactions.
+  struct Column {
+    enum class Source { Displacement, ContactPressure, ContactSlip, Reaction, Applied };
+    Source source = Source::Displacement;
+    std::vector<int> rows;          ///< owned local rows of x (displacement) or of the contact fields
+    std::vector<double> weights;    ///< per row
+    double appliedPerLoadFactor = 0;  ///< Applied: this rank's share of Σ f_ext on the set's nodes
+    std::size_t reaction = 0;       ///< Reaction: index into the reactions
+    int component = 0;
+  };
+
+  void addColumns(const deck::HistoryRequest& request);
+
+  const deck::ProblemDefinition& problem_;
+  const model::ContactMechanicsModel& model_;
+  std::vector<std::string> columns_;
+  std::vector<Column> sources_;
+};
+
+}  // namespace contessa::output

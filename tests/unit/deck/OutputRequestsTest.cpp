@@ -1,0 +1,90 @@
+// Point-history requests (Problem/Output/History): the node nearest given coordinates, the columns, and
+// a Reaction Force request's set handed to the model's reaction sets.
+#include <gtest/gtest.h>
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
+
+#include "deck/OutputRequests.hpp"
+#include "deck/ProblemDefinition.hpp"
+
+namespace {
+
+using contessa::deck::HistoryQuantity;
+using contessa::deck::HistoryRequest;
+
+// A 2 x 1 rectangle of 2 x 1 elements (nodes at x = 0, 1, 2 and y = 0, 1), left held in x, and `history`.
+contessa::deck::ProblemDefinition problemWith(const std::string& history) {
+  auto p = Teuchos::getParametersFromXmlString(R"XML(
+<ParameterList name="Problem">
+  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="Rectangle"/>
+    <Parameter name="Length X" type="double" value="2.0"/>
+    <Parameter name="Elements X" type="int" value="2"/>
+  </ParameterList>
+  <ParameterList name="Blocks">
+    <ParameterList name="block_1">
+      <Parameter name="Material" type="string" value="steel"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Materials">
+    <ParameterList name="steel">
+      <Parameter name="Model" type="string" value="Linear Elastic"/>
+      <Parameter name="Young's Modulus" type="double" value="200.0"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Dirichlet Conditions">
+    <ParameterList name="fix">
+      <Parameter name="Node Set" type="string" value="left"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Output">
+    <Parameter name="Reaction Node Sets" type="Array(string)" value="{left}"/>
+    <ParameterList name="History">)XML" + history + R"XML(</ParameterList>
+  </ParameterList>
+</ParameterList>)XML");
+  return contessa::deck::buildProblem(*p, "");
+}
+
+TEST(OutputRequests, NodeNearestCoordinates) {
+  const auto def = problemWith(R"XML(
+      <ParameterList name="tip"><Parameter name="Coordinates" type="Array(double)" value="{2.3, 0.8}"/></ParameterList>
+      <ParameterList name="tie"><Parameter name="Coordinates" type="Array(double)" value="{0.5, 0.0}"/></ParameterList>)XML");
+  ASSERT_EQ(def.history.size(), 2u);
+  EXPECT_EQ(def.history[0].nodeCoordinates, (std::vector<double>{2.0, 1.0}));
+  EXPECT_TRUE(def.history[0].nodeSet.empty());
+  // Equally near (0, 0) and (1, 0): the lower global id, (0, 0).
+  EXPECT_EQ(def.history[1].nodeCoordinates, (std::vector<double>{0.0, 0.0}));
+  EXPECT_LT(def.history[1].node, def.history[0].node);
+}
+
+TEST(OutputRequests, ColumnsPerComponentOrOne) {
+  HistoryRequest vector;
+  vector.name = "top, mean";
+  EXPECT_EQ(vector.columns(3), (std::vector<std::string>{"top__mean_x", "top__mean_y", "top__mean_z"}));
+  HistoryRequest scalar;
+  scalar.name = "corner pressure";
+  scalar.quantity = HistoryQuantity::ContactPressure;
+  EXPECT_EQ(scalar.columns(2), std::vector<std::string>{"corner_pressure"});
+}
+
+TEST(OutputRequests, ReactionSetHandedToTheModelOnce) {
+  const auto def = problemWith(R"XML(
+      <ParameterList name="a">
+        <Parameter name="Quantity" type="string" value="Reaction Force"/>
+        <Parameter name="Node Set" type="string" value="right"/>
+      </ParameterList>
+      <ParameterList name="b">
+        <Parameter name="Quantity" type="string" value="Reaction Force"/>
+        <Parameter name="Node Set" type="string" value="left"/>
+      </ParameterList>
+      <ParameterList name="c">
+        <Parameter name="Quantity" type="string" value="Reaction Force"/>
+        <Parameter name="Node Set" type="string" value="right"/>
+      </ParameterList>)XML");
+  EXPECT_EQ(def.reactionNodeSets, (std::vector<std::string>{"left", "right"}));
+  EXPECT_TRUE(def.history[0].addedReactionSet);   // right: not a Reaction Node Set of the deck
+  EXPECT_FALSE(def.history[1].addedReactionSet);  // left: one of the deck's
+  EXPECT_EQ(def.history[0].quantity, HistoryQuantity::ReactionForce);
+}
+
+}  // namespace
