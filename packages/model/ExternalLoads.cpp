@@ -1,5 +1,8 @@
 #include "model/ExternalLoads.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace contessa::model {
 namespace {
 
@@ -23,7 +26,10 @@ void appendNodes(Entries& entries, const std::vector<GlobalIndex>& nodes, const 
 }  // namespace
 
 ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::function<int(GlobalIndex)>& localDof)
-    : dim_(problem.dimension()), measure_(std::make_unique<mechanics::UnitMeasure>(problem.dimension())) {
+    : dim_(problem.dimension()) {
+  // A solid of revolution (Axisymmetry.hpp) takes its loads over the full circumference: w = 2πr.
+  if (problem.axisymmetric) measure_ = std::make_unique<mechanics::RevolvedMeasure>();
+  else measure_ = std::make_unique<mechanics::UnitMeasure>(dim_);
   const mesh::Mesh& mesh = problem.mesh.local();  // the part: local numbering, its own elements' sides
   for (const auto& load : problem.loads) {
     Entries entries;
@@ -36,6 +42,10 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
         const int npe = mesh::nodesPerCell(block.cellType);
         std::vector<GlobalIndex> nodes;
         for (int a : mesh::sideNodes(block.cellType, set.sides[k])) nodes.push_back(block.connectivity[where.local * npe + a]);
+        // The kernels integrate multilinear facets: 2-node edges (2D), 4-node faces (3D).
+        if (static_cast<int>(nodes.size()) != mechanics::facetNodeCount(dim_))
+          throw std::logic_error("ExternalLoads: a side of " + std::to_string(nodes.size()) + " nodes in side set '" +
+                                 load.set + "'; the load kernels take 2-node edges and 4-node faces");
         appendNodes(entries, nodes, problem, localDof);
       }
       (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(entries));
@@ -43,6 +53,9 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
       for (const auto& name : load.blocks) {
         const mesh::ElementBlock& block = mesh.block(name);
         const int npe = mesh::nodesPerCell(block.cellType);
+        if (npe != mechanics::cellNodeCount(dim_))
+          throw std::logic_error("ExternalLoads: block '" + name + "' has " + std::to_string(npe) +
+                                 "-node cells; the body-force kernel takes Quad4 and Hex8");
         for (GlobalIndex e = 0; e < block.numElements(); ++e)
           appendNodes(entries, std::vector<GlobalIndex>(block.connectivity.begin() + e * npe,
                                                         block.connectivity.begin() + (e + 1) * npe),

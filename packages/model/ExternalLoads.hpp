@@ -47,7 +47,7 @@ class ExternalLoads {
     std::size_t count = 0;
   };
   int dim_;
-  std::unique_ptr<mechanics::LoadMeasure> measure_;  ///< w = 1 today; 2πr for axisymmetry (issue 19 §3)
+  std::unique_ptr<mechanics::LoadMeasure> measure_;  ///< w = 1; 2πr in an axisymmetric problem
   std::vector<Entries> pressureFacets_, tractionFacets_, bodyCells_;
 };
 

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""check_lame.py FILE A B E NU P TOLERANCE
+"""check_lame.py FILE A B E NU P TOLERANCE [axisymmetric]
 
 Lame's thick-walled cylinder under internal pressure P in plane strain: every node's radial displacement
 in the last step of the Exodus file FILE (2D, or 3D with plane-strain ends: z is ignored) against
 u_r(r) = (1 + nu)/E ((1 - 2 nu) C1 r + C2/r), C1 = P A^2/(B^2 - A^2), C2 = P A^2 B^2/(B^2 - A^2).
-Prints the largest relative error (over all nodes, and at r = A and r = B) and fails above TOLERANCE."""
+With "axisymmetric" the mesh is the revolved section (r = x, u_r = u_x). Prints the largest relative error (over all nodes, and at r = A and r = B) and fails above TOLERANCE."""
 import sys
 
 import netCDF4
@@ -23,8 +23,9 @@ x = ds.variables["coordx"][:]
 y = ds.variables["coordy"][:]
 ux = ds.variables[f"vals_nod_var{nodal.index('displ_x') + 1}"][-1, :]
 uy = ds.variables[f"vals_nod_var{nodal.index('displ_y') + 1}"][-1, :]
-r = np.hypot(x, y)
-ur = (ux * x + uy * y) / r
+revolved = len(sys.argv) > 8 and sys.argv[8] == "axisymmetric"
+r = x if revolved else np.hypot(x, y)
+ur = ux if revolved else (ux * x + uy * y) / r
 c1 = p * a * a / (b * b - a * a)
 c2 = p * a * a * b * b / (b * b - a * a)
 exact = (1 + nu) / E * ((1 - 2 * nu) * c1 * r + c2 / r)
