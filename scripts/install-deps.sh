@@ -11,6 +11,7 @@ packages=(
   netcdf-bin python3-netcdf4 python3-matplotlib python3-numpy
   libgtest-dev googletest
   paraview python3-paraview xvfb xauth
+  slurm-wlm munge
 )
 
 missing=()

@@ -3,6 +3,8 @@
 #include <csignal>
 #include <initializer_list>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
 #include <limits>
 #include <fstream>
 #include <sstream>
@@ -12,6 +14,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 
+#include "ProcessEnvironment.hpp"
 #include "StopSignals.hpp"
 #include "common/Error.hpp"
 
@@ -57,7 +60,35 @@ std::string shortSeconds(double s) {
   return text;
 }
 
+// "2026-11-27 01:23:45" (local time) of a time point, for the log.
+std::string clockTime(std::chrono::system_clock::time_point t) {
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(t);
+  std::tm local{};
+  localtime_r(&seconds, &local);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S", &local);
+  return text;
+}
+
 }  // namespace
+
+std::string resolveRestart(const Teuchos::Comm<int>& comm, const std::string& restart, const std::string& deck,
+                           const std::string& outputDirectory, bool verbose) {
+  if (restart != "auto") return restart;
+  const std::string path = outputDirectory + "/" + std::filesystem::path(deck).stem().string() + ".restart";
+  int found = 0;
+  if (comm.getRank() == 0) {
+    std::error_code ec;
+    found = std::filesystem::is_regular_file(path, ec) ? 1 : 0;
+  }
+  Teuchos::broadcast(comm, 0, &found);
+  if (comm.getRank() == 0 && verbose) {
+    if (found) std::printf("contessa: --restart auto: continuing from %s\n", path.c_str());
+    else std::printf("contessa: --restart auto: no restart file %s: a new run\n", path.c_str());
+    std::fflush(stdout);
+  }
+  return found ? path : std::string();
+}
 
 std::string restartDeckText(const Teuchos::ParameterList& deck) {
   std::ostringstream out;
@@ -167,7 +198,19 @@ RunCheckpoints::RunCheckpoints(const Teuchos::RCP<const Teuchos::Comm<int>>& com
       maxWallSeconds_(maxWallSeconds),
       runStart_(runStart),
       lastIncrement_(Clock::now()),
-      verbose_(verbose) {}
+      verbose_(verbose) {
+  if (const auto& end = batchJobEnd()) {  // rank 0 only
+    jobEnd_ = end->time;
+    jobName_ = end->job;
+    jobEndMargin_ = end->marginSeconds;
+    if (verbose_)
+      std::printf("contessa: %s ends at %s (in %s s): the run stops with a restart file when the next increment "
+                  "would not end %s s before\n",
+                  jobName_.c_str(), clockTime(end->time).c_str(),
+                  shortSeconds(std::chrono::duration<double>(end->time - std::chrono::system_clock::now()).count()).c_str(),
+                  shortSeconds(jobEndMargin_).c_str());
+  }
+}
 
 solvers::CheckpointControl::Decision RunCheckpoints::decide(int increments, bool converged) {
   const auto now = Clock::now();
@@ -180,11 +223,22 @@ solvers::CheckpointControl::Decision RunCheckpoints::decide(int increments, bool
   const double elapsed = std::chrono::duration<double>(now - runStart_).count();
   const double needed = 1.5 * longestIncrement_ + writeSeconds_;
   if (comm_->getRank() == 0 && maxWallSeconds_ > 0 && elapsed + needed > maxWallSeconds_) local[1] = 1;
+  // The batch job's limit: Slurm ends the job then, whatever is under way, so the next increment, the
+  // restart file and the margin (the process's exit, the job script's last steps) must all fit before it.
+  double jobLeft = 0;
+  if (jobEnd_) {
+    jobLeft = std::chrono::duration<double>(*jobEnd_ - std::chrono::system_clock::now()).count();
+    if (needed + jobEndMargin_ > jobLeft) local[1] = std::max(local[1], 2);
+  }
   Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 2, local, agreed);
   Decision d;
   if (agreed[0] != 0) {
     d.stop = true;
     d.reason = signalName(agreed[0]) + " received";
+  } else if (agreed[1] == 2) {
+    d.stop = true;
+    d.reason = "the time limit of " + (jobName_.empty() ? std::string("the batch job") : jobName_) + " would not hold another increment (" + shortSeconds(jobLeft) +
+               " s left, the longest increment " + shortSeconds(longestIncrement_) + " s)";
   } else if (agreed[1] != 0) {
     d.stop = true;
     d.reason = "Problem/Output/Checkpoint/Max Wall Time = " + shortSeconds(maxWallSeconds_) + " s would not hold another " +

@@ -4,6 +4,7 @@
 // rank 0, written atomically), and reading one back for --restart with the checks that it belongs to this
 // deck and mesh.
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,8 +40,17 @@ struct RestartInput {
 RestartInput readRestart(const Teuchos::Comm<int>& comm, const std::string& path, const io::RestartContent& identity,
                          int dimension);
 
-/// The run's policy: a restart file every `every` increments, and a stop (with one) on a signal or when
-/// the next increment would not fit in `maxWallSeconds` of the run.
+/// `--restart auto`: the restart file of this deck in the output directory (DIR/<deck name>.restart) when
+/// there is one, else "" (a new run); any other value as given. Collective: rank 0 looks, every rank gets
+/// its answer. A restart file found is read and checked as any --restart FILE is (an invalid one is an
+/// input error, never silently replaced by a new run that would overwrite the results).
+std::string resolveRestart(const Teuchos::Comm<int>& comm, const std::string& restart, const std::string& deck,
+                           const std::string& outputDirectory, bool verbose);
+
+/// The run's policy: a restart file every `every` increments, and a stop (with one) on a signal, when the
+/// next increment would not fit in `maxWallSeconds` of the run, or when it would not end before the batch
+/// job's time limit (ProcessEnvironment.hpp, batchJobEnd: Slurm's end of the job, read by rank 0 when
+/// the process started).
 class RunCheckpoints : public solvers::CheckpointControl {
  public:
   RunCheckpoints(const Teuchos::RCP<const Teuchos::Comm<int>>& comm, const model::ContactMechanicsModel& model,
@@ -61,6 +71,9 @@ class RunCheckpoints : public solvers::CheckpointControl {
   int every_;
   double maxWallSeconds_;
   Clock::time_point runStart_, lastIncrement_;
+  std::optional<std::chrono::system_clock::time_point> jobEnd_;  ///< rank 0: the batch job's end
+  std::string jobName_;
+  double jobEndMargin_ = 0;
   double longestIncrement_ = 0, writeSeconds_ = 0;
   bool verbose_, stopping_ = false;
   std::string failure_;

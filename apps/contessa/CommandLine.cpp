@@ -1,5 +1,8 @@
 #include "CommandLine.hpp"
 
+#include <cmath>
+#include <stdexcept>
+
 #include "common/Error.hpp"
 #include "common/Version.hpp"
 
@@ -7,7 +10,7 @@ namespace contessa::app {
 
 std::string usage() {
   return "usage: contessa DECK.xml [--output-dir DIR] [--set PATH=VALUE ...] [--quiet] [--timers]\n"
-         "                       [--check-jacobian[=N,M,...]] [--restart FILE]\n"
+         "                       [--check-jacobian[=N,M,...]] [--restart FILE|auto] [--job-end-margin SECONDS]\n"
          "       contessa --deck-reference     print the deck reference (Markdown)\n"
          "       contessa --version            print the version and the git description of the build\n"
          "       contessa --help               print this text\n"
@@ -29,10 +32,16 @@ std::string usage() {
          "tube's 2856 unknowns).\n"
          "--restart FILE continues the run of the same deck from its restart file DIR/<deck name>.restart,\n"
          "written every Problem/Output/Checkpoint/Every N Increments, before Max Wall Time runs out, and on\n"
-         "SIGTERM, SIGUSR1 or SIGINT; the Exodus file and the history are continued.\n"
+         "SIGTERM, SIGUSR1 or SIGINT, and before the time limit of the Slurm job the run is in; the\n"
+         "Exodus file and the history are continued. --restart auto continues from DIR/<deck name>.restart\n"
+         "when it exists and starts a new run when it does not (a batch job that may be requeued).\n"
+         "--job-end-margin SECONDS: in a Slurm job, the run stops with its restart file when its next\n"
+         "increment would not end SECONDS before the job's time limit (default 10; the job's end time is\n"
+         "read from Slurm, no signal is needed).\n"
          "Exit status: 0 the run reached its final load (and its regression checks passed);\n"
          "1 the run stopped early or failed; 2 bad input; 3 a regression check of the deck failed;\n"
-         "4 the run wrote its restart file and stopped (a signal or Max Wall Time): continue with --restart.\n"
+         "4 the run wrote its restart file and stopped (a signal, Max Wall Time or the job's time limit):\n"
+         "continue with --restart.\n"
          "Every error is one line on stderr: contessa: error: ...\n";
 }
 
@@ -56,6 +65,20 @@ std::vector<int> parseIncrementList(const std::string& arg, const std::string& l
   }
   return out;
 }
+// "--job-end-margin 40" → 40: seconds, a finite number >= 0.
+double parseSeconds(const std::string& option, const std::string& text) {
+  const std::string expected = option + ": expected seconds >= 0, got '" + text + "'";
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw InputError(expected);
+  }
+  requireInput(used == text.size() && std::isfinite(value) && value >= 0, expected);
+  return value;
+}
+
 }  // namespace
 
 CommandLine parseCommandLine(int argc, char** argv) {
@@ -79,6 +102,8 @@ CommandLine parseCommandLine(int argc, char** argv) {
     else if (arg.rfind("--output-dir=", 0) == 0) cl.outputDirectory = arg.substr(13);
     else if (arg == "--restart") cl.restart = value(arg);
     else if (arg.rfind("--restart=", 0) == 0) cl.restart = arg.substr(10);
+    else if (arg == "--job-end-margin") cl.jobEndMargin = parseSeconds(arg, value(arg));
+    else if (arg.rfind("--job-end-margin=", 0) == 0) cl.jobEndMargin = parseSeconds("--job-end-margin", arg.substr(17));
     else if (arg == "--set") cl.overrides.push_back(value(arg));
     else if (arg.rfind("--set=", 0) == 0) cl.overrides.push_back(arg.substr(6));
     else if (arg.rfind("--kokkos-", 0) == 0) {

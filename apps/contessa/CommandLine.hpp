@@ -13,7 +13,9 @@ struct CommandLine {
   /// check of the Jacobian (empty with checkJacobian = every increment).
   bool checkJacobian = false;
   std::vector<int> checkJacobianIncrements;
-  std::string restart;  ///< --restart FILE: continue from this restart file ("" = a new run)
+  std::string restart;  ///< --restart FILE: continue from this restart file ("" = a new run; "auto", main.cpp)
+  /// --job-end-margin SECONDS: kept free at the end of a batch job (ProcessEnvironment.hpp, BatchJobEnd).
+  double jobEndMargin = 10;
   bool help = false, version = false, kokkosHelp = false, deckReference = false, quiet = false, timers = false;
 };
 

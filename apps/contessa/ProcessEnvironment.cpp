@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <malloc.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -83,7 +84,61 @@ void keepWorkspacesForReuse() {
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
+// The rank this process will have, from its launcher's environment (before MPI_Init): Open MPI's mpirun,
+// a PMIx or PMI launcher, srun. A process without any is a singleton, rank 0. SLURM_PROCID comes last:
+// mpirun's ranks inside a batch job inherit the batch step's SLURM_PROCID=0.
+bool becomesRankZero() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK", "SLURM_PROCID"})
+    if (const char* value = std::getenv(name)) return std::strcmp(value, "0") == 0;
+  return true;
+}
+
+bool allDigits(const std::string& text) {
+  return !text.empty() && text.size() <= 18 && text.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// Slurm 22.05 has no variable with the job's end time (later versions set SLURM_JOB_END_TIME): squeue
+// prints it, as seconds since the epoch with SLURM_TIME_FORMAT=%s (no time zone to get wrong). The
+// query runs before MPI_Init (no fork under MPI), bounded by `timeout` so that a slurmctld that does not
+// answer delays the start by 10 s at most.
+std::optional<BatchJobEnd> readBatchJobEnd() {
+  const char* job = std::getenv("SLURM_JOB_ID");
+  if (job == nullptr || !allDigits(job) || !becomesRankZero()) return std::nullopt;
+  const std::string jobName = std::string("Slurm job ") + job;
+  if (const char* end = std::getenv("SLURM_JOB_END_TIME")) {
+    if (auto time = parseEpochSeconds(end)) return BatchJobEnd{jobName, *time};
+  }
+  const std::string command =
+      std::string("SLURM_TIME_FORMAT=%s timeout 10 squeue -h -j ") + job + " -o %e 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return std::nullopt;
+  char line[128] = {0};
+  const bool read = std::fgets(line, sizeof line, pipe) != nullptr;
+  pclose(pipe);
+  if (!read) return std::nullopt;
+  std::string text(line);
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  if (auto time = parseEpochSeconds(text)) return BatchJobEnd{jobName, *time};
+  return std::nullopt;
+}
+
+std::optional<BatchJobEnd>& batchJobEndStore() {
+  static std::optional<BatchJobEnd> end;
+  return end;
+}
+
 }  // namespace
+
+std::optional<std::chrono::system_clock::time_point> parseEpochSeconds(const std::string& text) {
+  if (!allDigits(text)) return std::nullopt;
+  return std::chrono::system_clock::time_point(std::chrono::seconds(std::stoll(text)));
+}
+
+const std::optional<BatchJobEnd>& batchJobEnd() { return batchJobEndStore(); }
+
+void setBatchJobEndMargin(double seconds) {
+  if (batchJobEndStore()) batchJobEndStore()->marginSeconds = seconds;
+}
 
 void prepareProcess(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
@@ -91,6 +146,7 @@ void prepareProcess(int argc, char** argv) {
   fastSingletonStart();
   oneBlasThreadPerRank();
   keepWorkspacesForReuse();
+  batchJobEndStore() = readBatchJobEnd();
 }
 
 }  // namespace contessa::app

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -93,7 +94,7 @@ std::string commandLineText(const CommandLine& cl) {
 // the linear solver, and the run's description for the results file.
 struct ValidatedInput {
   Teuchos::RCP<Teuchos::ParameterList> deck;
-  deck::ProblemDefinition problem;
+  std::shared_ptr<const deck::ProblemDefinition> problem;  ///< shared with the model
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
   output::RunDescription description;
 };
@@ -117,7 +118,8 @@ ValidatedInput readInput(const CommandLine& cl, const Teuchos::Comm<int>& comm) 
                  "Problem/Mesh: required (the deck has no mesh)");
 
     const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
-    input.problem = deck::buildProblem(input.deck->sublist("Problem"), deckDirectory);
+    input.problem = std::make_shared<const deck::ProblemDefinition>(
+        deck::buildProblem(input.deck->sublist("Problem"), deckDirectory));
     solvers::validatePiro(input.deck->sublist("Piro"), comm.getSize());
     input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"));
 
@@ -142,7 +144,7 @@ Teuchos::RCP<model::ContactMechanicsModel> buildModel(const CommandLine& cl,
       std::fflush(stdout);
     });
   // MueLu's coarse spaces need the rigid-body modes (nothing happens for other linear solvers).
-  solvers::provideNearNullSpace(*input.linearSolver, *model->ownedDofMap(), input.problem.mesh);
+  solvers::provideNearNullSpace(*input.linearSolver, *model->ownedDofMap(), input.problem->mesh);
   return model;
 }
 
@@ -164,9 +166,9 @@ solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::Conta
                                                                  : *jacobianCheck;
   try {
     if (!continuation) {
-      summary = solvers::solveStatic(model, piro, observer, jacobianCheck);
+      summary = solvers::solveStatic(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
     } else {
-      solvers::ContinuationDriver driver(model, piro, observer, jacobianCheck);
+      solvers::ContinuationDriver driver(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
       driver.setCheckpointControl(&checkpoints);
       if (resumed) driver.resumeFrom(resumed);
       summary = driver.run();
@@ -183,7 +185,8 @@ solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::Conta
 // check failed, 4 stopped for a restart (not an error: the run can go on from its restart file,
 // docs/user-guide.md), 1 stopped.
 int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinition& problem,
-                  const output::ResultsOutput& results, const std::string& restartPath, const Teuchos::Comm<int>& comm) {
+                  const output::ResultsOutput& results, const std::string& restartPath,
+                  const std::string& continueCommand, const Teuchos::Comm<int>& comm) {
   const bool root = comm.getRank() == 0;
   if (root) {
     std::printf("contessa: %s after %d increments (%d failed attempts), %d Newton iterations, %d linear solves; "
@@ -196,10 +199,9 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
   timers::printTable(mpiCommOf(comm), stdout);
   if (summary.checkpointed) {
     if (root)
-      std::printf("contessa: stopped: %s; restart file %s holds step %d (load factor %.6g); continue with "
-                  "--restart %s\n",
+      std::printf("contessa: stopped: %s; restart file %s holds step %d (load factor %.6g); continue with: %s\n",
                   summary.message.c_str(), restartPath.c_str(), summary.increments, summary.finalLambda,
-                  restartPath.c_str());
+                  continueCommand.c_str());
     return 4;
   }
   if (!summary.finished) {
@@ -217,8 +219,10 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
 // results are complete). Collective (peak memory and mesh parts are gathered).
 void writeRunReport(const CommandLine& cl, const std::string& name, const solvers::RunSummary& summary, int exitStatus,
                     const model::ContactMechanicsModel& model, const mesh::DistributedMesh& mesh,
-                    std::chrono::steady_clock::time_point start, const Teuchos::Comm<int>& comm) {
+                    std::chrono::steady_clock::time_point start, const std::optional<EarlierJobs>& earlier,
+                    const Teuchos::Comm<int>& comm) {
   RunReport report;
+  report.earlier = earlier;
   report.deck = cl.deck;
   report.ranks = comm.getSize();
   report.summary = summary;
@@ -249,7 +253,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   io::disableHdf5FileLocking();
   // 1. The deck, validated on every rank, and the mesh.
   ValidatedInput input = readInput(cl, *comm);
-  const deck::ProblemDefinition& problem = input.problem;
+  const deck::ProblemDefinition& problem = *input.problem;
   auto& piro = input.deck->sublist("Piro");
   const std::string name = fs::path(cl.deck).stem().string();
   const bool continuation = piro.get<std::string>("Solver Type") != "NOX";
@@ -276,7 +280,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (!cl.restart.empty())
     agreeOnInput(*comm, [&] {
       model->restoreCommittedState(restart.content.state);
-      resumed = solvers::readContinuationPoint(*model, restart.content.state);
+      resumed = solvers::readContinuationPoint(model->ownedDofMap(), model->dimension(), restart.content.state);
       restart.content.state.requireAllRead();
     });
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, input.description,
@@ -293,8 +297,12 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
                              problem.maxWallSeconds, start, !cl.quiet);
   const solvers::RunSummary summary = solve(cl, model, piro, continuation, results, checkpoints, resumed);
-  const int exitStatus = reportOutcome(summary, problem, results, restartPath, *comm);
-  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, *comm);
+  CommandLine continued = cl;  // the command that continues the run, literally (with the same launcher)
+  continued.restart = restartPath;
+  const int exitStatus = reportOutcome(summary, problem, results, restartPath, commandLineText(continued), *comm);
+  std::optional<EarlierJobs> earlier;
+  if (!cl.restart.empty()) earlier = earlierJobs(results.historyColumns(), restart.historyRows);
+  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, earlier, *comm);
   return exitStatus;
 }
 

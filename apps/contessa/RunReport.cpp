@@ -72,13 +72,38 @@ void gatherMeshParts(const Teuchos::Comm<int>& comm, const mesh::DistributedMesh
   report.meshNodes = part.numGlobalNodes;
 }
 
+EarlierJobs earlierJobs(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows) {
+  EarlierJobs e;
+  if (rows.empty()) return e;
+  e.step = static_cast<int>(rows.size()) - 1;
+  const auto column = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  const std::size_t newton = column("newton_iterations"), wall = column("wall_s");
+  for (std::size_t k = 1; k < rows.size(); ++k)
+    if (newton < rows[k].size() && std::isfinite(rows[k][newton])) e.newtonIterations += std::lround(rows[k][newton]);
+  if (wall < rows.back().size() && std::isfinite(rows.back()[wall])) e.wallSeconds = rows.back()[wall];
+  return e;
+}
+
 std::string summaryLine(const RunReport& r) {
   const auto& s = r.summary;
   const auto [lo, hi] = std::minmax_element(r.peakBytesPerRank.begin(), r.peakBytesPerRank.end());
   std::ostringstream out;
-  out << "contessa: summary: " << s.increments << " increments, " << s.failedAttempts << " failed attempts, "
-      << s.newtonIterations << " Newton iterations, " << s.linearIterations << " linear iterations, wall "
-      << number(r.wallSeconds) << " s, peak memory per rank " << number(mebibytes(r.peakBytesPerRank.empty() ? 0 : *lo))
+  out << "contessa: summary: ";
+  if (r.earlier) {
+    // The driver's increment count is the run's; Newton iterations and wall time are this job's.
+    const EarlierJobs& e = *r.earlier;
+    out << "this job " << s.increments - e.step << " increments (steps " << e.step + 1 << " to " << s.increments
+        << "), " << s.newtonIterations << " Newton iterations, wall " << number(r.wallSeconds) << " s; whole run "
+        << s.increments << " increments, " << s.failedAttempts << " failed attempts, "
+        << e.newtonIterations + s.newtonIterations << " Newton iterations, wall "
+        << number(e.wallSeconds + r.wallSeconds) << " s; this job " << s.linearIterations << " linear iterations";
+  } else {
+    out << s.increments << " increments, " << s.failedAttempts << " failed attempts, " << s.newtonIterations
+        << " Newton iterations, " << s.linearIterations << " linear iterations, wall " << number(r.wallSeconds) << " s";
+  }
+  out << ", peak memory per rank " << number(mebibytes(r.peakBytesPerRank.empty() ? 0 : *lo))
       << " to " << number(mebibytes(r.peakBytesPerRank.empty() ? 0 : *hi)) << " MiB (" << r.ranks << " rank(s))";
   return out.str();
 }
@@ -122,7 +147,14 @@ std::string summaryJson(const RunReport& r) {
   list(r.partNodes);
   out << ", \"part_bytes\": ";
   list(r.partBytes);
-  out << "}\n}\n";
+  out << "}";
+  // Both scopes of a continued run: this job (after the restart file's step) and the whole run.
+  const EarlierJobs e = r.earlier.value_or(EarlierJobs{});
+  out << ",\n  \"this_job\": {\"first_step\": " << e.step + 1 << ", \"increments\": " << s.increments - e.step
+      << ", \"newton_iterations\": " << s.newtonIterations << ", \"wall_seconds\": " << number(r.wallSeconds) << "}";
+  out << ",\n  \"whole_run\": {\"continued\": " << (r.earlier ? "true" : "false") << ", \"increments\": " << s.increments
+      << ", \"newton_iterations\": " << e.newtonIterations + s.newtonIterations
+      << ", \"wall_seconds\": " << number(e.wallSeconds + r.wallSeconds) << "}\n}\n";
   return out.str();
 }
 

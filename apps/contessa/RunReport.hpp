@@ -2,6 +2,7 @@
 // The run's summary for batch logs and scripts: increments, Newton and linear iterations, wall time
 // and each rank's memory high-water mark, printed on rank 0 and written to `<name>.summary.json`
 // beside the history (docs/user-guide.md, "Batch runs").
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,17 @@ namespace contessa::app {
 /// This process's peak resident memory in bytes: VmHWM of /proc/self/status, else getrusage's
 /// ru_maxrss; 0 when neither is available.
 long long peakResidentBytes();
+
+/// What the earlier jobs of a continued run (--restart) did, from the restart file's history rows.
+struct EarlierJobs {
+  int step = 0;                 ///< the restart file's step: this job began after it
+  long newtonIterations = 0;    ///< of the converged increments 1..step (their failed attempts are not kept)
+  double wallSeconds = 0;       ///< the run's wall time at that step (history column wall_s)
+};
+
+/// From the restart file's history rows (steps 0..k) and the history's columns: k, the sum of the column
+/// newton_iterations over steps 1..k and wall_s of step k.
+EarlierJobs earlierJobs(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows);
 
 struct RunReport {
   std::string deck;
@@ -31,6 +43,8 @@ struct RunReport {
   /// bytes of its containers (mesh::DistributedMesh::bytes), beside the whole mesh's counts.
   std::vector<long long> partElements, partNodes, partBytes;
   long long meshElements = 0, meshNodes = 0;
+  /// A continued run: the earlier jobs (the summary then states this job and the whole run apart).
+  std::optional<EarlierJobs> earlier;
 };
 
 /// Collective: gathers every rank's peak memory to rank 0 into `report`.
@@ -38,7 +52,7 @@ void gatherPeakMemory(const Teuchos::Comm<int>& comm, RunReport& report);
 /// Collective: gathers the sizes of every rank's part of the mesh into `report`.
 void gatherMeshParts(const Teuchos::Comm<int>& comm, const mesh::DistributedMesh& part, RunReport& report);
 
-/// Rank 0: the log line ("contessa: summary: ...").
+/// Rank 0: the log line ("contessa: summary: ..."); a continued run's states this job and the whole run.
 std::string summaryLine(const RunReport& report);
 
 /// Rank 0: the JSON text of `<name>.summary.json`.

@@ -5,6 +5,7 @@
 
 #include <Tpetra_Core.hpp>
 
+#include "Checkpoint.hpp"
 #include "CommandLine.hpp"
 #include "DeckReference.hpp"
 #include "Failure.hpp"
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
       if (root) std::cout << app::deckReference();
       return 0;
     }
+    app::setBatchJobEndMargin(cl.jobEndMargin);
+    // --restart auto: this deck's restart file in the output directory, if any (a requeued batch job).
+    cl.restart = app::resolveRestart(*comm, cl.restart, cl.deck, cl.outputDirectory, !cl.quiet);
     return app::run(cl, comm);
   });
 }

@@ -15,6 +15,8 @@ struct GapChange {
   bool inContactAtStart = false;
 };
 
+/// The defaults here (and in ContactBetaSettings) are the deck's: solvers/ContactBetaStepControl declares
+/// the Step Size parameters with them.
 struct BetaOptions {
   int contactsPerStep = 2;     ///< N_c
   double maxGrowth = 2.0;      ///< β ≤ maxGrowth (the step may grow at most this much per increment)

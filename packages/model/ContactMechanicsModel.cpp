@@ -27,12 +27,17 @@ using Teuchos::rcp;
 using MEB = Thyra::ModelEvaluatorBase;
 using Extract = Thyra::TpetraOperatorVectorExtraction<double, LO, GO, Node>;
 
-ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
+ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
+                                             std::shared_ptr<const deck::ProblemDefinition> problem,
                                              const RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory)
-    : comm_(comm), problem_(problem), dim_(problem.dimension()), solverFactory_(solverFactory) {
-  if (problem.mesh.rank != comm->getRank() || problem.mesh.numRanks != comm->getSize())
-    throw std::logic_error("ContactMechanicsModel: the mesh part was made for rank " + std::to_string(problem.mesh.rank) +
-                           " of " + std::to_string(problem.mesh.numRanks) + ", not for this communicator");
+    : comm_(comm),
+      sharedProblem_(std::move(problem)),
+      problem_(*sharedProblem_),
+      dim_(problem_.dimension()),
+      solverFactory_(solverFactory) {
+  if (problem_.mesh.rank != comm->getRank() || problem_.mesh.numRanks != comm->getSize())
+    throw std::logic_error("ContactMechanicsModel: the mesh part was made for rank " + std::to_string(problem_.mesh.rank) +
+                           " of " + std::to_string(problem_.mesh.numRanks) + ", not for this communicator");
   layout_ = std::make_unique<DofLayout>(comm_, problem_.mesh, ContactAssembly::surfaceNodes(problem_.contacts));
   contact_ = std::make_unique<ContactAssembly>(problem_, *layout_);
   solids_ = std::make_unique<SolidAssembler>(

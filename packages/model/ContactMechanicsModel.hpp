@@ -10,8 +10,8 @@
 //   StiffnessScatter    element and contact blocks into the Jacobian's values, at precomputed positions
 //   BoundaryConditions  Dirichlet rows and values, f_ext
 //   PostProcessing      stresses, reactions, contact fields and forces, slave-node gathers
-// The solvers see it through Thyra, IncrementalState (commit/rollback) and continuation::ContactEventSource
-// (Contact Beta); this header names no contact type.
+// The solvers see it through Thyra, IncrementalState (commit/rollback), continuation::ContactEventSource
+// (Contact Beta) and SolveDiagnostics (why a solve failed, counters); this header names no contact type.
 #include <functional>
 #include <memory>
 #include <string>
@@ -27,6 +27,7 @@
 #include "io/RestartFile.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/PostProcessing.hpp"
+#include "model/SolveDiagnostics.hpp"
 #include "model/SolidAssembler.hpp"
 #include "model/TpetraTypes.hpp"
 
@@ -47,10 +48,12 @@ struct GraphRebuild {
 
 class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public IncrementalState,
-                              public continuation::ContactEventSource {
+                              public continuation::ContactEventSource,
+                              public SolveDiagnostics {
  public:
-  /// The model of this rank's part of `problem`'s mesh (problem.mesh, made for `comm`'s rank and size).
-  ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, const deck::ProblemDefinition& problem,
+  /// The model of this rank's part of `problem`'s mesh (problem->mesh, made for `comm`'s rank and size;
+  /// std::logic_error otherwise). The model shares the problem: the caller need not keep it alive.
+  ContactMechanicsModel(const Teuchos::RCP<const Comm>& comm, std::shared_ptr<const deck::ProblemDefinition> problem,
                         const Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>>& solverFactory);
   ~ContactMechanicsModel() override;
 
@@ -90,7 +93,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   std::vector<NodeSetReaction> reactions(const Vector& x, double loadFactor) const;
 
   // Contact results at the last committed state.
-  bool hasContact() const;
+  bool hasContact() const override;
   /// Columns contact_pressure, contact_gap, contact_status, contact_slip per owned node (0 off the
   /// slave surfaces; gap NaN where no master segment is in reach).
   Teuchos::RCP<MultiVector> contactNodalFields() const;
@@ -111,8 +114,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   void freezeNewContacts(bool frozen) override;
   bool newContactsFrozen() const override;
 
-  // Why a solve failed or must not be accepted, in words for the one-line stop message. Collective:
-  // every rank calls them at the same point and gets the same text.
+  // SolveDiagnostics: why a solve failed or must not be accepted, in words for the one-line stop message.
+  // Collective: every rank calls them at the same point and gets the same text.
+  std::string nonFiniteResidualCause() const override { return inadmissibleElement(); }
   /// The lowest-numbered element (over all ranks) whose evaluation failed at the latest residual
   /// evaluation — the reason the residual was set to NaN — e.g. "element 17 of block 'tube' is inverted
   /// or degenerate (det F <= 0)"; empty when every element was admissible.
@@ -121,10 +125,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// evaluation and are not in contact now (ContactInterfaceBase::tunnellingNodes, every interface and
   /// rank), e.g. "slave node 41 of interface 'plate' (and 28 more) passed through the master surface";
   /// empty when none did.
-  std::string contactTunnelling() const;
+  std::string contactTunnelling() const override;
   /// The null space of a singular Jacobian (vectors over all DOFs in global numbering, the same on every
   /// rank) in words: which blocks are free to move, and how (FreeMotion.hpp).
-  std::string describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const;
+  std::string describeFreeMotion(const std::vector<std::vector<double>>& nullSpace) const override;
 
   /// Number of rebuilds of the matrix graph so far (a Jacobian evaluation met a contact pairing outside
   /// the reserved couplings) and their total time (the slowest rank's).
@@ -134,7 +138,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   void onGraphRebuild(std::function<void(const GraphRebuild&)> observer) { rebuildObserver_ = std::move(observer); }
 
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
-  int jacobianEvaluations() const { return jacobianEvaluations_; }
+  int jacobianEvaluations() const override { return jacobianEvaluations_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
   int elementPasses() const { return elementPasses_; }
   int dimension() const { return dim_; }
@@ -174,7 +178,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   Teuchos::ArrayRCP<const double> overlapped(const Vector& x) const;
 
   Teuchos::RCP<const Comm> comm_;
-  const deck::ProblemDefinition& problem_;
+  std::shared_ptr<const deck::ProblemDefinition> sharedProblem_;
+  const deck::ProblemDefinition& problem_;  ///< *sharedProblem_
   // Each owned element's DOFs (overlapped local numbering, in the element loop's order), flattened: the
   // element part of the graph, kept for rebuilds (the element loop itself would move the trial state).
   std::vector<int> elementDofs_;

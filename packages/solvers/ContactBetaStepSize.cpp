@@ -12,54 +12,21 @@ namespace contessa::solvers {
 
 using continuation::ContactBetaSettings;
 
-ContactBetaSettings contactBetaSettings(const Teuchos::ParameterList& p, double finalLoadFactor) {
-  ContactBetaSettings s;
-  s.mode = p.get<std::string>("Mode") == "Predictor" ? ContactBetaSettings::Mode::Predictor
-                                                      : ContactBetaSettings::Mode::Restart;
-  s.beta.contactsPerStep = p.get<int>("Contacts Per Step");
-  s.beta.maxGrowth = p.get<double>("Max Growth Factor");
-  s.beta.maxShrink = p.get<double>("Max Shrink Factor");
-  s.beta.nextContactFraction = p.get<double>("Next Contact Fraction");
-  s.counted = continuation::countedEventsByName(p.get<std::string>("Counted Events"));
-  s.learnEventRate = p.get<bool>("Learn Event Rate");
-  s.quietGrowth = continuation::quietGrowthByName(p.get<std::string>("Growth Without Events"));
-  s.targetNewtonIterations = p.get<int>("Target Newton Iterations");
-  s.maxCorrections = p.get<int>("Max Corrections Per Increment");
-  s.restartTolerance = p.get<double>("Restart Tolerance");
-  s.initialStep = p.get<double>("Initial Step Size");
-  s.minStep = p.get<double>("Min Step Size");
-  s.maxStep = p.get<double>("Max Step Size");
-  s.failedStepFactor = p.get<double>("Failed Step Reduction Factor");
-  s.finalLoadFactor = finalLoadFactor;
-  return s;
-}
-
 NOX::StatusTest::StatusType ContactBetaRestartTest::checkStatus(const NOX::Solver::Generic& solver,
                                                                 NOX::StatusTest::CheckType) {
-  status_ = NOX::StatusTest::Unconverged;
-  control_.nextIterate();
-  // Table 1: β is determined at the first iteration (i = 1) of an uncorrected attempt (I_cor = 0).
-  // That iterate was computed with the contact set of time t (new contacts frozen), so a node about to
-  // close shows the penetration it would reach without contact: ^{t+Δt} g_N of eq. (11).
-  if (!control_.checkPending() || solver.getNumIterations() != 1) return status_;
-  if (control_.restartAtFirstIterate(events_.trialIncrement())) {
-    status_ = NOX::StatusTest::Failed;  // LOCA restarts the increment; the strategy applies β
-    return status_;
-  }
-  // The step stands (the measured β seeds the next increment's step): contact is enforced from here
-  // on, and the residual of this iterate is recomputed with it before the convergence tests see it.
-  events_.freezeNewContacts(false);
-  auto& group = const_cast<NOX::Abstract::Group&>(solver.getSolutionGroup());
-  const auto x = group.getX().clone(NOX::DeepCopy);
-  group.setX(*x);
-  group.computeF();
+  // The first iterate of a checked attempt is decided before the status tests (iterateSet): a check still
+  // pending here means the solver no longer calls its observers where LOCA 13.2's NOX does.
+  if (solver.getNumIterations() == 1 && control_.control().checkPending())
+    throw std::logic_error("Contact Beta: the first iterate reached the status tests unchecked (NOX observer order)");
+  status_ = control_.firstIterateRejected() ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
   return status_;
 }
 
 std::ostream& ContactBetaRestartTest::print(std::ostream& os, int indent) const {
+  const auto& control = control_.control();
   for (int i = 0; i < indent; ++i) os << ' ';
-  os << status_ << "Contact Beta restart: beta = " << control_.beta() << " (" << control_.predictedEvents()
-     << " events predicted, N_c = " << control_.settings().beta.contactsPerStep << ")\n";
+  os << status_ << "Contact Beta restart: beta = " << control.beta() << " (" << control.predictedEvents()
+     << " events predicted, N_c = " << control.settings().beta.contactsPerStep << ")\n";
   return os;
 }
 

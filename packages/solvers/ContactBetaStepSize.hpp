@@ -8,27 +8,28 @@
 //    solve, so the corrected step is taken without a restarted solve.
 // The decisions are continuation::ContactBetaControl's; the classes here relay LOCA's and NOX's calls
 // to it and give it the slave nodes (continuation::ContactEventSource, implemented by the model).
+// ContactBetaStepControl (the method's hooks into the driver) builds both.
 #include <LOCA_StepSize_AbstractStrategy.H>
 #include <NOX_StatusTest_Generic.H>
 
 #include "continuation/ContactBetaControl.hpp"
 #include "continuation/ContactEventSource.hpp"
+#include "solvers/ContactBetaStepControl.hpp"
 #include "solvers/ResumableStepSize.hpp"
 
 namespace contessa::solvers {
 
-/// Restart mode: fails the Newton solve at its first iteration when β asks for another step.
+/// Restart mode: fails the Newton solve at its first iteration when β asks for another step. It only
+/// tests: the decision is ContactBetaStepControl::iterateSet's, made before the status tests.
 class ContactBetaRestartTest : public NOX::StatusTest::Generic {
  public:
-  ContactBetaRestartTest(continuation::ContactEventSource& events, continuation::ContactBetaControl& control)
-      : events_(events), control_(control) {}
+  explicit ContactBetaRestartTest(const ContactBetaStepControl& control) : control_(control) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override;
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& os, int indent) const override;
 
  private:
-  continuation::ContactEventSource& events_;
-  continuation::ContactBetaControl& control_;
+  const ContactBetaStepControl& control_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -64,9 +65,5 @@ class ContactBetaStepSize : public LOCA::StepSize::AbstractStrategy, public Resu
     field("previous_step", self.previous_);
   }
 };
-
-/// The deck's "Contact Beta" parameters (Piro/LOCA/Step Size) and the stepper's Max Value.
-continuation::ContactBetaSettings contactBetaSettings(const Teuchos::ParameterList& stepSizeParams,
-                                                      double finalLoadFactor);
 
 }  // namespace contessa::solvers

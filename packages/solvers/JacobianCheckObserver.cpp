@@ -7,11 +7,21 @@
 #include <NOX_Solver_Generic.H>
 #include <NOX_Thyra_Vector.H>
 
+#include "model/ContactMechanicsModel.hpp"
+#include "model/JacobianCheck.hpp"
+
 namespace contessa::solvers {
 
 JacobianCheckObserver::JacobianCheckObserver(const model::ContactMechanicsModel& model, std::vector<int> increments,
                                              IncrementObserver& next, std::FILE* out, double plainSolveLoadFactor)
-    : model_(model), increments_(std::move(increments)), next_(next), out_(out), plainSolveLoadFactor_(plainSolveLoadFactor) {}
+    : model_(model),
+      increments_(std::move(increments)),
+      next_(next),
+      out_(out),
+      plainSolveLoadFactor_(plainSolveLoadFactor),
+      check_(std::make_unique<model::JacobianCheck>()) {}
+
+JacobianCheckObserver::~JacobianCheckObserver() = default;
 
 void JacobianCheckObserver::incrementConverged(const model::Vector& x, const IncrementReport& report) {
   next_.incrementConverged(x, report);
@@ -35,7 +45,7 @@ void JacobianCheckObserver::runPreIterate(const NOX::Solver::Generic& solver) {
     lambda = loca->getParam(0);
   }
   const auto& thyraX = dynamic_cast<const NOX::Thyra::Vector&>(*x).getThyraVector();
-  const auto result = check_.check(model_, thyraX, lambda);
+  const auto result = check_->check(model_, thyraX, lambda);
   ++checks_;
   if (model_.ownedDofMap()->getComm()->getRank() == 0 && out_ != nullptr) {
     std::fprintf(out_, "jacobian check, increment %d (load factor %.6g): %s (%ld residuals, %.1f s)\n", increment_,

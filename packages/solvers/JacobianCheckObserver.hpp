@@ -3,13 +3,20 @@
 // chosen increments (`--check-jacobian`): a NOX observer for the solves, and an increment observer
 // placed before the output's, to know which increment a solve is for. It prints one line per checked
 // increment (rank 0) and leaves the run unchanged.
+// The model is named, not included: the check needs the concrete model (its evaluation state, who
+// couples two DOFs), the solvers' headers do not.
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 #include <NOX_Observer.hpp>
 
-#include "model/JacobianCheck.hpp"
-#include "solvers/ContinuationDriver.hpp"
+#include "solvers/RunReports.hpp"
+
+namespace contessa::model {
+class ContactMechanicsModel;
+class JacobianCheck;
+}  // namespace contessa::model
 
 namespace contessa::solvers {
 
@@ -20,6 +27,7 @@ class JacobianCheckObserver : public NOX::Observer, public IncrementObserver {
   /// carries no load factor (Piro/Solver Type = NOX) is at `plainSolveLoadFactor`.
   JacobianCheckObserver(const model::ContactMechanicsModel& model, std::vector<int> increments, IncrementObserver& next,
                         std::FILE* out = stdout, double plainSolveLoadFactor = 1.0);
+  ~JacobianCheckObserver() override;
 
   void runPreIterate(const NOX::Solver::Generic& solver) override;
   void incrementConverged(const model::Vector& x, const IncrementReport& report) override;
@@ -33,7 +41,7 @@ class JacobianCheckObserver : public NOX::Observer, public IncrementObserver {
   IncrementObserver& next_;
   std::FILE* out_;
   double plainSolveLoadFactor_;
-  model::JacobianCheck check_;
+  std::unique_ptr<model::JacobianCheck> check_;
   int increment_ = 0;        ///< the increment the current solve is for (0 = the initial state)
   int lastChecked_ = 0;      ///< checked once per increment (its first attempt)
   int checks_ = 0;

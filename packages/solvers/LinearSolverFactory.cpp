@@ -16,6 +16,7 @@
 
 #include "common/Error.hpp"
 #include "common/ErrorText.hpp"
+#include "mesh/DistributedMesh.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/RigidBodyModes.hpp"

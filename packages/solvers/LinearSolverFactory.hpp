@@ -4,8 +4,11 @@
 #include <Teuchos_ParameterList.hpp>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
-#include "mesh/DistributedMesh.hpp"
 #include "model/TpetraTypes.hpp"
+
+namespace contessa::mesh {
+class DistributedMesh;
+}
 
 namespace contessa::solvers {
 

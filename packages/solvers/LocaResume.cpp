@@ -49,6 +49,8 @@ class ResumedSolver : public NOX::Solver::Generic {
 
 }  // namespace
 
+NOX::Abstract::Group& ResumableStepper::solverGroup() { return *curGroupPtr; }
+
 StateRecord ResumableStepper::stepSizeState() const {
   StateRecord out;
   if (const auto* resumable = dynamic_cast<const ResumableStepSize*>(stepSizeStrategyPtr.get()))

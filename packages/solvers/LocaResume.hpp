@@ -48,6 +48,9 @@ class ResumableStepper : public LOCA::Stepper {
     quiet_ = std::move(quiet);
   }
   double currentStepSize() const { return stepSize; }
+  /// The group the Newton solver iterates on (LOCA's continuation group, curGroupPtr): a step-size method
+  /// may change what it evaluates between the line search and the status tests (StepControlRelay).
+  NOX::Abstract::Group& solverGroup();
   /// The step-size strategy's state (nothing for LOCA's own).
   StateRecord stepSizeState() const;
 

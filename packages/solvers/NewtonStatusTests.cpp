@@ -1,7 +1,5 @@
 #include "solvers/NewtonStatusTests.hpp"
 
-#include <cstdio>
-
 #include <NOX_Abstract_Group.H>
 #include <NOX_Solver_Generic.H>
 
@@ -12,18 +10,6 @@ namespace contessa::solvers {
 
 using Teuchos::RCP;
 using Teuchos::rcp;
-
-std::string shortNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
-
-std::string loadFactorText(double lambda) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", lambda);
-  return text;
-}
 
 namespace {
 
@@ -45,8 +31,8 @@ std::string caughtException(const std::string& noxOutput) {
   return line;
 }
 
-const MumpsFailures* mumpsFailures(const model::ContactMechanicsModel& model) {
-  const auto* mumps = dynamic_cast<const MumpsLinearOpWithSolveFactory*>(model.get_W_factory().get());
+const MumpsFailures* mumpsFailures(const Thyra::LinearOpWithSolveFactoryBase<double>* linearSolver) {
+  const auto* mumps = dynamic_cast<const MumpsLinearOpWithSolveFactory*>(linearSolver);
   return mumps != nullptr ? &mumps->failures() : nullptr;
 }
 
@@ -74,27 +60,29 @@ std::ostream& AcceptedConvergenceTest::print(std::ostream& os, int indent) const
   return os;
 }
 
-NewtonStatusTests::NewtonStatusTests(const model::ContactMechanicsModel& model, RCP<NOX::StatusTest::Generic> convergence,
-                                     int maxIterations, RCP<NOX::StatusTest::Generic> beforeConvergence,
-                                     std::function<std::string()> redoStep)
-    : model_(model),
+NewtonStatusTests::NewtonStatusTests(const model::SolveDiagnostics& diagnostics,
+                                     RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver,
+                                     RCP<NOX::StatusTest::Generic> convergence, int maxIterations,
+                                     StepControl* stepControl)
+    : diagnostics_(diagnostics),
+      linearSolver_(std::move(linearSolver)),
+      stepControl_(stepControl),
       finite_(rcp(new NOX::StatusTest::FiniteValue())),
-      before_(std::move(beforeConvergence)),
+      before_(stepControl != nullptr ? stepControl->correctionTest() : Teuchos::null),
       // A converged state in which a body has passed through another is no answer: the increment fails
       // and is cut back (theory-contact.md §12).
       convergence_(rcp(new AcceptedConvergenceTest(std::move(convergence),
                                                    [this] {
                                                      redoRequested_ = false;
-                                                     std::string why = model_.contactTunnelling();
-                                                     if (why.empty() && redoStep_) {
-                                                       why = redoStep_();
+                                                     std::string why = diagnostics_.contactTunnelling();
+                                                     if (why.empty() && stepControl_ != nullptr) {
+                                                       why = stepControl_->redoAtConvergence();
                                                        redoRequested_ = !why.empty();
                                                      }
                                                      return why;
                                                    }))),
       maxIters_(rcp(new NOX::StatusTest::MaxIters(maxIterations))),
-      combo_(rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR))),
-      redoStep_(std::move(redoStep)) {
+      combo_(rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR))) {
   combo_->addStatusTest(finite_);
   if (!before_.is_null()) combo_->addStatusTest(before_);
   combo_->addStatusTest(convergence_);
@@ -102,7 +90,7 @@ NewtonStatusTests::NewtonStatusTests(const model::ContactMechanicsModel& model, 
 }
 
 void NewtonStatusTests::startSolve() {
-  const MumpsFailures* failures = mumpsFailures(model_);
+  const MumpsFailures* failures = mumpsFailures(linearSolver_.get());
   linearFailuresAtStart_ = failures != nullptr ? failures->count : 0;
   iterativeFailuresAtStart_ = iterativeSolveLog().failures;
 }
@@ -111,17 +99,17 @@ SolveFailure NewtonStatusTests::diagnose(const NOX::Solver::Generic& solver, con
   using Kind = SolveFailure::Kind;
   if (solver.getStatus() == NOX::StatusTest::Converged) return {};
   if (convergence_->getStatus() == NOX::StatusTest::Failed && redoRequested_)
-    return {Kind::ContactBetaRestart, "stopped for a Contact Beta step correction: " + convergence_->rejection()};
+    return {Kind::StepCorrection, "stopped for " + stepControl_->correctionName() + ": " + convergence_->rejection()};
   if (convergence_->getStatus() == NOX::StatusTest::Failed)
     return {Kind::Tunnelling, "contact tunnelling: " + convergence_->rejection() +
                                   " (the increment is too large for the contact to follow)"};
   if (finite_->getStatus() == NOX::StatusTest::Failed) {
-    const std::string element = model_.inadmissibleElement();
+    const std::string cause = diagnostics_.nonFiniteResidualCause();
     return {Kind::NonFiniteResidual,
-            element.empty() ? std::string("the residual is not finite (NaN or infinite)") : "the residual is not finite: " + element};
+            cause.empty() ? std::string("the residual is not finite (NaN or infinite)") : "the residual is not finite: " + cause};
   }
   if (!before_.is_null() && before_->getStatus() == NOX::StatusTest::Failed)
-    return {Kind::ContactBetaRestart, "stopped for a Contact Beta step correction"};
+    return {Kind::StepCorrection, "stopped for " + stepControl_->correctionName()};
   if (maxIters_->getStatus() == NOX::StatusTest::Failed) {
     const int n = solver.getNumIterations();
     return {Kind::NewtonIterations, "Newton did not converge in " + std::to_string(n) + (n == 1 ? " iteration" : " iterations") +
@@ -137,16 +125,16 @@ SolveFailure NewtonStatusTests::diagnose(const NOX::Solver::Generic& solver, con
 SolveFailure NewtonStatusTests::linearSolverFailure() const {
   if (iterativeSolveLog().failures != iterativeFailuresAtStart_)
     return {SolveFailure::Kind::LinearSolver, iterativeSolveLog().lastFailure};
-  const MumpsFailures* failures = mumpsFailures(model_);
+  const MumpsFailures* failures = mumpsFailures(linearSolver_.get());
   if (failures == nullptr || failures->count == linearFailuresAtStart_) return {};
   if (failures->nullPivots > 0)
     return {SolveFailure::Kind::LinearSolver,
-            "the stiffness matrix is singular: " + model_.describeFreeMotion(failures->nullSpace) +
+            "the stiffness matrix is singular: " + diagnostics_.describeFreeMotion(failures->nullSpace) +
                 (failures->nullPivots > static_cast<int>(failures->nullSpace.size())
                      ? " (and " + std::to_string(failures->nullPivots - static_cast<int>(failures->nullSpace.size())) +
                            " more null pivots)"
                      : std::string()) +
-                (model_.hasContact() ? " (add a support; an open contact holds nothing, so a body held by contact "
+                (diagnostics_.hasContact() ? " (add a support; an open contact holds nothing, so a body held by contact "
                                        "alone must touch it from the start)"
                                      : " (add a support: a Dirichlet condition that holds it)")};
   return {SolveFailure::Kind::LinearSolver,

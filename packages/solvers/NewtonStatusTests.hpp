@@ -3,7 +3,8 @@
 // the continuation (ContinuationDriver, LOCA) and the single static solve (StaticSolveDriver, Piro).
 // The tests, a NOX Combo(OR) in this order:
 //   1. FiniteValue: a NaN or infinite ||f|| fails the solve (an inadmissible element sets f to NaN);
-//   2. optionally a test that may stop the solve first (Contact Beta's Restart test);
+//   2. optionally a test of the step-size method that may stop the solve first for a step correction
+//      (StepControl::correctionTest: Contact Beta's Restart test);
 //   3. the convergence test, whose converged state must also be acceptable: a state in which a slave
 //      node passed through its master surface (contact tunnelling) fails the solve instead;
 //   4. MaxIters.
@@ -17,8 +18,11 @@
 #include <NOX_StatusTest_Combo.H>
 #include <NOX_StatusTest_FiniteValue.H>
 #include <NOX_StatusTest_MaxIters.H>
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
-#include "model/ContactMechanicsModel.hpp"
+#include "model/SolveDiagnostics.hpp"
+#include "solvers/MessageText.hpp"
+#include "solvers/StepControl.hpp"
 
 namespace contessa::solvers {
 
@@ -27,7 +31,7 @@ struct SolveFailure {
   enum class Kind {
     None,                ///< it did not fail
     NonFiniteResidual,   ///< f is NaN or infinite (an inadmissible element, or bad data)
-    ContactBetaRestart,  ///< stopped for a Contact Beta step correction (not a failure of Newton)
+    StepCorrection,      ///< stopped for a step correction of the step-size method (not a failure of Newton)
     NewtonIterations,    ///< Maximum Iterations used up
     LinearSolver,        ///< the Newton direction could not be computed (e.g. a singular stiffness)
     Tunnelling,          ///< converged, but a slave node passed through its master surface
@@ -59,13 +63,15 @@ class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
 
 class NewtonStatusTests {
  public:
-  /// `convergence` decides convergence; `beforeConvergence` (may be null) is checked before it.
-  /// `redoStep` (may be empty) is asked at a converged, tunnelling-free state whether the step is to be
-  /// solved again with another size (Contact Beta's event count check): a reason fails the solve as a
-  /// Contact Beta correction, not as a Newton failure.
-  NewtonStatusTests(const model::ContactMechanicsModel& model, Teuchos::RCP<NOX::StatusTest::Generic> convergence,
-                    int maxIterations, Teuchos::RCP<NOX::StatusTest::Generic> beforeConvergence = Teuchos::null,
-                    std::function<std::string()> redoStep = {});
+  /// `convergence` decides convergence. `diagnostics` says why a solve failed, `linearSolver` is the
+  /// model's (its failures are read). `stepControl` (may be null: LOCA's methods and the single solve)
+  /// adds its correction test before the convergence test, and is asked at a converged, tunnelling-free
+  /// state whether the step is to be solved again with another size: a reason fails the solve as a step
+  /// correction, not as a Newton failure.
+  NewtonStatusTests(const model::SolveDiagnostics& diagnostics,
+                    Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver,
+                    Teuchos::RCP<NOX::StatusTest::Generic> convergence, int maxIterations,
+                    StepControl* stepControl = nullptr);
   // Its status tests call back into this object (a lambda holding `this`): a copy or a move would leave
   // them calling the original.
   NewtonStatusTests(const NewtonStatusTests&) = delete;
@@ -83,7 +89,9 @@ class NewtonStatusTests {
   SolveFailure linearSolverFailure() const;
 
  private:
-  const model::ContactMechanicsModel& model_;
+  const model::SolveDiagnostics& diagnostics_;
+  Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver_;
+  StepControl* stepControl_;
   Teuchos::RCP<NOX::StatusTest::FiniteValue> finite_;
   Teuchos::RCP<NOX::StatusTest::Generic> before_;
   Teuchos::RCP<AcceptedConvergenceTest> convergence_;
@@ -91,13 +99,7 @@ class NewtonStatusTests {
   Teuchos::RCP<NOX::StatusTest::Combo> combo_;
   long linearFailuresAtStart_ = 0;
   long iterativeFailuresAtStart_ = 0;  ///< iterativeSolveLog().failures at startSolve()
-  std::function<std::string()> redoStep_;
-  bool redoRequested_ = false;  ///< the last rejection was redoStep's
+  bool redoRequested_ = false;  ///< the last rejection was the step control's
 };
-
-/// A number for messages: 3 significant digits, exponent when needed ("3.2e-02", "0.5").
-std::string shortNumber(double value);
-/// A load factor for messages: 6 significant digits ("0.106383").
-std::string loadFactorText(double lambda);
 
 }  // namespace contessa::solvers

@@ -6,14 +6,15 @@
 #include <NOX_Observer.hpp>
 #include <NOX_Observer_Vector.hpp>
 #include <NOX_StatusTest_NormF.H>
-#include <NOX_Utils.H>
 #include <Piro_NOXSolver.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/NewtonCounter.hpp"
 #include "solvers/NewtonStatusTests.hpp"
+#include "solvers/NoxParameters.hpp"
 
 namespace contessa::solvers {
 
@@ -23,33 +24,21 @@ using Extract = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::
 
 namespace {
 
-// Why the solve failed, read when it ends (on every rank: the diagnosis may communicate).
-class SolveObserver : public NOX::Observer {
- public:
-  SolveObserver(NewtonStatusTests& tests, const std::ostringstream& noxOutput) : tests_(tests), noxOutput_(noxOutput) {}
-  void runPreSolve(const NOX::Solver::Generic&) override { tests_.startSolve(); }
-  void runPostSolve(const NOX::Solver::Generic& solver) override { failure = tests_.diagnose(solver, noxOutput_.str()); }
-  SolveFailure failure;
-
- private:
-  NewtonStatusTests& tests_;
-  const std::ostringstream& noxOutput_;
-};
-
 // The initial state, as a continuation run reports and commits it: the reference of the contact
 // history and of the tunnelling check (the solve goes from here to load factor 1 in one step).
-void reportInitialState(model::ContactMechanicsModel& model, IncrementObserver& observer) {
-  auto x0 = model.getNominalValues().get_x();
-  auto in = model.createInArgs();
+void reportInitialState(const SolverModel& model, IncrementObserver& observer) {
+  const auto& evaluator = *model.evaluator;
+  auto x0 = evaluator.getNominalValues().get_x();
+  auto in = evaluator.createInArgs();
   in.set_x(x0);
-  auto p0 = Thyra::createMember(model.get_p_space(0));
+  auto p0 = Thyra::createMember(evaluator.get_p_space(0));
   Thyra::set_ele(0, 0.0, p0.ptr());
   in.set_p(0, p0);
-  auto out = model.createOutArgs();
-  auto f0 = Thyra::createMember(model.get_f_space());
+  auto out = evaluator.createOutArgs();
+  auto f0 = Thyra::createMember(evaluator.get_f_space());
   out.set_f(f0);
-  model.evalModel(in, out);
-  model.commitState();
+  evaluator.evalModel(in, out);
+  model.state->commitState();
   IncrementReport initial;
   observer.incrementConverged(*Extract::getConstTpetraVector(x0), initial);
 }
@@ -67,7 +56,7 @@ std::string failureReason(SolveFailure failure, NewtonStatusTests& tests, const 
 
 }  // namespace
 
-RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teuchos::ParameterList& piro,
+RunSummary solveStatic(const SolverModel& model, const Teuchos::ParameterList& piro,
                        IncrementObserver& observer, const RCP<NOX::Observer>& iterationObserver) {
   const auto start = std::chrono::steady_clock::now();
   const auto& deckNox = piro.sublist("NOX");
@@ -76,52 +65,40 @@ RunSummary solveStatic(const RCP<model::ContactMechanicsModel>& model, const Teu
   // increment start to refer to; the update test belongs to the continuation driver), within the same
   // tests as the continuation: finite residual, no tunnelling, the iteration limit.
   // The unscaled 2-norm, as NOX's status-test factory builds NormF from a parameter list.
-  NewtonStatusTests tests(*model,
+  NewtonStatusTests tests(*model.diagnostics, model.evaluator->get_W_factory(),
                           rcp(new NOX::StatusTest::NormF(deckTests.get<double>("Absolute Residual Tolerance"),
                                                          NOX::Abstract::Vector::TwoNorm, NOX::StatusTest::NormF::Unscaled)),
                           deckTests.get<int>("Maximum Iterations"));
   auto noxOutput = rcp(new std::ostringstream());
-  auto solveObserver = rcp(new SolveObserver(tests, *noxOutput));
+  auto solveObserver = rcp(new NewtonCounter(tests, *noxOutput));
 
   auto appParams = rcp(new Teuchos::ParameterList("Piro"));
   appParams->set("Exit on Failed NOX Solve", true);
   auto& nox = appParams->sublist("NOX");
-  nox.set("Nonlinear Solver", deckNox.get<std::string>("Nonlinear Solver"));
-  nox.sublist("Direction").set("Method", deckNox.get<std::string>("Nonlinear Solver") == "Line Search Based"
-                                             ? deckNox.sublist("Direction").get<std::string>("Method")
-                                             : std::string("Newton"));
-  nox.sublist("Line Search").set("Method", deckNox.sublist("Line Search").get<std::string>("Method"));
-  const bool details = deckNox.sublist("Printing").get<bool>("Newton Details");
-  nox.sublist("Printing").set("Output Information", details ? NOX::Utils::Error | NOX::Utils::OuterIteration
-                                                            : static_cast<int>(NOX::Utils::Error));
-  // NOX's errors and the exceptions it catches go into the one-line message, not onto stderr/stdout.
-  nox.sublist("Printing").set("Error Stream", Teuchos::rcp_implicit_cast<std::ostream>(noxOutput));
-  if (!details) nox.sublist("Printing").set("Output Stream", Teuchos::rcp_implicit_cast<std::ostream>(noxOutput));
-  nox.set("Catch Throws During Solve", true);
   auto observers = rcp(new NOX::ObserverVector());
   observers->pushBack(solveObserver);
   if (!iterationObserver.is_null()) observers->pushBack(iterationObserver);
-  nox.sublist("Solver Options").set("Observer", Teuchos::rcp_implicit_cast<NOX::Observer>(observers));
+  setNoxParameters(nox, deckNox, observers, Teuchos::rcp_implicit_cast<std::ostream>(noxOutput), NoxPrinting::Solve);
   auto& statusTests = nox.sublist("Status Tests");
   statusTests.set("Test Type", "User Defined");
   statusTests.set("User Status Test", tests.test());
 
-  reportInitialState(*model, observer);
+  reportInitialState(model, observer);
 
   RunSummary summary;
   const long solvesBefore = mumpsCounters().solves;
   const long krylovBefore = iterativeSolveLog().iterations;
   try {
-    Piro::NOXSolver<double> solver(appParams, model);
+    Piro::NOXSolver<double> solver(appParams, model.evaluator);
     auto in = solver.createInArgs();
-    auto p = Thyra::createMember(model->get_p_space(0));
+    auto p = Thyra::createMember(model.evaluator->get_p_space(0));
     Thyra::set_ele(0, 1.0, p.ptr());
     in.set_p(0, p);
     auto out = solver.createOutArgs();
-    auto x = Thyra::createMember(model->get_x_space());
+    auto x = Thyra::createMember(model.evaluator->get_x_space());
     out.set_g(out.Ng() - 1, x);  // Piro returns the solution as its last response
     solver.evalModel(in, out);
-    model->commitState();
+    model.state->commitState();
     // NOX leaves its statistics in NOX/Output.
     auto& results = nox.sublist("Output");
     IncrementReport r;

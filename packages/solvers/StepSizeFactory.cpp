@@ -4,17 +4,16 @@
 
 namespace contessa::solvers {
 
-bool StepSizeFactory::createStepSizeStrategy(const std::string& strategyName,
+bool StepSizeFactory::createStepSizeStrategy(const std::string& /*strategyName*/,
                                              const Teuchos::RCP<LOCA::Parameter::SublistParser>& /*topParams*/,
                                              const Teuchos::RCP<Teuchos::ParameterList>& /*stepsizeParams*/,
                                              Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) {
-  // Names LOCA does not know are offered here first; LOCA's own ("Constant", "Adaptive") fall through.
-  for (const auto& method : stepSizeMethodRegistry())
-    if (method.name == strategyName && method.create) {
-      strategy = method.create(context_);
-      return true;
-    }
-  return false;
+  // LOCA asks for the deck's method, whose control was built from the same name: a strategy of its own,
+  // or none and LOCA's ("Constant", "Adaptive") is built by LOCA.
+  auto own = control_.createStrategy();
+  if (own.is_null()) return false;
+  strategy = own;
+  return true;
 }
 
 }  // namespace contessa::solvers

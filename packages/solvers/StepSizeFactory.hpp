@@ -1,16 +1,16 @@
 #pragma once
-// Contessa's LOCA factory: LOCA offers every "Step Size/Method" name to it first; the methods of the
-// registry (StepSizeMethods.hpp) with a factory of their own are built here, LOCA's fall through to LOCA.
+// Contessa's LOCA factory: LOCA offers every "Step Size/Method" name to it first; the method's control
+// (StepControl.hpp) builds the strategy of a method Contessa adds, LOCA's own fall through to LOCA.
 #include <LOCA_Abstract_Factory.H>
 
-#include "solvers/StepSizeMethods.hpp"
+#include "solvers/StepControl.hpp"
 
 namespace contessa::solvers {
 
 class StepSizeFactory : public LOCA::Abstract::Factory {
  public:
-  /// `context` serves the strategies (Contact Beta's slave nodes and control); it outlives the run.
-  explicit StepSizeFactory(const StepSizeContext& context) : context_(context) {}
+  /// `control` is the deck's method's (createStepControl); it outlives the run.
+  explicit StepSizeFactory(StepControl& control) : control_(control) {}
   // LOCA's global data owns this factory: keeping a strong reference back would leak both.
   void init(const Teuchos::RCP<LOCA::GlobalData>& /*globalData*/) override {}
   bool createStepSizeStrategy(const std::string& strategyName,
@@ -19,7 +19,7 @@ class StepSizeFactory : public LOCA::Abstract::Factory {
                               Teuchos::RCP<LOCA::StepSize::AbstractStrategy>& strategy) override;
 
  private:
-  StepSizeContext context_;
+  StepControl& control_;
 };
 
 }  // namespace contessa::solvers

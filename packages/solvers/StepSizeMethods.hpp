@@ -1,43 +1,32 @@
 #pragma once
 // Step-size methods by name ("Piro/LOCA/Step Size/Method"): one registry row each (StepSizeMethods.cpp)
 // with what it does, the parameters it reads from the Step Size list (docs, defaults, ranges) and, for
-// the methods Contessa adds to LOCA, the function that builds its strategy; LOCA builds its own methods
+// the methods Contessa adds to LOCA, the function that builds its control (StepControl: its LOCA strategy
+// and what it adds to the Newton solves, the reports and the stop message); LOCA builds its own methods
 // ("Constant", "Adaptive") from the same list. The deck validates Method against the names (an unknown
-// one is refused with the known ones listed), the deck reference is generated from the rows, and
-// StepSizeFactory builds by name. Adding a method = its strategy class + one row.
+// one is refused with the known ones listed), the deck reference is generated from the rows, and the
+// continuation driver builds the control of the deck's method. Adding a method = its control (and
+// strategy) class + one row.
 // Light: Teuchos only (the LOCA types are declared, not included), for the deck's validation.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
-namespace LOCA::StepSize {
-class AbstractStrategy;
-}
-namespace contessa::continuation {
-class ContactEventSource;
-class ContactBetaControl;
-}  // namespace contessa::continuation
-
 namespace contessa::solvers {
 
-/// What a step-size strategy of the run may use: the slave nodes and the Contact Beta control.
-struct StepSizeContext {
-  continuation::ContactEventSource& events;
-  continuation::ContactBetaControl& contactBeta;
-};
+class StepControl;
+struct StepControlContext;
 
 struct StepSizeMethod {
   std::string name;
   std::string doc;  ///< one phrase, for Method's doc
   /// Adds the parameters only this method reads to the Step Size list (nullptr: none).
   void (*addParameters)(Teuchos::ParameterList& stepSize);
-  /// Builds the strategy; empty for LOCA's own methods (LOCA builds them).
-  std::function<Teuchos::RCP<LOCA::StepSize::AbstractStrategy>(const StepSizeContext&)> create;
-  /// The strategy regulates contact events through the ContactBetaControl: the Newton solve then takes
-  /// its restart test (Restart mode), its veto at convergence and the per-increment bookkeeping.
-  bool regulatesContactEvents = false;
+  /// Builds the method's control (StepControl.hpp); empty for LOCA's own methods, which add nothing.
+  std::function<std::unique_ptr<StepControl>(const StepControlContext&)> create;
 };
 
 /// The registry rows, in the order of the deck reference.
@@ -45,6 +34,10 @@ const std::vector<StepSizeMethod>& stepSizeMethodRegistry();
 
 /// The row of a registered name (the deck has validated it; an unknown name is a logic error).
 const StepSizeMethod& stepSizeMethod(const std::string& name);
+
+/// The control of the method the Step Size list names (context.stepSize): the row's, or the plain
+/// StepControl (no hooks) for LOCA's own methods.
+std::unique_ptr<StepControl> createStepControl(const StepControlContext& context);
 
 /// Registered names: "Constant", "Adaptive", "Contact Beta".
 std::vector<std::string> stepSizeMethods();

@@ -47,6 +47,12 @@ if not problems:
     check(s["newton_iterations"] >= newton, f"newton_iterations {s['newton_iterations']} < {newton} in the history")
     check(s["linear_iterations"] >= linear, f"linear_iterations {s['linear_iterations']} < {linear} in the history")
     check(s["wall_seconds"] > 0, f"wall_seconds {s['wall_seconds']}")
+    # A new run: this job is the whole run (a continued one: tests/regression/batch/slurm_batch.py).
+    job, whole = s["this_job"], s["whole_run"]
+    check(job == {"first_step": 1, "increments": s["increments"], "newton_iterations": s["newton_iterations"],
+                  "wall_seconds": s["wall_seconds"]}, f"this_job {job} of a new run")
+    check(whole == {"continued": False, "increments": s["increments"], "newton_iterations": s["newton_iterations"],
+                    "wall_seconds": s["wall_seconds"]}, f"whole_run {whole} of a new run")
     memory = s["peak_memory_bytes"]
     per_rank = memory["per_rank"]
     total = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")

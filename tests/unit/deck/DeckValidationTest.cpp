@@ -96,7 +96,7 @@ TEST(DeckValidation, ValueOutOfRangeIsNamed) {
 
 TEST(DeckValidation, ChoiceOutsideTheListIsNamed) {
   auto p = goodProblem();
-  p->sublist("Blocks").sublist("block_1").set("Element", std::string("Q8"));
+  p->sublist("Blocks").sublist("block_1").set("Element", std::string("Q12"));
   expectProblemError(*p, "Problem/Blocks/block_1/Element: expected one of Q4");
 }
 

@@ -3,6 +3,7 @@
 // (f, and W with ∂f/∂λ when asked), and a plain full Newton at a fixed load factor.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -19,13 +20,14 @@
 
 namespace contessa::test {
 
-/// The model keeps a reference to its problem: keep the problem alive as long as the model.
+/// The model of a copy of `problem` (the model shares what it is given; a test's problem may go).
 inline Teuchos::RCP<model::ContactMechanicsModel> makeModel(
     const deck::ProblemDefinition& problem,
     const Teuchos::RCP<const Teuchos::Comm<int>>& comm = Tpetra::getDefaultComm()) {
   Teuchos::ParameterList strat("Stratimikos");
   strat.set("Linear Solver Type", std::string("MUMPS"));
-  return Teuchos::rcp(new model::ContactMechanicsModel(comm, problem, solvers::createLinearSolverFactory(strat)));
+  return Teuchos::rcp(new model::ContactMechanicsModel(comm, std::make_shared<const deck::ProblemDefinition>(problem),
+                                                       solvers::createLinearSolverFactory(strat)));
 }
 
 /// The same problem with the whole mesh as one part (for a model on MPI_COMM_SELF beside the model on
