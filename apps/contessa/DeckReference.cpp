@@ -72,6 +72,11 @@ std::string deckReference() {
   describe(md, *deck::dirichletValidParameters(), "Problem/Dirichlet Conditions/<name>", 4);
   md << "### `Problem/Nodal Forces/<name>`\n\n";
   describe(md, *deck::nodalForceValidParameters(), "Problem/Nodal Forces/<name>", 4);
+  md << "### Load types (`Problem/Loads/<name>`)\n\n";
+  for (const auto& type : deck::loadTypes()) {
+    md << "#### `Type` = `" << type << "`\n\n" << deck::loadTypeDescription(type) << ".\n\n";
+    describe(md, *deck::loadValidParameters(type), "Problem/Loads/<name>", 5);
+  }
   md << "### `Problem/Contact/<name>`\n\n";
   describe(md, *deck::contactValidParameters(), "Problem/Contact/<name>", 4);
   md << "### Contact laws (`Problem/Contact/<name>/Law`)\n\n";

@@ -9,6 +9,8 @@
 #include "common/Error.hpp"
 #include "deck/Axisymmetry.hpp"
 #include "deck/ContactLawFactory.hpp"
+#include "deck/LoadDefinitions.hpp"
+#include "deck/MeshReferences.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "contact/ContactSurface.hpp"
 #include "mesh/MeshDistribution.hpp"
@@ -23,13 +25,8 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 using mesh::GlobalIndex;
 
-const char* kOpenLists[] = {"Mesh", "Blocks", "Materials", "Dirichlet Conditions", "Nodal Forces", "Regression", "Contact", "Output/History"};
-
-std::string joinNames(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
+const char* kOpenLists[] = {"Mesh",         "Blocks",     "Materials", "Dirichlet Conditions", "Nodal Forces",
+                            "Loads",        "Regression", "Contact",   "Output/History"};
 
 // A mesh list's parameters validated (defaults filled in) on every rank; returns its type.
 std::string validateMeshList(ParameterList& list, const std::string& where, bool isPart) {
@@ -124,20 +121,6 @@ RCP<const ParameterList> contactValidFor(const ParameterList& child, const std::
     requireOneOf(where + "/Law", law, ContactLawFactory::names());
   }
   return contactValidParameters(law);
-}
-
-void requireNodeSet(const mesh::Mesh& mesh, const std::string& name, const std::string& where) {
-  if (mesh.hasNodeSet(name)) return;
-  std::vector<std::string> known;
-  for (const auto& ns : mesh.nodeSets) known.push_back(ns.name);
-  throw InputError(where + ": node set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
-}
-
-void requireSideSet(const mesh::Mesh& mesh, const std::string& name, const std::string& where) {
-  if (mesh.hasSideSet(name)) return;
-  std::vector<std::string> known;
-  for (const auto& ss : mesh.sideSets) known.push_back(ss.name);
-  throw InputError(where + ": side set '" + name + "' does not exist in the mesh (known: " + joinNames(known) + ")");
 }
 
 // The reference coordinates of contact-surface nodes, gathered from the parts (ProblemDefinition::contactNodes).
@@ -315,6 +298,9 @@ RCP<const ParameterList> problemValidParameters() {
   p->sublist("Materials", false, "One sublist per material (any name): Model and its parameters");
   p->sublist("Dirichlet Conditions", false, "One sublist per condition (any name): Node Set, Component, Value");
   p->sublist("Nodal Forces", false, "One sublist per force (any name): Node Set, Component, Total Force");
+  p->sublist("Loads", false,
+             "One sublist per load (any name): Type (Pressure, Traction, Body Force, Spring) and its parameters; see "
+             "the Load types below");
   auto& out = p->sublist("Output", false, "Results files");
   out.set("Reaction Node Sets", Teuchos::Array<std::string>(),
           "Node sets whose reaction forces are summed into the history (reaction_<set>_<x|y|z>)");
@@ -348,17 +334,11 @@ int componentIndex(const std::string& name, int dimension, const std::string& wh
   return c;
 }
 
-ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDirectory) {
-  ProblemDefinition def;
-  validateAndSetDefaults(problem, *problemValidParameters(), "Problem",
-                         std::set<std::string>(std::begin(kOpenLists), std::end(kOpenLists)));
-  def.title = problem.get<std::string>("Title");
-  def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory);
-  const mesh::Mesh& mesh = def.mesh.local();
+namespace {
 
-  // Materials: the valid list depends on the model name.
+// Materials: the valid list depends on the model name.
+std::map<std::string, std::shared_ptr<const mechanics::Material>> buildMaterials(ParameterList& materialList) {
   std::map<std::string, std::shared_ptr<const mechanics::Material>> materials;
-  auto& materialList = problem.sublist("Materials");
   for (auto it = materialList.begin(); it != materialList.end(); ++it) {
     const std::string& name = materialList.name(it);
     const std::string where = "Problem/Materials/" + name;
@@ -370,42 +350,49 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     validateAndSetDefaults(m, *mechanics::MaterialFactory::validParameters(m.get<std::string>("Model")), where);
     materials[name] = mechanics::MaterialFactory::create(m, where);
   }
+  return materials;
+}
 
-  // Blocks: every mesh block needs physics, and every named block must exist.
-  auto& blockList = problem.sublist("Blocks");
-  const auto named = validateChildren(blockList, *blockValidParameters(), "Problem/Blocks");
-  for (const auto& name : named) {
-    std::vector<std::string> known;
-    for (const auto& b : mesh.blocks) known.push_back(b.name);
-    requireInput(mesh.hasBlock(name), "Problem/Blocks/" + name + ": element block '" + name +
-                                          "' does not exist in the mesh (known: " + joinNames(known) + ")");
-  }
+// One block's element and material, checked against the mesh block's dimension and cell type.
+BlockPhysics blockPhysics(const ParameterList& bl, const mesh::ElementBlock& b, int dimension,
+                          const std::map<std::string, std::shared_ptr<const mechanics::Material>>& materials) {
+  const std::string where = "Problem/Blocks/" + b.name;
+  BlockPhysics phys;
+  phys.block = b.name;
+  phys.elementName = bl.get<std::string>("Element");
+  phys.materialName = bl.get<std::string>("Material");
+  std::vector<std::string> knownMaterials;
+  for (const auto& [n, _] : materials) knownMaterials.push_back(n);
+  requireInput(materials.count(phys.materialName) == 1,
+               where + "/Material: '" + phys.materialName + "' is not a sublist of Problem/Materials (known: " +
+                   joinNames(knownMaterials) + ")");
+  phys.material = materials.at(phys.materialName);
+  phys.element = mechanics::ElementFactory::create(phys.elementName, where + "/Element");
+  requireInput(phys.element->dimension() == dimension,
+               where + "/Element: '" + phys.elementName + "' is a " + std::to_string(phys.element->dimension()) +
+                   "D element but the mesh is " + std::to_string(dimension) + "D");
+  requireInput(phys.element->numNodes() == mesh::nodesPerCell(b.cellType),
+               where + "/Element: '" + phys.elementName + "' does not match the block's cell type " +
+                   mesh::exodusCellName(b.cellType));
+  return phys;
+}
+
+// Blocks: every mesh block needs physics, and every named block must exist.
+std::vector<BlockPhysics> buildBlocks(ParameterList& blockList, ParameterList& materialList, const mesh::Mesh& mesh) {
+  const auto materials = buildMaterials(materialList);
+  for (const auto& name : validateChildren(blockList, *blockValidParameters(), "Problem/Blocks"))
+    requireBlock(mesh, name, "Problem/Blocks/" + name);
+  std::vector<BlockPhysics> blocks;
   for (const auto& b : mesh.blocks) {
-    const std::string where = "Problem/Blocks/" + b.name;
-    requireInput(blockList.isSublist(b.name), where + ": missing; every element block needs an Element and a Material");
-    const auto& bl = blockList.sublist(b.name);
-    BlockPhysics phys;
-    phys.block = b.name;
-    phys.elementName = bl.get<std::string>("Element");
-    phys.materialName = bl.get<std::string>("Material");
-    std::vector<std::string> knownMaterials;
-    for (const auto& [n, _] : materials) knownMaterials.push_back(n);
-    requireInput(materials.count(phys.materialName) == 1,
-                 where + "/Material: '" + phys.materialName + "' is not a sublist of Problem/Materials (known: " +
-                     joinNames(knownMaterials) + ")");
-    phys.material = materials[phys.materialName];
-    phys.element = mechanics::ElementFactory::create(phys.elementName, where + "/Element");
-    requireInput(phys.element->dimension() == mesh.dimension,
-                 where + "/Element: '" + phys.elementName + "' is a " + std::to_string(phys.element->dimension()) +
-                     "D element but the mesh is " + std::to_string(mesh.dimension) + "D");
-    requireInput(phys.element->numNodes() == mesh::nodesPerCell(b.cellType),
-                 where + "/Element: '" + phys.elementName + "' does not match the block's cell type " +
-                     mesh::exodusCellName(b.cellType));
-    def.blocks.push_back(phys);
+    requireInput(blockList.isSublist(b.name),
+                 "Problem/Blocks/" + b.name + ": missing; every element block needs an Element and a Material");
+    blocks.push_back(blockPhysics(blockList.sublist(b.name), b, mesh.dimension, materials));
   }
-  def.axisymmetric = axisymmetricProblem(def.blocks, def.mesh);
+  return blocks;
+}
 
-  auto& dirichletList = problem.sublist("Dirichlet Conditions");
+std::vector<DirichletCondition> buildDirichlet(ParameterList& dirichletList, const mesh::Mesh& mesh) {
+  std::vector<DirichletCondition> conditions;
   for (const auto& name : validateChildren(dirichletList, *dirichletValidParameters(), "Problem/Dirichlet Conditions")) {
     const std::string where = "Problem/Dirichlet Conditions/" + name;
     const auto& d = dirichletList.sublist(name);
@@ -415,10 +402,13 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     requireNodeSet(mesh, bc.nodeSet, where + "/Node Set");
     bc.component = componentIndex(d.get<std::string>("Component"), mesh.dimension, where + "/Component");
     bc.value = d.get<double>("Value");
-    def.dirichlet.push_back(bc);
+    conditions.push_back(bc);
   }
+  return conditions;
+}
 
-  auto& forceList = problem.sublist("Nodal Forces");
+std::vector<NodalForce> buildNodalForces(ParameterList& forceList, const mesh::Mesh& mesh) {
+  std::vector<NodalForce> forces;
   for (const auto& name : validateChildren(forceList, *nodalForceValidParameters(), "Problem/Nodal Forces")) {
     const std::string where = "Problem/Nodal Forces/" + name;
     const auto& f = forceList.sublist(name);
@@ -428,16 +418,19 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     requireNodeSet(mesh, force.nodeSet, where + "/Node Set");
     force.component = componentIndex(f.get<std::string>("Component"), mesh.dimension, where + "/Component");
     force.totalForce = f.get<double>("Total Force");
-    def.nodalForces.push_back(force);
+    forces.push_back(force);
   }
+  return forces;
+}
 
-  const auto& sets = problem.sublist("Output").get<Teuchos::Array<std::string>>("Reaction Node Sets");
-  for (const auto& s : sets) {
+// Problem/Output: reaction node sets, the Exodus layout, checkpoints.
+void readOutput(const ParameterList& output, const mesh::Mesh& mesh, ProblemDefinition& def) {
+  for (const auto& s : output.get<Teuchos::Array<std::string>>("Reaction Node Sets")) {
     requireNodeSet(mesh, s, "Problem/Output/Reaction Node Sets");
     def.reactionNodeSets.push_back(s);
   }
-  def.exodusPerRank = problem.sublist("Output").get<std::string>("Exodus Layout") == "Per Rank";
-  const auto& checkpoint = problem.sublist("Output").sublist("Checkpoint");
+  def.exodusPerRank = output.get<std::string>("Exodus Layout") == "Per Rank";
+  const auto& checkpoint = output.sublist("Checkpoint");
   def.checkpointEvery = checkpoint.get<int>("Every N Increments");
   requireInput(def.checkpointEvery >= 0, "Problem/Output/Checkpoint/Every N Increments: expected an integer >= 0 (0: "
                                          "only on signals and Max Wall Time), got " +
@@ -446,8 +439,11 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
   requireInput(std::isfinite(def.maxWallSeconds) && def.maxWallSeconds >= 0,
                "Problem/Output/Checkpoint/Max Wall Time: expected seconds >= 0 (0: no limit), got " +
                    std::to_string(def.maxWallSeconds));
+}
 
-  auto& contactList = problem.sublist("Contact");
+// Contact interfaces and the reference coordinates of their surface nodes (collective: the surfaces are
+// gathered from every rank's part).
+void buildContacts(ParameterList& contactList, ProblemDefinition& def) {
   SurfaceCoordinates surfaceCoordinates;
   for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact"))
     for (auto& spec : buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates, def.axisymmetric))
@@ -456,10 +452,10 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     def.contactNodes.push_back(node);
     def.contactNodeCoordinates.insert(def.contactNodeCoordinates.end(), x.begin(), x.end());
   }
+}
 
-  def.history = buildHistoryRequests(problem.sublist("Output").sublist("History"), def);
-
-  auto& regressionList = problem.sublist("Regression");
+std::vector<RegressionCheck> buildRegression(ParameterList& regressionList) {
+  std::vector<RegressionCheck> checks;
   for (const auto& name : validateChildren(regressionList, *regressionValidParameters(), "Problem/Regression")) {
     const auto& r = regressionList.sublist(name);
     RegressionCheck check;
@@ -470,8 +466,29 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
     check.expected = r.get<double>("Expected");
     check.relativeTolerance = r.get<double>("Relative Tolerance");
     check.absoluteTolerance = r.get<double>("Absolute Tolerance");
-    def.regression.push_back(check);
+    checks.push_back(check);
   }
+  return checks;
+}
+
+}  // namespace
+
+ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDirectory) {
+  ProblemDefinition def;
+  validateAndSetDefaults(problem, *problemValidParameters(), "Problem",
+                         std::set<std::string>(std::begin(kOpenLists), std::end(kOpenLists)));
+  def.title = problem.get<std::string>("Title");
+  def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory);
+  const mesh::Mesh& mesh = def.mesh.local();
+  def.blocks = buildBlocks(problem.sublist("Blocks"), problem.sublist("Materials"), mesh);
+  def.axisymmetric = axisymmetricProblem(def.blocks, def.mesh);
+  def.dirichlet = buildDirichlet(problem.sublist("Dirichlet Conditions"), mesh);
+  def.nodalForces = buildNodalForces(problem.sublist("Nodal Forces"), mesh);
+  def.loads = buildLoads(problem.sublist("Loads"), mesh);
+  readOutput(problem.sublist("Output"), mesh, def);
+  buildContacts(problem.sublist("Contact"), def);
+  def.history = buildHistoryRequests(problem.sublist("Output").sublist("History"), def);
+  def.regression = buildRegression(problem.sublist("Regression"));
   return def;
 }
 

@@ -11,6 +11,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "contact/InterfaceSpec.hpp"
+#include "deck/LoadDefinitions.hpp"
 #include "deck/OutputRequests.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
@@ -65,6 +66,7 @@ struct ProblemDefinition {
   bool axisymmetric = false;
   std::vector<DirichletCondition> dirichlet;
   std::vector<NodalForce> nodalForces;
+  std::vector<LoadDefinition> loads;  ///< Problem/Loads: pressure, traction, body force, springs
   std::vector<std::string> reactionNodeSets;
   bool exodusPerRank = false;  ///< Problem/Output/Exodus Layout = Per Rank
   int checkpointEvery = 0;      ///< Problem/Output/Checkpoint/Every N Increments (0: none)

@@ -39,8 +39,15 @@ BoundaryConditions::BoundaryConditions(const deck::ProblemDefinition& problem, c
       prescribedValues_.push_back(value.first);
     }
   }
-  // Nodal forces: shared equally by the whole set's nodes; only the owner adds a node's share.
+  // Dead loads on sets: each rank integrates its part's facets and elements into overlapped storage,
+  // added to the owners' rows.
+  const Map& overlap = *layout.overlapMap();
+  loads_ = std::make_unique<ExternalLoads>(problem, [&overlap](mesh::GlobalIndex dof) { return overlap.getLocalElement(dof); });
+  Vector overlapLoads(layout.overlapMap());
+  loads_->addDeadLoads(overlapLoads.getDataNonConst(0).getRawPtr());
   externalForce_ = Teuchos::rcp(new Vector(layout.ownedMap()));
+  externalForce_->doExport(overlapLoads, layout.exporter(), Tpetra::ADD);
+  // Nodal forces: shared equally by the whole set's nodes; only the owner adds a node's share.
   auto f = externalForce_->getDataNonConst(0);
   for (const auto& force : problem.nodalForces) {
     const auto set = &part.local().nodeSet(force.nodeSet) - part.local().nodeSets.data();
@@ -50,13 +57,31 @@ BoundaryConditions::BoundaryConditions(const deck::ProblemDefinition& problem, c
       if (lo != Teuchos::OrdinalTraits<LO>::invalid()) f[lo] += force.totalForce / setSize;
     }
   }
+  // Springs to ground: k per node and direction, on the owner's rows.
+  std::map<GO, double> springs;
+  for (const auto& load : problem.loads) {
+    if (load.type != deck::LoadType::Spring) continue;
+    for (GO node : nodesOf(load.set))
+      for (int c = 0; c < dim; ++c)
+        if (load.vector[c] != 0.0) springs[node * dim + c] += load.vector[c];
+  }
+  for (const auto& [dof, k] : springs) {
+    const LO lo = owned.getLocalElement(dof);
+    if (lo == Teuchos::OrdinalTraits<LO>::invalid()) continue;
+    springRows_.push_back(lo);
+    springOverlapDofs_.push_back(overlap.getLocalElement(dof));
+    springStiffness_.push_back(k);
+  }
 }
 
+BoundaryConditions::~BoundaryConditions() = default;
+
 void BoundaryConditions::residual(const Vector& force, const Vector& x, double lambda, Vector& f) const {
-  // Free rows: f_int − λ f_ext (eq. of equilibrium); prescribed rows: u − λ ū.
+  // Free rows: f_int − λ f_ext + K_s u (equilibrium); prescribed rows: u − λ ū.
   f.update(1.0, force, -lambda, *externalForce_, 0.0);
   auto fv = f.getDataNonConst(0);
   auto xv = x.getData(0);
+  for (std::size_t k = 0; k < springRows_.size(); ++k) fv[springRows_[k]] += springStiffness_[k] * xv[springRows_[k]];
   for (std::size_t k = 0; k < prescribedRows_.size(); ++k) {
     const LO r = prescribedRows_[k];
     fv[r] = xv[r] - lambda * prescribedValues_[k];

@@ -188,6 +188,14 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
     contactFitsGraph_ = contact_->assemble(u.getRawPtr(), lambda, updateTrial, fo.getRawPtr(), dl.getRawPtr(),
                                            withStiffness ? scatter_.get() : nullptr);
   }
+  // Follower loads (the pressures: −λ f_p(x), its ∂/∂λ and load stiffness) through the same scatter as the
+  // elements' (their facets couple only their element's DOFs); the springs' diagonal.
+  const ExternalLoads::StiffnessSink facetSink = [this](const int* dofs, int n, const double* k) {
+    scatter_->addStiffness(dofs, n, k);
+  };
+  conditions_->loads().assembleFollowerLoads(u.getRawPtr(), lambda, fo.getRawPtr(), dl.getRawPtr(),
+                                             withStiffness ? &facetSink : nullptr);
+  if (withStiffness) conditions_->addSpringStiffness([this](LO dof, double k) { scatter_->addStiffness(&dof, 1, &k); });
   fo = Teuchos::null;
   dl = Teuchos::null;
   force.putScalar(0.0);

@@ -1,0 +1,118 @@
+#include "model/ExternalLoads.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace contessa::model {
+namespace {
+
+using mesh::GlobalIndex;
+
+// Appends the overlapped DOFs and reference coordinates of the local nodes `nodes` to `entries`.
+template <class Entries>
+void appendNodes(Entries& entries, const std::vector<GlobalIndex>& nodes, const deck::ProblemDefinition& problem,
+                 const std::function<int(GlobalIndex)>& localDof) {
+  const mesh::Mesh& mesh = problem.mesh.local();
+  const int dim = mesh.dimension;
+  for (GlobalIndex node : nodes)
+    for (int c = 0; c < dim; ++c) {
+      entries.X.push_back(mesh.coordinates[node * dim + c]);
+      entries.dofs.push_back(localDof(problem.mesh.part.globalNodes[node] * dim + c));
+    }
+  entries.nodes = static_cast<int>(nodes.size());
+  ++entries.count;
+}
+
+}  // namespace
+
+ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::function<int(GlobalIndex)>& localDof)
+    : dim_(problem.dimension()) {
+  // A solid of revolution (Axisymmetry.hpp) takes its loads over the full circumference: w = 2πr.
+  if (problem.axisymmetric) measure_ = std::make_unique<mechanics::RevolvedMeasure>();
+  else measure_ = std::make_unique<mechanics::UnitMeasure>(dim_);
+  const mesh::Mesh& mesh = problem.mesh.local();  // the part: local numbering, its own elements' sides
+  for (const auto& load : problem.loads) {
+    Entries entries;
+    entries.value = load.type == deck::LoadType::Pressure ? std::vector<double>{load.pressure} : load.vector;
+    if (load.type == deck::LoadType::Pressure || load.type == deck::LoadType::Traction) {
+      const mesh::SideSet& set = mesh.sideSet(load.set);
+      for (std::size_t k = 0; k < set.elements.size(); ++k) {
+        const auto where = mesh.locate(set.elements[k]);
+        const mesh::ElementBlock& block = mesh.blocks[where.block];
+        const int npe = mesh::nodesPerCell(block.cellType);
+        std::vector<GlobalIndex> nodes;
+        for (int a : mesh::sideNodes(block.cellType, set.sides[k])) nodes.push_back(block.connectivity[where.local * npe + a]);
+        // The kernels integrate multilinear facets: 2-node edges (2D), 4-node faces (3D).
+        if (static_cast<int>(nodes.size()) != mechanics::facetNodeCount(dim_))
+          throw std::logic_error("ExternalLoads: a side of " + std::to_string(nodes.size()) + " nodes in side set '" +
+                                 load.set + "'; the load kernels take 2-node edges and 4-node faces");
+        appendNodes(entries, nodes, problem, localDof);
+      }
+      (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(entries));
+    } else if (load.type == deck::LoadType::BodyForce) {
+      for (const auto& name : load.blocks) {
+        const mesh::ElementBlock& block = mesh.block(name);
+        const int npe = mesh::nodesPerCell(block.cellType);
+        if (npe != mechanics::cellNodeCount(dim_))
+          throw std::logic_error("ExternalLoads: block '" + name + "' has " + std::to_string(npe) +
+                                 "-node cells; the body-force kernel takes Quad4 and Hex8");
+        for (GlobalIndex e = 0; e < block.numElements(); ++e)
+          appendNodes(entries, std::vector<GlobalIndex>(block.connectivity.begin() + e * npe,
+                                                        block.connectivity.begin() + (e + 1) * npe),
+                      problem, localDof);
+      }
+      bodyCells_.push_back(std::move(entries));
+    }  // springs are supports, not loads: BoundaryConditions
+  }
+}
+
+void ExternalLoads::addDeadLoads(double* f) const {
+  std::vector<double> fe;
+  const auto add = [&](const Entries& entries, bool cells) {
+    const int n = entries.nodes * dim_;
+    fe.resize(static_cast<std::size_t>(n));
+    for (std::size_t k = 0; k < entries.count; ++k) {
+      const double* X = entries.X.data() + k * n;
+      if (cells) {
+        if (dim_ == 2) mechanics::bodyForce<2>(X, entries.value.data(), *measure_, fe.data());
+        else mechanics::bodyForce<3>(X, entries.value.data(), *measure_, fe.data());
+      } else {
+        if (dim_ == 2) mechanics::facetTraction<2>(X, entries.value.data(), *measure_, fe.data());
+        else mechanics::facetTraction<3>(X, entries.value.data(), *measure_, fe.data());
+      }
+      for (int i = 0; i < n; ++i) f[entries.dofs[k * n + i]] += fe[i];
+    }
+  };
+  for (const auto& entries : tractionFacets_) add(entries, false);
+  for (const auto& entries : bodyCells_) add(entries, true);
+}
+
+void ExternalLoads::assembleFollowerLoads(const double* u, double lambda, double* force, double* dForcedLambda,
+                                          const StiffnessSink* stiffness) const {
+  std::vector<double> x, fe, ke;
+  for (const auto& entries : pressureFacets_) {
+    const int n = entries.nodes * dim_;
+    x.resize(static_cast<std::size_t>(n));
+    fe.resize(static_cast<std::size_t>(n));
+    ke.resize(stiffness ? static_cast<std::size_t>(n * n) : 0);
+    const double p = entries.value[0];
+    for (std::size_t k = 0; k < entries.count; ++k) {
+      const int* dofs = entries.dofs.data() + k * n;
+      for (int i = 0; i < n; ++i) x[i] = entries.X[k * n + i] + u[dofs[i]];  // current position
+      double* K = stiffness ? ke.data() : nullptr;
+      if (dim_ == 2) mechanics::followerPressure<2>(x.data(), p, *measure_, fe.data(), K);
+      else mechanics::followerPressure<3>(x.data(), p, *measure_, fe.data(), K);
+      // f_p is linear in p: f_p(λ p) = λ f_p(p), ∂/∂λ = f_p(p); the residual carries −f_ext.
+      for (int i = 0; i < n; ++i) {
+        force[dofs[i]] -= lambda * fe[i];
+        dForcedLambda[dofs[i]] -= fe[i];
+      }
+      if (K) {
+        for (double& v : ke) v *= -lambda;
+        (*stiffness)(dofs, n, K);
+      }
+    }
+  }
+}
+
+}  // namespace contessa::model
