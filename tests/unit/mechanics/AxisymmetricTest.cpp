@@ -45,18 +45,7 @@ class AxisymmetricElement : public ElementMaterial {
     std::vector<double> alpha(ni, 0.0), f(nd);
     K.assign(nd * nd, 0.0);
     EXPECT_EQ(kernel->evaluate(X.data(), u.data(), alpha.data(), *material, f.data(), K.data()), ElementStatus::Ok);
-    const double h = 1e-6;
-    std::vector<double> Kfd(nd * nd);
-    for (int c = 0; c < nd; ++c) {
-      auto up = u, um = u;
-      up[c] += h;
-      um[c] -= h;
-      auto ap = alpha, am = alpha;
-      std::vector<double> fp(nd), fm(nd);
-      EXPECT_EQ(kernel->evaluate(X.data(), up.data(), ap.data(), *material, fp.data(), nullptr), ElementStatus::Ok);
-      EXPECT_EQ(kernel->evaluate(X.data(), um.data(), am.data(), *material, fm.data(), nullptr), ElementStatus::Ok);
-      for (int r = 0; r < nd; ++r) Kfd[r * nd + c] = (fp[r] - fm[r]) / (2.0 * h);
-    }
+    const auto Kfd = centralDifferenceTangent(*kernel, *material, X, u, alpha, 1e-6);
     return maxAbsDifference(K, Kfd) / maxAbs(K);
   }
 };

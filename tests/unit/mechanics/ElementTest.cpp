@@ -34,18 +34,7 @@ TEST_P(ElementCase, StiffnessMatchesCentralDifferencesOfInternalForce) {
 
   // Central differences of the (condensed) internal force; every evaluate re-solves α from the
   // converged α of the base state.
-  const double h = 1e-6 * kSize;
-  std::vector<double> Kfd(nd * nd);
-  for (int c = 0; c < nd; ++c) {
-    auto up = u, um = u;
-    up[c] += h;
-    um[c] -= h;
-    auto ap = alpha, am = alpha;
-    std::vector<double> fp(nd), fm(nd);
-    ASSERT_EQ(kernel->evaluate(X.data(), up.data(), ap.data(), *material, fp.data(), nullptr), ElementStatus::Ok);
-    ASSERT_EQ(kernel->evaluate(X.data(), um.data(), am.data(), *material, fm.data(), nullptr), ElementStatus::Ok);
-    for (int r = 0; r < nd; ++r) Kfd[r * nd + c] = (fp[r] - fm[r]) / (2.0 * h);
-  }
+  const auto Kfd = centralDifferenceTangent(*kernel, *material, X, u, alpha, 1e-6 * kSize);
   const double err = maxAbsDifference(K, Kfd) / maxAbs(K);
   std::printf("[measure] element FD %s / %s: rel err %.2e (max|alpha| %.3f)\n", GetParam().element.c_str(),
               GetParam().material.c_str(), err, alphaNorm);

@@ -241,6 +241,26 @@ inline std::vector<double> familyDeformation(const std::vector<double>& X, const
   return u;
 }
 
+/// Central differences (step h) of one element's internal force at u: the tangent its kernel must
+/// match. Every evaluation re-solves the internal variables from `internal` (the converged ones of the
+/// base state; empty for kernels without any).
+inline std::vector<double> centralDifferenceTangent(const ElementKernel& kernel, const Material& material,
+                                                    const std::vector<double>& X, const std::vector<double>& u,
+                                                    const std::vector<double>& internal, double h) {
+  const int nd = kernel.numDofs();
+  std::vector<double> Kfd(nd * nd), fp(nd), fm(nd);
+  for (int c = 0; c < nd; ++c) {
+    auto up = u, um = u;
+    up[c] += h;
+    um[c] -= h;
+    auto ap = internal, am = internal;
+    EXPECT_EQ(kernel.evaluate(X.data(), up.data(), ap.data(), material, fp.data(), nullptr), ElementStatus::Ok);
+    EXPECT_EQ(kernel.evaluate(X.data(), um.data(), am.data(), material, fm.data(), nullptr), ElementStatus::Ok);
+    for (int r = 0; r < nd; ++r) Kfd[r * nd + c] = (fp[r] - fm[r]) / (2.0 * h);
+  }
+  return Kfd;
+}
+
 /// Number of zero pivots (below 1e-10 of the largest) of a symmetric n × n matrix by Gaussian
 /// elimination with full pivoting: the dimension of its null space.
 inline int nullity(std::vector<double> K, int n) {
