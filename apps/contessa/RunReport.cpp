@@ -79,9 +79,7 @@ EarlierJobs earlierJobs(const std::vector<std::string>& columns, const std::vect
   const auto column = [&](const char* name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
   };
-  const std::size_t newton = column("newton_iterations"), wall = column("wall_s");
-  for (std::size_t k = 1; k < rows.size(); ++k)
-    if (newton < rows[k].size() && std::isfinite(rows[k][newton])) e.newtonIterations += std::lround(rows[k][newton]);
+  const std::size_t wall = column("wall_s");
   if (wall < rows.back().size() && std::isfinite(rows.back()[wall])) e.wallSeconds = rows.back()[wall];
   return e;
 }
@@ -97,7 +95,7 @@ std::string summaryLine(const RunReport& r) {
     out << "this job " << s.increments - e.step << " increments (steps " << e.step + 1 << " to " << s.increments
         << "), " << s.newtonIterations << " Newton iterations, wall " << number(r.wallSeconds) << " s; whole run "
         << s.increments << " increments, " << s.failedAttempts << " failed attempts, "
-        << e.newtonIterations + s.newtonIterations << " Newton iterations, wall "
+        << s.runNewtonIterations << " Newton iterations, wall "
         << number(e.wallSeconds + r.wallSeconds) << " s; this job " << s.linearIterations << " linear iterations";
   } else {
     out << s.increments << " increments, " << s.failedAttempts << " failed attempts, " << s.newtonIterations
@@ -153,7 +151,7 @@ std::string summaryJson(const RunReport& r) {
   out << ",\n  \"this_job\": {\"first_step\": " << e.step + 1 << ", \"increments\": " << s.increments - e.step
       << ", \"newton_iterations\": " << s.newtonIterations << ", \"wall_seconds\": " << number(r.wallSeconds) << "}";
   out << ",\n  \"whole_run\": {\"continued\": " << (r.earlier ? "true" : "false") << ", \"increments\": " << s.increments
-      << ", \"newton_iterations\": " << e.newtonIterations + s.newtonIterations
+      << ", \"newton_iterations\": " << s.runNewtonIterations
       << ", \"wall_seconds\": " << number(e.wallSeconds + r.wallSeconds) << "}\n}\n";
   return out.str();
 }

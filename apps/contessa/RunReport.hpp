@@ -17,15 +17,15 @@ namespace contessa::app {
 /// ru_maxrss; 0 when neither is available.
 long long peakResidentBytes();
 
-/// What the earlier jobs of a continued run (--restart) did, from the restart file's history rows.
+/// What the earlier jobs of a continued run (--restart) did, from the restart file's history rows (their
+/// Newton iterations, failed attempts included, come with the driver's summary: RunSummary::
+/// runNewtonIterations).
 struct EarlierJobs {
   int step = 0;                 ///< the restart file's step: this job began after it
-  long newtonIterations = 0;    ///< of the converged increments 1..step (their failed attempts are not kept)
   double wallSeconds = 0;       ///< the run's wall time at that step (history column wall_s)
 };
 
-/// From the restart file's history rows (steps 0..k) and the history's columns: k, the sum of the column
-/// newton_iterations over steps 1..k and wall_s of step k.
+/// From the restart file's history rows (steps 0..k) and the history's columns: k and wall_s of step k.
 EarlierJobs earlierJobs(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows);
 
 struct RunReport {

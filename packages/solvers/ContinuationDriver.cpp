@@ -148,6 +148,7 @@ RunSummary ContinuationDriver::run() {
   summary.increments = bookkeeper->increments;
   summary.failedAttempts = bookkeeper->failedAttempts;
   summary.newtonIterations = newton->total;
+  summary.runNewtonIterations = bookkeeper->earlierNewtonIterations + newton->total;
   // A direct solver solves once per Jacobian; iterative solvers are counted as Jacobian evaluations.
   const long mumpsSolves = mumpsCounters().solves - solvesBefore;
   summary.linearSolves =

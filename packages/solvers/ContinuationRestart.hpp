@@ -19,6 +19,7 @@ struct LocaResumePoint;
 struct ContinuationPoint {
   int increments = 0, failedAttempts = 0;  ///< converged increments (k) and failed attempts so far
   int newtonIterations = 0;                ///< of increment k's solve (what the step-size strategy reads)
+  int runNewtonIterations = 0;             ///< of the whole run up to increment k, failed attempts included
   double lambda = 0, previousLambda = 0;   ///< λ_k, λ_{k-1}
   double stepSize = 0;                     ///< LOCA's step size of increment k (after its capping)
   double wallSeconds = 0;                  ///< wall time of the run (all its parts) at increment k
@@ -32,6 +33,7 @@ struct ContinuationPoint {
     field("increments", self.increments);
     field("failed_attempts", self.failedAttempts);
     field("newton_iterations", self.newtonIterations);
+    field("run_newton_iterations", self.runNewtonIterations);
     field("lambda", self.lambda);
     field("previous_lambda", self.previousLambda);
     field("step_size", self.stepSize);

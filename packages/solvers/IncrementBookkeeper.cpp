@@ -77,6 +77,7 @@ void IncrementBookkeeper::rememberPoint(double lambda, const IncrementReport& r)
   point_.increments = increments;
   point_.failedAttempts = failedAttempts;
   point_.newtonIterations = newton_.iterations;
+  point_.runNewtonIterations = earlierNewtonIterations + newton_.total;
   point_.lambda = lambda;
   point_.previousLambda = previousLambda_;
   point_.stepSize = stepper_ != nullptr ? stepper_->currentStepSize() : 0.0;
@@ -96,6 +97,7 @@ void IncrementBookkeeper::resumeAt(const ContinuationPoint& p) {
   point_ = p;
   increments = p.increments;
   failedAttempts = p.failedAttempts;
+  earlierNewtonIterations = p.runNewtonIterations;
   lastLambda_ = p.lambda;
   previousLambda_ = p.previousLambda;
   currentX_ = p.x;

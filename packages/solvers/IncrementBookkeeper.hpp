@@ -45,6 +45,8 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   void setResuming(bool resuming) { resuming_ = resuming; }
 
   int increments = 0, failedAttempts = 0;
+  /// Newton iterations of the jobs before this one (0 for a new run; from the restart file's point).
+  int earlierNewtonIterations = 0;
   double lastLambda() const { return lastLambda_; }
   bool initialStateSolved() const { return !first_; }
   bool lastAttemptFailed = false;  ///< the latest attempt failed (no converged increment since)

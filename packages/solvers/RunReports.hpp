@@ -57,6 +57,9 @@ struct RunSummary {
   bool checkpointed = false;  ///< stopped after writing a restart file (message: why)
   std::string message;    ///< why not, when not
   int increments = 0, failedAttempts = 0, newtonIterations = 0, linearSolves = 0;
+  /// Newton iterations of the whole run, failed attempts included: this job's plus, for a run continued
+  /// from a restart file, the earlier jobs' (kept in the file). newtonIterations counts this job only.
+  int runNewtonIterations = 0;
   long linearIterations = 0;  ///< Krylov iterations of every linear solve (0 with a direct solver)
   double finalLambda = 0;
 };

@@ -113,6 +113,7 @@ RunSummary solveStatic(const SolverModel& model, const Teuchos::ParameterList& p
     summary.finished = true;
     summary.increments = 1;
     summary.newtonIterations = r.newtonIterations;
+    summary.runNewtonIterations = r.newtonIterations;
     summary.finalLambda = 1.0;
   } catch (const std::exception& e) {
     summary.message = "the Newton solve from load factor 0 to 1 (Piro/Solver Type = NOX) failed: " +

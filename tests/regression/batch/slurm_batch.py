@@ -166,6 +166,12 @@ def main():
           f"whole_run {whole}, {len(rows) - 1} increments in the history")
     check(whole.get("newton_iterations", 0) >= sum(int(r["newton_iterations"]) for r in rows[1:]) and
           whole.get("wall_seconds", 0) > job.get("wall_seconds", 0), f"whole_run {whole}, this job {job}")
+    # The restart files carry the run's Newton count (failed attempts included), so the chain's whole run
+    # counts what the uninterrupted run did, exactly.
+    reference_summary = json.load(open(os.path.join(reference, name + ".summary.json")))
+    check(whole.get("newton_iterations") == reference_summary.get("newton_iterations"),
+          f"whole_run Newton iterations {whole.get('newton_iterations')}, uninterrupted run "
+          f"{reference_summary.get('newton_iterations')}")
     history = subprocess.run([COMPARE, os.path.join(reference, name + ".history.csv"),
                               os.path.join(out, name + ".history.csv")] + COMPARE_OPTIONS,
                              capture_output=True, text=True, timeout=60)

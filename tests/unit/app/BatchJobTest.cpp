@@ -51,14 +51,13 @@ TEST(BatchJob, RestartAutoAndJobEndMargin) {
   EXPECT_THROW(parse({"deck.xml", "--job-end-margin"}), contessa::InputError);
 }
 
-// A restart file's history rows: steps 0..3 with their Newton iterations and the run's wall time.
+// A restart file's history rows: steps 0..3 and the run's wall time.
 TEST(BatchJob, EarlierJobsFromTheRestartHistory) {
   const std::vector<std::string> columns{"step", "lambda", "newton_iterations", "wall_s"};
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<std::vector<double>> rows{{0, 0, 2, 0.5}, {1, 0.1, 4, 1.5}, {2, 0.2, 5, 2.5}, {3, 0.3, nan, 3.25}};
   const EarlierJobs e = earlierJobs(columns, rows);
   EXPECT_EQ(e.step, 3);
-  EXPECT_EQ(e.newtonIterations, 9);  // steps 1..3; step 0 is the initial state, a NaN counts nothing
   EXPECT_DOUBLE_EQ(e.wallSeconds, 3.25);
 }
 
@@ -67,13 +66,15 @@ TEST(BatchJob, ContinuedRunSummaryStatesBothScopes) {
   r.summary.finished = true;
   r.summary.increments = 10;  // the driver counts the whole run's increments
   r.summary.failedAttempts = 2;
-  r.summary.newtonIterations = 30;  // this job's
+  r.summary.newtonIterations = 30;     // this job's
+  r.summary.runNewtonIterations = 30;  // a new run: the same
   r.wallSeconds = 20;
   r.peakBytesPerRank = {1 << 20};
   const std::string fresh = summaryLine(r);
   EXPECT_EQ(fresh.rfind("contessa: summary: 10 increments, 2 failed attempts, 30 Newton iterations, 0 linear "
                         "iterations, wall 20 s,", 0), 0u) << fresh;
-  r.earlier = EarlierJobs{4, 16, 12.5};
+  r.earlier = EarlierJobs{4, 12.5};
+  r.summary.runNewtonIterations = 46;  // the earlier jobs' 16 (failed attempts included) and this job's 30
   const std::string line = summaryLine(r);
   EXPECT_NE(line.find("this job 6 increments (steps 5 to 10), 30 Newton iterations, wall 20 s; whole run 10 "
                       "increments, 2 failed attempts, 46 Newton iterations, wall 32.5 s;"), std::string::npos) << line;
