@@ -1,15 +1,18 @@
 #include "solvers/ContinuationDriver.hpp"
 
+#include <iostream>
 #include <sstream>
 
 #include <LOCA.H>
 #include <LOCA_Thyra.H>
 #include <NOX_Observer_Vector.hpp>
 #include <NOX_Thyra_Vector.H>
+#include <Thyra_SpmdVectorSpaceBase.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 
 #include "common/Error.hpp"
 #include "solvers/IncrementBookkeeper.hpp"
+#include "solvers/IterateContactStates.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/LocaResume.hpp"
 #include "solvers/MumpsSolver.hpp"
@@ -97,6 +100,12 @@ RunSummary ContinuationDriver::run() {
   observers->pushBack(newton);
   if (!iterationObserver_.is_null()) observers->pushBack(iterationObserver_);
   observers->pushBack(relay);
+  if (piro_.sublist("NOX").sublist("Printing").get<bool>("Newton Details")) {
+    // The contact states of every iterate next to NOX's own lines (rank 0 writes, as NOX does).
+    const auto space = Teuchos::rcp_dynamic_cast<const Thyra::SpmdVectorSpaceBase<double>>(model_.evaluator->get_x_space());
+    const bool print = space.is_null() || space->getComm()->getRank() == 0;
+    observers->pushBack(rcp(new IterateContactStates(*model_.events, print, std::cout)));
+  }
   auto params = locaParameters(piro_, observers, errors);
   auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*stepControl)));
 

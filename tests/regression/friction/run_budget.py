@@ -12,10 +12,12 @@ jumps of the first iterate and of active-set changes), r_k+1 < r_k, and r_k+1 >=
 round-off floor of the residual; on the tube a penalty of 1e9 times a tributary length of 1.9 mm times the
 spacing of doubles near 120 mm quantises each nodal force by about 3e-5 N/mm, and ||F|| stalls at 3e-5 to
 1.5e-4): each must satisfy r_k+1 <= C r_k^2 (--quadratic-constant C), and there must be at least
---min-pairs of them. --max-slow-pairs N lets at most N decreasing pairs miss the bound: a node that opens,
-closes or changes stick/slip between two iterates while ||F|| still falls (a contact status change that
-the residual alone does not show); each is printed, and one more fails the run. Steps where the residual grows (a node opens, closes or changes stick/slip between
-iterates) are counted and printed, not checked: they are not part of the asymptotic range. Each pair is
+--min-pairs of them. A pair that misses the bound is excused only when it crosses a change of the active
+set: the driver prints each iterate's contact states with Newton Details ("contessa: iterate k: open O,
+stick S, slip P, signature H", solvers/IterateContactStates.hpp), and where the signature of r_k+1 differs
+from r_k's a node opened, closed, changed stick/slip or moved to another facet, so the residual is another
+smooth function on each side and no rate is owed; every slow pair within one active set fails the run.
+Steps where the residual grows are counted and printed, not checked. Each pair is
 printed with the convergence order estimate p = log(r_k+1 / r_k) / log(r_k / r_k-1) when r_k-1 is in the
 asymptotic range too (information: with two or three iterates above the floor, p is dominated by the
 first one's distance from the asymptotic range; the bounded ratio is the test).
@@ -47,7 +49,6 @@ parser.add_argument("--asymptotic", type=float, default=10.0)
 parser.add_argument("--floor", type=float, default=1e-3)
 parser.add_argument("--quadratic-constant", type=float, default=0.1)
 parser.add_argument("--min-pairs", type=int, default=20)
-parser.add_argument("--max-slow-pairs", type=int, default=0)
 parser.add_argument("--history")
 parser.add_argument("--require-states", default="")
 parser.add_argument("--min-rebuilds", type=int)
@@ -90,15 +91,24 @@ if args.min_rebuilds is not None:
 
 if args.newton_rate:
     attempts = []
+    signatures = []  # per attempt, the contact-state signature of each residual norm (None: not printed)
     rebuilt_after = {}  # attempt -> number of residual norms printed before its first rebuild
+    pending = None  # the latest iterate's signature, printed just before its ||F||
     for line in out.splitlines():
         if "Start of Continuation Step" in line:
             attempts.append([])
+            signatures.append([])
+            pending = None
         if line.startswith("contessa: matrix graph rebuilt (") and attempts:
             rebuilt_after.setdefault(len(attempts) - 1, len(attempts[-1]))
+        s = re.match(r"contessa: iterate \d+: .*signature (\w+)", line)
+        if s:
+            pending = s.group(1)
         m = re.search(r"\|\|F\|\| = (\S+)", line)
         if m and attempts:
             attempts[-1].append(float(m.group(1)))
+            signatures[-1].append(pending)
+            pending = None
     states = {}
     if args.history:
         if summary and failed != 0:
@@ -109,7 +119,7 @@ if args.newton_rate:
                 kind = "mixed" if stick and slip else "stick" if stick else "slip" if slip else "none"
                 states[int(float(row["step"]))] = f"{kind} ({stick} stick, {slip} slip)"
     checked = {}
-    pairs = increases = after_rebuild = 0
+    pairs = increases = after_rebuild = excused = 0
     slow = []
     for i, norms in enumerate(attempts):
         for k in range(1, len(norms)):
@@ -132,14 +142,16 @@ if args.newton_rate:
                 order = f"  order {math.log(b / a) / math.log(a / norms[k - 2]):.2f}"
             print(f"attempt {i}{' ' + state if state else ''}: ||F|| {a:.3e} -> {b:.3e}  "
                   f"r_k+1 / r_k^2 = {c:.3e}{order}{'  (after a graph rebuild)' if rebuilt else ''}")
-            if c > args.quadratic_constant:
+            before, after = signatures[i][k - 1], signatures[i][k]
+            if c > args.quadratic_constant and before is not None and after is not None and before != after:
+                excused += 1
+                print(f"    not quadratic, across a change of the active set (signature {before} -> {after}): excused")
+            elif c > args.quadratic_constant:
                 slow.append(f"attempt {i}: {a:.3e} -> {b:.3e} is not quadratic (r_k+1 / r_k^2 = {c:.3e} > "
                             f"{args.quadratic_constant})")
-    print(f"{len(attempts)} attempts, {pairs} asymptotic pairs checked, {increases} residual increases skipped")
-    if slow and len(slow) <= args.max_slow_pairs:
-        print(f"{len(slow)} slow pairs (at most {args.max_slow_pairs} allowed: status changes between iterates)")
-    else:
-        failures.extend(slow)
+    print(f"{len(attempts)} attempts, {pairs} asymptotic pairs checked ({excused} slow ones across an active-set "
+          f"change excused), {increases} residual increases skipped")
+    failures.extend(slow)
     if pairs < args.min_pairs:
         failures.append(f"only {pairs} asymptotic pairs (at least {args.min_pairs}): is Newton Details on?")
     if checked:
