@@ -27,7 +27,6 @@ struct PlanarKinematics {
   static constexpr int kDimension = D;          ///< displacement components per node
   static constexpr int kMaterialDimension = D;  ///< the law is evaluated on a kMaterialDimension² F
   static constexpr bool kHoop = false;
-  static constexpr const char* kName = D == 2 ? "plane strain" : "3D";
 
   /// The point ξ of a Shape element with reference coordinates X: the scale of its integration weight
   /// w j and the hoop coefficients of its shape functions. Nothing in the plane; always valid.
@@ -63,7 +62,6 @@ struct PlanarKinematics {
 struct AxisymmetricKinematics {
   static constexpr int kDimension = 2, kMaterialDimension = 3;
   static constexpr bool kHoop = true;
-  static constexpr const char* kName = "axisymmetric";
   static constexpr int kHoopIndex = 8;  ///< θθ in a Matrix<3> (row-major index 3·2 + 2)
 
   /// dV = 2π R w j and c_a = N_a / R at ξ. False when R ≤ 0 (the element reaches the axis' other side,
