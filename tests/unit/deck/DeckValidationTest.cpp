@@ -13,44 +13,13 @@
 #include "solvers/SolverParameters.hpp"
 #include "solvers/StepSizeMethods.hpp"
 
+#include "TestDeck.hpp"
+
 namespace {
 
 using contessa::InputError;
+using contessa::deck::test::goodProblem;
 using Teuchos::ParameterList;
-
-// A small valid Problem list; tests break one thing at a time.
-Teuchos::RCP<ParameterList> goodProblem() {
-  return Teuchos::getParametersFromXmlString(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="2.0"/>
-    <Parameter name="Elements X" type="int" value="2"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="block_1">
-      <Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="steel"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="steel">
-      <Parameter name="Model" type="string" value="Neo-Hookean"/>
-      <Parameter name="Young's Modulus" type="double" value="200.0"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="fix">
-      <Parameter name="Node Set" type="string" value="left"/>
-      <Parameter name="Component" type="string" value="x"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="Reaction Node Sets" type="Array(string)" value="{left}"/>
-  </ParameterList>
-</ParameterList>)XML");
-}
 
 // Expects buildProblem to throw an InputError whose one-line message contains `expected`.
 void expectProblemError(ParameterList& problem, const std::string& expected) {

@@ -7,41 +7,19 @@
 #include "deck/OutputRequests.hpp"
 #include "deck/ProblemDefinition.hpp"
 
+#include "TestDeck.hpp"
+
 namespace {
 
 using contessa::deck::HistoryQuantity;
 using contessa::deck::HistoryRequest;
 
-// A 2 x 1 rectangle of 2 x 1 elements (nodes at x = 0, 1, 2 and y = 0, 1), left held in x, and `history`.
+// The unit tests' deck (TestDeck.hpp: nodes at x = 0, 1, 2 and y = 0, 1, left held in x) with the
+// requests `history` in Problem/Output/History.
 contessa::deck::ProblemDefinition problemWith(const std::string& history) {
-  auto p = Teuchos::getParametersFromXmlString(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="2.0"/>
-    <Parameter name="Elements X" type="int" value="2"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="block_1">
-      <Parameter name="Material" type="string" value="steel"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="steel">
-      <Parameter name="Model" type="string" value="Linear Elastic"/>
-      <Parameter name="Young's Modulus" type="double" value="200.0"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="fix">
-      <Parameter name="Node Set" type="string" value="left"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="Reaction Node Sets" type="Array(string)" value="{left}"/>
-    <ParameterList name="History">)XML" + history + R"XML(</ParameterList>
-  </ParameterList>
-</ParameterList>)XML");
+  auto p = contessa::deck::test::goodProblem();
+  p->sublist("Output").set("History",
+                           *Teuchos::getParametersFromXmlString("<ParameterList name=\"History\">" + history + "</ParameterList>"));
   return contessa::deck::buildProblem(*p, "");
 }
 
