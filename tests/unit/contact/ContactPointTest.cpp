@@ -19,10 +19,6 @@ using cc::Vector;
 
 namespace {
 
-constexpr double kFdStep = 1e-6;
-constexpr double kFdTolerance = 1e-6;
-
-
 struct Law {
   const char* name;
   cc::ContactLawParameters parameters;
@@ -37,8 +33,8 @@ double checkTangent(const cc::NodeToFacetContact<Facet>& element, const cc::Node
   const auto r = element.evaluate(g, 3, committed, 0.0, cc::SlipTangent::consistent(), point);
   EXPECT_LT(r.gap, 0.0) << what;
   EXPECT_NE(r.status, ContactStatus::Open) << what;
-  return ct::expectTangentClose(r.tangent, ct::finiteDifferenceTangent(element, g, 3, committed, kFdStep, 0.0, point),
-                                kFdTolerance, what);
+  return ct::expectTangentClose(r.tangent, ct::finiteDifferenceTangent(element, g, 3, committed, ct::kFdStep, 0.0, point),
+                                ct::kFdTolerance, what);
 }
 
 }  // namespace

@@ -14,6 +14,10 @@
 
 namespace contessa::contact::testing {
 
+/// The central-difference step of the tangent checks, and the relative difference they accept.
+constexpr double kFdStep = 1e-6;
+constexpr double kFdTolerance = 1e-6;
+
 template <class Facet>
 constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
 
@@ -121,6 +125,35 @@ struct TangentCheck {
   }
   void printWorst(const char* what) const { std::printf("[ FD       ] %s: worst relative error %.2e\n", what, worst); }
 };
+
+/// The slip-tolerance tangent check of a facet: every law of kSlipToleranceCases at each configuration
+/// (a `name` and a penetration `gap`), at that penetration and at 2.5e-4 of it (a nearly unloaded node).
+/// `inContactAt(configuration, g_N)` gives the geometry and the committed history there (on its facet),
+/// the status is the law's, the tangential penalty μ ε_N |g_N|/(s L) (capped), and the tangent that of
+/// central differences with a step well below the penetration, to `tolerance`.
+template <class Facet, class Configurations, class InContactAt>
+void checkSlipToleranceTangents(const Configurations& configurations, const InContactAt& inContactAt, double tolerance,
+                                const std::string& label) {
+  TangentCheck check{tolerance};
+  for (const SlipToleranceCase& c : kSlipToleranceCases) {
+    const NodeToFacetContact<Facet> element(c.parameters);
+    for (const double gapScale : {1.0, 2.5e-4}) {
+      for (const auto& conf : configurations) {
+        SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
+        const double gap = conf.gap * gapScale;
+        const auto [g, committed] = inContactAt(conf, gap);
+        const auto r = element.evaluate(g, committed.segment, committed, kSlipToleranceFacetLength);
+        ASSERT_EQ(r.status, c.expected);
+        expectSlipTolerancePenalty(r.friction.tangentialPenalty, c, gap);
+        const double h = 1e-3 * std::min(1e-3, std::abs(gap));  // the FD must not open the contact
+        check.expectClose(r.tangent,
+                          finiteDifferenceTangent(element, g, committed.segment, committed, h, kSlipToleranceFacetLength),
+                          "slip tolerance " + std::string(c.name) + " " + conf.name + " g_N = " + std::to_string(gap));
+      }
+    }
+  }
+  check.printWorst((label + " slip tolerance").c_str());
+}
 
 template <int N>
 double relativeDifference(const Matrix<N, N>& a, const Matrix<N, N>& b) {

@@ -21,9 +21,6 @@ using cc::Vector;
 
 namespace {
 
-constexpr double kFdStep = 1e-6;
-constexpr double kFdTolerance = 1e-6;
-
 // ε_N = 1e3, ε_T = 5e2; stick with μ = 100, slip with μ = 0.2.
 const cc::ContactLawParameters kStick{1e3, 5e2, 100.0};
 const cc::ContactLawParameters kSlip{1e3, 5e2, 0.2};
@@ -52,7 +49,7 @@ double checkTangent(const cc::NodeToFacetContact<Facet>& element, const cc::Node
   EXPECT_EQ(r.status, expected) << what;
   EXPECT_NE(r.tangentialTraction, Vector<Facet::kSurfaceDim>{}) << what;
   return ct::expectTangentClose(
-      r.tangent, ct::finiteDifferenceTangent(element, g, 3, open, kFdStep, 0.0, point, approach), kFdTolerance, what);
+      r.tangent, ct::finiteDifferenceTangent(element, g, 3, open, ct::kFdStep, 0.0, point, approach), ct::kFdTolerance, what);
 }
 
 // checkTangent in stick and in slip at each of `configurations` (name, geometry g, approach); the worst.
@@ -129,8 +126,8 @@ TEST(FirstTouch, Line2TangentMatchesCentralDifferences) {
   const cc::ContactHistory<1> open{};
   const auto approach = CommittedApproach<1>::at(0.02, {0.1});
   const auto r = element.evaluate(g, 3, open, 1.0, cc::SlipTangent::consistent(), ContactPoint::projection(), approach);
-  const auto fd = ct::finiteDifferenceTangent(element, g, 3, open, kFdStep, 1.0, ContactPoint::projection(), approach);
-  EXPECT_LT(ct::relativeDifference(r.tangent, fd), kFdTolerance);
+  const auto fd = ct::finiteDifferenceTangent(element, g, 3, open, ct::kFdStep, 1.0, ContactPoint::projection(), approach);
+  EXPECT_LT(ct::relativeDifference(r.tangent, fd), ct::kFdTolerance);
   std::printf("[ FD       ] worst relative error %.2e\n", worst);
 }
 

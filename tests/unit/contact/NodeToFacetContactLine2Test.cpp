@@ -59,8 +59,6 @@ const Configuration kConfigurations[] = {
     {"large_sliding", {1.2, 0.2}, {-1.1, -0.1}, 0.7, -0.8, -0.05},
 };
 
-constexpr double kFdStep = 1e-6;
-constexpr double kFdTolerance = 1e-6;
 
 struct Case {
   const char* law;
@@ -79,7 +77,7 @@ const Case kCases[] = {
 }  // namespace
 
 TEST(NodeToFacetContactLine2, ConsistentTangentMatchesCentralDifferences) {
-  ct::TangentCheck check{kFdTolerance};
+  ct::TangentCheck check{ct::kFdTolerance};
   for (const Case& c : kCases) {
     const Element element(c.parameters);
     for (const Configuration& conf : kConfigurations) {
@@ -90,7 +88,7 @@ TEST(NodeToFacetContactLine2, ConsistentTangentMatchesCentralDifferences) {
       ASSERT_EQ(r.status, c.expected);
       EXPECT_NEAR(r.projection.xi[0], conf.xi, 1e-12);
       EXPECT_NEAR(r.projection.gap, conf.gap, 1e-12);
-      check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, committed.segment, committed, kFdStep),
+      check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, committed.segment, committed, ct::kFdStep),
                         std::string(c.law) + " " + conf.name);
     }
   }
@@ -102,30 +100,16 @@ TEST(NodeToFacetContactLine2, ConsistentTangentMatchesCentralDifferences) {
 // penetration of 1e-5 of the segment (a nearly unloaded node: p = 1e-2 with ε_N = 1e3), with and
 // without the cap (ct::kSlipToleranceCases).
 TEST(NodeToFacetContactLine2, SlipToleranceTangentMatchesCentralDifferences) {
-  const double facetLength = ct::kSlipToleranceFacetLength;
-  ct::TangentCheck check{kFdTolerance};
-  for (const ct::SlipToleranceCase& c : ct::kSlipToleranceCases) {
-    const Element element(c.parameters);
-    for (const double gapScale : {1.0, 2.5e-4}) {
-      for (const Configuration& conf : kConfigurations) {
-        SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
-        const double gap = conf.gap * gapScale;
-        const auto g = slaveAt(conf.x1, conf.x2, conf.xi, gap);
+  ct::checkSlipToleranceTangents<cc::Line2Facet>(
+      kConfigurations,
+      [](const Configuration& conf, double gap) {
         // Committed traction at 10 % of the cone, in the direction of the motion.
         const double length = std::sqrt(cc::dot(cc::subtract(conf.x2, conf.x1), cc::subtract(conf.x2, conf.x1))) / 2.0;
         const double tn = 0.1 * 0.3 * 1e3 * std::abs(gap) * length * (conf.xi > conf.xiN ? 1.0 : -1.0);
-        const auto committed = inContact(7, conf.xiN, tn, ContactStatus::Stick);
-        const auto r = element.evaluate(g, 7, committed, facetLength);
-        ASSERT_EQ(r.status, c.expected);
-        ct::expectSlipTolerancePenalty(r.friction.tangentialPenalty, c, gap);
-        // h well below the penetration (the FD must not open the contact)
-        const double h = 1e-3 * std::min(1e-3, std::abs(gap));
-        check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, committed.segment, committed, h, facetLength),
-                          std::string("slip tolerance ") + c.name + " " + conf.name + " g_N = " + std::to_string(gap));
-      }
-    }
-  }
-  check.printWorst("Line2 slip tolerance");
+        return std::make_pair(slaveAt(conf.x1, conf.x2, conf.xi, gap), inContact(7, conf.xiN, tn, ContactStatus::Stick));
+      },
+      ct::kFdTolerance, "Line2");
+  const double facetLength = ct::kSlipToleranceFacetLength;
   // The new stick term is there and matters: without ∂ε_T/∂t_N the tangent misses the FD derivative.
   const Element element({1e3, 0.0, 0.3, 1.0}, cc::TangentTerms::Consistent);
   const Configuration& conf = kConfigurations[2];
@@ -196,8 +180,8 @@ TEST(NodeToFacetContactLine2, SlipTangentIsNonSymmetricLikeItsFiniteDifference) 
     const auto committed = inContact(7, conf.xiN, 1.5, ContactStatus::Slip);
     const auto r = element.evaluate(g, 7, committed);
     ASSERT_EQ(r.status, ContactStatus::Slip);
-    const Mat6 fd = ct::finiteDifferenceTangent(element, g, committed.segment, committed, kFdStep);
-    EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
+    const Mat6 fd = ct::finiteDifferenceTangent(element, g, committed.segment, committed, ct::kFdStep);
+    EXPECT_LT(relativeDifference(r.tangent, fd), ct::kFdTolerance);
     EXPECT_GT(asymmetry(r.tangent), 1e-2);  // eq. (26): −μ ε_N n_T D^1 Nᵀ is not symmetric
     EXPECT_GT(asymmetry(fd), 1e-2);
   }
@@ -212,7 +196,7 @@ TEST(NodeToFacetContactLine2, PaperMainTermsAloneMissTheGeometricTerms) {
     const Configuration& conf = kConfigurations[2];
     const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
     const auto committed = inContact(7, conf.xiN, c.committedTraction, ContactStatus::Stick);
-    const Mat6 fd = ct::finiteDifferenceTangent(full, g, committed.segment, committed, kFdStep);
+    const Mat6 fd = ct::finiteDifferenceTangent(full, g, committed.segment, committed, ct::kFdStep);
     const auto rMain = main.evaluate(g, 7, committed);
     EXPECT_GT(relativeDifference(rMain.tangent, fd), 1e-3) << c.law;
     // Same residual either way: only the tangent differs.
@@ -279,8 +263,8 @@ TEST(NodeToFacetContactLine2, FirstContactStartsStickingWithoutTraction) {
   EXPECT_EQ(r.tangentialTraction[0], 0.0);
   EXPECT_EQ(r.trial.segment, 3);
   EXPECT_NEAR(r.trial.xi[0], 0.4, 1e-12);  // the stick reference point of the next increment
-  const Mat6 fd = ct::finiteDifferenceTangent(element, g, open.segment, open, kFdStep);
-  EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
+  const Mat6 fd = ct::finiteDifferenceTangent(element, g, open.segment, open, ct::kFdStep);
+  EXPECT_LT(relativeDifference(r.tangent, fd), ct::kFdTolerance);
 }
 
 TEST(NodeToFacetContactLine2, TrialHistoryAccumulatesSlipAndCommitsThroughTheStore) {
