@@ -108,16 +108,17 @@ int main(int argc, char** argv) {
     part = generateBoxPart(cube(std::atoi(arg.c_str())), rank, ranks);
     held = static_cast<double>(part.bytes());
   } else if (mode == "distributed-exodus") {
-    part = distributeMesh([&] { return readExodusMesh(arg); });
+    part = distributeMesh(MPI_COMM_WORLD, [&] { return readExodusMesh(arg); });
     held = static_cast<double>(part.bytes());
   } else if (mode == "decomposed-exodus") {
-    part = readDecomposedExodus(arg);
+    part = readDecomposedExodus(arg, MPI_COMM_WORLD);
     held = static_cast<double>(part.bytes());
   } else {
     if (rank == 0) std::fprintf(stderr, "distributed_mesh_bench: unknown mode '%s'\n", mode.c_str());
     MPI_Finalize();
     return 2;
   }
+  part.comm = MPI_COMM_WORLD;  // the parts made here for every rank are spread over all of them
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double peak = peakResident();
 
@@ -129,9 +130,10 @@ int main(int argc, char** argv) {
     if (set.name == "top") oneFace = bytes;
   }
 
-  const RankFigures peaks = overRanks(peak), above = overRanks(peak - start), kept = overRanks(held),
-                    partBytes = overRanks(static_cast<double>(part.bytes())), time = overRanks(seconds),
-                    others = overRanks(rank == 0 ? 0.0 : peak - start);
+  const auto overAll = [](double value) { return overRanks(MPI_COMM_WORLD, value); };
+  const RankFigures peaks = overAll(peak), above = overAll(peak - start), kept = overAll(held),
+                    partBytes = overAll(static_cast<double>(part.bytes())), time = overAll(seconds),
+                    others = overAll(rank == 0 ? 0.0 : peak - start);
   if (rank == 0)
     std::printf(
         "%-18s ranks %d  nodes %lld  peak/rank max %.1f MiB (sum %.1f)  above start max %.1f MiB (sum %.1f, "

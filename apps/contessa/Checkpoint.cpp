@@ -120,7 +120,7 @@ io::RestartContent restartIdentity(const Teuchos::ParameterList& deck, const mes
       sums[1] += io::fnv1a(nodes.data(), nodes.size() * sizeof(mesh::GlobalIndex), id);
     }
   }
-  MPI_Allreduce(sums, total, 2, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(sums, total, 2, MPI_UINT64_T, MPI_SUM, part.comm);
   c.meshHash = io::fnv1a(total, sizeof total);
   return c;
 }

@@ -102,11 +102,11 @@ struct ValidatedInput {
 // The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
 // validates it and reads the mesh, and a failure on any rank (a file only some ranks can read) stops
 // every rank with one message (agreeOnInput).
-ValidatedInput readInput(const CommandLine& cl, const Teuchos::Comm<int>& comm) {
-  const std::string deckText = shareDeckText(comm, cl.deck);
-  mesh::agreeOnMachineMemory();
+ValidatedInput readInput(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
+  const std::string deckText = shareDeckText(*comm, cl.deck);
+  mesh::agreeOnMachineMemory(mpiCommOf(*comm));
   ValidatedInput input;
-  agreeOnInput(comm, [&] {
+  agreeOnInput(*comm, [&] {
     input.deck = deck::parseDeck(deckText, cl.deck);
     deck::applyOverrides(*input.deck, cl.overrides);
     input.description = {commandLineText(cl), output::deckText(*input.deck)};
@@ -119,9 +119,9 @@ ValidatedInput readInput(const CommandLine& cl, const Teuchos::Comm<int>& comm) 
 
     const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
     input.problem = std::make_shared<const deck::ProblemDefinition>(
-        deck::buildProblem(input.deck->sublist("Problem"), deckDirectory));
-    solvers::validatePiro(input.deck->sublist("Piro"), comm.getSize());
-    input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"));
+        deck::buildProblem(input.deck->sublist("Problem"), deckDirectory, mpiCommOf(*comm)));
+    solvers::validatePiro(input.deck->sublist("Piro"), comm->getSize());
+    input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"), comm);
 
     std::error_code ec;
     fs::create_directories(cl.outputDirectory, ec);
@@ -252,7 +252,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // the run writes them (io/ExodusWriter.hpp).
   io::disableHdf5FileLocking();
   // 1. The deck, validated on every rank, and the mesh.
-  ValidatedInput input = readInput(cl, *comm);
+  ValidatedInput input = readInput(cl, comm);
   const deck::ProblemDefinition& problem = *input.problem;
   auto& piro = input.deck->sublist("Piro");
   const std::string name = fs::path(cl.deck).stem().string();

@@ -34,7 +34,7 @@ bool axisymmetricProblem(const std::vector<BlockPhysics>& blocks, const mesh::Di
            << " < 0; an axisymmetric mesh lies in x >= 0 (x is the radius, the y axis the axis of revolution)";
       message = text.str();
     }
-  const RankMessage agreed = lowestSpeakingRank(MPI_COMM_WORLD, message.empty() ? 0 : 1, message);
+  const RankMessage agreed = lowestSpeakingRank(part.comm, message.empty() ? 0 : 1, message);
   if (agreed.spoken()) throw InputError(agreed.message);
   return true;
 }

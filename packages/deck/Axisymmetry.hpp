@@ -10,7 +10,7 @@ namespace contessa::deck {
 
 /// True when every block's element is axisymmetric, false when none is. InputError naming the block's
 /// Element when they are mixed, and naming the mesh when a node of the revolved mesh lies at x < 0 (the
-/// far side of the axis, beyond round-off). Collective over MPI_COMM_WORLD: each rank checks its part of the mesh and
+/// far side of the axis, beyond round-off). Collective over the part's communicator: each rank checks its part of the mesh and
 /// every rank throws the lowest failing rank's message.
 bool axisymmetricProblem(const std::vector<BlockPhysics>& blocks, const mesh::DistributedMesh& part);
 

@@ -38,13 +38,13 @@ bool isContactQuantity(HistoryQuantity q) {
   return q == HistoryQuantity::ContactPressure || q == HistoryQuantity::ContactSlip;
 }
 
-// MPI_Allreduce over MPI_COMM_WORLD in place, skipped on one rank (a unit test may run without MPI).
-void allReduce(void* values, int count, MPI_Datatype type, MPI_Op op) {
-  if (mesh::worldRanks().size > 1) MPI_Allreduce(MPI_IN_PLACE, values, count, type, op, MPI_COMM_WORLD);
+// MPI_Allreduce over the mesh's communicator in place, skipped on one rank (a unit test may run without MPI).
+void allReduce(const mesh::DistributedMesh& mesh, void* values, int count, MPI_Datatype type, MPI_Op op) {
+  if (mesh::ranksOf(mesh.comm).size > 1) MPI_Allreduce(MPI_IN_PLACE, values, count, type, op, mesh.comm);
 }
 
 // The node nearest `x` over every rank's part (reference coordinates; of two at the same distance, the
-// lower global id), the same on every rank. Collective over MPI_COMM_WORLD.
+// lower global id), the same on every rank. Collective over the mesh's communicator.
 mesh::GlobalIndex nearestMeshNode(const mesh::DistributedMesh& mesh, const std::vector<double>& x) {
   const mesh::Mesh& local = mesh.local();
   const int dim = local.dimension;
@@ -60,14 +60,14 @@ mesh::GlobalIndex nearestMeshNode(const mesh::DistributedMesh& mesh, const std::
     }
   }
   double nearest = best;
-  allReduce(&nearest, 1, MPI_DOUBLE, MPI_MIN);
+  allReduce(mesh, &nearest, 1, MPI_DOUBLE, MPI_MIN);
   long long id = best == nearest ? bestId : std::numeric_limits<long long>::max();
-  allReduce(&id, 1, MPI_LONG_LONG, MPI_MIN);
+  allReduce(mesh, &id, 1, MPI_LONG_LONG, MPI_MIN);
   return id;
 }
 
 // The reference coordinates of a node on every rank: its holders send them (the others zeros), summed
-// once per holder and divided by their number. Collective over MPI_COMM_WORLD.
+// once per holder and divided by their number. Collective over the mesh's communicator.
 std::vector<double> nodeCoordinates(const mesh::DistributedMesh& mesh, mesh::GlobalIndex node) {
   const int dim = mesh.local().dimension;
   std::vector<double> sum(dim + 1, 0.0);
@@ -78,7 +78,7 @@ std::vector<double> nodeCoordinates(const mesh::DistributedMesh& mesh, mesh::Glo
     for (int c = 0; c < dim; ++c) sum[c] = mesh.local().coordinates[n * dim + c];
     sum[dim] = 1;
   }
-  allReduce(sum.data(), dim + 1, MPI_DOUBLE, MPI_SUM);
+  allReduce(mesh, sum.data(), dim + 1, MPI_DOUBLE, MPI_SUM);
   for (int c = 0; c < dim; ++c) sum[c] /= sum[dim];
   sum.resize(dim);
   return sum;

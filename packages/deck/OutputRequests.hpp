@@ -55,7 +55,7 @@ std::vector<std::string> historyQuantityNames();
 
 /// Validates every child of `history` (Problem/Output/History, defaults filled in) and resolves it on
 /// `problem`'s mesh and contact interfaces (built before): InputError naming the parameter otherwise.
-/// Collective over MPI_COMM_WORLD (the node nearest given coordinates is searched in every rank's part).
+/// Collective over the mesh's communicator (the node nearest given coordinates is searched in every rank's part).
 /// Appends the sets of Reaction Force requests to problem.reactionNodeSets when missing there.
 std::vector<HistoryRequest> buildHistoryRequests(Teuchos::ParameterList& history, ProblemDefinition& problem);
 

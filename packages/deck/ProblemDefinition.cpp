@@ -43,8 +43,8 @@ std::string validateMeshList(ParameterList& list, const std::string& where, bool
 
 // One part of a "Parts" mesh, whole (on rank 0, which merges and distributes them).
 mesh::Mesh buildWholePart(const ParameterList& list, const std::string& type, const std::string& where,
-                          const std::string& deckDirectory) {
-  mesh::Mesh mesh = mesh::MeshFactory::create(type, list, where, deckDirectory);
+                          const std::string& deckDirectory, MPI_Comm comm) {
+  mesh::Mesh mesh = mesh::MeshFactory::create(type, list, where, deckDirectory, comm);
   const auto& offset = list.get<Teuchos::Array<double>>("Offset");
   if (!offset.empty()) {
     requireInput(static_cast<int>(offset.size()) == mesh.dimension,
@@ -57,7 +57,7 @@ mesh::Mesh buildWholePart(const ParameterList& list, const std::string& type, co
 // This rank's part of the deck's mesh. Every rank checks its part (the part's elements, sets and
 // coordinates; the lowest failing rank's message on every rank), so a generated mesh that no rank
 // holds whole is checked as the whole mesh was.
-mesh::DistributedMesh buildMesh(ParameterList& list, const std::string& deckDirectory) {
+mesh::DistributedMesh buildMesh(ParameterList& list, const std::string& deckDirectory, MPI_Comm comm) {
   const std::string where = "Problem/Mesh";
   mesh::DistributedMesh part;
   if (list.isType<std::string>("Type") && list.get<std::string>("Type") == "Parts") {
@@ -72,15 +72,15 @@ mesh::DistributedMesh buildMesh(ParameterList& list, const std::string& deckDire
     }
     requireInput(!parts.empty(), where + ": Type Parts needs at least one part sublist");
     for (auto& [name, type] : parts) type = validateMeshList(list.sublist(name), where + "/" + name, true);
-    part = mesh::distributeMesh([&] {
+    part = mesh::distributeMesh(comm, [&] {
       std::vector<std::pair<std::string, mesh::Mesh>> meshes;
       for (const auto& [name, type] : parts)
-        meshes.emplace_back(name, buildWholePart(list.sublist(name), type, where + "/" + name, deckDirectory));
+        meshes.emplace_back(name, buildWholePart(list.sublist(name), type, where + "/" + name, deckDirectory, comm));
       return mesh::mergeMeshes(meshes);
     });
   } else {
     const std::string type = validateMeshList(list, where, false);
-    part = mesh::MeshFactory::createPart(type, list, where, deckDirectory);
+    part = mesh::MeshFactory::createPart(type, list, where, deckDirectory, comm);
   }
   mesh::validatePart(part, where);
   return part;
@@ -473,12 +473,12 @@ std::vector<RegressionCheck> buildRegression(ParameterList& regressionList) {
 
 }  // namespace
 
-ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDirectory) {
+ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDirectory, MPI_Comm comm) {
   ProblemDefinition def;
   validateAndSetDefaults(problem, *problemValidParameters(), "Problem",
                          std::set<std::string>(std::begin(kOpenLists), std::end(kOpenLists)));
   def.title = problem.get<std::string>("Title");
-  def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory);
+  def.mesh = buildMesh(problem.sublist("Mesh"), deckDirectory, comm);
   const mesh::Mesh& mesh = def.mesh.local();
   def.blocks = buildBlocks(problem.sublist("Blocks"), problem.sublist("Materials"), mesh);
   def.axisymmetric = axisymmetricProblem(def.blocks, def.mesh);

@@ -92,8 +92,9 @@ Teuchos::RCP<const Teuchos::ParameterList> contactValidParameters(const std::str
 
 /// Validates the "Problem" list in place (defaults filled in) and builds the problem; mesh file
 /// names are relative to `deckDirectory`. Throws InputError with the deck path on any problem, the
-/// same on every rank. Collective over MPI_COMM_WORLD (the mesh parts, the contact surfaces).
-ProblemDefinition buildProblem(Teuchos::ParameterList& problem, const std::string& deckDirectory);
+/// same on every rank. Collective over `comm`, the ranks the problem is spread over (the mesh parts,
+/// the contact surfaces): the problem's mesh keeps it (mesh.comm), and the model is built on the same.
+ProblemDefinition buildProblem(Teuchos::ParameterList& problem, const std::string& deckDirectory, MPI_Comm comm);
 
 /// Component index of "x", "y", "z" (InputError naming `where` otherwise, or when ≥ dimension).
 int componentIndex(const std::string& name, int dimension, const std::string& where);

@@ -150,20 +150,20 @@ DistributedMesh readPart(const std::string& path, int rank, int numRanks, Record
   return part;
 }
 
-unsigned long long worldValue(unsigned long long value, MPI_Op op) {
-  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_UNSIGNED_LONG_LONG, op, MPI_COMM_WORLD);
+unsigned long long reduced(MPI_Comm comm, unsigned long long value, MPI_Op op) {
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_UNSIGNED_LONG_LONG, op, comm);
   return value;
 }
 
-std::vector<GlobalIndex> summed(std::vector<GlobalIndex> values) {
-  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+std::vector<GlobalIndex> summed(MPI_Comm comm, std::vector<GlobalIndex> values) {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_LONG_LONG, MPI_SUM, comm);
   return values;
 }
 
 // Collective: what each rank has for every other (outgoing[r], r = 0..size-1) exchanged; returns what the
 // others sent this rank, concatenated in rank order.
 template <class T>
-std::vector<T> exchanged(const std::vector<std::vector<T>>& outgoing, MPI_Datatype type) {
+std::vector<T> exchanged(MPI_Comm comm, const std::vector<std::vector<T>>& outgoing, MPI_Datatype type) {
   const int size = static_cast<int>(outgoing.size());
   std::vector<int> sendCounts(size), receiveCounts(size), sendOffsets(size + 1, 0), receiveOffsets(size + 1, 0);
   std::vector<T> sent;
@@ -172,11 +172,11 @@ std::vector<T> exchanged(const std::vector<std::vector<T>>& outgoing, MPI_Dataty
     sendOffsets[r + 1] = sendOffsets[r] + sendCounts[r];
     sent.insert(sent.end(), outgoing[r].begin(), outgoing[r].end());
   }
-  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT, comm);
   for (int r = 0; r < size; ++r) receiveOffsets[r + 1] = receiveOffsets[r] + receiveCounts[r];
   std::vector<T> received(static_cast<std::size_t>(receiveOffsets[size]));
   MPI_Alltoallv(sent.data(), sendCounts.data(), sendOffsets.data(), type, received.data(), receiveCounts.data(),
-                receiveOffsets.data(), type, MPI_COMM_WORLD);
+                receiveOffsets.data(), type, comm);
   return received;
 }
 
@@ -301,7 +301,7 @@ void requireOneDecomposition(const DistributedMesh& part, const RecordedSizes& r
   const int dim = part.local().dimension;
 
   // The records and the dimension, compared on every rank alike.
-  const std::vector<GlobalIndex> facts = allGather({recorded.nodes, recorded.elements, dim});
+  const std::vector<GlobalIndex> facts = allGather(part.comm, {recorded.nodes, recorded.elements, dim});
   for (int r = 1; r < numRanks; ++r)
     requireInput(std::equal(facts.begin(), facts.begin() + 3, facts.begin() + 3 * r),
                  names.set + ": the files are not pieces of one mesh: " + names.file(0) + " records " +
@@ -317,11 +317,11 @@ void requireOneDecomposition(const DistributedMesh& part, const RecordedSizes& r
   } catch (...) {
     failure = std::current_exception();
   }
-  throwIfAnyRankFailed(failure);
-  MPI_Allreduce(MPI_IN_PLACE, &out.extent, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  const std::vector<GlobalIndex> elements = exchanged(out.elements, MPI_LONG_LONG);
-  const std::vector<GlobalIndex> nodes = exchanged(out.nodes, MPI_LONG_LONG);
-  const std::vector<double> coordinates = exchanged(out.coordinates, MPI_DOUBLE);
+  throwIfAnyRankFailed(part.comm, failure);
+  MPI_Allreduce(MPI_IN_PLACE, &out.extent, 1, MPI_DOUBLE, MPI_MAX, part.comm);
+  const std::vector<GlobalIndex> elements = exchanged(part.comm, out.elements, MPI_LONG_LONG);
+  const std::vector<GlobalIndex> nodes = exchanged(part.comm, out.nodes, MPI_LONG_LONG);
+  const std::vector<double> coordinates = exchanged(part.comm, out.coordinates, MPI_DOUBLE);
   try {
     requireEachElementOnce(elements, recorded.elements, rank, numRanks, names);
     requireNodesAgree(nodes, coordinates, recorded.nodes, rank, numRanks, dim, 1e-12 * std::max(out.extent, 1.0),
@@ -329,7 +329,7 @@ void requireOneDecomposition(const DistributedMesh& part, const RecordedSizes& r
   } catch (...) {
     failure = std::current_exception();
   }
-  throwIfAnyRankFailed(failure);
+  throwIfAnyRankFailed(part.comm, failure);
 }
 
 }  // namespace
@@ -339,12 +339,12 @@ namespace {
 // A file without elements of a block stores no cell type for it (topology "NULL"): the block takes
 // the type the other files give it, so that every rank matches the same element kernel to it. Files
 // that give one block different types are refused.
-void agreeOnCellTypes(Mesh& local, const std::string& files) {
+void agreeOnCellTypes(MPI_Comm comm, Mesh& local, const std::string& files) {
   constexpr unsigned long long kNone = 1000;  // more than any CellType value
   for (ElementBlock& block : local.blocks) {
     const unsigned long long mine = block.elements.empty() ? kNone : static_cast<unsigned long long>(block.cellType);
-    const unsigned long long lowest = worldValue(mine, MPI_MIN);
-    const unsigned long long highest = worldValue(block.elements.empty() ? 0 : mine, MPI_MAX);
+    const unsigned long long lowest = reduced(comm, mine, MPI_MIN);
+    const unsigned long long highest = reduced(comm, block.elements.empty() ? 0 : mine, MPI_MAX);
     if (lowest == kNone) continue;  // empty in every file
     requireInput(lowest == highest, files + ": block '" + block.name + "' holds " +
                                         exodusCellName(static_cast<CellType>(lowest)) + " elements in one file, " +
@@ -355,9 +355,8 @@ void agreeOnCellTypes(Mesh& local, const std::string& files) {
 
 }  // namespace
 
-DistributedMesh readDecomposedExodus(const std::string& base) {
-  const WorldRanks world = worldRanks();
-  const int rank = world.rank, numRanks = world.size;
+DistributedMesh readDecomposedExodus(const std::string& base, MPI_Comm comm) {
+  const auto [rank, numRanks] = ranksOf(comm);
   const std::string path = decomposedFileName(base, numRanks, rank);
   DistributedMesh part;
   RecordedSizes recorded;
@@ -367,18 +366,19 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   } catch (...) {
     failure = std::current_exception();
   }
-  throwIfAnyRankFailed(failure);
+  part.comm = comm;
+  throwIfAnyRankFailed(comm, failure);
 
   // The files must list the same blocks and sets (empty where a file has none of their elements).
   const Mesh& local = part.local();
   const int counts[3] = {static_cast<int>(local.blocks.size()), static_cast<int>(local.nodeSets.size()),
                          static_cast<int>(local.sideSets.size())};
   const unsigned long long signature = std::hash<std::string>()(meshListing(local));
-  requireInput(worldValue(signature, MPI_MIN) == worldValue(signature, MPI_MAX),
+  requireInput(reduced(comm, signature, MPI_MIN) == reduced(comm, signature, MPI_MAX),
                decomposedFileName(base, numRanks, 0) + " ...: the files of the set list different element blocks, "
                                                        "node sets or side sets (names and order must agree)");
   requireOneDecomposition(part, recorded, base);
-  agreeOnCellTypes(part.part.mesh, decomposedFileName(base, numRanks, 0) + " ...");
+  agreeOnCellTypes(comm, part.part.mesh, decomposedFileName(base, numRanks, 0) + " ...");
 
   // Global sizes: each element is in one file, each node owned by one.
   std::vector<GlobalIndex> sizes{static_cast<GlobalIndex>(part.ownedNodes().size()), local.numElements()};
@@ -386,7 +386,7 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
   for (const auto& s : local.nodeSets)
     sizes.push_back(std::count_if(s.nodes.begin(), s.nodes.end(), [&](GlobalIndex n) { return part.nodeOwner[n] == rank; }));
   for (const auto& s : local.sideSets) sizes.push_back(static_cast<GlobalIndex>(s.elements.size()));
-  sizes = summed(std::move(sizes));
+  sizes = summed(comm, std::move(sizes));
   part.numGlobalNodes = sizes[0];
   part.numGlobalElements = sizes[1];
   auto next = sizes.begin() + 2;
@@ -401,7 +401,7 @@ DistributedMesh readDecomposedExodus(const std::string& base) {
     std::vector<GlobalIndex> mine;
     for (std::size_t k = 0; k < set.elements.size(); ++k)
       mine.push_back(part.part.globalElements[set.elements[k]] * 8 + set.sides[k]);  // sides < 6
-    std::vector<GlobalIndex> all = allGather(mine);
+    std::vector<GlobalIndex> all = allGather(comm, mine);
     std::sort(all.begin(), all.end());
     std::vector<GlobalIndex> positions;
     for (GlobalIndex key : mine) positions.push_back(std::lower_bound(all.begin(), all.end(), key) - all.begin());

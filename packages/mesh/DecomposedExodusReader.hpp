@@ -15,7 +15,7 @@ namespace contessa::mesh {
 /// "base.N.r": rank r's file of a set of N (the rank zero-padded to the digits of N).
 std::string decomposedFileName(const std::string& base, int numFiles, int rank);
 
-/// Collective over MPI_COMM_WORLD (N = its size). Every rank reads decomposedFileName(base, N, rank):
+/// Collective over `comm` (N = its size; the part is on it). Every rank reads decomposedFileName(base, N, rank):
 /// its mesh (as readExodusMesh: checked the same way), its global node and element ids (Exodus id
 /// maps, 1-based in the file) and its node communication maps. Nodes are renumbered in increasing
 /// global id; a node's owner is the lowest rank among the files that hold it (Partition's rule, the
@@ -26,7 +26,7 @@ std::string decomposedFileName(const std::string& base, int numFiles, int rank);
 /// every file's records, each global element in exactly one file, each global node in one at least, in
 /// as many files as their communication maps say and at the same coordinates (to 1e-12 of the mesh's
 /// extent) in all; otherwise every rank throws one InputError naming the set and what differs.
-DistributedMesh readDecomposedExodus(const std::string& base);
+DistributedMesh readDecomposedExodus(const std::string& base, MPI_Comm comm);
 
 /// The rank counts N of the sets `base.N.r` present beside `base` (a file of the set for any r is
 /// enough), ascending: what a reader names when the set for its rank count is missing.

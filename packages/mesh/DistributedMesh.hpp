@@ -13,12 +13,18 @@
 #include <string>
 #include <vector>
 
+#include <mpi.h>
+
 #include "mesh/MeshPiece.hpp"
 
 namespace contessa::mesh {
 
 struct DistributedMesh {
   int rank = 0, numRanks = 1;
+  /// The ranks the parts are spread over (rank and numRanks are this rank's place in it): what every
+  /// collective step on the parts (gathering, checking, contact surfaces) talks over. A part made alone
+  /// (PartExtractor, a test's whole mesh) is on MPI_COMM_SELF until its maker says otherwise.
+  MPI_Comm comm = MPI_COMM_SELF;
   /// The local mesh (numbered from 0: nodes in increasing global id, elements block by block), the
   /// global id of every local node and element, and for every local node the other ranks whose parts
   /// hold it (empty inside the part). Every block of the whole mesh is there, maybe empty; node sets

@@ -158,16 +158,16 @@ MachineMemory& machineMemory() {
 }
 }  // namespace
 
-void agreeOnMachineMemory() {
+void agreeOnMachineMemory(MPI_Comm comm) {
   MachineMemory& memory = machineMemory();
   memory.available = availableMemory().value_or(-1);
   int initialised = 0, finalised = 0;
   MPI_Initialized(&initialised);
   MPI_Finalized(&finalised);
   if (initialised && !finalised) {
-    MPI_Comm_size(MPI_COMM_WORLD, &memory.ranks);
+    MPI_Comm_size(comm, &memory.ranks);
     MPI_Comm machine;
-    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
     MPI_Comm_size(machine, &memory.ranksOnMachine);
     MPI_Comm_free(&machine);
     // One answer for all ranks: the most crowded machine and the least memory decide. An unknown
@@ -175,10 +175,10 @@ void agreeOnMachineMemory() {
     const double unknown = memory.available < 0 ? 1 : 0;
     double flags[2] = {memory.available < 0 ? std::numeric_limits<double>::infinity() : memory.available, unknown};
     double agreed[2];
-    MPI_Allreduce(&flags[0], &agreed[0], 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
-    MPI_Allreduce(&flags[1], &agreed[1], 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(&flags[0], &agreed[0], 1, MPI_DOUBLE, MPI_MIN, comm);
+    MPI_Allreduce(&flags[1], &agreed[1], 1, MPI_DOUBLE, MPI_MAX, comm);
     memory.available = agreed[1] > 0 ? -1 : agreed[0];
-    MPI_Allreduce(MPI_IN_PLACE, &memory.ranksOnMachine, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    MPI_Allreduce(MPI_IN_PLACE, &memory.ranksOnMachine, 1, MPI_INT, MPI_MAX, comm);
   }
   memory.agreed = true;
 }

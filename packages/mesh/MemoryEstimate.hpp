@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include <mpi.h>
+
 namespace contessa::mesh {
 
 /// The sizes that decide a run's memory. Counts are doubles: products of deck integers can exceed
@@ -55,10 +57,10 @@ std::optional<double> availableMemory(const std::string& procRoot = "/proc",
                                       const std::string& cgroupRoot = "/sys/fs/cgroup");
 
 /// The ranks agree, once, on the memory the size checks assume: the smallest available memory of
-/// any rank and the most ranks sharing one machine. Collective over MPI_COMM_WORLD; the program calls
+/// any rank and the most ranks sharing one machine. Collective over `comm` (the run's); the program calls
 /// it at start-up, before anything that one rank alone may refuse, so that requireRunFits needs no
 /// collective call and a rank that fails early (a missing file) cannot leave another waiting in it.
-void agreeOnMachineMemory();
+void agreeOnMachineMemory(MPI_Comm comm);
 
 /// For programs that build meshes without solving on them (benchmarks of the mesh containers, e.g.
 /// bench/distributed_mesh_bench): the size checks keep the index limits but no longer estimate the

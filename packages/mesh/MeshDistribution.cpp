@@ -164,11 +164,11 @@ std::vector<char> receiveBytes(int from, MPI_Comm comm) {
   return bytes;
 }
 
-// The parts travel on a communicator of their own, so that no other point-to-point traffic on
-// MPI_COMM_WORLD (Tpetra's) can match their tags.
+// The parts travel on a communicator of their own, a copy of the run's, so that no other
+// point-to-point traffic on the run's communicator (Tpetra's) can match their tags.
 class PrivateComm {
  public:
-  PrivateComm() { MPI_Comm_dup(MPI_COMM_WORLD, &comm_); }
+  explicit PrivateComm(MPI_Comm of) { MPI_Comm_dup(of, &comm_); }
   ~PrivateComm() { MPI_Comm_free(&comm_); }
   PrivateComm(const PrivateComm&) = delete;
   PrivateComm& operator=(const PrivateComm&) = delete;
@@ -178,13 +178,9 @@ class PrivateComm {
   MPI_Comm comm_;
 };
 
-int worldRank() { return worldRanks().rank; }
-
-int worldSize() { return worldRanks().size; }
-
 }  // namespace
 
-void throwIfAnyRankFailed(std::exception_ptr failure) {
+void throwIfAnyRankFailed(MPI_Comm comm, std::exception_ptr failure) {
   // The lowest failing rank speaks for all (common/RankAgreement): 1 = an InputError, 2 = another error.
   int status = 0;
   std::string message;
@@ -202,19 +198,21 @@ void throwIfAnyRankFailed(std::exception_ptr failure) {
       message = "unknown error";
     }
   }
-  const RankMessage lowest = lowestSpeakingRank(MPI_COMM_WORLD, status, std::move(message));
+  const RankMessage lowest = lowestSpeakingRank(comm, status, std::move(message));
   if (!lowest.spoken()) return;
-  if (lowest.rank == worldRank()) std::rethrow_exception(failure);
+  if (lowest.rank == ranksOf(comm).rank) std::rethrow_exception(failure);
   if (lowest.status == 1) throw InputError(lowest.message);
   throw std::runtime_error(lowest.message);
 }
 
-DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
-  const int rank = worldRank(), size = worldSize();
+DistributedMesh distributeMesh(MPI_Comm comm, const std::function<Mesh()>& readOnRoot) {
+  const auto [rank, size] = ranksOf(comm);
   if (rank != 0) {
-    throwIfAnyRankFailed(nullptr);
-    const PrivateComm comm;
-    return unpack(receiveBytes(0, comm.get()));
+    throwIfAnyRankFailed(comm, nullptr);
+    const PrivateComm parts(comm);
+    DistributedMesh mine = unpack(receiveBytes(0, parts.get()));
+    mine.comm = comm;
+    return mine;
   }
 
   // Rank 0: read and partition; whatever fails is told to the others before it is thrown here.
@@ -227,15 +225,17 @@ DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot) {
   } catch (...) {
     failure = std::current_exception();
   }
-  throwIfAnyRankFailed(failure);
+  throwIfAnyRankFailed(comm, failure);
 
   const PartExtractor extractor(mesh, std::move(partition.elementOwner), size);
   partition = Partition{};
   if (size > 1) {
-    const PrivateComm comm;
-    for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to, comm.get());
+    const PrivateComm parts(comm);
+    for (int to = 1; to < size; ++to) sendBytes(pack(extractor.part(to)), to, parts.get());
   }
-  return extractor.part(0);
+  DistributedMesh mine = extractor.part(0);
+  mine.comm = comm;
+  return mine;
 }
 
 void validatePart(const DistributedMesh& part, const std::string& source) {
@@ -251,15 +251,15 @@ void validatePart(const DistributedMesh& part, const std::string& source) {
     failure = std::current_exception();
   }
   long long total = badShapes;
-  if (worldSize() > 1) MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+  if (ranksOf(part.comm).size > 1) MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, part.comm);
   if (badShapes > 0 && total > 1)
     failure = std::make_exception_ptr(InputError(message + " (" + std::to_string(total) + " elements fail this check)"));
-  throwIfAnyRankFailed(failure);
+  throwIfAnyRankFailed(part.comm, failure);
 }
 
 Mesh gatherMeshOnRoot(const DistributedMesh& part) {
-  const int rank = worldRank(), size = worldSize();
-  std::unique_ptr<PrivateComm> comm = size > 1 ? std::make_unique<PrivateComm>() : nullptr;
+  const auto [rank, size] = ranksOf(part.comm);
+  std::unique_ptr<PrivateComm> comm = size > 1 ? std::make_unique<PrivateComm>(part.comm) : nullptr;
   if (rank != 0) {
     sendBytes(pack(part), 0, comm->get());
     return Mesh{};
@@ -272,16 +272,16 @@ Mesh gatherMeshOnRoot(const DistributedMesh& part) {
   return joiner.finish("the mesh gathered on rank 0");
 }
 
-WorldRanks worldRanks() {
+Ranks ranksOf(MPI_Comm comm) {
   int initialised = 0, finalised = 0;
   MPI_Initialized(&initialised);
   MPI_Finalized(&finalised);
-  WorldRanks world;
+  Ranks ranks;
   if (initialised && !finalised) {
-    MPI_Comm_rank(MPI_COMM_WORLD, &world.rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &world.size);
+    MPI_Comm_rank(comm, &ranks.rank);
+    MPI_Comm_size(comm, &ranks.size);
   }
-  return world;
+  return ranks;
 }
 
 std::size_t ReplicatedSurface::bytes() const {
@@ -365,15 +365,15 @@ std::size_t setIndex(const Mesh& mesh, const std::string& name) {
 }
 
 template <class T>
-std::vector<T> allGatherOf(const std::vector<T>& mine, MPI_Datatype type) {
-  const int size = worldSize();
+std::vector<T> allGatherOf(MPI_Comm comm, const std::vector<T>& mine, MPI_Datatype type) {
+  const int size = ranksOf(comm).size;
   if (size == 1) return mine;  // one process (MPI perhaps not even initialised)
   const std::size_t count = mine.size();
   if (count > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw std::runtime_error("all-gather: more than 2^31 values on one rank");
   const int myCount = static_cast<int>(count);
   std::vector<int> counts(static_cast<std::size_t>(size)), offsets(static_cast<std::size_t>(size) + 1, 0);
-  MPI_Allgather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  MPI_Allgather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
   std::vector<long long> total(1, 0);
   for (int r = 0; r < size; ++r) {
     total[0] += counts[r];
@@ -382,7 +382,7 @@ std::vector<T> allGatherOf(const std::vector<T>& mine, MPI_Datatype type) {
     offsets[r + 1] = static_cast<int>(total[0]);
   }
   std::vector<T> all(static_cast<std::size_t>(total[0]));
-  MPI_Allgatherv(mine.data(), myCount, type, all.data(), counts.data(), offsets.data(), type, MPI_COMM_WORLD);
+  MPI_Allgatherv(mine.data(), myCount, type, all.data(), counts.data(), offsets.data(), type, comm);
   return all;
 }
 
@@ -421,25 +421,25 @@ ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& 
   const auto& positions = part.sideSetPositions[s];
   // Decided together: a rank without such a side must throw too, not wait in the gather below.
   int unsupported = unsupportedFacetType(local, local.sideSets[s]);
-  if (worldSize() > 1) MPI_Allreduce(MPI_IN_PLACE, &unsupported, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (ranksOf(part.comm).size > 1) MPI_Allreduce(MPI_IN_PLACE, &unsupported, 1, MPI_INT, MPI_MAX, part.comm);
   requireContactFacets(name, unsupported);
   FacetRecords records = facetRecords(
       local, local.sideSets[s], [&](GlobalIndex n) { return part.part.globalNodes[n]; },
       [&](GlobalIndex e) { return part.part.globalElements[e]; }, [&](std::size_t k) { return positions[k]; });
-  records.integers = allGather(records.integers);
-  records.coordinates = allGatherOf(records.coordinates, MPI_DOUBLE);
+  records.integers = allGather(part.comm, records.integers);
+  records.coordinates = allGatherOf(part.comm, records.coordinates, MPI_DOUBLE);
   return assemble(name, local.dimension, records, static_cast<std::size_t>(part.globalSideSetSizes[s]));
 }
 
-std::vector<GlobalIndex> allGather(const std::vector<GlobalIndex>& values) {
+std::vector<GlobalIndex> allGather(MPI_Comm comm, const std::vector<GlobalIndex>& values) {
   static_assert(sizeof(GlobalIndex) == sizeof(long long), "GlobalIndex travels as MPI_LONG_LONG");
-  return allGatherOf(values, MPI_LONG_LONG);
+  return allGatherOf(comm, values, MPI_LONG_LONG);
 }
 
-RankFigures overRanks(double value) {
+RankFigures overRanks(MPI_Comm comm, double value) {
   RankFigures figures;
-  MPI_Allreduce(&value, &figures.max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  MPI_Allreduce(&value, &figures.sum, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  MPI_Allreduce(&value, &figures.max, 1, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(&value, &figures.sum, 1, MPI_DOUBLE, MPI_SUM, comm);
   return figures;
 }
 

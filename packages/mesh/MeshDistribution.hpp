@@ -1,5 +1,6 @@
 #pragma once
-// Moving distributed-mesh parts between ranks (MPI, over MPI_COMM_WORLD): a mesh read once on rank 0
+// Moving distributed-mesh parts between ranks (MPI, over the communicator the caller gives, which the
+// parts then carry: DistributedMesh::comm): a mesh read once on rank 0
 // and sent out part by part, so that only rank 0 holds the whole mesh, and only while it distributes
 // it; and the replicated contact surfaces gathered from the parts (an all-gather of the side-set
 // facets contact needs: the surface is O(n^(2/3)) of a 3D mesh, the volume stays distributed).
@@ -14,18 +15,19 @@
 
 namespace contessa::mesh {
 
-/// This process's rank in MPI_COMM_WORLD and its size (0 and 1 without MPI initialised).
-struct WorldRanks {
+/// This process's rank in `comm` and its size (0 and 1 without MPI initialised).
+struct Ranks {
   int rank = 0, size = 1;
 };
-WorldRanks worldRanks();
+Ranks ranksOf(MPI_Comm comm);
 
-/// Collective. Rank 0 calls `readOnRoot` (e.g. readExodusMesh on a file), partitions the mesh as
+/// Collective over `comm` (every collective below is over the communicator given, or the part's).
+/// Rank 0 calls `readOnRoot` (e.g. readExodusMesh on a file), partitions the mesh as
 /// partitionMesh does (METIS, same seed, same node owners), and sends every other rank its part
 /// (PartExtractor), keeping its own; the whole mesh is freed before returning. Every rank returns its
-/// part. An error on rank 0 (an unreadable file: InputError; anything else: runtime_error) is thrown
-/// on every rank with the same message, so none is left waiting.
-DistributedMesh distributeMesh(const std::function<Mesh()>& readOnRoot);
+/// part (on `comm`). An error on rank 0 (an unreadable file: InputError; anything else: runtime_error) is
+/// thrown on every rank with the same message, so none is left waiting.
+DistributedMesh distributeMesh(MPI_Comm comm, const std::function<Mesh()>& readOnRoot);
 
 /// Collective: the whole mesh assembled on rank 0 from every rank's part (an empty Mesh elsewhere), as
 /// the replicated mesh was: blocks list their elements in increasing global id, node sets sorted, side
@@ -40,7 +42,7 @@ void validatePart(const DistributedMesh& part, const std::string& source);
 /// that did not fail), with its message: an InputError as an InputError, anything else as a
 /// runtime_error. Returns on every rank when none failed. What a step that one rank alone may fail
 /// (reading its file) calls before the next collective, so that no rank is left waiting.
-void throwIfAnyRankFailed(std::exception_ptr failure);
+void throwIfAnyRankFailed(MPI_Comm comm, std::exception_ptr failure);
 
 /// A side set of the whole mesh as contact needs it on every rank: its entries (element, side) in the
 /// side set's order, each facet's global nodes (Exodus side order), and the coordinates of the nodes
@@ -67,12 +69,12 @@ ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& 
 
 /// Collective: every rank's `values` concatenated in rank order, on every rank (surface-sized data:
 /// at most 2^31 values in all).
-std::vector<GlobalIndex> allGather(const std::vector<GlobalIndex>& values);
+std::vector<GlobalIndex> allGather(MPI_Comm comm, const std::vector<GlobalIndex>& values);
 
 /// Collective: the largest and the sum over the ranks of `value` (the memory figures).
 struct RankFigures {
   double max = 0, sum = 0;
 };
-RankFigures overRanks(double value);
+RankFigures overRanks(MPI_Comm comm, double value);
 
 }  // namespace contessa::mesh

@@ -35,16 +35,19 @@ auto generate(const std::string& where, F&& make) {
 
 // A generator's row builds, from the spec its deck list gives, the whole mesh or this rank's part.
 template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&)>
-Mesh createGenerated(const ParameterList& list, const std::string& where, const std::string&) {
+Mesh createGenerated(const ParameterList& list, const std::string& where, const std::string&, MPI_Comm) {
   const Spec spec = read(list);
   return generate(where, [&] { return whole(spec); });
 }
 
 template <class Spec, Spec (*read)(const ParameterList&), DistributedMesh (*part)(const Spec&, int, int)>
-DistributedMesh createGeneratedPart(const ParameterList& list, const std::string& where, const std::string&) {
+DistributedMesh createGeneratedPart(const ParameterList& list, const std::string& where, const std::string&,
+                                    MPI_Comm comm) {
   const Spec spec = read(list);
-  const WorldRanks world = worldRanks();
-  return generate(where, [&] { return part(spec, world.rank, world.size); });
+  const Ranks ranks = ranksOf(comm);
+  DistributedMesh mine = generate(where, [&] { return part(spec, ranks.rank, ranks.size); });
+  mine.comm = comm;
+  return mine;
 }
 
 // ---- Cell variants of the Rectangle and the Box: triangles or tetrahedra, quadratic cells ----
@@ -86,17 +89,18 @@ Mesh converted(Mesh mesh, const CellVariant& v, const std::string& where) {
 // A generator row with the cell variants: the grid made, then converted (the whole mesh; its parts are
 // sent out from rank 0 unless the variant is the grid's own cells, which each rank makes alone).
 template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&), const char* cells>
-Mesh createVariant(const ParameterList& list, const std::string& where, const std::string&) {
+Mesh createVariant(const ParameterList& list, const std::string& where, const std::string&, MPI_Comm) {
   const Spec spec = read(list);
   return generate(where, [&] { return converted(whole(spec), cellVariant(list, cells), where); });
 }
 
 template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&),
           DistributedMesh (*part)(const Spec&, int, int), const char* cells>
-DistributedMesh createVariantPart(const ParameterList& list, const std::string& where, const std::string& directory) {
+DistributedMesh createVariantPart(const ParameterList& list, const std::string& where, const std::string& directory,
+                                  MPI_Comm comm) {
   const CellVariant v = generate(where, [&] { return cellVariant(list, cells); });
-  if (v.isDefault()) return createGeneratedPart<Spec, read, part>(list, where, directory);
-  return distributeMesh([&] { return createVariant<Spec, read, whole, cells>(list, where, directory); });
+  if (v.isDefault()) return createGeneratedPart<Spec, read, part>(list, where, directory, comm);
+  return distributeMesh(comm, [&] { return createVariant<Spec, read, whole, cells>(list, where, directory, comm); });
 }
 
 constexpr char kQuadrilaterals[] = "Quadrilaterals";
@@ -325,13 +329,13 @@ std::string setsFound(const std::string& base) {
 }
 
 // The whole mesh from a per-rank set (for tools and tests; a run reads its part, below): the set for
-// the world's rank count when present, otherwise the only set beside File Name; its files are joined
-// on the calling rank.
-Mesh joinPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory) {
+// the communicator's rank count when present, otherwise the only set beside File Name; its files are
+// joined on the calling rank.
+Mesh joinPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm comm) {
   const std::string base = meshPath(list, where, directory, kPerRankWhat);
   const std::vector<int> sets = decomposedFileSets(base);
-  const int world = worldRanks().size;
-  int numFiles = std::find(sets.begin(), sets.end(), world) != sets.end() ? world : 0;
+  const int ranks = ranksOf(comm).size;
+  int numFiles = std::find(sets.begin(), sets.end(), ranks) != sets.end() ? ranks : 0;
   if (numFiles == 0 && sets.size() == 1) numFiles = sets.front();
   requireInput(numFiles > 0, where + "/File Name: Layout = Per Rank needs one set " + base + ".N.r to join into the "
                                      "whole mesh (" + setsFound(base) + ")");
@@ -339,34 +343,36 @@ Mesh joinPerRankSet(const ParameterList& list, const std::string& where, const s
 }
 
 // This rank's part of a per-rank set: its own file, base.N.r on N ranks.
-DistributedMesh readPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory) {
+DistributedMesh readPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory,
+                               MPI_Comm comm) {
   const std::string base = meshPath(list, where, directory, kPerRankWhat);
-  const WorldRanks world = worldRanks();
-  const std::string mine = decomposedFileName(base, world.size, world.rank);
+  const Ranks ranks = ranksOf(comm);
+  const std::string mine = decomposedFileName(base, ranks.size, ranks.rank);
   std::exception_ptr failure;
   if (!std::ifstream(mine).good())
     failure = std::make_exception_ptr(InputError(
         where + "/File Name: per-rank mesh file '" + mine + "' does not exist (Layout = Per Rank on " +
-        ranksText(world.size) + " reads " + decomposedFileName(base, world.size, 0) +
-        (world.size > 1 ? " to " + decomposedFileName(base, world.size, world.size - 1) : std::string()) + "; " +
+        ranksText(ranks.size) + " reads " + decomposedFileName(base, ranks.size, 0) +
+        (ranks.size > 1 ? " to " + decomposedFileName(base, ranks.size, ranks.size - 1) : std::string()) + "; " +
         setsFound(base) + ")"));
-  throwIfAnyRankFailed(failure);  // the lowest rank missing its file speaks for all
-  return readDecomposedExodus(base);
+  throwIfAnyRankFailed(comm, failure);  // the lowest rank missing its file speaks for all
+  return readDecomposedExodus(base, comm);
 }
 
-Mesh createExodusFile(const ParameterList& list, const std::string& where, const std::string& directory) {
-  if (perRank(list)) return joinPerRankSet(list, where, directory);
+Mesh createExodusFile(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm comm) {
+  if (perRank(list)) return joinPerRankSet(list, where, directory, comm);
   return readExodusMesh(meshFile(list, where, directory, "an Exodus II mesh file"));
 }
 
-DistributedMesh createExodusFilePart(const ParameterList& list, const std::string& where, const std::string& directory) {
-  if (perRank(list)) return readPerRankSet(list, where, directory);
-  return distributeMesh([&] { return createExodusFile(list, where, directory); });
+DistributedMesh createExodusFilePart(const ParameterList& list, const std::string& where, const std::string& directory,
+                                     MPI_Comm comm) {
+  if (perRank(list)) return readPerRankSet(list, where, directory, comm);
+  return distributeMesh(comm, [&] { return createExodusFile(list, where, directory, comm); });
 }
 
 RCP<ParameterList> gmshFileParameters() { return fileParameters("Gmsh File", "Gmsh mesh file (.msh)"); }
 
-Mesh createGmshFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+Mesh createGmshFile(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm) {
   return readGmshMesh(meshFile(list, where, directory, "a Gmsh .msh file"));
 }
 
@@ -381,7 +387,7 @@ RCP<ParameterList> meshFileParameters() {
   return fileParameters("Mesh File", "Mesh file: .msh (Gmsh) or .exo, .e, .g, .gen, .ex2 (Exodus II)");
 }
 
-Mesh createMeshFile(const ParameterList& list, const std::string& where, const std::string& directory) {
+Mesh createMeshFile(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm) {
   const std::string file = meshFile(list, where, directory, "a .msh or Exodus II mesh file");
   std::string known;
   for (const auto& r : kReaders) {
@@ -398,9 +404,11 @@ Mesh createMeshFile(const ParameterList& list, const std::string& where, const s
 // A mesh source publishes its parameters and makes the whole mesh from them, or this rank's part.
 struct MeshSource {
   RCP<ParameterList> (*validParameters)();
-  Mesh (*create)(const ParameterList&, const std::string& where, const std::string& directory);
+  /// `comm`: the run's ranks (only a per-rank set's join asks how many).
+  Mesh (*create)(const ParameterList&, const std::string& where, const std::string& directory, MPI_Comm comm);
   /// This rank's part built alone; null: rank 0 creates the whole mesh and sends the parts out.
-  DistributedMesh (*createPart)(const ParameterList&, const std::string& where, const std::string& directory) = nullptr;
+  DistributedMesh (*createPart)(const ParameterList&, const std::string& where, const std::string& directory,
+                                MPI_Comm comm) = nullptr;
 };
 
 const Registry<RegistryRow<MeshSource>>& registry() {
@@ -455,15 +463,15 @@ RCP<const ParameterList> MeshFactory::validParameters(const std::string& type) {
 }
 
 Mesh MeshFactory::create(const std::string& type, const ParameterList& params, const std::string& where,
-                         const std::string& directory) {
-  return registry().lookup(type, typeParameter(where)).factory.create(params, where, directory);
+                         const std::string& directory, MPI_Comm comm) {
+  return registry().lookup(type, typeParameter(where)).factory.create(params, where, directory, comm);
 }
 
 DistributedMesh MeshFactory::createPart(const std::string& type, const ParameterList& params, const std::string& where,
-                                        const std::string& directory) {
+                                        const std::string& directory, MPI_Comm comm) {
   const MeshSource& source = registry().lookup(type, typeParameter(where)).factory;
-  if (source.createPart) return source.createPart(params, where, directory);
-  return distributeMesh([&] { return source.create(params, where, directory); });
+  if (source.createPart) return source.createPart(params, where, directory, comm);
+  return distributeMesh(comm, [&] { return source.create(params, where, directory, comm); });
 }
 
 }  // namespace contessa::mesh

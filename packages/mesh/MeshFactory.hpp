@@ -28,17 +28,18 @@ class MeshFactory {
 
   /// Builds the mesh from `params` (validated against validParameters(type)). `where` is the deck
   /// path of the list: a generator's InputError becomes "<where>/<parameter>: ...", a reader's names
-  /// the file. Relative file names are taken from `directory` (the deck's). The mesh is validated.
+  /// the file. Relative file names are taken from `directory` (the deck's). The mesh is validated. A
+  /// per-rank Exodus set is joined from its set for `comm`'s rank count when there is one.
   static Mesh create(const std::string& type, const Teuchos::ParameterList& params, const std::string& where,
-                     const std::string& directory);
+                     const std::string& directory, MPI_Comm comm);
 
-  /// This rank's part of the same mesh, collective over MPI_COMM_WORLD (DistributedMesh.hpp): the
+  /// This rank's part of the same mesh, collective over `comm` (DistributedMesh.hpp; the part is on it): the
   /// generators build only the rank's part (generate*Part: no
   /// communication: the structured grids in GridPartition's index boxes, the sphere octant in id ranges); the file readers read on rank 0, which partitions with
   /// METIS and sends the parts out (distributeMesh), except an Exodus set with Layout = Per Rank, whose
   /// files each rank reads itself. Errors as create's, on every rank.
   static DistributedMesh createPart(const std::string& type, const Teuchos::ParameterList& params,
-                                    const std::string& where, const std::string& directory);
+                                    const std::string& where, const std::string& directory, MPI_Comm comm);
 };
 
 }  // namespace contessa::mesh

@@ -105,8 +105,8 @@ std::string firstMeaningfulLine(const std::string& text) {
 // Whether the probe converges does not matter; an exception does. The rows outnumber the iterations the
 // solve needs (about 15): a Krylov space exhausted before the tolerance is met is a breakdown that Belos'
 // GMRES reports as NaN implicit residuals whenever Num Blocks is given (6 rows did that).
-void probeIterativeSolver(Thyra::LinearOpWithSolveFactoryBase<double>& factory) {
-  auto comm = Tpetra::getDefaultComm();
+void probeIterativeSolver(Thyra::LinearOpWithSolveFactoryBase<double>& factory,
+                          const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
   const model::LO local = 60;
   auto map = Teuchos::rcp(new model::Map(static_cast<Tpetra::global_size_t>(local * comm->getSize()), local, 0, comm));
   auto A = Teuchos::rcp(new model::CrsMatrix(map, 3));
@@ -238,7 +238,8 @@ void completeBelosSolverList(Teuchos::ParameterList& stratimikos) {
 
 }  // namespace
 
-Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFactory(Teuchos::ParameterList& stratimikos) {
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFactory(
+    Teuchos::ParameterList& stratimikos, const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
   Stratimikos::DefaultLinearSolverBuilder builder;
   registerSolvers(builder);
   try {
@@ -264,7 +265,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
     if (!stratimikos.isType<std::string>("Linear Solver Type") || stratimikos.get<std::string>("Linear Solver Type") != "Belos")
       return factory;
     try {
-      probeIterativeSolver(*factory);
+      probeIterativeSolver(*factory, comm);
     } catch (const std::exception& e) {
       throw InputError("Piro/Stratimikos (" + iterativeSolverName(stratimikos) +
                        "): the solver refused its parameters: " + firstMeaningfulLine(e.what()));

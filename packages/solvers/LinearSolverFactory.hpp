@@ -14,8 +14,10 @@ namespace contessa::solvers {
 
 /// Throws InputError naming Piro/Stratimikos when Stratimikos rejects the list. An iterative solver
 /// (Belos) is tried once on a small matrix first, so that its parameters (Belos', Ifpack2's, MueLu's) are
-/// checked before the run, and it is wrapped by monitorIterativeSolver (iteration counts, failures).
-Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFactory(Teuchos::ParameterList& stratimikos);
+/// checked before the run (collectively on `comm`, the run's ranks), and it is wrapped by
+/// monitorIterativeSolver (iteration counts, failures).
+Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFactory(
+    Teuchos::ParameterList& stratimikos, const Teuchos::RCP<const Teuchos::Comm<int>>& comm);
 
 /// With MueLu as the preconditioner: gives it the rigid-body modes of the owned nodes (reference
 /// coordinates from this rank's part of the mesh, about the whole mesh's centroid; RigidBodyModes.hpp)

@@ -1,12 +1,22 @@
 #pragma once
-// Shared tools of the contact element tests: dofs ↔ geometry, central-difference tangents, matrix
-// measures and a dense solve for the small Newton demonstrations.
+// The contact element tests' fixture (Line2 and Quad4 facets alike): dofs ↔ geometry, central-difference
+// tangents and their comparison with the element's, the slip-tolerance laws every facet is checked
+// with, matrix measures and a dense solve for the small Newton demonstrations.
 #include "contact/NodeToFacetContact.hpp"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <utility>
 
 namespace contessa::contact::testing {
+
+/// The central-difference step of the tangent checks, and the relative difference they accept.
+constexpr double kFdStep = 1e-6;
+constexpr double kFdTolerance = 1e-6;
 
 template <class Facet>
 constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
@@ -52,6 +62,97 @@ Matrix<kDofs<Facet>, kDofs<Facet>> finiteDifferenceTangent(const NodeToFacetCont
     for (int i = 0; i < n; ++i) k(i, j) = (rp[i] - rm[i]) / (2.0 * h);
   }
   return k;
+}
+
+/// A committed state in contact on `facet` at ξ_n with traction t_n (stick unless said), and the slip
+/// accumulated so far.
+template <int S>
+ContactHistory<S> committedHistory(int facet, Vector<S> xi, Vector<S> traction,
+                                   ContactStatus status = ContactStatus::Stick, double slip = 0.0) {
+  ContactHistory<S> h;
+  h.segment = facet;
+  h.xi = xi;
+  h.tangentialTraction = traction;
+  h.status = status;
+  h.accumulatedSlip = slip;
+  return h;
+}
+
+/// The laws of the slip-tolerance tangent checks: ε_T = μ|t_N|/(s L) with its ∂t_T/∂t_N term, stick
+/// (s = 1: s L = 4 exceeds every slip of the configurations) and slip (s = 0.005), capped or not.
+struct SlipToleranceCase {
+  const char* name;
+  ContactLawParameters parameters;
+  ContactStatus expected;
+};
+inline const SlipToleranceCase kSlipToleranceCases[] = {
+    {"stick", {1e3, 0.0, 0.3, 1.0}, ContactStatus::Stick},
+    {"stick_capped", {1e3, 1e-3, 0.3, 1.0}, ContactStatus::Stick},
+    {"slip", {1e3, 0.0, 0.3, 0.005}, ContactStatus::Slip},
+    {"slip_capped", {1e3, 300.0, 0.3, 0.005}, ContactStatus::Slip},
+};
+/// The facet length L of those checks.
+constexpr double kSlipToleranceFacetLength = 4.0;
+
+/// The element's tangential penalty under a slip-tolerance law at penetration `gap`: μ ε_N |g_N|/(s L),
+/// capped by the law's ε_T when it has one.
+inline void expectSlipTolerancePenalty(double tangentialPenalty, const SlipToleranceCase& c, double gap) {
+  const double pressurePenalty = 0.3 * 1e3 * std::abs(gap) / (c.parameters.slipTolerance * kSlipToleranceFacetLength);
+  const double cap = c.parameters.tangentialPenalty;
+  EXPECT_NEAR(tangentialPenalty, cap > 0.0 ? std::min(cap, pressurePenalty) : pressurePenalty, 1e-9 * pressurePenalty);
+}
+
+template <int N>
+double relativeDifference(const Matrix<N, N>& a, const Matrix<N, N>& b);
+
+/// An element's tangent against central differences: the relative difference ‖K − K_FD‖/‖K_FD‖,
+/// printed with its label and expected below `tolerance`.
+template <int N>
+double expectTangentClose(const Matrix<N, N>& tangent, const Matrix<N, N>& fd, double tolerance, const std::string& label) {
+  const double error = relativeDifference(tangent, fd);
+  std::printf("[ FD       ] %-44s ‖K − K_FD‖/‖K_FD‖ = %.2e\n", label.c_str(), error);
+  EXPECT_LT(error, tolerance) << label;
+  return error;
+}
+
+/// Several such comparisons, the worst kept.
+struct TangentCheck {
+  double tolerance;
+  double worst = 0.0;
+  template <int N>
+  void expectClose(const Matrix<N, N>& tangent, const Matrix<N, N>& fd, const std::string& label) {
+    worst = std::max(worst, expectTangentClose(tangent, fd, tolerance, label));
+  }
+  void printWorst(const char* what) const { std::printf("[ FD       ] %s: worst relative error %.2e\n", what, worst); }
+};
+
+/// The slip-tolerance tangent check of a facet: every law of kSlipToleranceCases at each configuration
+/// (a `name` and a penetration `gap`), at that penetration and at 2.5e-4 of it (a nearly unloaded node).
+/// `inContactAt(configuration, g_N)` gives the geometry and the committed history there (on its facet),
+/// the status is the law's, the tangential penalty μ ε_N |g_N|/(s L) (capped), and the tangent that of
+/// central differences with a step well below the penetration, to `tolerance`.
+template <class Facet, class Configurations, class InContactAt>
+void checkSlipToleranceTangents(const Configurations& configurations, const InContactAt& inContactAt, double tolerance,
+                                const std::string& label) {
+  TangentCheck check{tolerance};
+  for (const SlipToleranceCase& c : kSlipToleranceCases) {
+    const NodeToFacetContact<Facet> element(c.parameters);
+    for (const double gapScale : {1.0, 2.5e-4}) {
+      for (const auto& conf : configurations) {
+        SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
+        const double gap = conf.gap * gapScale;
+        const auto [g, committed] = inContactAt(conf, gap);
+        const auto r = element.evaluate(g, committed.segment, committed, kSlipToleranceFacetLength);
+        ASSERT_EQ(r.status, c.expected);
+        expectSlipTolerancePenalty(r.friction.tangentialPenalty, c, gap);
+        const double h = 1e-3 * std::min(1e-3, std::abs(gap));  // the FD must not open the contact
+        check.expectClose(r.tangent,
+                          finiteDifferenceTangent(element, g, committed.segment, committed, h, kSlipToleranceFacetLength),
+                          "slip tolerance " + std::string(c.name) + " " + conf.name + " g_N = " + std::to_string(gap));
+      }
+    }
+  }
+  check.printWorst((label + " slip tolerance").c_str());
 }
 
 template <int N>

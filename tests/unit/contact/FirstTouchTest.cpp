@@ -21,9 +21,6 @@ using cc::Vector;
 
 namespace {
 
-constexpr double kFdStep = 1e-6;
-constexpr double kFdTolerance = 1e-6;
-
 // ε_N = 1e3, ε_T = 5e2; stick with μ = 100, slip with μ = 0.2.
 const cc::ContactLawParameters kStick{1e3, 5e2, 100.0};
 const cc::ContactLawParameters kSlip{1e3, 5e2, 0.2};
@@ -51,11 +48,21 @@ double checkTangent(const cc::NodeToFacetContact<Facet>& element, const cc::Node
   const auto r = element.evaluate(g, 3, open, 0.0, cc::SlipTangent::consistent(), point, approach);
   EXPECT_EQ(r.status, expected) << what;
   EXPECT_NE(r.tangentialTraction, Vector<Facet::kSurfaceDim>{}) << what;
-  const auto fd = ct::finiteDifferenceTangent(element, g, 3, open, kFdStep, 0.0, point, approach);
-  const double error = ct::relativeDifference(r.tangent, fd);
-  std::printf("[ FD       ] %-44s ‖K − K_FD‖/‖K_FD‖ = %.2e\n", what.c_str(), error);
-  EXPECT_LT(error, kFdTolerance) << what;
-  return error;
+  return ct::expectTangentClose(
+      r.tangent, ct::finiteDifferenceTangent(element, g, 3, open, ct::kFdStep, 0.0, point, approach), ct::kFdTolerance, what);
+}
+
+// checkTangent in stick and in slip at each of `configurations` (name, geometry g, approach); the worst.
+template <class Facet, class Configurations>
+double worstInStickAndSlip(const Configurations& configurations, const std::string& dimension) {
+  double worst = 0.0;
+  for (const auto& c : configurations) {
+    worst = std::max(worst, checkTangent(cc::NodeToFacetContact<Facet>(kStick), c.g, c.approach, ContactStatus::Stick,
+                                         dimension + " stick " + c.name));
+    worst = std::max(worst, checkTangent(cc::NodeToFacetContact<Facet>(kSlip), c.g, c.approach, ContactStatus::Slip,
+                                         dimension + " slip " + c.name));
+  }
+  return worst;
 }
 
 }  // namespace
@@ -99,7 +106,6 @@ TEST(FirstTouch, TractionDoesNotDependOnWhereTheIncrementStarted) {
 }
 
 TEST(FirstTouch, Line2TangentMatchesCentralDifferences) {
-  double worst = 0.0;
   const struct {
     const char* name;
     cc::NodeToFacetGeometry<cc::Line2Facet> g;
@@ -110,12 +116,7 @@ TEST(FirstTouch, Line2TangentMatchesCentralDifferences) {
       {"touching_at_commit", segmentSlaveAt(0.7, -0.05, {1.2, 0.2}, {-1.1, -0.1}), CommittedApproach<1>::at(0.0, {0.2})},
       {"far_approach", segmentSlaveAt(0.05, -0.04), CommittedApproach<1>::at(0.9, {-0.8})},
   };
-  for (const auto& c : configurations) {
-    worst = std::max(worst, checkTangent(cc::NodeToFacetContact<cc::Line2Facet>(kStick), c.g, c.approach,
-                                         ContactStatus::Stick, std::string("2D stick ") + c.name));
-    worst = std::max(worst, checkTangent(cc::NodeToFacetContact<cc::Line2Facet>(kSlip), c.g, c.approach,
-                                         ContactStatus::Slip, std::string("2D slip ") + c.name));
-  }
+  const double worst = worstInStickAndSlip<cc::Line2Facet>(configurations, "2D");
   // The slip tolerance's pressure-dependent ε_T (s L = 4: stick; 0.005: slip).
   cc::ContactLawParameters tolerance = kStick;
   tolerance.tangentialPenalty = 0.0;
@@ -125,13 +126,12 @@ TEST(FirstTouch, Line2TangentMatchesCentralDifferences) {
   const cc::ContactHistory<1> open{};
   const auto approach = CommittedApproach<1>::at(0.02, {0.1});
   const auto r = element.evaluate(g, 3, open, 1.0, cc::SlipTangent::consistent(), ContactPoint::projection(), approach);
-  const auto fd = ct::finiteDifferenceTangent(element, g, 3, open, kFdStep, 1.0, ContactPoint::projection(), approach);
-  EXPECT_LT(ct::relativeDifference(r.tangent, fd), kFdTolerance);
+  const auto fd = ct::finiteDifferenceTangent(element, g, 3, open, ct::kFdStep, 1.0, ContactPoint::projection(), approach);
+  EXPECT_LT(ct::relativeDifference(r.tangent, fd), ct::kFdTolerance);
   std::printf("[ FD       ] worst relative error %.2e\n", worst);
 }
 
 TEST(FirstTouch, Quad4TangentMatchesCentralDifferences) {
-  double worst = 0.0;
   const struct {
     const char* name;
     cc::NodeToFacetGeometry<cc::Quad4Facet> g;
@@ -141,12 +141,7 @@ TEST(FirstTouch, Quad4TangentMatchesCentralDifferences) {
       {"warped_corner", faceSlaveAt({0.93, -0.95}, -0.05), CommittedApproach<2>::at(0.2, {0.6, -0.7})},
       {"touching_at_commit", faceSlaveAt({0.1, 0.2}, -0.04), CommittedApproach<2>::at(0.0, {0.0, 0.25})},
   };
-  for (const auto& c : configurations) {
-    worst = std::max(worst, checkTangent(cc::NodeToFacetContact<cc::Quad4Facet>(kStick), c.g, c.approach,
-                                         ContactStatus::Stick, std::string("3D stick ") + c.name));
-    worst = std::max(worst, checkTangent(cc::NodeToFacetContact<cc::Quad4Facet>(kSlip), c.g, c.approach,
-                                         ContactStatus::Slip, std::string("3D slip ") + c.name));
-  }
+  const double worst = worstInStickAndSlip<cc::Quad4Facet>(configurations, "3D");
   std::printf("[ FD       ] worst relative error %.2e\n", worst);
 }
 

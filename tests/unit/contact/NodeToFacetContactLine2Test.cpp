@@ -5,6 +5,7 @@
 #include "contact/HistoryTransfer.hpp"
 #include "contact/NodeToFacetContact.hpp"
 #include "contact/FacetSelector.hpp"
+#include "ElementTestTools.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <string>
 
 namespace cc = contessa::contact;
+namespace ct = contessa::contact::testing;
 using cc::ContactStatus;
 using cc::Vector;
 using Mat6 = cc::Matrix<6, 6>;
@@ -22,50 +24,15 @@ using Geometry = cc::NodeToFacetGeometry<cc::Line2Facet>;
 
 namespace {
 
-Geometry fromDofs(const Vec6& x) {
-  return {{x[0], x[1]}, {{{x[2], x[3]}, {x[4], x[5]}}}};
-}
-
-Vec6 toDofs(const Geometry& g) {
-  return {g.slave[0], g.slave[1], g.master[0][0], g.master[0][1], g.master[1][0], g.master[1][1]};
-}
-
-/// Central differences of the residual: K_FD(:, j) = (r(x + h e_j) − r(x − h e_j)) / 2h.
-Mat6 finiteDifferenceTangent(const Element& element, const Geometry& g,
-                             const cc::ContactHistory<1>& committed, double h, double facetLength = 0.0) {
-  Mat6 k;
-  const Vec6 x = toDofs(g);
-  for (int j = 0; j < 6; ++j) {
-    Vec6 plus = x;
-    Vec6 minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const Vec6 rp = element.evaluate(fromDofs(plus), committed.segment, committed, facetLength).residual;
-    const Vec6 rm = element.evaluate(fromDofs(minus), committed.segment, committed, facetLength).residual;
-    for (int i = 0; i < 6; ++i) k(i, j) = (rp[i] - rm[i]) / (2.0 * h);
-  }
-  return k;
-}
-
-double relativeDifference(const Mat6& a, const Mat6& b) {
-  Mat6 d = a;
-  cc::addScaled(d, -1.0, b);
-  return cc::frobeniusNorm(d) / cc::frobeniusNorm(b);
-}
-
-double asymmetry(const Mat6& a) {
-  Mat6 d = a;
-  cc::addScaled(d, -1.0, cc::transpose(a));
-  return cc::frobeniusNorm(d) / cc::frobeniusNorm(a);
-}
+// The element-test fixture's tools on the Line2 facet.
+constexpr auto fromDofs = &ct::fromDofs<cc::Line2Facet>;
+using ct::asymmetry;
+using ct::relativeDifference;
+using ct::solve;
+using ct::toDofs;
 
 cc::ContactHistory<1> inContact(int segment, double xiN, double tractionN, ContactStatus status) {
-  cc::ContactHistory<1> h;
-  h.segment = segment;
-  h.xi = {xiN};
-  h.tangentialTraction = {tractionN};
-  h.status = status;
-  return h;
+  return ct::committedHistory<1>(segment, {xiN}, {tractionN}, status);
 }
 
 /// Geometry with the slave node at parameter ξ on the segment x1 → x2, at signed distance g along n̄.
@@ -92,8 +59,6 @@ const Configuration kConfigurations[] = {
     {"large_sliding", {1.2, 0.2}, {-1.1, -0.1}, 0.7, -0.8, -0.05},
 };
 
-constexpr double kFdStep = 1e-6;
-constexpr double kFdTolerance = 1e-6;
 
 struct Case {
   const char* law;
@@ -112,7 +77,7 @@ const Case kCases[] = {
 }  // namespace
 
 TEST(NodeToFacetContactLine2, ConsistentTangentMatchesCentralDifferences) {
-  double worst = 0.0;
+  ct::TangentCheck check{ct::kFdTolerance};
   for (const Case& c : kCases) {
     const Element element(c.parameters);
     for (const Configuration& conf : kConfigurations) {
@@ -123,63 +88,28 @@ TEST(NodeToFacetContactLine2, ConsistentTangentMatchesCentralDifferences) {
       ASSERT_EQ(r.status, c.expected);
       EXPECT_NEAR(r.projection.xi[0], conf.xi, 1e-12);
       EXPECT_NEAR(r.projection.gap, conf.gap, 1e-12);
-      const Mat6 fd = finiteDifferenceTangent(element, g, committed, kFdStep);
-      const double error = relativeDifference(r.tangent, fd);
-      std::printf("[ FD       ] %-12s %-20s ‖K − K_FD‖/‖K_FD‖ = %.2e\n", c.law, conf.name.c_str(), error);
-      EXPECT_LT(error, kFdTolerance);
-      worst = std::max(worst, error);
+      check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, committed.segment, committed, ct::kFdStep),
+                        std::string(c.law) + " " + conf.name);
     }
   }
-  std::printf("[ FD       ] worst relative error %.2e\n", worst);
+  check.printWorst("Line2");
 }
 
 // With a slip tolerance ε_T = μ|t_N|/(s L) depends on g_N: the tangent gains ∂t_T/∂g_N = ā_11 Δξ ∂ε_T/∂t_N ε_N
 // in stick. Checked against central differences in stick and slip, at a normal penetration and at a
 // penetration of 1e-5 of the segment (a nearly unloaded node: p = 1e-2 with ε_N = 1e3), with and
-// without the cap. L = 4 and s = 1 for stick (s L = 4 exceeds every configuration's slip), s = 0.005 for slip.
+// without the cap (ct::kSlipToleranceCases).
 TEST(NodeToFacetContactLine2, SlipToleranceTangentMatchesCentralDifferences) {
-  struct ToleranceCase {
-    const char* name;
-    cc::ContactLawParameters parameters;
-    ContactStatus expected;
-  };
-  const ToleranceCase cases[] = {
-      {"stick", {1e3, 0.0, 0.3, 1.0}, ContactStatus::Stick},
-      {"stick_capped", {1e3, 1e-3, 0.3, 1.0}, ContactStatus::Stick},
-      {"slip", {1e3, 0.0, 0.3, 0.005}, ContactStatus::Slip},
-      {"slip_capped", {1e3, 300.0, 0.3, 0.005}, ContactStatus::Slip},
-  };
-  const double facetLength = 4.0;
-  double worst = 0.0;
-  for (const ToleranceCase& c : cases) {
-    const Element element(c.parameters);
-    for (const double gapScale : {1.0, 2.5e-4}) {
-      for (const Configuration& conf : kConfigurations) {
-        SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
-        const double gap = conf.gap * gapScale;
-        const auto g = slaveAt(conf.x1, conf.x2, conf.xi, gap);
+  ct::checkSlipToleranceTangents<cc::Line2Facet>(
+      kConfigurations,
+      [](const Configuration& conf, double gap) {
         // Committed traction at 10 % of the cone, in the direction of the motion.
         const double length = std::sqrt(cc::dot(cc::subtract(conf.x2, conf.x1), cc::subtract(conf.x2, conf.x1))) / 2.0;
         const double tn = 0.1 * 0.3 * 1e3 * std::abs(gap) * length * (conf.xi > conf.xiN ? 1.0 : -1.0);
-        const auto committed = inContact(7, conf.xiN, tn, ContactStatus::Stick);
-        const auto r = element.evaluate(g, 7, committed, facetLength);
-        ASSERT_EQ(r.status, c.expected);
-        const double pressurePenalty = 0.3 * 1e3 * std::abs(gap) / (c.parameters.slipTolerance * facetLength);
-        const double cap = c.parameters.tangentialPenalty;
-        EXPECT_NEAR(r.friction.tangentialPenalty, cap > 0.0 ? std::min(cap, pressurePenalty) : pressurePenalty,
-                    1e-9 * pressurePenalty);
-        // h well below the penetration (the FD must not open the contact)
-        const double h = 1e-3 * std::min(1e-3, std::abs(gap));
-        const Mat6 fd = finiteDifferenceTangent(element, g, committed, h, facetLength);
-        const double error = relativeDifference(r.tangent, fd);
-        std::printf("[ FD       ] slip tolerance %-12s %-20s g_N = %.1e  ‖K − K_FD‖/‖K_FD‖ = %.2e\n", c.name,
-                    conf.name.c_str(), gap, error);
-        EXPECT_LT(error, kFdTolerance);
-        worst = std::max(worst, error);
-      }
-    }
-  }
-  std::printf("[ FD       ] slip tolerance: worst relative error %.2e\n", worst);
+        return std::make_pair(slaveAt(conf.x1, conf.x2, conf.xi, gap), inContact(7, conf.xiN, tn, ContactStatus::Stick));
+      },
+      ct::kFdTolerance, "Line2");
+  const double facetLength = ct::kSlipToleranceFacetLength;
   // The new stick term is there and matters: without ∂ε_T/∂t_N the tangent misses the FD derivative.
   const Element element({1e3, 0.0, 0.3, 1.0}, cc::TangentTerms::Consistent);
   const Configuration& conf = kConfigurations[2];
@@ -250,8 +180,8 @@ TEST(NodeToFacetContactLine2, SlipTangentIsNonSymmetricLikeItsFiniteDifference) 
     const auto committed = inContact(7, conf.xiN, 1.5, ContactStatus::Slip);
     const auto r = element.evaluate(g, 7, committed);
     ASSERT_EQ(r.status, ContactStatus::Slip);
-    const Mat6 fd = finiteDifferenceTangent(element, g, committed, kFdStep);
-    EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
+    const Mat6 fd = ct::finiteDifferenceTangent(element, g, committed.segment, committed, ct::kFdStep);
+    EXPECT_LT(relativeDifference(r.tangent, fd), ct::kFdTolerance);
     EXPECT_GT(asymmetry(r.tangent), 1e-2);  // eq. (26): −μ ε_N n_T D^1 Nᵀ is not symmetric
     EXPECT_GT(asymmetry(fd), 1e-2);
   }
@@ -266,7 +196,7 @@ TEST(NodeToFacetContactLine2, PaperMainTermsAloneMissTheGeometricTerms) {
     const Configuration& conf = kConfigurations[2];
     const auto g = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
     const auto committed = inContact(7, conf.xiN, c.committedTraction, ContactStatus::Stick);
-    const Mat6 fd = finiteDifferenceTangent(full, g, committed, kFdStep);
+    const Mat6 fd = ct::finiteDifferenceTangent(full, g, committed.segment, committed, ct::kFdStep);
     const auto rMain = main.evaluate(g, 7, committed);
     EXPECT_GT(relativeDifference(rMain.tangent, fd), 1e-3) << c.law;
     // Same residual either way: only the tangent differs.
@@ -327,13 +257,14 @@ TEST(NodeToFacetContactLine2, OpenNodeHasNoForceAndFrictionlessNoTangentialForce
 TEST(NodeToFacetContactLine2, FirstContactStartsStickingWithoutTraction) {
   const Element element({1e3, 5e2, 0.3});
   const auto g = slaveAt({1.0, 0.0}, {-1.0, 0.0}, 0.4, -0.01);
-  const auto r = element.evaluate(g, 3, cc::ContactHistory<1>{});  // committed: open
+  const cc::ContactHistory<1> open{};
+  const auto r = element.evaluate(g, 3, open);  // committed: open
   EXPECT_EQ(r.status, ContactStatus::Stick);
   EXPECT_EQ(r.tangentialTraction[0], 0.0);
   EXPECT_EQ(r.trial.segment, 3);
   EXPECT_NEAR(r.trial.xi[0], 0.4, 1e-12);  // the stick reference point of the next increment
-  const Mat6 fd = finiteDifferenceTangent(element, g, cc::ContactHistory<1>{}, kFdStep);
-  EXPECT_LT(relativeDifference(r.tangent, fd), kFdTolerance);
+  const Mat6 fd = ct::finiteDifferenceTangent(element, g, open.segment, open, ct::kFdStep);
+  EXPECT_LT(relativeDifference(r.tangent, fd), ct::kFdTolerance);
 }
 
 TEST(NodeToFacetContactLine2, TrialHistoryAccumulatesSlipAndCommitsThroughTheStore) {
@@ -385,28 +316,6 @@ TEST(NodeToFacetContactLine2, StickingNodeCrossingAVertexKeepsItsTraction) {
 
 // ---- Newton on a tiny model: springs hold the three nodes, a force presses the slave into the segment.
 namespace {
-
-Vec6 solve(Mat6 a, Vec6 b) {  // Gaussian elimination with partial pivoting
-  for (int c = 0; c < 6; ++c) {
-    int pivot = c;
-    for (int r = c + 1; r < 6; ++r)
-      if (std::abs(a(r, c)) > std::abs(a(pivot, c))) pivot = r;
-    for (int k = 0; k < 6; ++k) std::swap(a(c, k), a(pivot, k));
-    std::swap(b[c], b[pivot]);
-    for (int r = c + 1; r < 6; ++r) {
-      const double f = a(r, c) / a(c, c);
-      for (int k = c; k < 6; ++k) a(r, k) -= f * a(c, k);
-      b[r] -= f * b[c];
-    }
-  }
-  Vec6 x{};
-  for (int r = 5; r >= 0; --r) {
-    double s = b[r];
-    for (int k = r + 1; k < 6; ++k) s -= a(r, k) * x[k];
-    x[r] = s / a(r, r);
-  }
-  return x;
-}
 
 /// Residual norms of Newton on R(x) = k (x − X) + r_c(x) − F.
 std::vector<double> newtonHistory(cc::TangentTerms terms) {

@@ -36,15 +36,8 @@ Geometry slaveAt(const Face& face, Vector<2> xi, double gap) {
   return {cc::add(p.position, cc::scaled(gap, p.normal)), face};
 }
 
-cc::ContactHistory<2> inContact(int facet, Vector<2> xiN, Vector<2> tractionN, ContactStatus status,
-                                double slip = 0.0) {
-  cc::ContactHistory<2> h;
-  h.segment = facet;
-  h.xi = xiN;
-  h.tangentialTraction = tractionN;
-  h.status = status;
-  h.accumulatedSlip = slip;
-  return h;
+cc::ContactHistory<2> inContact(int facet, Vector<2> xiN, Vector<2> tractionN, ContactStatus status, double slip = 0.0) {
+  return ct::committedHistory<2>(facet, xiN, tractionN, status, slip);
 }
 
 struct Configuration {
@@ -67,8 +60,6 @@ const Configuration kConfigurations[] = {
     {"from_previous_faces", kWarped, {-0.6, 0.2}, {-3.1, 0.45}, -0.04},
 };
 
-constexpr double kFdStep = 1e-6;
-constexpr double kFdTolerance = 1e-6;
 
 struct Case {
   const char* law;
@@ -87,7 +78,7 @@ const Case kCases[] = {
 }  // namespace
 
 TEST(NodeToFacetContactQuad4, ConsistentTangentMatchesCentralDifferences) {
-  double worst = 0.0;
+  ct::TangentCheck check{ct::kFdTolerance};
   for (const Case& c : kCases) {
     const Element element(c.parameters);
     for (const Configuration& conf : kConfigurations) {
@@ -99,64 +90,29 @@ TEST(NodeToFacetContactQuad4, ConsistentTangentMatchesCentralDifferences) {
       EXPECT_NEAR(r.projection.xi[0], conf.xi[0], 1e-12);
       EXPECT_NEAR(r.projection.xi[1], conf.xi[1], 1e-12);
       EXPECT_NEAR(r.projection.gap, conf.gap, 1e-12);
-      const Mat fd = ct::finiteDifferenceTangent(element, g, 7, committed, kFdStep);
-      const double error = ct::relativeDifference(r.tangent, fd);
-      std::printf("[ FD       ] %-12s %-20s ‖K − K_FD‖/‖K_FD‖ = %.2e\n", c.law, conf.name.c_str(), error);
-      EXPECT_LT(error, kFdTolerance);
-      worst = std::max(worst, error);
+      check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, 7, committed, ct::kFdStep),
+                        std::string(c.law) + " " + conf.name);
     }
   }
-  std::printf("[ FD       ] Quad4: worst relative error %.2e\n", worst);
+  check.printWorst("Quad4");
 }
 
-// ε_T = μ|t_N|/(s L) with its ∂t_T/∂t_N term, in stick and slip, capped or not, at a normal penetration and
-// at 2.5e-4 of it (a nearly unloaded node). L = 4; s = 1 for stick (s L = 4 exceeds every slip here),
-// s = 0.005 for slip.
+// ε_T = μ|t_N|/(s L) with its ∂t_T/∂t_N term, in stick and slip, capped or not (ct::kSlipToleranceCases),
+// at a normal penetration and at 2.5e-4 of it (a nearly unloaded node).
 TEST(NodeToFacetContactQuad4, SlipToleranceTangentMatchesCentralDifferences) {
-  struct ToleranceCase {
-    const char* name;
-    cc::ContactLawParameters parameters;
-    ContactStatus expected;
-  };
-  const ToleranceCase cases[] = {
-      {"stick", {1e3, 0.0, 0.3, 1.0}, ContactStatus::Stick},
-      {"stick_capped", {1e3, 1e-3, 0.3, 1.0}, ContactStatus::Stick},
-      {"slip", {1e3, 0.0, 0.3, 0.005}, ContactStatus::Slip},
-      {"slip_capped", {1e3, 300.0, 0.3, 0.005}, ContactStatus::Slip},
-  };
-  const double facetLength = 4.0;
-  double worst = 0.0;
-  for (const ToleranceCase& c : cases) {
-    const Element element(c.parameters);
-    for (const double gapScale : {1.0, 2.5e-4}) {
-      for (const Configuration& conf : kConfigurations) {
-        SCOPED_TRACE(std::string(c.name) + " / " + conf.name + " / gap x " + std::to_string(gapScale));
-        const double gap = conf.gap * gapScale;
+  ct::checkSlipToleranceTangents<Facet>(
+      kConfigurations,
+      [](const Configuration& conf, double gap) {
         const auto g = slaveAt(conf.face, conf.xi, gap);
         // Committed traction at 10 % of the cone, along the motion (covariant: ā_αβ Δξ^β direction).
         const auto p = cc::FaceProjection3D::evaluateAt(g.slave, g.master, conf.xi);
         const Vector<2> dxi = cc::subtract(conf.xi, conf.xiN);
         const Vector<2> along = cc::multiply(p.metric, dxi);
         const double length = std::sqrt(cc::dot(dxi, along));
-        const auto committed =
-            inContact(7, conf.xiN, cc::scaled(0.1 * 0.3 * 1e3 * std::abs(gap) / length, along), ContactStatus::Stick);
-        const auto r = element.evaluate(g, 7, committed, facetLength);
-        ASSERT_EQ(r.status, c.expected);
-        const double pressurePenalty = 0.3 * 1e3 * std::abs(gap) / (c.parameters.slipTolerance * facetLength);
-        const double cap = c.parameters.tangentialPenalty;
-        EXPECT_NEAR(r.friction.tangentialPenalty, cap > 0.0 ? std::min(cap, pressurePenalty) : pressurePenalty,
-                    1e-9 * pressurePenalty);
-        const double h = 1e-3 * std::min(1e-3, std::abs(gap));  // the FD must not open the contact
-        const Mat fd = ct::finiteDifferenceTangent(element, g, 7, committed, h, facetLength);
-        const double error = ct::relativeDifference(r.tangent, fd);
-        std::printf("[ FD       ] slip tolerance %-12s %-20s g_N = %.1e  ‖K − K_FD‖/‖K_FD‖ = %.2e\n", c.name,
-                    conf.name.c_str(), gap, error);
-        EXPECT_LT(error, kFdTolerance);
-        worst = std::max(worst, error);
-      }
-    }
-  }
-  std::printf("[ FD       ] Quad4 slip tolerance: worst relative error %.2e\n", worst);
+        return std::make_pair(
+            g, inContact(7, conf.xiN, cc::scaled(0.1 * 0.3 * 1e3 * std::abs(gap) / length, along), ContactStatus::Stick));
+      },
+      ct::kFdTolerance, "Quad4");
 }
 
 // With two surface coordinates eq. (27) leaves stiffness across the slip direction; the paper's main terms
@@ -168,7 +124,7 @@ TEST(NodeToFacetContactQuad4, PaperMainTermsAloneMissTheGeometricTerms) {
     const Configuration& conf = kConfigurations[2];
     const auto g = slaveAt(conf.face, conf.xi, conf.gap);
     const auto committed = inContact(7, conf.xiN, c.committedTraction, ContactStatus::Stick);
-    const Mat fd = ct::finiteDifferenceTangent(full, g, 7, committed, kFdStep);
+    const Mat fd = ct::finiteDifferenceTangent(full, g, 7, committed, ct::kFdStep);
     const auto rMain = main.evaluate(g, 7, committed);
     const auto rFull = full.evaluate(g, 7, committed);
     EXPECT_GT(ct::relativeDifference(rMain.tangent, fd), 1e-3) << c.law;
@@ -305,8 +261,8 @@ TEST(NodeToFacetContactQuad4, OpenNodeFirstContactAndFacetCheck) {
   EXPECT_EQ(first.trial.segment, 3);
   EXPECT_NEAR(first.trial.xi[0], 0.4, 1e-12);  // the stick reference point of the next increment
   EXPECT_NEAR(first.trial.xi[1], -0.2, 1e-12);
-  const Mat fd = ct::finiteDifferenceTangent(element, g, 3, cc::ContactHistory<2>{}, kFdStep);
-  EXPECT_LT(ct::relativeDifference(first.tangent, fd), kFdTolerance);
+  const Mat fd = ct::finiteDifferenceTangent(element, g, 3, cc::ContactHistory<2>{}, ct::kFdStep);
+  EXPECT_LT(ct::relativeDifference(first.tangent, fd), ct::kFdTolerance);
 
   EXPECT_THROW(element.evaluate(g, 8, inContact(7, {0.0, 0.0}, {0.0, 0.0}, ContactStatus::Stick)), std::logic_error);
 

@@ -34,6 +34,13 @@ cb::ContactBetaSettings settings(int nc, double f = 0.5) {
   return s;
 }
 
+// The same in the predictor mode (the step corrected by the predicted events and re-solved at convergence).
+cb::ContactBetaSettings predictorSettings(int nc) {
+  cb::ContactBetaSettings s = settings(nc);
+  s.mode = cb::ContactBetaSettings::Mode::Predictor;
+  return s;
+}
+
 std::vector<cb::SlaveNodeIncrement> nodesAt(const std::vector<double>& b) {
   std::vector<cb::SlaveNodeIncrement> out;
   for (double x : b) out.push_back(closingAt(x));
@@ -91,9 +98,7 @@ TEST(ContactBetaControl, PaperModeRestartsOnceByTheTolerance) {
 }
 
 TEST(ContactBetaControl, AConvergedIncrementWithTooFewEventsIsSolvedAgainLarger) {
-  cb::ContactBetaSettings s = settings(2);
-  s.mode = cb::ContactBetaSettings::Mode::Predictor;
-  cb::ContactBetaControl control(s);
+  cb::ContactBetaControl control(predictorSettings(2));
   control.firstAttempt(0.0);
   // Converged: one node closed (g 0.5 → −0.5), two still approach with β^k = 2 and 4 of this step.
   // N_c = 2: the second event is at 2, the third at 4 → β = 2 + 0.5 × 2 = 3.
@@ -109,9 +114,7 @@ TEST(ContactBetaControl, AConvergedIncrementWithTooFewEventsIsSolvedAgainLarger)
 }
 
 TEST(ContactBetaControl, AConvergedIncrementWithTooManyEventsIsSolvedAgainSmaller) {
-  cb::ContactBetaSettings s = settings(1);
-  s.mode = cb::ContactBetaSettings::Mode::Predictor;
-  cb::ContactBetaControl control(s);
+  cb::ContactBetaControl control(predictorSettings(1));
   control.firstAttempt(0.0);
   // Predicted β^k = 0.25, 0.5, 0.75, 1.5 for the planned step: β = 0.25 + 0.5 × 0.25 = 0.375.
   EXPECT_EQ(control.correctByPrediction(nodesAt({0.25, 0.5, 0.75, 1.5})), 0.125 * 0.375);
@@ -124,9 +127,8 @@ TEST(ContactBetaControl, AConvergedIncrementWithTooManyEventsIsSolvedAgainSmalle
 }
 
 TEST(ContactBetaControl, CorrectionsAreBoundedPerIncrement) {
-  cb::ContactBetaSettings s = settings(2);
+  cb::ContactBetaSettings s = predictorSettings(2);
   s.maxCorrections = 1;
-  s.mode = cb::ContactBetaSettings::Mode::Predictor;
   cb::ContactBetaControl control(s);
   control.firstAttempt(0.0);
   EXPECT_NE(control.redoAtConvergence(nodesAt({0.5, 2.0, 4.0})), "");

@@ -18,13 +18,13 @@
 namespace {
 
 using contessa::InputError;
-using contessa::deck::test::goodProblem;
+using contessa::test::goodProblem;
 using Teuchos::ParameterList;
 
 // Expects buildProblem to throw an InputError whose one-line message contains `expected`.
 void expectProblemError(ParameterList& problem, const std::string& expected) {
   try {
-    contessa::deck::buildProblem(problem, "");
+    contessa::deck::buildProblem(problem, "", MPI_COMM_SELF);
     FAIL() << "no error; expected: " << expected;
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -35,7 +35,7 @@ void expectProblemError(ParameterList& problem, const std::string& expected) {
 
 TEST(DeckValidation, GoodDeckBuildsAndFillsDefaults) {
   auto p = goodProblem();
-  const auto def = contessa::deck::buildProblem(*p, "");
+  const auto def = contessa::deck::buildProblem(*p, "", MPI_COMM_SELF);
   EXPECT_EQ(def.mesh.numGlobalElements, 2);
   ASSERT_EQ(def.blocks.size(), 1u);
   EXPECT_EQ(def.blocks[0].elementName, "Q4 Enhanced");
@@ -130,7 +130,7 @@ TEST(DeckValidation, ComponentZInTwoDimensions) {
 TEST(DeckValidation, IntegerGivenForARealIsAccepted) {
   auto p = goodProblem();
   p->sublist("Mesh").set("Length X", 3);
-  const auto def = contessa::deck::buildProblem(*p, "");
+  const auto def = contessa::deck::buildProblem(*p, "", MPI_COMM_SELF);
   EXPECT_DOUBLE_EQ(p->sublist("Mesh").get<double>("Length X"), 3.0);
 }
 
@@ -147,7 +147,7 @@ TEST(DeckOverrides, ExistingParameterKeepsItsType) {
 TEST(DeckOverrides, NewParameterIsTypedByValidation) {
   auto p = goodProblem();
   contessa::deck::applyOverrides(*p, {"Mesh/Elements Y=3", "Mesh/Length Y=0.5"});
-  const auto def = contessa::deck::buildProblem(*p, "");
+  const auto def = contessa::deck::buildProblem(*p, "", MPI_COMM_SELF);
   EXPECT_EQ(def.mesh.numGlobalElements, 6);
   EXPECT_DOUBLE_EQ(p->sublist("Mesh").get<double>("Length Y"), 0.5);
 }
@@ -181,7 +181,7 @@ Teuchos::RCP<ParameterList> contactProblem() {
 
 TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   auto p = contactProblem();
-  auto def = contessa::deck::buildProblem(*p, "");
+  auto def = contessa::deck::buildProblem(*p, "", MPI_COMM_SELF);
   ASSERT_EQ(def.contacts.size(), 1u);
   EXPECT_TRUE(def.contacts[0].rigidMaster);
   EXPECT_EQ(def.contacts[0].slaveNodes.size(), 3u);  // the top of a 2 × 1 mesh
@@ -191,7 +191,7 @@ TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   for (double length : def.contacts[0].slaveFacetLengths) EXPECT_NEAR(length, 1.0, 1e-14);
   // Friction needs no Tangential Penalty with the default Slip Tolerance (ε_T = μ|t_N|/(0.005 L)).
   p->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.2);
-  def = contessa::deck::buildProblem(*p, "");
+  def = contessa::deck::buildProblem(*p, "", MPI_COMM_SELF);
   EXPECT_EQ(def.contacts[0].law.slipTolerance, 0.005);
   EXPECT_EQ(def.contacts[0].law.tangentialPenalty, 0.0);  // no upper bound
   EXPECT_EQ(def.contacts[0].law.frictionCoefficient, 0.2);
@@ -201,7 +201,7 @@ TEST(ContactValidation, GoodRigidAndDeformableInterfaces) {
   c.set("Master Side Set", std::string("bottom"));
   c.set("Normal Penalty", 1e6);
   c.set("Two Pass", true);
-  def = contessa::deck::buildProblem(*q, "");
+  def = contessa::deck::buildProblem(*q, "", MPI_COMM_SELF);
   EXPECT_EQ(def.contacts.size(), 2u);  // two-pass: the second pass with the roles swapped
   EXPECT_FALSE(def.contacts[0].secondPass);
   EXPECT_TRUE(def.contacts[1].secondPass);  // a role of the spec: the name stays the deck's
@@ -230,8 +230,8 @@ TEST(ContactValidation, LawRegistry) {
   auto explicitLaw = contactProblem();
   explicitLaw->sublist("Contact").sublist("plate").set("Law", std::string("Penalty Coulomb"));
   for (auto* p : {implicit.get(), explicitLaw.get()}) p->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3);
-  const auto a = contessa::deck::buildProblem(*implicit, "").contacts.at(0).law;
-  const auto b = contessa::deck::buildProblem(*explicitLaw, "").contacts.at(0).law;
+  const auto a = contessa::deck::buildProblem(*implicit, "", MPI_COMM_SELF).contacts.at(0).law;
+  const auto b = contessa::deck::buildProblem(*explicitLaw, "", MPI_COMM_SELF).contacts.at(0).law;
   EXPECT_EQ(a.normalPenalty, 1e6);
   EXPECT_EQ(a.frictionCoefficient, 0.3);
   EXPECT_EQ(a.normalPenalty, b.normalPenalty);

@@ -17,10 +17,10 @@ using contessa::deck::HistoryRequest;
 // The unit tests' deck (TestDeck.hpp: nodes at x = 0, 1, 2 and y = 0, 1, left held in x) with the
 // requests `history` in Problem/Output/History.
 contessa::deck::ProblemDefinition problemWith(const std::string& history) {
-  auto p = contessa::deck::test::goodProblem();
+  auto p = contessa::test::goodProblem();
   p->sublist("Output").set("History",
                            *Teuchos::getParametersFromXmlString("<ParameterList name=\"History\">" + history + "</ParameterList>"));
-  return contessa::deck::buildProblem(*p, "");
+  return contessa::deck::buildProblem(*p, "", MPI_COMM_SELF);
 }
 
 TEST(OutputRequests, NodeNearestCoordinates) {

@@ -12,6 +12,7 @@
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/Generators.hpp"
 #include "mesh/Partition.hpp"
+#include "MeshTestSupport.hpp"
 #include "DistributedMeshChecks.hpp"
 
 using namespace contessa::mesh;
@@ -184,11 +185,7 @@ TEST(GridPartition, BoxesWithTheFewestCutFacesCoverTheGrid) {
 }
 
 TEST(DistributedMesh, GeneratedRectanglePartsAreTheReplicatedMeshs) {
-  RectangleSpec spec;
-  spec.x0 = -1;
-  spec.lx = 3;
-  spec.nx = 5;
-  spec.ny = 4;
+  RectangleSpec spec = test_support::rectangleSpec(5, 4, 3, 1, -1);
   spec.biasX = 2.5;
   spec.biasY = 0.7;
   const Mesh mesh = generateRectangle(spec);
@@ -206,30 +203,21 @@ TEST(DistributedMesh, GeneratedAnnulusSectorPartsAreTheReplicatedMeshs) {
 }
 
 TEST(DistributedMesh, GeneratedBoxPartsAreTheReplicatedMeshs) {
-  BoxSpec spec;
-  spec.nx = 3;
-  spec.ny = 4;
-  spec.nz = 2;
-  spec.lz = 2;
+  BoxSpec spec = test_support::boxSpec(3, 4, 2, 1, 1, 2);
   spec.biasZ = 3;
   const Mesh mesh = generateBox(spec);
   expectGeneratedPartsMatch(mesh, gridOwners(3, 4, 2), [&](int r, int p) { return generateBoxPart(spec, r, p); });
 }
 
 TEST(DistributedMesh, GeneratedHollowCylinderSectorPartsAreTheReplicatedMeshs) {
-  HollowCylinderSectorSpec spec;
-  spec.section.elementsThroughThickness = 2;
-  spec.section.elementsAroundArc = 5;
-  spec.layers = 3;
+  const HollowCylinderSectorSpec spec = test_support::tubeSpec(2, 5, 3);
   const Mesh mesh = generateHollowCylinderSector(spec);
   expectGeneratedPartsMatch(mesh, gridOwners(2, 5, 3),
                             [&](int r, int p) { return generateHollowCylinderSectorPart(spec, r, p); });
 }
 
 TEST(DistributedMesh, SphereOctantPartsAreTheReplicatedMeshs) {
-  SphereOctantSpec spec;
-  spec.elementsAlongEdge = 2;
-  spec.elementsThroughShell = 2;
+  const SphereOctantSpec spec = test_support::octantSpec(2, 2);
   const Mesh mesh = generateSphereOctant(spec);
   expectGeneratedPartsMatch(
       mesh, [&](int numRanks) { return ElementRanges{mesh.numElements(), numRanks}.owners(); },
@@ -237,10 +225,7 @@ TEST(DistributedMesh, SphereOctantPartsAreTheReplicatedMeshs) {
 }
 
 TEST(DistributedMesh, ExtractedPartsFollowTheMetisPartitionsNodeOwners) {
-  BoxSpec spec;
-  spec.nx = 4;
-  spec.ny = 3;
-  spec.nz = 3;
+  BoxSpec spec = test_support::boxSpec(4, 3, 3);
   const Mesh mesh = generateBox(spec);
   for (int numRanks : {2, 3, 5}) {
     const Partition partition = partitionMesh(mesh, numRanks);

@@ -452,9 +452,7 @@ TEST(SphereOctantGenerator, NoDegenerateElements) {
   // The worst corner of any element (scaled Jacobian: 1 = right angles, 0 = degenerate) stays well
   // away from 0 for the default cube fraction, with and without grading.
   for (double poleBias : {1.0, 5.0}) {
-    SphereOctantSpec spec;
-    spec.elementsAlongEdge = 8;
-    spec.elementsThroughShell = 6;
+    SphereOctantSpec spec = test_support::octantSpec(8, 6);
     spec.poleBias = poleBias;
     spec.radialBias = poleBias == 1 ? 1 : 0.3;
     const Mesh m = generateSphereOctant(spec);

@@ -57,13 +57,7 @@ void expectSidesOnNodeSet(const Mesh& m, const std::string& name) {
 }  // namespace
 
 TEST(RectangleGenerator, CountsCoordinatesAndNumbering) {
-  RectangleSpec spec;
-  spec.x0 = -1;
-  spec.y0 = 2;
-  spec.lx = 4;
-  spec.ly = 3;
-  spec.nx = 4;
-  spec.ny = 3;
+  RectangleSpec spec = test_support::rectangleSpec(4, 3, 4, 3, -1, 2);
   spec.blockName = "plate";
   const Mesh m = generateRectangle(spec);
   EXPECT_EQ(m.dimension, 2);
@@ -89,11 +83,7 @@ TEST(RectangleGenerator, CountsCoordinatesAndNumbering) {
 }
 
 TEST(RectangleGenerator, NodeAndSideSets) {
-  RectangleSpec spec;
-  spec.lx = 2;
-  spec.ly = 1;
-  spec.nx = 4;
-  spec.ny = 2;
+  RectangleSpec spec = test_support::rectangleSpec(4, 2, 2, 1);
   const Mesh m = generateRectangle(spec);
   EXPECT_EQ(m.nodeSet("left").nodes, (std::vector<GlobalIndex>{0, 5, 10}));
   EXPECT_EQ(m.nodeSet("right").nodes, (std::vector<GlobalIndex>{4, 9, 14}));
@@ -278,13 +268,7 @@ void expectGeometric(const std::vector<double>& h, double bias, double length, c
 
 TEST(RectangleGenerator, GradedSizesFollowTheBias) {
   for (const auto& [bx, by] : {std::pair{5.0, 0.2}, std::pair{0.01, 40.0}, std::pair{1 + 1e-9, 1 - 1e-9}}) {
-    RectangleSpec spec;
-    spec.x0 = 0;
-    spec.y0 = 0;
-    spec.lx = 3;
-    spec.ly = 2;
-    spec.nx = 10;
-    spec.ny = 7;
+    RectangleSpec spec = test_support::rectangleSpec(10, 7, 3, 2, 0, 0);
     spec.biasX = bx;
     spec.biasY = by;
     const Mesh m = generateRectangle(spec);
@@ -311,13 +295,7 @@ TEST(RectangleGenerator, GradedSizesFollowTheBias) {
 }
 
 TEST(RectangleGenerator, GradedEndpointsAreExact) {
-  RectangleSpec spec;
-  spec.x0 = -0.1;
-  spec.y0 = 0.7;
-  spec.lx = 0.3;
-  spec.ly = 1.1;
-  spec.nx = 9;
-  spec.ny = 13;
+  RectangleSpec spec = test_support::rectangleSpec(9, 13, 0.3, 1.1, -0.1, 0.7);
   spec.biasX = 7;
   spec.biasY = 1.0 / 3;
   const Mesh m = generateRectangle(spec);
@@ -330,11 +308,7 @@ TEST(RectangleGenerator, GradedEndpointsAreExact) {
 }
 
 TEST(RectangleGenerator, UnitBiasIsTheUniformMesh) {
-  RectangleSpec spec;
-  spec.lx = 2.5;
-  spec.ly = 0.7;
-  spec.nx = 7;
-  spec.ny = 3;
+  RectangleSpec spec = test_support::rectangleSpec(7, 3, 2.5, 0.7);
   const Mesh uniform = generateRectangle(spec);
   spec.biasX = 1;
   spec.biasY = 1;

@@ -301,8 +301,8 @@ TEST(GmshMeshReader, DamagedSectionsAreNamedWithTheirLines) {
 TEST(MeshFactory, ReadersByTypeAndByExtension) {
   Teuchos::ParameterList list;
   list.set("File Name", std::string("two_blocks.msh"));
-  const Mesh byType = MeshFactory::create("Gmsh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES);
-  const Mesh byExtension = MeshFactory::create("Mesh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES);
+  const Mesh byType = MeshFactory::create("Gmsh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES, MPI_COMM_SELF);
+  const Mesh byExtension = MeshFactory::create("Mesh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES, MPI_COMM_SELF);
   expectSameMesh(byType, byExtension);
   EXPECT_EQ(byType.numElements(), 16);
 
@@ -312,16 +312,16 @@ TEST(MeshFactory, ReadersByTypeAndByExtension) {
   const Mesh written = generateBox(box);
   io::ExodusWriter(exodus, written, {}, "box");
   list.set("File Name", exodus);
-  expectSameMesh(MeshFactory::create("Mesh File", list, "Problem/Mesh", ""), written);
+  expectSameMesh(MeshFactory::create("Mesh File", list, "Problem/Mesh", "", MPI_COMM_SELF), written);
   std::remove(exodus.c_str());
 
   list.set("File Name", std::string("two_blocks.geo"));
-  EXPECT_EQ(messageOf([&] { MeshFactory::create("Mesh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES); }),
+  EXPECT_EQ(messageOf([&] { MeshFactory::create("Mesh File", list, "Problem/Mesh", CONTESSA_TEST_MESHES, MPI_COMM_SELF); }),
             "Problem/Mesh/File Name: '" + std::string(CONTESSA_TEST_MESHES) +
                 "/two_blocks.geo' has none of the extensions .msh, .exo, .e, .g, .gen, .ex2 (or choose the reader "
                 "with Type = Exodus File or Gmsh File)");
   list.set("File Name", std::string(""));
-  EXPECT_EQ(messageOf([&] { MeshFactory::create("Gmsh File", list, "Problem/Mesh", ""); }),
+  EXPECT_EQ(messageOf([&] { MeshFactory::create("Gmsh File", list, "Problem/Mesh", "", MPI_COMM_SELF); }),
             "Problem/Mesh/File Name: required (a Gmsh .msh file)");
   EXPECT_EQ(messageOf([&] { MeshFactory::validParameters("Cube"); }),
             "Type: unknown mesh type 'Cube' (known: Rectangle, Annulus Sector, Box, Hollow Cylinder Sector, Sphere "
@@ -329,13 +329,8 @@ TEST(MeshFactory, ReadersByTypeAndByExtension) {
 }
 
 TEST(ExodusRoundTrip, GeneratedHexMeshesKeepTheirSideSetsAndNodeSets) {
-  HollowCylinderSectorSpec tube;
-  tube.section.elementsThroughThickness = 2;
-  tube.section.elementsAroundArc = 5;
-  tube.layers = 3;
-  SphereOctantSpec sphere;
-  sphere.elementsAlongEdge = 3;
-  sphere.elementsThroughShell = 2;
+  const HollowCylinderSectorSpec tube = test_support::tubeSpec(2, 5, 3);
+  const SphereOctantSpec sphere = test_support::octantSpec(3, 2);
   BoxSpec box;
   box.nx = 3, box.ny = 2, box.nz = 2;
   box.biasZ = 2;

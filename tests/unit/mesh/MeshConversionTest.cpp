@@ -96,10 +96,7 @@ TEST(MeshConversion, HexahedraIntoMatchingTetrahedra) {
 }
 
 TEST(MeshConversion, QuadrilateralsIntoTriangles) {
-  RectangleSpec spec;
-  spec.nx = 3;
-  spec.ny = 2;
-  spec.lx = 3;
+  RectangleSpec spec = test_support::rectangleSpec(3, 2, 3);
   const Mesh tri = splitIntoSimplices(generateRectangle(spec));
   EXPECT_NO_THROW(tri.validate("tris"));
   EXPECT_EQ(tri.numElements(), 12);
@@ -152,7 +149,7 @@ TEST(MeshConversion, GeneratorParameters) {
     if (!cells.empty()) list.set("Cell Type", cells);
     if (order > 0) list.set("Element Order", order);
     list.validateParametersAndSetDefaults(*MeshFactory::validParameters(type));
-    return MeshFactory::create(type, list, "Problem/Mesh", "");
+    return MeshFactory::create(type, list, "Problem/Mesh", "", MPI_COMM_SELF);
   };
   EXPECT_EQ(made("Box", "", 0, 2).blocks[0].cellType, CellType::Hex8);
   EXPECT_EQ(made("Box", "Tetrahedra", 0, 2).blocks[0].cellType, CellType::Tet4);

@@ -23,6 +23,7 @@
 #include "mesh/MeshJoin.hpp"
 #include "mesh/MeshMerge.hpp"
 #include "mesh/Partition.hpp"
+#include "MeshTestSupport.hpp"
 #include "DistributedMeshChecks.hpp"
 
 using namespace contessa::mesh;
@@ -41,6 +42,13 @@ int ranks() {
   int n = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &n);
   return n;
+}
+
+// A rank's part made alone (generated or extracted: on MPI_COMM_SELF) placed on every rank's, as
+// MeshFactory places the parts it makes.
+DistributedMesh onWorld(DistributedMesh part) {
+  part.comm = MPI_COMM_WORLD;
+  return part;
 }
 
 // Every rank holding a node gives it the same owner, the owner holds it, and the owned nodes of all
@@ -114,11 +122,8 @@ std::string sharedPath(const std::string& stem) {
 }  // namespace
 
 TEST(MeshDistribution, GeneratedPartsAgreeOnOwnershipAcrossRanks) {
-  BoxSpec box;
-  box.nx = 5;
-  box.ny = 3;
-  box.nz = 4;
-  const DistributedMesh part = generateBoxPart(box, rank(), ranks());
+  BoxSpec box = test_support::boxSpec(5, 3, 4);
+  const DistributedMesh part = onWorld(generateBoxPart(box, rank(), ranks()));
   const Mesh whole = generateBox(box);
   expectSameParts(part, PartExtractor(whole, GridPartition(5, 3, 4, ranks()).owners(), ranks()).part(rank()));
   expectConsistentOwnership(part);
@@ -126,13 +131,11 @@ TEST(MeshDistribution, GeneratedPartsAgreeOnOwnershipAcrossRanks) {
   RectangleSpec rectangle;
   rectangle.nx = 7;
   rectangle.ny = 2;
-  expectConsistentOwnership(generateRectanglePart(rectangle, rank(), ranks()));
+  expectConsistentOwnership(onWorld(generateRectanglePart(rectangle, rank(), ranks())));
 
-  SphereOctantSpec octant;
-  octant.elementsAlongEdge = 3;
-  octant.elementsThroughShell = 2;
+  const SphereOctantSpec octant = test_support::octantSpec(3, 2);
   const Mesh ball = generateSphereOctant(octant);
-  const DistributedMesh octantPart = generateSphereOctantPart(octant, rank(), ranks());
+  const DistributedMesh octantPart = onWorld(generateSphereOctantPart(octant, rank(), ranks()));
   expectSameParts(octantPart,
                   PartExtractor(ball, ElementRanges{ball.numElements(), ranks()}.owners(), ranks()).part(rank()));
   expectConsistentOwnership(octantPart);
@@ -146,7 +149,7 @@ TEST(MeshDistribution, AnExodusFileReadOnRankZeroArrivesAsTheReplicatedPathsPart
   if (rank() == 0) contessa::io::ExodusWriter(path, mesh, {});
   MPI_Barrier(MPI_COMM_WORLD);
   int reads = 0;
-  const DistributedMesh part = distributeMesh([&] {
+  const DistributedMesh part = distributeMesh(MPI_COMM_WORLD, [&] {
     ++reads;
     return readExodusMesh(path);
   });
@@ -164,7 +167,7 @@ TEST(MeshDistribution, AnExodusFileReadOnRankZeroArrivesAsTheReplicatedPathsPart
 TEST(MeshDistribution, AFailedReadOnRankZeroIsTheSameInputErrorOnEveryRank) {
   const std::string path = "/nonexistent/dir/mesh.exo";
   try {
-    distributeMesh([&] { return readExodusMesh(path); });
+    distributeMesh(MPI_COMM_WORLD, [&] { return readExodusMesh(path); });
     FAIL() << "expected an InputError";
   } catch (const contessa::InputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u) << e.what();
@@ -178,20 +181,17 @@ TEST(MeshDistribution, AFailedReadOnRankZeroIsTheSameInputErrorOnEveryRank) {
 TEST(MeshDistribution, TooManyRanksForTheMeshIsAnInputErrorOnEveryRank) {
   if (ranks() == 1) GTEST_SKIP() << "needs 2 ranks";
   RectangleSpec one;  // one element
-  EXPECT_THROW(distributeMesh([&] { return generateRectangle(one); }), contessa::InputError);
+  EXPECT_THROW(distributeMesh(MPI_COMM_WORLD, [&] { return generateRectangle(one); }), contessa::InputError);
 }
 
 TEST(MeshDistribution, GatheredSurfacesAreTheReplicatedMeshs) {
   const Mesh mesh = twoBodies();
-  const DistributedMesh part = distributeMesh([&] { return mesh; });
+  const DistributedMesh part = distributeMesh(MPI_COMM_WORLD, [&] { return mesh; });
   for (const auto& set : mesh.sideSets) expectSameSurface(gatherSurface(part, set.name), surfaceOfSideSet(mesh, set.name));
 
-  HollowCylinderSectorSpec tube;
-  tube.section.elementsThroughThickness = 2;
-  tube.section.elementsAroundArc = 6;
-  tube.layers = 2;
+  const HollowCylinderSectorSpec tube = test_support::tubeSpec(2, 6, 2);
   const Mesh whole = generateHollowCylinderSector(tube);
-  const DistributedMesh generated = generateHollowCylinderSectorPart(tube, rank(), ranks());
+  const DistributedMesh generated = onWorld(generateHollowCylinderSectorPart(tube, rank(), ranks()));
   for (const auto& set : whole.sideSets)
     expectSameSurface(gatherSurface(generated, set.name), surfaceOfSideSet(whole, set.name));
 }
@@ -204,7 +204,7 @@ TEST(MeshDistribution, ContactSurfacesFromGatheredFacetsAreTheReplicatedOnes) {
   rectangle.ny = 2;
   rectangle.biasX = 3;
   for (const Mesh& mesh : {twoBodies(), generateRectangle(rectangle)}) {
-    const DistributedMesh part = distributeMesh([&] { return mesh; });
+    const DistributedMesh part = distributeMesh(MPI_COMM_WORLD, [&] { return mesh; });
     for (const auto& set : mesh.sideSets) {
       const auto expected = contessa::contact::ContactSurface::fromSideSet(mesh, set, "test");
       const auto gathered = contessa::contact::ContactSurface::fromSurface(gatherSurface(part, set.name), "test");
@@ -218,11 +218,7 @@ TEST(MeshDistribution, ContactSurfacesFromGatheredFacetsAreTheReplicatedOnes) {
 }
 
 TEST(MeshDistribution, ASurfaceHoldsItsFacetsNodesAndCoordinates) {
-  BoxSpec box;
-  box.nx = 3;
-  box.ny = 2;
-  box.nz = 4;
-  box.ly = 2.5;
+  BoxSpec box = test_support::boxSpec(3, 2, 4, 1, 2.5);
   const ReplicatedSurface top = surfaceOfSideSet(generateBox(box), "top");
   EXPECT_EQ(top.nodesPerFacet, 4);
   EXPECT_EQ(top.elements.size(), 12u);
@@ -233,7 +229,7 @@ TEST(MeshDistribution, ASurfaceHoldsItsFacetsNodesAndCoordinates) {
 TEST(MeshDistribution, AnUnknownSideSetIsAnInputErrorNamingTheKnownOnes) {
   BoxSpec box;
   box.nx = 3;
-  const DistributedMesh part = generateBoxPart(box, rank(), ranks());
+  const DistributedMesh part = onWorld(generateBoxPart(box, rank(), ranks()));
   try {
     gatherSurface(part, "nowhere");
     FAIL() << "expected an InputError";
@@ -294,7 +290,7 @@ TEST(DecomposedExodus, EachRankReadsItsOwnFileAndGetsTheReplicatedPathsPart) {
   const std::string base = sharedPath("split");
   writeDecomposedFile(base, expected, ranks());
   MPI_Barrier(MPI_COMM_WORLD);
-  const DistributedMesh part = readDecomposedExodus(base);
+  const DistributedMesh part = readDecomposedExodus(base, MPI_COMM_WORLD);
   expectSameParts(part, expected);
   expectConsistentOwnership(part);
   for (const auto& set : mesh.sideSets) expectSameSurface(gatherSurface(part, set.name), surfaceOfSideSet(mesh, set.name));
@@ -303,14 +299,14 @@ TEST(DecomposedExodus, EachRankReadsItsOwnFileAndGetsTheReplicatedPathsPart) {
   // Nodes not in global order in the file: renumbered on reading, the same part.
   writeDecomposedFile(base, nodesReversed(expected), ranks());
   MPI_Barrier(MPI_COMM_WORLD);
-  expectSameParts(readDecomposedExodus(base), expected);
+  expectSameParts(readDecomposedExodus(base, MPI_COMM_WORLD), expected);
   removeDecomposedFile(base);
 }
 
 TEST(DecomposedExodus, AMissingFileIsAnInputErrorNamingItOnEveryRank) {
   const std::string base = sharedPath("absent");
   try {
-    readDecomposedExodus(base);
+    readDecomposedExodus(base, MPI_COMM_WORLD);
     FAIL() << "expected an InputError";
   } catch (const contessa::InputError& e) {
     // Every rank reports rank 0's file: the lowest failing rank speaks for all.
@@ -321,12 +317,12 @@ TEST(DecomposedExodus, AMissingFileIsAnInputErrorNamingItOnEveryRank) {
 TEST(DecomposedExodus, ASetSplitForAnotherRankCountIsAnInputErrorOnEveryRank) {
   BoxSpec box;
   box.nx = 3;
-  const DistributedMesh part = generateBoxPart(box, rank(), ranks());
+  const DistributedMesh part = onWorld(generateBoxPart(box, rank(), ranks()));
   const std::string base = sharedPath("other_count");
   writeDecomposedFile(base, part, ranks() + 1);
   MPI_Barrier(MPI_COMM_WORLD);
   try {
-    readDecomposedExodus(base);
+    readDecomposedExodus(base, MPI_COMM_WORLD);
     FAIL() << "expected an InputError";
   } catch (const contessa::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("split for " + std::to_string(ranks() + 1) + " ranks; the run has " +
@@ -344,7 +340,7 @@ TEST(DecomposedExodus, AnUndecomposedFileIsAnInputErrorSayingSo) {
   contessa::io::ExodusWriter(decomposedFileName(base, ranks(), rank()), generateBox(box), {});
   MPI_Barrier(MPI_COMM_WORLD);
   try {
-    readDecomposedExodus(base);
+    readDecomposedExodus(base, MPI_COMM_WORLD);
     FAIL() << "expected an InputError";
   } catch (const contessa::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not a file of a decomposed mesh"), std::string::npos) << e.what();
@@ -364,13 +360,13 @@ TEST(MeshFactoryPart, EveryGeneratorsPartIsThePartOfItsWholeMesh) {
       if (type == "Box") list.set("Elements Z", 2);
     }
     if (type == "Annulus Sector" || type == "Hollow Cylinder Sector") list.set("Elements Around Arc", 7);
-    const Mesh whole = MeshFactory::create(type, list, "Problem/Mesh", "");
-    const DistributedMesh part = MeshFactory::createPart(type, list, "Problem/Mesh", "");
+    const Mesh whole = MeshFactory::create(type, list, "Problem/Mesh", "", MPI_COMM_WORLD);
+    const DistributedMesh part = MeshFactory::createPart(type, list, "Problem/Mesh", "", MPI_COMM_WORLD);
     // The element owners the parts chose (every rank's elements, all-gathered): the extraction under
     // them from the whole mesh must give this rank's part exactly.
     std::vector<GlobalIndex> mine;
     for (GlobalIndex e : part.part.globalElements) mine.insert(mine.end(), {e, static_cast<GlobalIndex>(rank())});
-    const auto all = allGather(mine);
+    const auto all = allGather(MPI_COMM_WORLD, mine);
     std::vector<int> owners(static_cast<std::size_t>(whole.numElements()), -1);
     for (std::size_t k = 0; k < all.size(); k += 2) owners[static_cast<std::size_t>(all[k])] = static_cast<int>(all[k + 1]);
     ASSERT_EQ(std::count(owners.begin(), owners.end(), -1), 0) << "an element in no part";
@@ -385,8 +381,8 @@ TEST(MeshFactoryPart, AMeshFileIsReadOnRankZeroAndPartitionedByMetis) {
   MPI_Barrier(MPI_COMM_WORLD);
   Teuchos::ParameterList list = *MeshFactory::validParameters("Mesh File");
   list.set("File Name", path);
-  const DistributedMesh part = MeshFactory::createPart("Mesh File", list, "Problem/Mesh", "");
-  const Mesh replicated = MeshFactory::create("Mesh File", list, "Problem/Mesh", "");
+  const DistributedMesh part = MeshFactory::createPart("Mesh File", list, "Problem/Mesh", "", MPI_COMM_WORLD);
+  const Mesh replicated = MeshFactory::create("Mesh File", list, "Problem/Mesh", "", MPI_COMM_WORLD);
   expectSameParts(part, PartExtractor(replicated, partitionMesh(replicated, ranks()).elementOwner, ranks()).part(rank()));
   MPI_Barrier(MPI_COMM_WORLD);
   if (rank() == 0) std::remove(path.c_str());
@@ -395,8 +391,8 @@ TEST(MeshFactoryPart, AMeshFileIsReadOnRankZeroAndPartitionedByMetis) {
 TEST(MeshFactoryPart, AGmshFileIsReadOnRankZeroAndPartitionedByMetis) {
   Teuchos::ParameterList list = *MeshFactory::validParameters("Gmsh File");
   list.set("File Name", std::string(CONTESSA_TEST_MESHES "/two_blocks.msh"));
-  const DistributedMesh part = MeshFactory::createPart("Gmsh File", list, "Problem/Mesh", "");
-  const Mesh replicated = MeshFactory::create("Gmsh File", list, "Problem/Mesh", "");
+  const DistributedMesh part = MeshFactory::createPart("Gmsh File", list, "Problem/Mesh", "", MPI_COMM_WORLD);
+  const Mesh replicated = MeshFactory::create("Gmsh File", list, "Problem/Mesh", "", MPI_COMM_WORLD);
   expectSameParts(part, PartExtractor(replicated, partitionMesh(replicated, ranks()).elementOwner, ranks()).part(rank()));
   expectConsistentOwnership(part);
 }
@@ -405,7 +401,7 @@ TEST(MeshFactoryPart, AMissingMeshFileIsTheDeckErrorOnEveryRank) {
   Teuchos::ParameterList list = *MeshFactory::validParameters("Exodus File");
   list.set("File Name", std::string("no_such_mesh.exo"));
   try {
-    MeshFactory::createPart("Exodus File", list, "Problem/Mesh", "/nonexistent");
+    MeshFactory::createPart("Exodus File", list, "Problem/Mesh", "/nonexistent", MPI_COMM_WORLD);
     FAIL() << "expected an InputError";
   } catch (const contessa::InputError& e) {
     EXPECT_EQ(std::string(e.what()), "Problem/Mesh/File Name: mesh file '/nonexistent/no_such_mesh.exo' does not exist");
@@ -416,7 +412,7 @@ TEST(MeshFactoryPart, AGeneratorsErrorNamesTheDeckParameterOnEveryRank) {
   Teuchos::ParameterList list = *MeshFactory::validParameters("Annulus Sector");
   list.set("End Angle", -10.0);
   try {
-    MeshFactory::createPart("Annulus Sector", list, "Problem/Mesh", "");
+    MeshFactory::createPart("Annulus Sector", list, "Problem/Mesh", "", MPI_COMM_WORLD);
     FAIL() << "expected an InputError";
   } catch (const contessa::InputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("Problem/Mesh/End Angle: expected an angle greater than Start Angle", 0), 0u)
@@ -474,11 +470,11 @@ TEST(MeshFactoryPart, APerRankSetIsReadByEachRankFromItsOwnFile) {
   writeDecomposedFile(base, expected, ranks());
   MPI_Barrier(MPI_COMM_WORLD);
   const PerRankDeck deck = perRankDeck(base);
-  const DistributedMesh part = MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory);
+  const DistributedMesh part = MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory, MPI_COMM_WORLD);
   expectSameParts(part, expected);
   expectConsistentOwnership(part);
   // The whole mesh of the same deck: the set of the run's rank count, joined.
-  expectSameMesh(MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory), mesh);
+  expectSameMesh(MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory, MPI_COMM_WORLD), mesh);
   removeDecomposedFile(base);
 }
 
@@ -489,7 +485,7 @@ TEST(MeshFactory, APerRankSetIsJoinedIntoTheWholeMeshItWasSplitFrom) {
     const std::string base = sharedPath(reversed ? "join_reversed" : "join");
     writeSetOnRankZero(base, mesh, 3, reversed);  // the only set present: joined whatever the rank count
     const PerRankDeck deck = perRankDeck(base);
-    expectSameMesh(MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory), mesh);
+    expectSameMesh(MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory, MPI_COMM_WORLD), mesh);
     removeSetOnRankZero(base, 3);
   }
   // A generated 2D mesh, split in 4.
@@ -510,7 +506,7 @@ TEST(MeshFactoryPart, AMissingPerRankFileIsOneLineNamingItAndTheRankCountOnEvery
   const PerRankDeck deck = perRankDeck(base);
   const std::string reads = "(Layout = Per Rank on " + std::to_string(ranks()) + (ranks() == 1 ? " rank" : " ranks") + " reads " + decomposedFileName(base, ranks(), 0) +
                             (ranks() > 1 ? " to " + decomposedFileName(base, ranks(), ranks() - 1) : "") + "; ";
-  auto readPart = [&] { MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory); };
+  auto readPart = [&] { MeshFactory::createPart("Exodus File", deck.list, "Problem/Mesh", deck.directory, MPI_COMM_WORLD); };
   EXPECT_EQ(inputErrorOf(readPart), "Problem/Mesh/File Name: per-rank mesh file '" +
                                         decomposedFileName(base, ranks(), 0) + "' does not exist " + reads +
                                         "none found)");
@@ -543,7 +539,7 @@ TEST(MeshFactoryPart, AMissingPerRankFileIsOneLineNamingItAndTheRankCountOnEvery
 TEST(MeshFactory, APerRankSetToJoinMustBeTheRunsOrTheOnlyOne) {
   const std::string base = sharedPath("which_set");
   const PerRankDeck deck = perRankDeck(base);
-  auto join = [&] { MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory); };
+  auto join = [&] { MeshFactory::create("Exodus File", deck.list, "Problem/Mesh", deck.directory, MPI_COMM_WORLD); };
   const std::string needs = "Problem/Mesh/File Name: Layout = Per Rank needs one set " + base + ".N.r to join into the whole mesh (";
   EXPECT_EQ(inputErrorOf(join), needs + "none found)");
   MPI_Barrier(MPI_COMM_WORLD);  // every rank looked before rank 0 writes
@@ -585,7 +581,7 @@ TEST(MeshFactory, FilesOfASetListingOtherBlocksAreRefusedNamingTheFile) {
                                              "of the first part (the parts of a mesh list the same)");
   // Read as parts on 2 ranks: every rank says so.
   if (ranks() == 2) {
-    EXPECT_EQ(inputErrorOf([&] { readDecomposedExodus(base); }),
+    EXPECT_EQ(inputErrorOf([&] { readDecomposedExodus(base, MPI_COMM_WORLD); }),
               decomposedFileName(base, 2, 0) + " ...: the files of the set list different element blocks, node sets or "
                                                "side sets (names and order must agree)");
   }
@@ -611,19 +607,14 @@ int main(int argc, char** argv) {
 // The single-file output's view: the parts gathered on rank 0 are the whole mesh again (coordinates,
 // blocks, node sets, side sets in their order), for generated parts and for a file's METIS parts.
 TEST(MeshDistribution, PartsGatheredOnRankZeroAreTheWholeMesh) {
-  HollowCylinderSectorSpec tube;
-  tube.section.elementsThroughThickness = 2;
-  tube.section.elementsAroundArc = 7;
-  tube.layers = 3;
-  SphereOctantSpec ball;
-  ball.elementsAlongEdge = 3;
-  ball.elementsThroughShell = 2;
+  const HollowCylinderSectorSpec tube = test_support::tubeSpec(2, 7, 3);
+  const SphereOctantSpec ball = test_support::octantSpec(3, 2);
   const Mesh wholeTube = generateHollowCylinderSector(tube), wholeBall = generateSphereOctant(ball);
   const Mesh bodies = twoBodies();
   const std::vector<std::pair<const Mesh*, DistributedMesh>> cases = {
-      {&wholeTube, generateHollowCylinderSectorPart(tube, rank(), ranks())},
-      {&wholeBall, generateSphereOctantPart(ball, rank(), ranks())},
-      {&bodies, distributeMesh([&] { return bodies; })}};
+      {&wholeTube, onWorld(generateHollowCylinderSectorPart(tube, rank(), ranks()))},
+      {&wholeBall, onWorld(generateSphereOctantPart(ball, rank(), ranks()))},
+      {&bodies, distributeMesh(MPI_COMM_WORLD, [&] { return bodies; })}};
   for (const auto& [whole, part] : cases) {
     const Mesh gathered = gatherMeshOnRoot(part);
     if (rank() == 0) expectSameMesh(gathered, *whole);
@@ -648,7 +639,7 @@ TEST(MeshDistribution, APartsCheckNamesTheWholeMeshsNumbers) {
   }
   ASSERT_NE(whole.find("element"), std::string::npos) << whole;
   const DistributedMesh part =
-      PartExtractor(mesh, ElementRanges{mesh.numElements(), ranks()}.owners(), ranks()).part(rank());
+      onWorld(PartExtractor(mesh, ElementRanges{mesh.numElements(), ranks()}.owners(), ranks()).part(rank()));
   try {
     validatePart(part, "Problem/Mesh");
     ADD_FAILURE() << "no rank found the tangled element";

@@ -24,13 +24,7 @@ double x(const Mesh& m, GlobalIndex n) { return m.coordinates[2 * n]; }
 double y(const Mesh& m, GlobalIndex n) { return m.coordinates[2 * n + 1]; }
 
 Mesh rectangle(double x0, double y0, double lx, double ly, int nx, int ny) {
-  RectangleSpec spec;
-  spec.x0 = x0;
-  spec.y0 = y0;
-  spec.lx = lx;
-  spec.ly = ly;
-  spec.nx = nx;
-  spec.ny = ny;
+  RectangleSpec spec = test_support::rectangleSpec(nx, ny, lx, ly, x0, y0);
   return generateRectangle(spec);
 }
 

@@ -1,15 +1,51 @@
 #pragma once
-// What the mesh tests share: the message of the InputError an action throws, and two meshes compared
-// field by field (coordinates, blocks, node sets, side sets).
+// What the mesh tests share: the structured generators' specs in one line, the message of the
+// InputError an action throws, and two meshes compared field by field (coordinates, blocks, node sets,
+// side sets).
 #include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "common/Error.hpp"
+#include "mesh/Generators.hpp"
 #include "mesh/Mesh.hpp"
 
 namespace contessa::mesh::test_support {
+
+/// A Rectangle of nx × ny elements over [x0, x0 + lx] × [y0, y0 + ly] (the other fields at their defaults).
+inline RectangleSpec rectangleSpec(int nx, int ny, double lx = 1, double ly = 1, double x0 = 0, double y0 = 0) {
+  RectangleSpec spec;
+  spec.nx = nx, spec.ny = ny, spec.lx = lx, spec.ly = ly, spec.x0 = x0, spec.y0 = y0;
+  return spec;
+}
+
+/// A Hollow Cylinder Sector of `layers` layers over the default ring of the given element counts.
+inline HollowCylinderSectorSpec tubeSpec(int throughThickness, int aroundArc, int layers) {
+  HollowCylinderSectorSpec spec;
+  spec.section.elementsThroughThickness = throughThickness;
+  spec.section.elementsAroundArc = aroundArc;
+  spec.layers = layers;
+  return spec;
+}
+
+/// A Sphere Octant of the default radius with the given element counts.
+inline SphereOctantSpec octantSpec(int alongEdge, int throughShell) {
+  SphereOctantSpec spec;
+  spec.elementsAlongEdge = alongEdge;
+  spec.elementsThroughShell = throughShell;
+  return spec;
+}
+
+/// A Box of nx × ny × nz elements over [x0, x0 + lx] × [y0, y0 + ly] × [z0, z0 + lz] (the other fields at
+/// their defaults).
+inline BoxSpec boxSpec(int nx, int ny, int nz, double lx = 1, double ly = 1, double lz = 1, double x0 = 0, double y0 = 0,
+                       double z0 = 0) {
+  BoxSpec spec;
+  spec.nx = nx, spec.ny = ny, spec.nz = nz, spec.lx = lx, spec.ly = ly, spec.lz = lz;
+  spec.x0 = x0, spec.y0 = y0, spec.z0 = z0;
+  return spec;
+}
 
 /// The InputError's message, or "<no InputError>" when `action` throws none.
 inline std::string messageOf(const std::function<void()>& action) {

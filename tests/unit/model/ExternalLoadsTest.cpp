@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 #include <Tpetra_Core.hpp>
 
 #include "deck/ProblemDefinition.hpp"
 #include "ModelHarness.hpp"
+#include "TestDeck.hpp"
 
 namespace {
 
@@ -27,58 +27,29 @@ const double kTraction[3] = {0.3, -1.1, 0.7}, kBody[3] = {-0.2, 0.5, -0.9};
 // A block of Neo-Hookean enhanced elements, 4 × 3 (× 2), with a pressure on 'right' and 'top', a
 // traction on 'top', a body force everywhere and springs on 'bottom'; clamped on 'left' when asked.
 deck::ProblemDefinition makeProblem(int dim, bool clamped) {
-  auto p = Teuchos::getParametersFromXmlString(std::string(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value=")XML") + (dim == 2 ? "Rectangle" : "Box") + R"XML("/>
-    <Parameter name="Length X" type="double" value="4.0"/>
-    <Parameter name="Length Y" type="double" value="3.0"/>
-    <Parameter name="Elements X" type="int" value="4"/>
-    <Parameter name="Elements Y" type="int" value="3"/>
-  </ParameterList>
-  <ParameterList name="Blocks"><ParameterList name="block_1">
-    <Parameter name="Element" type="string" value=")XML" + (dim == 2 ? "Q4 Enhanced" : "Hex8 Enhanced") + R"XML("/>
-    <Parameter name="Material" type="string" value="rubber"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Materials"><ParameterList name="rubber">
-    <Parameter name="Model" type="string" value="Neo-Hookean"/>
-    <Parameter name="Young's Modulus" type="double" value="100.0"/>
-    <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Loads">
-    <ParameterList name="push right"><Parameter name="Type" type="string" value="Pressure"/>
-      <Parameter name="Side Set" type="string" value="right"/></ParameterList>
-    <ParameterList name="push top"><Parameter name="Type" type="string" value="Pressure"/>
-      <Parameter name="Side Set" type="string" value="top"/></ParameterList>
-    <ParameterList name="drag"><Parameter name="Type" type="string" value="Traction"/>
-      <Parameter name="Side Set" type="string" value="top"/></ParameterList>
-    <ParameterList name="weight"><Parameter name="Type" type="string" value="Body Force"/></ParameterList>
-    <ParameterList name="support"><Parameter name="Type" type="string" value="Spring"/>
-      <Parameter name="Node Set" type="string" value="bottom"/></ParameterList>
-  </ParameterList>
-</ParameterList>)XML");
-  if (dim == 3) {
-    p->sublist("Mesh").set("Length Z", 2.0);
-    p->sublist("Mesh").set("Elements Z", 2);
-  }
+  auto p = test::newProblem();
+  if (dim == 2) test::setGrid(p->sublist("Mesh"), "Rectangle", {4, 3}, {4.0, 3.0});
+  else test::setGrid(p->sublist("Mesh"), "Box", {4, 3, 2}, {4.0, 3.0, 2.0});
+  test::addBlock(*p, "block_1", dim == 2 ? "Q4 Enhanced" : "Hex8 Enhanced", "rubber");
+  test::addMaterial(*p, "rubber", "Neo-Hookean", 100.0, 0.3);
   auto& loads = p->sublist("Loads");
-  loads.sublist("push right").set("Pressure", kPressure);
-  loads.sublist("push top").set("Pressure", 0.5 * kPressure);
+  const auto addLoad = [&loads](const std::string& name, const std::string& type, const std::string& setKind,
+                                const std::string& set) -> Teuchos::ParameterList& {
+    auto& load = loads.sublist(name);
+    load.set("Type", type);
+    if (!setKind.empty()) load.set(setKind, set);
+    return load;
+  };
   const auto array = [dim](const double* v) { return Teuchos::Array<double>(v, v + dim); };
-  loads.sublist("drag").set("Traction", array(kTraction));
-  loads.sublist("weight").set("Force Per Volume", array(kBody));
-  loads.sublist("support").set("Stiffness", array(kSpring));
-  Teuchos::Array<std::string> reactionSets;
-  reactionSets.push_back("top");
-  reactionSets.push_back("bottom");
-  p->sublist("Output").set("Reaction Node Sets", reactionSets);
+  addLoad("push right", "Pressure", "Side Set", "right").set("Pressure", kPressure);
+  addLoad("push top", "Pressure", "Side Set", "top").set("Pressure", 0.5 * kPressure);
+  addLoad("drag", "Traction", "Side Set", "top").set("Traction", array(kTraction));
+  addLoad("weight", "Body Force", "", "").set("Force Per Volume", array(kBody));
+  addLoad("support", "Spring", "Node Set", "bottom").set("Stiffness", array(kSpring));
+  test::setReactionSets(*p, {"top", "bottom"});
   if (clamped)
-    for (int c = 0; c < dim; ++c) {
-      auto& bc = p->sublist("Dirichlet Conditions").sublist("clamp " + std::to_string(c));
-      bc.set("Node Set", std::string("left"));
-      bc.set("Component", std::string(1, "xyz"[c]));
-    }
-  return deck::buildProblem(*p, "");
+    for (int c = 0; c < dim; ++c) test::addDirichlet(*p, "clamp " + std::to_string(c), "left", std::string(1, "xyz"[c]));
+  return test::buildOn(*p, test::everyRank());
 }
 
 // x with owned entries u(X) = a · (smooth field of the reference position), or a rigid translation.

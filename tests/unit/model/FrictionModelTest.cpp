@@ -63,7 +63,19 @@ deck::ProblemDefinition blockOnBase(bool deformableBase, double mu, double drag)
   deck.tangentialPenalty.reset();
   deck.slipTolerance.reset();
   deck.friction = mu;
-  return deck.problem();
+  return deck.problem(test::everyRank());
+}
+
+// The model of `problem` with its half load reached from rest (λ = 0, then 0.5, each converged and
+// committed): where the full-step tests start.
+std::pair<RCP<model::ContactMechanicsModel>, RCP<Thyra::VectorBase<double>>> halfLoaded(
+    const deck::ProblemDefinition& problem) {
+  auto m = makeModel(problem);
+  auto x = Thyra::createMember(m->get_x_space());
+  Thyra::assign(x.ptr(), 0.0);
+  convergeAndCommit(*m, *x, 0.0, 1e-10);
+  convergeAndCommit(*m, *x, 0.5, 1e-10);
+  return {m, x};
 }
 
 class SlipToleranceModelTest : public ::testing::TestWithParam<bool> {};
@@ -72,13 +84,8 @@ class SlipToleranceModelTest : public ::testing::TestWithParam<bool> {};
 // dependent ε_T) has the Jacobian of central differences. Nodes exactly at the stick/slip limit would put
 // a kink between the two differences; the 2-ranks run sees the same state.
 TEST_P(SlipToleranceModelTest, JacobianMatchesCentralDifferences) {
-  const auto problem = blockOnBase(GetParam(), 0.15, 0.05);
-  auto m = makeModel(problem);
-  EXPECT_EQ(m->contactForces().size(), 1u);
-  auto x = Thyra::createMember(m->get_x_space());
-  Thyra::assign(x.ptr(), 0.0);
-  convergeAndCommit(*m, *x, 0.0, 1e-10);
-  convergeAndCommit(*m, *x, 0.5, 1e-10);
+  const auto [m, x] = halfLoaded(blockOnBase(GetParam(), 0.15, 0.05));
+  EXPECT_EQ(m->contactForces().size(), 1u);  // one interface
   test::halfNewtonStep(*m, *x, 1.0);
   const auto d = test::differenceJacobian(*m, *x, 1.0, 1e-7);
   if (Tpetra::getDefaultComm()->getRank() == 0)
@@ -96,12 +103,7 @@ TEST_P(SlipToleranceModelTest, JacobianMatchesCentralDifferences) {
 // rounding of internal forces of order 1e2, about 1e-13 per entry and up to 7e-13 in the norm as
 // measured) are not counted, at least one is.
 TEST_P(SlipToleranceModelTest, NewtonConvergesQuadraticallyOnAFrictionalIncrement) {
-  const auto problem = blockOnBase(GetParam(), 0.15, 0.03);
-  auto m = makeModel(problem);
-  auto x = Thyra::createMember(m->get_x_space());
-  Thyra::assign(x.ptr(), 0.0);
-  convergeAndCommit(*m, *x, 0.0, 1e-10);
-  convergeAndCommit(*m, *x, 0.5, 1e-10);
+  const auto [m, x] = halfLoaded(blockOnBase(GetParam(), 0.15, 0.03));
   const auto norms = newtonAt(*m, *x, 1.0, 1e-11, 40);
   ASSERT_LT(norms.back(), 1e-11) << trace(norms);
   evaluate(*m, *x, 1.0, false);
@@ -133,12 +135,7 @@ TEST_P(SlipToleranceModelTest, NewtonConvergesQuadraticallyOnAFrictionalIncremen
 // it); with it the reversed nodes take the stick stiffness, land in their stick range, and the last
 // iterations are quadratic again.
 TEST(SlipReversalDamping, EndsTheTwoStateCycleOfAFullStep) {
-  const auto problem = blockOnBase(false, 0.3, 0.03);
-  auto m = makeModel(problem);
-  auto x = Thyra::createMember(m->get_x_space());
-  Thyra::assign(x.ptr(), 0.0);
-  convergeAndCommit(*m, *x, 0.0, 1e-10);
-  convergeAndCommit(*m, *x, 0.5, 1e-10);
+  const auto [m, x] = halfLoaded(blockOnBase(false, 0.3, 0.03));
   const auto norms = newtonAt(*m, *x, 1.0, 1e-11, 40);
   if (Tpetra::getDefaultComm()->getRank() == 0) std::printf("Damped full step: residuals %s\n", trace(norms).c_str());
   ASSERT_LT(norms.back(), 1e-11) << trace(norms);
@@ -175,7 +172,7 @@ TEST_P(CoulombBlockReversal, SlidesAtMuPBothWaysWithAStickPhaseAfterTheReversal)
   const double mu = 0.3, P = 1.996007984031936;  // g0 / (H/E + 1/ε_N), the deck's exact normal force
   auto deck = deck::readDeck(CONTESSA_INPUTS "/verification/coulomb_block.xml");
   deck::applyOverrides(*deck, {"Problem/Contact/base/Slip Tolerance=" + std::to_string(slipTolerance)});
-  const auto problem = deck::buildProblem(deck->sublist("Problem"), CONTESSA_INPUTS "/verification");
+  const auto problem = deck::buildProblem(deck->sublist("Problem"), CONTESSA_INPUTS "/verification", test::everyRank());
   auto m = makeModel(problem);
   auto x = Thyra::createMember(m->get_x_space());
   Thyra::assign(x.ptr(), 0.0);

@@ -5,7 +5,6 @@
 
 #include <cmath>
 
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 #include <Tpetra_Core.hpp>
@@ -15,6 +14,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 #include "BlockOnBase.hpp"
 #include "ModelHarness.hpp"
+#include "TestDeck.hpp"
 
 namespace {
 
@@ -28,7 +28,7 @@ deck::ProblemDefinition blockOnBase() {
   deck.elementsX = 3;
   deck.slipTolerance.reset();
   deck.friction = 1.0;
-  return deck.problem();
+  return deck.problem(test::everyRank());
 }
 
 // A 1 x 1 x 1 mm linear elastic block (2 x 1 x 1 Hex8) pressed lightly onto a rigid base (t_N = -2 MPa at zero displacement)
@@ -36,42 +36,22 @@ deck::ProblemDefinition blockOnBase() {
 // 6e-7 mm, below the check's step h = 1e-6 mm, as at the first iterates of the 3D Coulomb block
 // (inputs/verification/coulomb_block_3d.xml).
 deck::ProblemDefinition blockOnBase3d() {
-  auto p = Teuchos::getParametersFromXmlString(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Box"/>
-    <Parameter name="Elements X" type="int" value="2"/>
-    <Parameter name="Elements Y" type="int" value="1"/>
-    <Parameter name="Elements Z" type="int" value="1"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="block_1"><Parameter name="Element" type="string" value="Hex8"/>
-      <Parameter name="Material" type="string" value="elastic"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="elastic"><Parameter name="Model" type="string" value="Linear Elastic"/>
-      <Parameter name="Young's Modulus" type="double" value="1000.0"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.0"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="top"><Parameter name="Node Set" type="string" value="top"/>
-      <Parameter name="Component" type="string" value="y"/><Parameter name="Value" type="double" value="0.0"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Contact">
-    <ParameterList name="base"><Parameter name="Slave Side Set" type="string" value="bottom"/>
-      <Parameter name="Normal Penalty" type="double" value="1e6"/>
-      <Parameter name="Tangential Penalty" type="double" value="1e6"/>
-      <Parameter name="Friction Coefficient" type="double" value="0.3"/>
-      <Parameter name="Slip Tolerance" type="double" value="0"/>
-      <ParameterList name="Rigid Surface">
-        <Parameter name="Points" type="Array(double)" value="{-1.0, 2e-6, -1.0, -1.0, 2e-6, 2.0, 2.0, 2e-6, 2.0, 2.0, 2e-6, -1.0}"/>
-        <Parameter name="Facets" type="Array(int)" value="{0, 1, 2, 3}"/>
-        <Parameter name="Motion" type="Array(double)" value="{0.0, 0.0, 0.0}"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>)XML");
-  return deck::buildProblem(*p, "");
+  auto p = test::newProblem();
+  test::setGrid(p->sublist("Mesh"), "Box", {2, 1, 1});
+  test::addBlock(*p, "block_1", "Hex8", "elastic");
+  test::addMaterial(*p, "elastic", "Linear Elastic", 1000.0, 0.0);
+  test::addDirichlet(*p, "top", "top", "y").set("Value", 0.0);
+  auto& base = p->sublist("Contact").sublist("base");
+  base.set("Slave Side Set", std::string("bottom"));
+  base.set("Normal Penalty", 1e6);
+  base.set("Tangential Penalty", 1e6);
+  base.set("Friction Coefficient", 0.3);
+  base.set("Slip Tolerance", 0.0);
+  auto& rigid = base.sublist("Rigid Surface");
+  rigid.set("Points", test::arrayOf<double>({-1.0, 2e-6, -1.0, -1.0, 2e-6, 2.0, 2.0, 2e-6, 2.0, 2.0, 2e-6, -1.0}));
+  rigid.set("Facets", test::arrayOf<int>({0, 1, 2, 3}));
+  rigid.set("Motion", test::arrayOf<double>({0.0, 0.0, 0.0}));
+  return test::buildOn(*p, test::everyRank());
 }
 
 struct Fixture {
@@ -90,28 +70,27 @@ struct Fixture {
       v[i] = gid % 2 == 1 ? -0.004 - 0.001 * std::sin(0.7 * gid) : 0.002 * std::cos(0.3 * gid);
     }
   }
-  RCP<Thyra::VectorBase<double>> residual(double lambda) const {
+  // The model's inputs at x and λ.
+  Thyra::ModelEvaluatorBase::InArgs<double> at(double lambda) const {
     auto in = model->createInArgs();
     auto p = Thyra::createMember(model->get_p_space(0));
     Thyra::set_ele(0, lambda, p.ptr());
     in.set_x(x);
     in.set_p(0, p);
+    return in;
+  }
+  RCP<Thyra::VectorBase<double>> residual(double lambda) const {
     auto out = model->createOutArgs();
     auto f = Thyra::createMember(model->get_f_space());
     out.set_f(f);
-    model->evalModel(in, out);
+    model->evalModel(at(lambda), out);
     return f;
   }
   RCP<Thyra::LinearOpBase<double>> jacobian(double lambda) const {
-    auto in = model->createInArgs();
-    auto p = Thyra::createMember(model->get_p_space(0));
-    Thyra::set_ele(0, lambda, p.ptr());
-    in.set_x(x);
-    in.set_p(0, p);
     auto out = model->createOutArgs();
     auto W = model->create_W_op();
     out.set_W_op(W);
-    model->evalModel(in, out);
+    model->evalModel(at(lambda), out);
     return W;
   }
 };

@@ -13,12 +13,17 @@
 #include <Thyra_VectorStdOps.hpp>
 #include <Tpetra_Core.hpp>
 
+#include "common/MpiCommOf.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "mesh/MeshDistribution.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 
 namespace contessa::test {
+
+/// The communicator of every rank of the test (Tpetra's default): the model tests' problems are built
+/// on it unless a test builds one on fewer ranks.
+inline MPI_Comm everyRank() { return mpiCommOf(*Tpetra::getDefaultComm()); }
 
 /// The model of a copy of `problem` (the model shares what it is given; a test's problem may go).
 inline Teuchos::RCP<model::ContactMechanicsModel> makeModel(
@@ -27,7 +32,7 @@ inline Teuchos::RCP<model::ContactMechanicsModel> makeModel(
   Teuchos::ParameterList strat("Stratimikos");
   strat.set("Linear Solver Type", std::string("MUMPS"));
   return Teuchos::rcp(new model::ContactMechanicsModel(comm, std::make_shared<const deck::ProblemDefinition>(problem),
-                                                       solvers::createLinearSolverFactory(strat)));
+                                                       solvers::createLinearSolverFactory(strat, comm)));
 }
 
 /// The same problem with the whole mesh as one part (for a model on MPI_COMM_SELF beside the model on

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
@@ -16,6 +16,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 #include "BlockOnBase.hpp"
 #include "ModelHarness.hpp"
+#include "TestDeck.hpp"
 
 namespace {
 
@@ -29,48 +30,19 @@ using MEB = Thyra::ModelEvaluatorBase;
 using Extract = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::GO, model::Node>;
 
 // A 4 × 3 block of Neo-Hookean enhanced quads: left edge clamped, right edge stretched by 30 % and
-// sheared, a nodal force on the top: large deformation, every kind of boundary condition.
-deck::ProblemDefinition makeProblem(const std::string& element) {
-  auto p = Teuchos::getParametersFromXmlString(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="4.0"/>
-    <Parameter name="Length Y" type="double" value="2.0"/>
-    <Parameter name="Elements X" type="int" value="4"/>
-    <Parameter name="Elements Y" type="int" value="3"/>
-  </ParameterList>
-  <ParameterList name="Blocks">
-    <ParameterList name="block_1">
-      <Parameter name="Element" type="string" value="Q4 Enhanced"/>
-      <Parameter name="Material" type="string" value="rubber"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="rubber">
-      <Parameter name="Model" type="string" value="Neo-Hookean"/>
-      <Parameter name="Young's Modulus" type="double" value="100.0"/>
-      <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Dirichlet Conditions">
-    <ParameterList name="clamp x"><Parameter name="Node Set" type="string" value="left"/>
-      <Parameter name="Component" type="string" value="x"/></ParameterList>
-    <ParameterList name="clamp y"><Parameter name="Node Set" type="string" value="left"/>
-      <Parameter name="Component" type="string" value="y"/></ParameterList>
-    <ParameterList name="stretch"><Parameter name="Node Set" type="string" value="right"/>
-      <Parameter name="Component" type="string" value="x"/><Parameter name="Value" type="double" value="1.2"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Nodal Forces">
-    <ParameterList name="lift"><Parameter name="Node Set" type="string" value="top"/>
-      <Parameter name="Component" type="string" value="y"/><Parameter name="Total Force" type="double" value="15.0"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="Reaction Node Sets" type="Array(string)" value="{left, right}"/>
-  </ParameterList>
-</ParameterList>)XML");
-  p->sublist("Blocks").sublist("block_1").set("Element", element);
-  return deck::buildProblem(*p, "");
+// sheared, a nodal force on the top: large deformation, every kind of boundary condition. Spread over
+// the ranks of `comm`.
+deck::ProblemDefinition makeProblem(const std::string& element, MPI_Comm comm = test::everyRank()) {
+  auto p = test::newProblem();
+  test::setGrid(p->sublist("Mesh"), "Rectangle", {4, 3}, {4.0, 2.0});
+  test::addBlock(*p, "block_1", element, "rubber");
+  test::addMaterial(*p, "rubber", "Neo-Hookean", 100.0, 0.3);
+  test::addDirichlet(*p, "clamp x", "left", "x");
+  test::addDirichlet(*p, "clamp y", "left", "y");
+  test::addDirichlet(*p, "stretch", "right", "x").set("Value", 1.2);
+  test::addNodalForce(*p, "lift", "top", "y", 15.0);
+  test::setReactionSets(*p, {"left", "right"});
+  return test::buildOn(*p, comm);
 }
 
 // The model with the given communicator (the 1-vs-all-ranks tests build one on a single rank too).
@@ -88,6 +60,15 @@ RCP<Thyra::VectorBase<double>> deformedState(const model::ContactMechanicsModel&
     v[i] = scale * std::sin(0.7 * gid + 0.3) * (gid % 2 == 0 ? 1.0 : 0.6);
   }
   return x;
+}
+
+// Each reaction's components equal the reference's to `relative` of their size (at least 1).
+template <class Reactions>
+void expectSameReactions(const Reactions& reactions, const Reactions& reference, double relative) {
+  ASSERT_EQ(reactions.size(), reference.size());
+  for (std::size_t s = 0; s < reference.size(); ++s)
+    for (int c = 0; c < 2; ++c)
+      EXPECT_NEAR(reactions[s].force[c], reference[s].force[c], relative * std::max(1.0, std::abs(reference[s].force[c])));
 }
 
 class ModelTest : public ::testing::TestWithParam<std::string> {};
@@ -136,12 +117,20 @@ std::vector<double> newtonResiduals(model::ContactMechanicsModel& m, RCP<Thyra::
   return newtonAt(m, *x, 1.0, 1e-11);
 }
 
+// The problem's model on `comm` solved from rest (newtonResiduals): the model, its solution, the
+// residual norms, and the reactions there.
+struct SolvedFromRest {
+  RCP<model::ContactMechanicsModel> m;
+  RCP<Thyra::VectorBase<double>> x;
+  std::vector<double> norms;
+  SolvedFromRest(const RCP<const Teuchos::Comm<int>>& comm, const deck::ProblemDefinition& problem)
+      : m(makeModel(comm, problem)), norms(newtonResiduals(*m, x)) {}
+  auto reactions() const { return m->reactions(*Extract::getConstTpetraVector(x), 1.0); }
+};
+
 TEST_P(ModelTest, NewtonConvergesQuadratically) {
   auto comm = Tpetra::getDefaultComm();
-  const auto problem = makeProblem(GetParam());
-  auto m = makeModel(comm, problem);
-  RCP<Thyra::VectorBase<double>> x;
-  const auto norms = newtonResiduals(*m, x);
+  const auto norms = SolvedFromRest(comm, makeProblem(GetParam())).norms;
   std::ostringstream trace;
   for (double r : norms) trace << r << " ";
   ASSERT_LT(norms.back(), 1e-11) << trace.str();
@@ -163,27 +152,52 @@ TEST_P(ModelTest, NewtonConvergesQuadratically) {
 TEST_P(ModelTest, SameAnswerOnOneRankAndAllRanks) {
   auto comm = Tpetra::getDefaultComm();
   const auto problem = makeProblem(GetParam());
-  auto m = makeModel(comm, problem);
-  RCP<Thyra::VectorBase<double>> x;
-  const auto norms = newtonResiduals(*m, x);
-  const double normAll = Thyra::norm_2(*x);
-  const auto reactionsAll = m->reactions(*Extract::getConstTpetraVector(x), 1.0);
+  const SolvedFromRest all(comm, problem);
+  const double normAll = Thyra::norm_2(*all.x);
+  const auto reactionsAll = all.reactions();
 
   auto self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
   const auto wholeProblem = test::onOneRank(problem);
   if (comm->getRank() == 0) {
-    auto serial = makeModel(self, wholeProblem);
-    RCP<Thyra::VectorBase<double>> xs;
-    newtonResiduals(*serial, xs);
-    EXPECT_NEAR(Thyra::norm_2(*xs), normAll, 1e-10 * normAll);
-    const auto reactionsSerial = serial->reactions(*Extract::getConstTpetraVector(xs), 1.0);
-    for (std::size_t s = 0; s < reactionsAll.size(); ++s)
-      for (int c = 0; c < 2; ++c)
-        EXPECT_NEAR(reactionsSerial[s].force[c], reactionsAll[s].force[c], 1e-9 * std::max(1.0, std::abs(reactionsAll[s].force[c])));
+    const SolvedFromRest serial(self, wholeProblem);
+    EXPECT_NEAR(Thyra::norm_2(*serial.x), normAll, 1e-10 * normAll);
+    expectSameReactions(serial.reactions(), reactionsAll, 1e-9);
   }
   // Equilibrium: the reactions balance the applied nodal force (15 upwards at λ = 1).
   EXPECT_NEAR(reactionsAll[0].force[1] + reactionsAll[1].force[1], -15.0, 1e-8);
   EXPECT_NEAR(reactionsAll[0].force[0] + reactionsAll[1].force[0], 0.0, 1e-8);
+}
+
+// Problems on communicators of their own: the ranks split into groups of one rank (MPI_Comm_split by
+// rank), and each group builds the deck's problem (its mesh made on the group alone) and its model on
+// its communicator and solves it, while the other groups solve theirs: each gets the answer of the run
+// on all ranks. A problem built on MPI_COMM_WORLD under a model on the group would hold another part
+// of the mesh than its model's ranks assemble, and the collective steps would wait for the other group.
+TEST_P(ModelTest, ProblemsOnSplitCommunicatorsEachSolveAlone) {
+  auto comm = Tpetra::getDefaultComm();
+  const SolvedFromRest all(comm, makeProblem(GetParam()));
+  const double normAll = Thyra::norm_2(*all.x);
+  const auto reactionsAll = all.reactions();
+
+  MPI_Comm group = MPI_COMM_NULL;
+  MPI_Comm_split(test::everyRank(), comm->getRank(), 0, &group);
+  double normAlone = 0;
+  {
+    const auto alone = makeProblem(GetParam(), group);
+    EXPECT_EQ(alone.mesh.numRanks, 1);
+    EXPECT_EQ(alone.mesh.local().numElements(), 12) << "the group's problem holds the whole mesh";
+    const SolvedFromRest solved(rcp(new Teuchos::MpiComm<int>(group)), alone);
+    EXPECT_LT(solved.norms.back(), 1e-11);
+    normAlone = Thyra::norm_2(*solved.x);
+    EXPECT_NEAR(normAlone, normAll, 1e-10 * normAll);
+    expectSameReactions(solved.reactions(), reactionsAll, 1e-9);
+  }
+  MPI_Comm_free(&group);
+  // Every group solved its own problem: the answers agree across the groups too.
+  double lowest = normAlone, highest = normAlone;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 1, &normAlone, &lowest);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 1, &normAlone, &highest);
+  EXPECT_NEAR(lowest, highest, 1e-10 * normAll);
 }
 
 // Reactions at a converged state come from the residual pass Newton has just made (no element loop of
@@ -206,10 +220,7 @@ TEST_P(ModelTest, ReactionsComeFromTheLastResidualPass) {
   const int before = m->elementPasses();
   const auto ownPass = m->reactions(*tx, 1.0);
   EXPECT_EQ(m->elementPasses(), before + 1);
-  ASSERT_EQ(ownPass.size(), fromPass.size());
-  for (std::size_t s = 0; s < fromPass.size(); ++s)
-    for (int c = 0; c < 2; ++c)
-      EXPECT_NEAR(ownPass[s].force[c], fromPass[s].force[c], 1e-10 * std::max(1.0, std::abs(fromPass[s].force[c])));
+  expectSameReactions(ownPass, fromPass, 1e-10);
 
   // After a rollback the pass no longer describes the state: a new one.
   evaluate(*m, *x, 1.0, false);
@@ -247,7 +258,8 @@ TEST_P(ModelTest, JacobianAfterResidualEqualsJacobianAlone) {
 
 // A 2 × 1 Neo-Hookean block on a rigid base (y = 0), its top pushed down and sideways: stick or slip
 // by μ. With `deformableBase`, the base is a second (meshed) block instead, so the master nodes move.
-deck::ProblemDefinition makeContactProblem(double mu, bool deformableBase, bool twoPass) {
+deck::ProblemDefinition makeContactProblem(double mu, bool deformableBase, bool twoPass,
+                                           MPI_Comm comm = test::everyRank()) {
   test::BlockOnBase deck;
   deck.friction = mu;
   deck.deformableBase = deformableBase;
@@ -255,7 +267,7 @@ deck::ProblemDefinition makeContactProblem(double mu, bool deformableBase, bool 
   // Two-pass: upper nodes (x = 0, 2/3, 4/3, 2) interleave with the base's (0.1, 0.7, 1.3, 1.9), so
   // base nodes penetrate the upper block's segments and the second pass carries force too.
   if (deformableBase && twoPass) deck.elementsX = 3;
-  return deck.problem();
+  return deck.problem(comm);
 }
 
 struct ContactCase {
@@ -319,17 +331,22 @@ TEST_P(ContactModelTest, NewtonConvergesQuadraticallyOnAContactIncrement) {
   if (comm->getRank() == 0) std::printf("Contact Newton residuals (%s): %s\n", GetParam().name.c_str(), trace.str().c_str());
 }
 
+// The residual at the smooth state of scale 0.01 (in contact) and the Jacobian there applied to the
+// smooth field of scale 1.
+std::pair<RCP<Thyra::VectorBase<double>>, RCP<Thyra::VectorBase<double>>> residualAndProduct(model::ContactMechanicsModel& m) {
+  const auto e = evaluate(m, *deformedState(m, 0.01), 1.0, true);
+  auto Wv = Thyra::createMember(m.get_f_space());
+  Thyra::apply(*e.W, Thyra::NOTRANS, *deformedState(m, 1.0), Wv.ptr());
+  return {e.f, Wv};
+}
+
 // The residual and the Jacobian of a contact problem are the same on all ranks as on rank 0 alone.
 TEST_P(ContactModelTest, SameResidualAndJacobianOnOneRankAndAllRanks) {
   auto comm = Tpetra::getDefaultComm();
   const auto problem = makeContactProblem(GetParam().mu, GetParam().deformable, GetParam().twoPass);
   auto m = makeModel(comm, problem);
   // A state in contact: every DOF moved by a smooth field, the top pushed into the base.
-  auto x = deformedState(*m, 0.01);
-  const auto e = evaluate(*m, *x, 1.0, true);
-  auto v = deformedState(*m, 1.0);
-  auto Wv = Thyra::createMember(m->get_f_space());
-  Thyra::apply(*e.W, Thyra::NOTRANS, *v, Wv.ptr());
+  const auto [f, Wv] = residualAndProduct(*m);
   // Gather to rank 0 by global DOF id (Thyra's own ordering follows the ranks, not the ids).
   const auto n = m->get_x_space()->dim();
   std::vector<model::GO> ids;
@@ -338,24 +355,47 @@ TEST_P(ContactModelTest, SameResidualAndJacobianOnOneRankAndAllRanks) {
   auto rootMap = rcp(new model::Map(n, Teuchos::ArrayView<const model::GO>(ids), 0, comm));
   model::Import toRoot(m->ownedDofMap(), rootMap);
   model::Vector fRoot(rootMap), WvRoot(rootMap);
-  fRoot.doImport(*Extract::getConstTpetraVector(e.f), toRoot, Tpetra::INSERT);
+  fRoot.doImport(*Extract::getConstTpetraVector(f), toRoot, Tpetra::INSERT);
   WvRoot.doImport(*Extract::getConstTpetraVector(Wv), toRoot, Tpetra::INSERT);
   const auto fAll = fRoot.getData(0), WvAll = WvRoot.getData(0);
   const auto wholeProblem = test::onOneRank(problem);
   if (comm->getRank() == 0) {
     auto self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
     auto serial = makeModel(self, wholeProblem);
-    auto xs = deformedState(*serial, 0.01);
-    const auto es = evaluate(*serial, *xs, 1.0, true);
-    auto vs = deformedState(*serial, 1.0);
-    auto Wvs = Thyra::createMember(serial->get_f_space());
-    Thyra::apply(*es.W, Thyra::NOTRANS, *vs, Wvs.ptr());
-    const double fScale = Thyra::norm_inf(*es.f), WvScale = Thyra::norm_inf(*Wvs);
+    const auto [fs, Wvs] = residualAndProduct(*serial);
+    const double fScale = Thyra::norm_inf(*fs), WvScale = Thyra::norm_inf(*Wvs);
     for (Thyra::Ordinal i = 0; i < n; ++i) {
-      EXPECT_NEAR(fAll[i], Thyra::get_ele(*es.f, i), 1e-10 * fScale) << "residual row " << i;
+      EXPECT_NEAR(fAll[i], Thyra::get_ele(*fs, i), 1e-10 * fScale) << "residual row " << i;
       EXPECT_NEAR(WvAll[i], Thyra::get_ele(*Wvs, i), 1e-10 * WvScale) << "Jacobian row " << i;
     }
   }
+}
+
+// The deformable contact pair (a Parts mesh: read whole on the group's rank 0 and sent out, its contact
+// surfaces gathered over the group) on groups of one rank: each group's Newton at half load reaches
+// the all-ranks solution with the same contacts.
+TEST(SplitCommunicator, AContactPairOfPartsSolvesOnEachGroupAlone) {
+  auto comm = Tpetra::getDefaultComm();
+  const auto solveHalfLoad = [](const RCP<const Teuchos::Comm<int>>& on, const deck::ProblemDefinition& problem) {
+    auto m = makeModel(on, problem);
+    auto x = Thyra::createMember(m->get_x_space());
+    Thyra::assign(x.ptr(), 0.0);
+    EXPECT_LT(newtonAt(*m, *x, 0.5).back(), 1e-10);
+    evaluate(*m, *x, 0.5, false);
+    m->commitState();
+    return std::make_pair(Thyra::norm_2(*x), m->contactCounts().active);
+  };
+  const auto [normAll, activeAll] = solveHalfLoad(comm, makeContactProblem(1.0, true, false));
+  ASSERT_GT(activeAll, 0);
+  MPI_Comm group = MPI_COMM_NULL;
+  MPI_Comm_split(test::everyRank(), comm->getRank(), 0, &group);
+  {
+    const auto [norm, active] =
+        solveHalfLoad(rcp(new Teuchos::MpiComm<int>(group)), makeContactProblem(1.0, true, false, group));
+    EXPECT_NEAR(norm, normAll, 1e-10 * normAll);
+    EXPECT_EQ(active, activeAll);
+  }
+  MPI_Comm_free(&group);
 }
 
 // The top block of makeContactProblem's deformable pair moved rigidly by (dx, dy): its nodes (y > 0) only.

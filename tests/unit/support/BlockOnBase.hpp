@@ -1,5 +1,5 @@
 #pragma once
-// The deck the model tests share (ModelTest, JacobianCheckTest, FrictionModelTest): a Neo-Hookean
+// The contact deck the model tests share (ModelTest, JacobianCheckTest, FrictionModelTest): a Neo-Hookean
 // block of Q4 Enhanced, 2 wide, its bottom 0.001 above a base at y = 0, its top pushed down by 0.05
 // and sideways; the base is a rigid line, or a meshed block (3 × 1, clamped at its bottom) whose top
 // is the master surface. Each test sets what it varies (mesh, penalties, friction) and builds the
@@ -12,6 +12,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "deck/ProblemDefinition.hpp"
+#include "TestDeck.hpp"
 
 namespace contessa::test {
 
@@ -28,14 +29,13 @@ struct BlockOnBase {
   std::optional<bool> twoPass;  ///< deformable base only; unset: the deck's default
 
   Teuchos::RCP<Teuchos::ParameterList> deck() const {
-    auto problem = Teuchos::rcp(new Teuchos::ParameterList("Problem"));
+    auto problem = newProblem();
     addMesh(*problem);
-    addMaterials(*problem);
+    addMaterial(*problem, "rubber", "Neo-Hookean", 100.0, 0.3);
     // The generated node and side sets of a Parts mesh carry the part's name as a prefix.
     const std::string top = deformableBase ? "top_" : "";
-    auto& bc = problem->sublist("Dirichlet Conditions");
-    setCondition(bc.sublist("press"), top + "top", "y").set("Value", -0.05);
-    setCondition(bc.sublist(shearName), top + "top", "x").set("Value", shear);
+    addDirichlet(*problem, "press", top + "top", "y").set("Value", -0.05);
+    addDirichlet(*problem, shearName, top + "top", "x").set("Value", shear);
     auto& contact = problem->sublist("Contact").sublist("base");
     contact.set("Slave Side Set", top + "bottom");
     contact.set("Normal Penalty", normalPenalty);
@@ -46,7 +46,7 @@ struct BlockOnBase {
       contact.set("Master Side Set", std::string("base_top"));
       if (twoPass) contact.set("Two Pass", *twoPass);
       // The base is clamped at its bottom.
-      for (const char* c : {"x", "y"}) setCondition(bc.sublist(std::string("base ") + c), "base_bottom", c);
+      for (const char* c : {"x", "y"}) addDirichlet(*problem, std::string("base ") + c, "base_bottom", c);
     } else {
       contact.sublist("Rigid Surface").set("Points", Teuchos::Array<double>(Teuchos::tuple<double>(3.0, 0.0, -1.0, 0.0)));
       contact.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(2, 0.0));
@@ -54,16 +54,10 @@ struct BlockOnBase {
     return problem;
   }
 
-  deck::ProblemDefinition problem() const { return deck::buildProblem(*deck(), ""); }
+  /// The problem on `comm` (its mesh spread over those ranks).
+  deck::ProblemDefinition problem(MPI_Comm comm) const { return buildOn(*deck(), comm); }
 
  private:
-  static Teuchos::ParameterList& setCondition(Teuchos::ParameterList& condition, const std::string& nodeSet,
-                                              const std::string& component) {
-    condition.set("Node Set", nodeSet);
-    condition.set("Component", component);
-    return condition;
-  }
-
   static void addRectangle(Teuchos::ParameterList& mesh, int nx, int ny, double x0, double y0, double length) {
     mesh.set("Type", std::string("Rectangle"));
     if (x0 != 0) mesh.set("X Origin", x0);
@@ -73,32 +67,19 @@ struct BlockOnBase {
     mesh.set("Elements Y", ny);
   }
 
-  static void addBlock(Teuchos::ParameterList& blocks, const std::string& name) {
-    blocks.sublist(name).set("Element", std::string("Q4 Enhanced"));
-    blocks.sublist(name).set("Material", std::string("rubber"));
-  }
-
   void addMesh(Teuchos::ParameterList& problem) const {
     auto& mesh = problem.sublist("Mesh");
-    auto& blocks = problem.sublist("Blocks");
     if (!deformableBase) {
       addRectangle(mesh, elementsX, elementsY, 0.0, 0.001, 2.0);
       if (blockName != "block_1") mesh.set("Block Name", blockName);
-      addBlock(blocks, blockName);
+      addBlock(problem, blockName, "Q4 Enhanced", "rubber");
       return;
     }
     mesh.set("Type", std::string("Parts"));
     addRectangle(mesh.sublist("base"), 5, 2, -0.5, -1.0, 3.0);
     addRectangle(mesh.sublist("top"), elementsX, elementsY, 0.0, 0.001, 2.0);
-    addBlock(blocks, "base");
-    addBlock(blocks, "top");
-  }
-
-  static void addMaterials(Teuchos::ParameterList& problem) {
-    auto& rubber = problem.sublist("Materials").sublist("rubber");
-    rubber.set("Model", std::string("Neo-Hookean"));
-    rubber.set("Young's Modulus", 100.0);
-    rubber.set("Poisson's Ratio", 0.3);
+    addBlock(problem, "base", "Q4 Enhanced", "rubber");
+    addBlock(problem, "top", "Q4 Enhanced", "rubber");
   }
 };
 
