@@ -51,7 +51,9 @@ def contessa_tip(contessa, workdir, family, n):
     os.makedirs(out, exist_ok=True)
     run = subprocess.run([contessa, deck, "--quiet", "--output-dir", out, "--set", f"Problem/Mesh/File Name={msh}",
                           "--set", f"Problem/Blocks/body/Element={family}"], capture_output=True, text=True)
-    if run.returncode != 0:
+    # Exit 3: the run finished but the deck's own regression check (the 16 x 16 answer) failed, as it
+    # must on the coarse meshes: the history is still the answer.
+    if run.returncode not in (0, 3):
         return None, (run.stderr.strip().splitlines() or ["exit %d" % run.returncode])[-1]
     stem = os.path.splitext(os.path.basename(deck))[0]
     with open(os.path.join(out, stem + ".history.csv")) as f:
