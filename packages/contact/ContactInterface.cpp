@@ -385,6 +385,9 @@ void ContactInterface<Facet>::commit() {
     if (status == ContactStatus::Open) continue;
     ++counts.active;
     if (!history_.committed(k).isInContact()) ++counts.newlyActive;
+    // Without friction a closed node is neither sticking nor slipping (the element marks it Slip only
+    // because t_T ≡ 0): it counts as active alone, stick = slip = 0 (issue 25, point 4).
+    if (spec_.law.isFrictionless()) continue;
     if (status == ContactStatus::Stick) ++counts.stick;
     if (status == ContactStatus::Slip) ++counts.slip;
   }
