@@ -89,7 +89,7 @@ deck::ProblemDefinition makeProblem() {
     </ParameterList>
   </ParameterList>
 </ParameterList>)XML");
-  return deck::buildProblem(*p, "");
+  return deck::buildProblem(*p, "", test::everyRank());
 }
 
 // A smooth displacement field (small, the bottom pressed into the base where the base rises).
