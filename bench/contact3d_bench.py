@@ -8,8 +8,8 @@ give 1.06e5, 3.13e5 and 9.99e5) pressed by a rigid square punch covering part of
 frictionless penalty contact, two increments of λ = 0.5, Belos GMRES + MueLu (rigid-body modes as
 near-null space). For each size and rank count it prints one Markdown row:
 
-- slave nodes of the contact surface and contact nodes at the end; Newton iterations; Krylov
-  iterations per linear solve;
+- slave nodes of the contact surface and contact nodes at the end, the punch force at the end
+  (contact_force_punch_z); Newton iterations; Krylov iterations per linear solve;
 - wall time of the run (the summary's wall_seconds) and per Newton iteration;
 - linear solver time (MueLu's set-up and the Krylov iterations, apart), contact time (search, contact
   elements and their scatter), element kernels + assembly, set-up (deck, mesh, partition, graph):
@@ -82,17 +82,17 @@ def main():
     args = parser.parse_args()
     work = args.work or tempfile.mkdtemp(prefix="contact3d_bench_")
     print(f"load average {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f}; work directory {work}\n")
-    print("| n | unknowns | ranks | slave / contact nodes | Newton it. | Krylov it./solve | wall [s] | per Newton it. [s] | "
+    print("| n | unknowns | ranks | slave / contact nodes | punch force [N] | Newton it. | Krylov it./solve | wall [s] | per Newton it. [s] | "
           "preconditioner set-up [s] | Krylov [s] | contact [s] | elements + assembly [s] | set-up [s] | peak memory: largest rank / sum [MiB] | "
           "answer vs 1 rank |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n in args.sizes:
         reference = None
         for ranks in args.ranks:
             r = run(args.contessa, n, ranks, work)
             s = r.get("summary")
             if r["status"] != 0 or s is None:
-                print(f"| {n} | {unknowns(n)} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) ||||||||||||")
+                print(f"| {n} | {unknowns(n)} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) |||||||||||||")
                 continue
             history = os.path.join(r["out"], "punch_3d.history.csv")
             answer = "reference" if reference is None else difference(reference, history)
@@ -102,7 +102,8 @@ def main():
             memory = s["peak_memory_bytes"]
             slaves = (n + 1) ** 2
             contacts = int(float(last_row(history)["active_contacts"]))
-            print(f"| {n} | {unknowns(n)} | {ranks} | {slaves} / {contacts} | {s['newton_iterations']} | {krylov:.1f} | "
+            force = -float(last_row(history)["contact_force_punch_z"])
+            print(f"| {n} | {unknowns(n)} | {ranks} | {slaves} / {contacts} | {force:.1f} | {s['newton_iterations']} | {krylov:.1f} | "
                   f"{s['wall_seconds']:.1f} | {s['wall_seconds'] / max(s['newton_iterations'], 1):.2f} | "
                   f"{phase['preconditioner set-up']:.1f} | {phase['Krylov iterations']:.1f} | {phase['contact']:.2f} | {phase['elements + assembly']:.1f} | "
                   f"{phase['set-up']:.1f} | {memory['max'] / 2**20:.0f} / {sum(memory['per_rank']) / 2**20:.0f} | {answer} |",
