@@ -42,10 +42,10 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
         const int npe = mesh::nodesPerCell(block.cellType);
         std::vector<GlobalIndex> nodes;
         for (int a : mesh::sideNodes(block.cellType, set.sides[k])) nodes.push_back(block.connectivity[where.local * npe + a]);
-        // The kernels integrate multilinear facets: 2-node edges (2D), 4-node faces (3D).
-        if (static_cast<int>(nodes.size()) != mechanics::facetNodeCount(dim_))
+        // The kernels take the sides of every cell family (mechanics::isLoadFacet).
+        if (!mechanics::isLoadFacet(dim_, static_cast<int>(nodes.size())))
           throw std::logic_error("ExternalLoads: a side of " + std::to_string(nodes.size()) + " nodes in side set '" +
-                                 load.set + "'; the load kernels take 2-node edges and 4-node faces");
+                                 load.set + "', which no load kernel takes");
         appendNodes(entries, nodes, problem, localDof);
       }
       (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(entries));
@@ -77,8 +77,8 @@ void ExternalLoads::addDeadLoads(double* f) const {
         if (dim_ == 2) mechanics::bodyForce<2>(X, entries.value.data(), *measure_, fe.data());
         else mechanics::bodyForce<3>(X, entries.value.data(), *measure_, fe.data());
       } else {
-        if (dim_ == 2) mechanics::facetTraction<2>(X, entries.value.data(), *measure_, fe.data());
-        else mechanics::facetTraction<3>(X, entries.value.data(), *measure_, fe.data());
+        if (dim_ == 2) mechanics::facetTraction<2>(entries.nodes, X, entries.value.data(), *measure_, fe.data());
+        else mechanics::facetTraction<3>(entries.nodes, X, entries.value.data(), *measure_, fe.data());
       }
       for (int i = 0; i < n; ++i) f[entries.dofs[k * n + i]] += fe[i];
     }
@@ -100,8 +100,8 @@ void ExternalLoads::assembleFollowerLoads(const double* u, double lambda, double
       const int* dofs = entries.dofs.data() + k * n;
       for (int i = 0; i < n; ++i) x[i] = entries.X[k * n + i] + u[dofs[i]];  // current position
       double* K = stiffness ? ke.data() : nullptr;
-      if (dim_ == 2) mechanics::followerPressure<2>(x.data(), p, *measure_, fe.data(), K);
-      else mechanics::followerPressure<3>(x.data(), p, *measure_, fe.data(), K);
+      if (dim_ == 2) mechanics::followerPressure<2>(entries.nodes, x.data(), p, *measure_, fe.data(), K);
+      else mechanics::followerPressure<3>(entries.nodes, x.data(), p, *measure_, fe.data(), K);
       // f_p is linear in p: f_p(λ p) = λ f_p(p), ∂/∂λ = f_p(p); the residual carries −f_ext.
       for (int i = 0; i < n; ++i) {
         force[dofs[i]] -= lambda * fe[i];
