@@ -70,7 +70,8 @@ std::array<SurfaceRulePoint<M>, (M == 1 ? n : n * n)> gaussRuleOnSquare() {
 
 /// The degree-2 rule on the unit triangle: (1/6, 1/6), (2/3, 1/6), (1/6, 2/3), weights 1/6 each.
 inline std::array<SurfaceRulePoint<2>, 3> triangleRule3() {
-  return {{{{1.0 / 6.0, 1.0 / 6.0}, 1.0 / 6.0}, {{2.0 / 3.0, 1.0 / 6.0}, 1.0 / 6.0}, {{1.0 / 6.0, 2.0 / 3.0}, 1.0 / 6.0}}};
+  constexpr double w = 1.0 / 6.0;
+  return {{{{1.0 / 6.0, 1.0 / 6.0}, w}, {{2.0 / 3.0, 1.0 / 6.0}, w}, {{1.0 / 6.0, 2.0 / 3.0}, w}}};
 }
 
 /// 2-node straight master segment in 2D (plane strain): ξ ∈ [−1, 1], H_1 = (1 − ξ)/2, H_2 = (1 + ξ)/2.
@@ -192,7 +193,9 @@ struct Quad4Facet {
 /// order, as the corners come before the mid-edge node): values, first and second derivatives. The third
 /// derivatives vanish.
 struct QuadraticLagrange1D {
-  static constexpr std::array<double, 3> values(double s) { return {0.5 * s * (s - 1.0), 0.5 * s * (s + 1.0), 1.0 - s * s}; }
+  static constexpr std::array<double, 3> values(double s) {
+    return {0.5 * s * (s - 1.0), 0.5 * s * (s + 1.0), 1.0 - s * s};
+  }
   static constexpr std::array<double, 3> first(double s) { return {s - 0.5, s + 0.5, -2.0 * s}; }
   static constexpr std::array<double, 3> second(double /*s*/) { return {1.0, 1.0, -2.0}; }
 };
@@ -334,7 +337,8 @@ struct Tri6Facet : FaceNormal {
       const int a = kEnds[i][0], b = kEnds[i][1];
       const double scale = a == b ? 2.0 : 4.0;
       for (int al = 0; al < kSurfaceDim; ++al)
-        for (int be = 0; be < kSurfaceDim; ++be) d[i](al, be) = scale * (kDL[a][al] * kDL[b][be] + kDL[a][be] * kDL[b][al]);
+        for (int be = 0; be < kSurfaceDim; ++be)
+          d[i](al, be) = scale * (kDL[a][al] * kDL[b][be] + kDL[a][be] * kDL[b][al]);
     }
     return d;
   }

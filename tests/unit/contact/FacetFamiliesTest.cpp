@@ -162,8 +162,8 @@ TYPED_TEST(FacetFamilies, DerivativesMatchCentralDifferences) {
 }
 
 // A node on the normal line of a point of the exact parabola/paraboloid, inside the radius of curvature
-// (1/(2c) ≈ 3.3; a flat plane for Tri3), projects on that point: ξ̄ recovered, g_N and n̄ the surface's (eq. 1-5), from the robust
-// starts of Projection::project, on both sides of the facet.
+// (1/(2c) ≈ 3.3; a flat plane for Tri3), projects on that point: ξ̄ recovered, g_N and n̄ the surface's
+// (eq. 1-5), from the robust starts of Projection::project, on both sides of the facet.
 TYPED_TEST(FacetFamilies, ProjectionOnACurvedFacetFindsTheClosestPoint) {
   using Facet = TypeParam;
   const auto facet = curvedFacet<Facet>(0.0);

@@ -50,7 +50,8 @@ std::array<double, Facet::kNodes> consistent(const std::array<typename Facet::Po
   std::array<double, Facet::kNodes> a{};
   for (const auto& q : Facet::quadrature()) {
     const auto p = cc::Projection<Facet>::evaluateAt(typename Facet::Point{}, x, q.xi);
-    for (int i = 0; i < Facet::kNodes; ++i) a[i] += p.shape[i] * cc::norm(Facet::areaNormal(p.covariantBasis)) * q.weight;
+    const double dA = cc::norm(Facet::areaNormal(p.covariantBasis)) * q.weight;
+    for (int i = 0; i < Facet::kNodes; ++i) a[i] += p.shape[i] * dA;
   }
   return a;
 }
