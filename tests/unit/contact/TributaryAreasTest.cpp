@@ -136,3 +136,17 @@ TEST(TributaryAreas, CurvedFacetsKeepPositiveWeightsThatSumToTheArea) {
   const auto quad9 = perturbed(affineFacet<cc::Quad9Facet>());
   expectPositiveAndComplete<cc::Quad9Facet>(quad9, measured(quad9, cc::Quad9Facet{}), 1e-14);
 }
+
+// A 3-node edge of an axisymmetric surface (revolved about the y axis, r = x): ∫ H_i 2π r ds with r linear
+// along a straight edge of length L is 2π L (r_0/6, r_1/6, 2 r̄/3), r̄ the mid-edge radius; they sum to the
+// band's area 2π r̄ L.
+TEST(TributaryAreas, RevolvedThreeNodeEdgeGivesTheBandAreas) {
+  const std::array<cc::Line3Facet::Point, 3> edge{{{2.0, 0.0}, {3.2, 1.6}, {2.6, 0.8}}};  // L = 2
+  double length = 0;
+  const auto a = cc::tributaryAreas<cc::Line3Facet>(edge, true, length);
+  EXPECT_NEAR(length, 2.0, 1e-14);
+  EXPECT_NEAR(a[0], 2 * M_PI * 2.0 * 2.0 / 6.0, 1e-12);
+  EXPECT_NEAR(a[1], 2 * M_PI * 2.0 * 3.2 / 6.0, 1e-12);
+  EXPECT_NEAR(a[2], 2 * M_PI * 2.0 * 2.0 * 2.6 / 3.0, 1e-12);
+  EXPECT_NEAR(a[0] + a[1] + a[2], 2 * M_PI * 2.6 * 2.0, 1e-12);
+}
