@@ -33,6 +33,7 @@ const Registry<RegistryRow<MakeElement>>& registry() {
                   {"Tet4", "4-node tetrahedron (3D), 1 point: constant strain, locks", &makeTet4},
                   {"Tet10", "10-node quadratic tetrahedron (3D), 4 points", &makeTet10},
                   {"Hex20", "20-node serendipity hexahedron (3D), 3 × 3 × 3 Gauss", &makeHex20},
+                  {"Hex27", "27-node Lagrange hexahedron (3D), 3 × 3 × 3 Gauss", &makeHex27},
                   {"Wedge6", "6-node wedge (3D prism), 3 × 2 points: locks like Hex8", &makeWedge6},
                   {"Wedge15", "15-node quadratic wedge (3D prism), 3 × 3 points", &makeWedge15}});
   return rows;

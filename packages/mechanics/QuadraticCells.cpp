@@ -19,5 +19,8 @@ std::unique_ptr<ElementKernel> makeQ9Axisymmetric(const std::string& name) {
 std::unique_ptr<ElementKernel> makeHex20(const std::string& name) {
   return std::make_unique<DisplacementElement<SerendipityHexahedron>>(name);
 }
+std::unique_ptr<ElementKernel> makeHex27(const std::string& name) {
+  return std::make_unique<DisplacementElement<LagrangeHexahedron>>(name);
+}
 
 }  // namespace contessa::mechanics

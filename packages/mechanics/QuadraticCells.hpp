@@ -1,12 +1,13 @@
 #pragma once
 // Quadratic quadrilaterals and hexahedra in the Exodus II node order, and their kernels: "Q8" (8-node
 // serendipity), "Q9" (9-node Lagrange; both also revolved: "Q8 Axisymmetric", "Q9 Axisymmetric") and
-// "Hex20" (20-node serendipity). DisplacementElement with full Gauss integration (3 × 3, 3 × 3 × 3):
-// no spurious zero-energy mode, no bending locking (docs/theory-solids.md §4c).
+// "Hex20" (20-node serendipity) and "Hex27" (27-node Lagrange). DisplacementElement with full Gauss
+// integration (3 × 3, 3 × 3 × 3): no spurious zero-energy mode, no bending locking (docs/theory-solids.md §4c).
 //
 // Node order (Exodus QUAD8/QUAD9, HEX20): the corners as in Q4 / Hex8, then the mid-edge nodes
 //   quadrilateral (0,1) (1,2) (2,3) (3,0), and for Q9 the centre;
-//   hexahedron    bottom (0,1) (1,2) (2,3) (3,0), vertical (0,4) (1,5) (2,6) (3,7), top (4,5) (5,6) (6,7) (7,4).
+//   hexahedron    bottom (0,1) (1,2) (2,3) (3,0), vertical (0,4) (1,5) (2,6) (3,7), top (4,5) (5,6) (6,7) (7,4),
+//                 and for Hex27 the centre, then the centres of the sides z = −1, z = 1, x = −1, x = 1, y = −1, y = 1.
 // Serendipity functions: corners ⅟2^D Π(1 + ξ_a ξ) (Σ ξ_a ξ − D + 1); a mid-edge node with ξ_a,k = 0
 // on the edge along k: ⅟2^(D−1) (1 − ξ_k²) Π_(j≠k)(1 + ξ_a,j ξ_j).
 #include <array>
@@ -55,20 +56,33 @@ struct SerendipityCell : ShapeFromValues<SerendipityCell<D>, D, D == 2 ? 8 : 20>
   }
 };
 
-/// The 9-node Lagrange quadrilateral (Q9): products of the 1D quadratics through −1, 0, 1; 3 × 3 Gauss.
-struct LagrangeQuadrilateral : ShapeFromValues<LagrangeQuadrilateral, 2, 9> {
-  static constexpr int kDimension = 2, kNodes = 9, kPoints = 9;
-  static std::array<QuadraturePoint<2>, kPoints> quadrature() { return gaussLegendreRule<2, 3>(); }
-  static std::array<std::array<double, 2>, kNodes> parentNodes() {
-    const auto q8 = SerendipityCell<2>::parentNodes();
-    std::array<std::array<double, 2>, kNodes> x{};
-    for (int a = 0; a < 8; ++a) x[a] = q8[a];
-    return x;  // node 8: the centre (0, 0)
+/// The complete (Lagrange) quadratic cell of [−1, 1]^D: Q9 in 2D, Hex27 in 3D. Products of the 1D
+/// quadratics through −1, 0, 1; 3^D Gauss points. Nodes: Q8's / Hex20's, then Q9's centre (0, 0), or
+/// Hex27's centre and the centres of its sides 5, 6, 4, 2, 1, 3 (the Exodus HEX27 order, as in
+/// mesh/ShapeFunctions.cpp).
+template <int D>
+struct LagrangeCell : ShapeFromValues<LagrangeCell<D>, D, D == 2 ? 9 : 27> {
+  static constexpr int kDimension = D, kNodes = D == 2 ? 9 : 27, kPoints = D == 2 ? 9 : 27;
+  static std::array<QuadraturePoint<D>, kPoints> quadrature() { return gaussLegendreRule<D, 3>(); }
+  static std::array<std::array<double, D>, kNodes> parentNodes() {
+    const auto serendipity = SerendipityCell<D>::parentNodes();
+    std::array<std::array<double, D>, kNodes> x{};
+    for (int a = 0; a < SerendipityCell<D>::kNodes; ++a) x[a] = serendipity[a];
+    if constexpr (D == 3) {
+      constexpr double kCentres[7][3] = {{0, 0, 0}, {0, 0, -1}, {0, 0, 1}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}};
+      for (int c = 0; c < 7; ++c)
+        for (int i = 0; i < 3; ++i) x[20 + c][i] = kCentres[c][i];
+    }
+    return x;  // Q9's node 8: the centre (0, 0)
   }
   template <class T>
   static void values(const T* xi, T* N) {
     const auto nodes = parentNodes();
-    for (int a = 0; a < kNodes; ++a) N[a] = lagrange(nodes[a][0], xi[0]) * lagrange(nodes[a][1], xi[1]);
+    for (int a = 0; a < kNodes; ++a) {
+      T product(1.0);
+      for (int i = 0; i < D; ++i) product = product * lagrange(nodes[a][i], xi[i]);
+      N[a] = product;
+    }
   }
 
  private:
@@ -82,11 +96,14 @@ struct LagrangeQuadrilateral : ShapeFromValues<LagrangeQuadrilateral, 2, 9> {
 
 using SerendipityQuadrilateral = SerendipityCell<2>;
 using SerendipityHexahedron = SerendipityCell<3>;
+using LagrangeQuadrilateral = LagrangeCell<2>;
+using LagrangeHexahedron = LagrangeCell<3>;
 
 std::unique_ptr<ElementKernel> makeQ8(const std::string& name);
 std::unique_ptr<ElementKernel> makeQ9(const std::string& name);
 std::unique_ptr<ElementKernel> makeQ8Axisymmetric(const std::string& name);
 std::unique_ptr<ElementKernel> makeQ9Axisymmetric(const std::string& name);
 std::unique_ptr<ElementKernel> makeHex20(const std::string& name);
+std::unique_ptr<ElementKernel> makeHex27(const std::string& name);
 
 }  // namespace contessa::mechanics

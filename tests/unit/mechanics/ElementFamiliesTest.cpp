@@ -4,6 +4,8 @@
 // an exact elasticity solution quadratic in x, which every quadratic family contains on straight-sided
 // meshes and so must reproduce to round-off, while the linear ones lock). The single-element checks
 // (finite-difference tangents, objectivity, zero-energy modes) run for every family in ElementTest.cpp.
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "MechanicsTestUtilities.hpp"
@@ -11,10 +13,20 @@
 namespace contessa::mechanics::test {
 namespace {
 
+/// Whether parent node a lies at the average of the parent corners `parents` (parent coordinates xi).
+bool isAverage(const std::vector<int>& parents, const std::vector<double>& xi, int D, int a) {
+  for (int i = 0; i < D; ++i) {
+    double s = 0.0;
+    for (int p : parents) s += xi[D * p + i];
+    if (std::fabs(s / parents.size() - xi[D * a + i]) > 1e-14) return false;
+  }
+  return true;
+}
+
 /// A mesh of `element` made from a Q4 / Hex8 TestMesh: each cell split into triangles (2), tetrahedra
 /// (6, around its diagonal 0–6, conforming between translated cells) or wedges (2, the bottom split
 /// along 0–2), and for the quadratic families a node added at the midpoint of every edge (shared by the
-/// cells around it) and, for Q9, at every cell's centre. Node orders as the kernels' (Exodus).
+/// cells around it) and, for Q9 and Hex27, at every face's and cell's centre. Node orders as the kernels' (Exodus).
 TestMesh familyMesh(const TestMesh& base, const std::string& element) {
   const auto kernel = ElementFactory::create(element, "Test/Element");
   const int D = base.dimension;
@@ -35,35 +47,42 @@ TestMesh familyMesh(const TestMesh& base, const std::string& element) {
   }
   TestMesh m = base;
   m.cells.clear();
-  // Which parent nodes are corners, and the two corners each further node lies between: from the
-  // kernel's parent coordinates (a mid-edge node is the midpoint of exactly one pair of corners).
+  // Every further node (mid-edge, Q9's and Hex27's face and cell centres) is the average of the corners
+  // nearest to it in the kernel's parent coordinates (2 for an edge, 4 for a face, all for the centre):
+  // that corner set, by global node, names the node, so cells that share an edge or a face share it.
   const auto xi = kernel->parentNodeCoordinates();
   const int n = kernel->numNodes(), numCorners = static_cast<int>(corners.front().size());
-  std::map<std::pair<int, int>, int> midNode;
+  std::map<std::vector<int>, int> sharedNode;
   for (const auto& cell : corners) {
     std::vector<int> nodes = cell;
     for (int a = numCorners; a < n; ++a) {
-      int pair[2] = {-1, -1};
-      for (int p = 0; p < numCorners && pair[0] < 0; ++p)
-        for (int q = p + 1; q < numCorners; ++q) {
-          bool mid = true;
-          for (int i = 0; i < D; ++i) mid = mid && std::fabs(xi[D * a + i] - 0.5 * (xi[D * p + i] + xi[D * q + i])) < 1e-14;
-          if (mid) pair[0] = p, pair[1] = q;
-        }
-      if (pair[0] < 0) {  // the centre of a Q9: a node of its own
+      std::vector<double> distance(numCorners);
+      for (int p = 0; p < numCorners; ++p) {
+        double d2 = 0.0;
+        for (int i = 0; i < D; ++i) d2 += std::pow(xi[D * a + i] - xi[D * p + i], 2);
+        distance[p] = std::sqrt(d2);
+      }
+      const double nearest = *std::min_element(distance.begin(), distance.end());
+      std::vector<int> parents;
+      for (int p = 0; p < numCorners; ++p)
+        if (distance[p] < nearest + 1e-12) parents.push_back(p);
+      if (!isAverage(parents, xi, D, a)) {  // a simplex's hypotenuse middle is as near to the third corner
+        parents.clear();
+        for (int p = 0; p < numCorners && parents.empty(); ++p)
+          for (int q = p + 1; q < numCorners && parents.empty(); ++q)
+            if (isAverage({p, q}, xi, D, a)) parents = {p, q};
+      }
+      std::vector<int> key;
+      for (int p : parents) key.push_back(cell[p]);
+      std::sort(key.begin(), key.end());
+      auto it = sharedNode.find(key);
+      if (it == sharedNode.end()) {
         for (int i = 0; i < D; ++i) {
           double s = 0.0;
-          for (int p = 0; p < numCorners; ++p) s += m.X[D * cell[p] + i];
-          m.X.push_back(s / numCorners);
+          for (int c : key) s += m.X[D * c + i];
+          m.X.push_back(s / key.size());
         }
-        nodes.push_back(m.numNodes() - 1);
-        continue;
-      }
-      const std::pair<int, int> key = std::minmax(cell[pair[0]], cell[pair[1]]);
-      auto it = midNode.find(key);
-      if (it == midNode.end()) {
-        for (int i = 0; i < D; ++i) m.X.push_back(0.5 * (m.X[D * key.first + i] + m.X[D * key.second + i]));
-        it = midNode.emplace(key, m.numNodes() - 1).first;
+        it = sharedNode.emplace(key, m.numNodes() - 1).first;
       }
       nodes.push_back(it->second);
     }
@@ -204,7 +223,7 @@ BendingResult bending(const std::string& element, double nu) {
 TEST_P(Family, BendingFieldExactForQuadraticFamiliesLinearOnesLock) {
   const std::string& name = GetParam();
   const bool quadratic = name == "Tri6" || name == "Q8" || name == "Q9" || name == "Tet10" || name == "Hex20" ||
-                         name == "Wedge15";
+                         name == "Hex27" || name == "Wedge15";
   const auto r = bending(name, 0.3);
   std::printf("[measure] pure bending %s (nu = 0.3): max error %.2e of max |u|, moment / exact %.6f\n", name.c_str(),
               r.error, r.momentRatio);
@@ -217,7 +236,8 @@ TEST_P(Family, BendingFieldExactForQuadraticFamiliesLinearOnesLock) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, Family,
-                         ::testing::Values("Tri3", "Tri6", "Q8", "Q9", "Tet4", "Tet10", "Hex20", "Wedge6", "Wedge15"),
+                         ::testing::Values("Tri3", "Tri6", "Q8", "Q9", "Tet4", "Tet10", "Hex20", "Hex27", "Wedge6",
+                                           "Wedge15"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

@@ -93,7 +93,7 @@ TEST(ElementFactory, CreatesRegisteredKernels) {
   EXPECT_EQ(ElementFactory::names(), (std::vector<std::string>{"Q4", "Q4 Enhanced", "Q4 Axisymmetric", "Q4 Enhanced Axisymmetric", "Hex8",
                                                               "Hex8 Enhanced", "Tri3", "Tri6", "Q8", "Q9", "Tri3 Axisymmetric",
                                                               "Tri6 Axisymmetric", "Q8 Axisymmetric", "Q9 Axisymmetric", "Tet4",
-                                                              "Tet10", "Hex20", "Wedge6", "Wedge15"}));
+                                                              "Tet10", "Hex20", "Hex27", "Wedge6", "Wedge15"}));
   const auto q4 = ElementFactory::create("Q4", "E");
   EXPECT_EQ(q4->name(), "Q4");
   EXPECT_EQ(q4->numDofs(), 8);
@@ -121,7 +121,7 @@ TEST(ElementFactory, UnknownNameListsKnownNames) {
   EXPECT_EQ(messageOf([] { ElementFactory::create("Q12", "Problem/Discretization/Element"); }),
             "Problem/Discretization/Element: unknown element 'Q12' (known: Q4, Q4 Enhanced, Q4 Axisymmetric, Q4 "
             "Enhanced Axisymmetric, Hex8, Hex8 Enhanced, Tri3, Tri6, Q8, Q9, Tri3 Axisymmetric, Tri6 Axisymmetric, Q8 "
-            "Axisymmetric, Q9 Axisymmetric, Tet4, Tet10, Hex20, Wedge6, Wedge15)");
+            "Axisymmetric, Q9 Axisymmetric, Tet4, Tet10, Hex20, Hex27, Wedge6, Wedge15)");
 }
 
 }  // namespace
