@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 
 #include "common/Error.hpp"
 #include "contact/BoundingBoxTree.hpp"
@@ -14,34 +16,78 @@ namespace contessa::contact {
 
 namespace {
 
-/// ∫ H_i dA of each node of a facet and its area, by Gauss quadrature exact for the facet (a straight
-/// segment: the midpoint rule, ∫ H_i = l/2; a bilinear face: 2×2 points). A segment revolved about the
-/// y axis sweeps a band of the surface: ∫ H_i 2π r ds = 2π l (2 r_i + r_j) / 6, exact for r linear along
-/// it; `area` stays the segment's length (the facet size L_k).
+/// The consistent ∫ H_i dA of each node of a facet (in 2D with `revolved`: ∫ H_i 2π r ds) and its area, by
+/// the facet's quadrature rule (MasterFacet.hpp), exact on an undistorted facet.
 template <class Facet>
-std::array<double, Facet::kNodes> nodalAreas(const std::array<typename Facet::Point, Facet::kNodes>& x, bool revolved,
-                                             double& area) {
+std::array<double, Facet::kNodes> consistentAreas(const std::array<typename Facet::Point, Facet::kNodes>& x,
+                                                  bool revolved, double& area) {
   std::array<double, Facet::kNodes> a{};
   area = 0;
-  if constexpr (Facet::kSurfaceDim == 1) {
-    // hypot, as the 2D code always measured sides: the 2D histories stay bit-identical.
-    area = std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]);
-    a = {0.5 * area, 0.5 * area};
-    if (revolved) a = {M_PI * area * (2.0 * x[0][0] + x[1][0]) / 3.0, M_PI * area * (x[0][0] + 2.0 * x[1][0]) / 3.0};
-  } else {
-    (void)revolved;
-    const double g = 1.0 / std::sqrt(3.0);
-    for (double s : {-g, g})
-      for (double t : {-g, g}) {
-        const typename Facet::SurfaceCoords xi{s, t};
-        const auto p = Projection<Facet>::evaluateAt(typename Facet::Point{}, x, xi);
-        const double jacobian = norm(Facet::areaNormal(p.covariantBasis));  // weight 1 per point
-        area += jacobian;
-        for (int i = 0; i < Facet::kNodes; ++i) a[i] += p.shape[i] * jacobian;
-      }
+  for (const auto& q : Facet::quadrature()) {
+    const auto p = Projection<Facet>::evaluateAt(typename Facet::Point{}, x, q.xi);
+    const double jacobian = norm(Facet::areaNormal(p.covariantBasis)) * q.weight;
+    area += jacobian;
+    const double w = revolved ? 2.0 * M_PI * p.position[0] : 1.0;
+    for (int i = 0; i < Facet::kNodes; ++i) a[i] += p.shape[i] * jacobian * w;
   }
   return a;
 }
+
+/// The tributary areas of a quadratic face whose ∫ H_i dA is not positive at the corners (Tri6, Quad8):
+/// the sum of the consistent areas of its linear sub-facets (Tri3 or Quad4 pieces, tributaryPieces()).
+/// Positive, and their sum is the face's area (docs/theory-contact.md).
+template <class Facet>
+std::array<double, Facet::kNodes> subFacetAreas(const std::array<typename Facet::Point, Facet::kNodes>& x,
+                                                double& area) {
+  std::array<double, Facet::kNodes> a{};
+  area = 0;
+  for (const auto& piece : Facet::tributaryPieces()) {
+    double pieceArea = 0;
+    if (piece[3] < 0) {
+      const std::array<Tri3Facet::Point, 3> corners{x[piece[0]], x[piece[1]], x[piece[2]]};
+      const auto w = consistentAreas<Tri3Facet>(corners, false, pieceArea);
+      for (int v = 0; v < 3; ++v) a[piece[v]] += w[v];
+    } else {
+      const std::array<Quad4Facet::Point, 4> corners{x[piece[0]], x[piece[1]], x[piece[2]], x[piece[3]]};
+      const auto w = consistentAreas<Quad4Facet>(corners, false, pieceArea);
+      for (int v = 0; v < 4; ++v) a[piece[v]] += w[v];
+    }
+    area += pieceArea;
+  }
+  // Scaled to the face's own area (its quadrature): the sum is exact on a curved face too, not the area of
+  // the inscribed sub-facets.
+  double faceArea = 0;
+  consistentAreas<Facet>(x, false, faceArea);
+  for (double& w : a) w *= faceArea / area;
+  area = faceArea;
+  return a;
+}
+
+}  // namespace
+
+/// Tributary area of each node of a facet (a traction times it is the nodal force) and the facet's area.
+/// A straight segment: l/2 each, or revolved about the y axis, ∫ H_i 2π r ds = 2π l (2 r_i + r_j)/6 (exact
+/// for r linear along it; `area` stays the segment's length, the facet size L_k). The others: the
+/// consistent ∫ H_i dA where it is positive at every node (Tri3, Quad4, Line3, Quad9), the linear
+/// sub-facets' where it is not (Tri6, Quad8: MasterFacet.hpp, kSubFacetTributary).
+template <class Facet>
+std::array<double, Facet::kNodes> tributaryAreas(const std::array<typename Facet::Point, Facet::kNodes>& x,
+                                                 bool revolved, double& area) {
+  if constexpr (std::is_same_v<Facet, Line2Facet>) {
+    // hypot, as the 2D code always measured sides: the 2D histories stay bit-identical.
+    area = std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]);
+    if (revolved)
+      return {M_PI * area * (2.0 * x[0][0] + x[1][0]) / 3.0, M_PI * area * (x[0][0] + 2.0 * x[1][0]) / 3.0};
+    return {0.5 * area, 0.5 * area};
+  } else if constexpr (Facet::kSubFacetTributary) {
+    (void)revolved;  // 3D faces only
+    return subFacetAreas<Facet>(x, area);
+  } else {
+    return consistentAreas<Facet>(x, revolved, area);
+  }
+}
+
+namespace {
 
 template <class Facet>
 void addFacets(const mesh::ReplicatedSurface& facets, bool revolved, ContactSurface& surface) {
@@ -59,7 +105,7 @@ void addFacets(const mesh::ReplicatedSurface& facets, bool revolved, ContactSurf
       surface.facets.push_back(nodes[a]);
     }
     double facetArea = 0;
-    const auto nodal = nodalAreas<Facet>(x, revolved, facetArea);
+    const auto nodal = tributaryAreas<Facet>(x, revolved, facetArea);
     // L_k: the side's length in 2D, √(area) of the face in 3D.
     const double facetSize = Facet::kSurfaceDim == 1 ? facetArea : std::sqrt(facetArea);
     for (int a = 0; a < n; ++a) {
@@ -89,11 +135,21 @@ ContactSurface ContactSurface::fromSurface(const mesh::ReplicatedSurface& facets
   if (revolved && facets.dimension != 2) throw std::logic_error("ContactSurface: only a 2D surface can be revolved");
   requireInput(!facets.elements.empty(), where + ": side set '" + facets.name + "' is empty");
   ContactSurface surface;
-  surface.nodesPerFacet = facets.dimension == 2 ? 2 : 4;
-  if (facets.dimension == 2)
-    addFacets<Line2Facet>(facets, revolved, surface);
-  else
-    addFacets<Quad4Facet>(facets, revolved, surface);
+  surface.nodesPerFacet = facets.nodesPerFacet;
+  // The facet type of the side's node count (mesh::sideNodes): 2D edges of 2 or 3 nodes, 3D faces of 3, 4, 6,
+  // 8 or 9 (MasterFacet.hpp).
+  switch (facets.dimension * 100 + facets.nodesPerFacet) {
+    case 202: addFacets<Line2Facet>(facets, revolved, surface); break;
+    case 203: addFacets<Line3Facet>(facets, revolved, surface); break;
+    case 303: addFacets<Tri3Facet>(facets, revolved, surface); break;
+    case 304: addFacets<Quad4Facet>(facets, revolved, surface); break;
+    case 306: addFacets<Tri6Facet>(facets, revolved, surface); break;
+    case 308: addFacets<Quad8Facet>(facets, revolved, surface); break;
+    case 309: addFacets<Quad9Facet>(facets, revolved, surface); break;
+    default:
+      throw std::logic_error("ContactSurface: no facet type of " + std::to_string(facets.nodesPerFacet) +
+                             " nodes in " + std::to_string(facets.dimension) + "D");
+  }
   return surface;
 }
 
@@ -211,5 +267,20 @@ void checkRigidSurfaceFacesSlave(const RigidSurface& surface, const mesh::Replic
   else
     checkFacing<Quad4Facet>(surface, slave, where);
 }
+
+template std::array<double, Line2Facet::kNodes> tributaryAreas<Line2Facet>(
+    const std::array<Line2Facet::Point, Line2Facet::kNodes>&, bool, double&);
+template std::array<double, Line3Facet::kNodes> tributaryAreas<Line3Facet>(
+    const std::array<Line3Facet::Point, Line3Facet::kNodes>&, bool, double&);
+template std::array<double, Tri3Facet::kNodes> tributaryAreas<Tri3Facet>(
+    const std::array<Tri3Facet::Point, Tri3Facet::kNodes>&, bool, double&);
+template std::array<double, Quad4Facet::kNodes> tributaryAreas<Quad4Facet>(
+    const std::array<Quad4Facet::Point, Quad4Facet::kNodes>&, bool, double&);
+template std::array<double, Tri6Facet::kNodes> tributaryAreas<Tri6Facet>(
+    const std::array<Tri6Facet::Point, Tri6Facet::kNodes>&, bool, double&);
+template std::array<double, Quad8Facet::kNodes> tributaryAreas<Quad8Facet>(
+    const std::array<Quad8Facet::Point, Quad8Facet::kNodes>&, bool, double&);
+template std::array<double, Quad9Facet::kNodes> tributaryAreas<Quad9Facet>(
+    const std::array<Quad9Facet::Point, Quad9Facet::kNodes>&, bool, double&);
 
 }  // namespace contessa::contact

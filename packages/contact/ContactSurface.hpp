@@ -6,17 +6,18 @@
 #include <vector>
 
 #include "contact/ContactInterface.hpp"
+#include "contact/MasterFacet.hpp"
 #include "mesh/Mesh.hpp"
 #include "mesh/MeshDistribution.hpp"
 
 namespace contessa::contact {
 
 struct ContactSurface {
-  int nodesPerFacet = 2;
+  int nodesPerFacet = 2;  ///< the facet type (MasterFacet.hpp): 2, 3 (2D); 3, 4, 6, 8, 9 (3D)
   std::vector<GlobalIndex> nodes;      ///< the side set's nodes, sorted
-  /// Tributary area A_k = Σ_faces ∫ H_k dA of each node (2D: half of each adjacent side's length, per unit
-  /// thickness; revolved: ∫ H_k 2π r ds; 3D: over the adjacent bilinear faces, 2×2 Gauss): a traction
-  /// times A_k is the nodal force.
+  /// Tributary area A_k of each node, summed over its facets (tributaryAreas: 2D: half of each adjacent side's
+  /// length, per unit thickness; revolved: ∫ H_k 2π r ds; 3D bilinear faces: ∫ H_k dA, 2×2 Gauss; quadratic
+  /// facets: see tributaryAreas): a traction times A_k is the nodal force.
   std::vector<double> areas;
   /// L_k, the mean size of the facets at each node (2D: side length; 3D: √(face area)), the length the
   /// slip tolerance refers to (ContactLawParameters).
@@ -33,6 +34,16 @@ struct ContactSurface {
   static ContactSurface fromSurface(const mesh::ReplicatedSurface& facets, const std::string& where,
                                    bool revolved = false);
 };
+
+/// The tributary area of each node of a slave facet (a traction times it is the nodal force) and the facet's
+/// area, in the facet's node order: for a straight segment l/2 each (revolved about the y axis: ∫ H_i 2π r ds);
+/// the consistent ∫ H_i dA where it is positive at every node (Tri3, Quad4 faces, Line3 edges, Quad9 faces:
+/// a uniform gap then loads the body as a uniform pressure does); the consistent areas of the linear
+/// sub-facets where it is not (Tri6 and Quad8 faces, whose corners ∫ H_i dA leaves with zero or negative
+/// weight; MasterFacet.hpp, docs/theory-contact.md).
+template <class Facet>
+std::array<double, Facet::kNodes> tributaryAreas(const std::array<typename Facet::Point, Facet::kNodes>& x,
+                                                 bool revolved, double& area);
 
 /// Checks a rigid master surface of the given dimension (one-line InputError naming `where`/Points,
 /// Facets or Motion): spaceDim coordinates per point, facets of 2 (2D) or 4 (3D) indices in range, no

@@ -19,13 +19,60 @@
 //   nodeCoords(i)              -> ξ of node i in the parent domain
 //   kAffine                    -> x̄(ξ) is affine in ξ (a straight segment): the projection's Newton step is
 //                                 exact, no start search is needed
-// Every facet here is multilinear in ξ (degree ≤ 1 in each ξ^α), so the third derivatives H_i,αβγ vanish;
-// the projection and the element's consistent tangent rely on that (NodeToFacetContact.hpp).
+//   kCubic                     -> x̄(ξ) has non-zero third derivatives (the serendipity and Lagrange 8- and
+//                                 9-node faces, with their ξ²η and ξη² terms); such a facet also gives
+//                                 shapeThirdDerivatives(ξ) -> H_i,αβγ, which the element's second variation
+//                                 of ξ̄ needs (NodeToFacetContact.cpp, term (c)). The others are of total
+//                                 degree ≤ 2 in ξ or multilinear, and their H_i,αβγ vanish.
+//   quadrature()               -> points and weights in the parent domain, exact for ∫ H_i dA on an undistorted
+//                                 facet (the slave nodes' tributary areas, ContactSurface.cpp)
+//   kSubFacetTributary         -> the slave nodes' tributary areas come from the facet's linear sub-facets,
+//                                 tributaryPieces() (3 or 4 node indices, −1 padding a triangle), not from
+//                                 ∫ H_i dA, which is zero (Tri6) or negative (Quad8) at the corners
+//                                 (docs/theory-contact.md, slave weights of quadratic faces)
+//
+// Facets of the faces of every cell family (node orders are those of mesh::sideNodes, Exodus corners first,
+// then the mid-edge nodes of the side's edges in order, then a face centre):
+//   2D: Line2Facet (Quad4, Tri3 edges), Line3Facet (Tri6, Q8, Q9 edges);
+//   3D: Tri3Facet (Tet4, Wedge6 faces), Quad4Facet (Hex8, Wedge6 faces), Tri6Facet (Tet10, Wedge15 faces),
+//       Quad8Facet (Hex20, Wedge15 faces), Quad9Facet (Hex27 faces).
 #include "contact/SmallMatrix.hpp"
 
 #include <cmath>
 
 namespace contessa::contact {
+
+/// One point of a facet's quadrature rule: parent coordinates and weight (the parent measure included).
+template <int M>
+struct SurfaceRulePoint {
+  Vector<M> xi{};
+  double weight = 0.0;
+};
+
+/// Gauss–Legendre rule of n = 2 or 3 points per direction on [−1, 1]^M, the last coordinate fastest.
+template <int M, int n>
+std::array<SurfaceRulePoint<M>, (M == 1 ? n : n * n)> gaussRuleOnSquare() {
+  static_assert(n == 2 || n == 3);
+  const std::array<double, 3> x = n == 2 ? std::array<double, 3>{-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0), 0.0}
+                                         : std::array<double, 3>{-std::sqrt(0.6), 0.0, std::sqrt(0.6)};
+  const std::array<double, 3> w = n == 2 ? std::array<double, 3>{1.0, 1.0, 0.0}
+                                         : std::array<double, 3>{5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  std::array<SurfaceRulePoint<M>, (M == 1 ? n : n * n)> rule{};
+  for (int i = 0; i < n; ++i) {
+    if constexpr (M == 1) {
+      rule[i] = {{x[i]}, w[i]};
+    } else {
+      for (int j = 0; j < n; ++j) rule[n * i + j] = {{x[i], x[j]}, w[i] * w[j]};
+    }
+  }
+  return rule;
+}
+
+/// The degree-2 rule on the unit triangle: (1/6, 1/6), (2/3, 1/6), (1/6, 2/3), weights 1/6 each.
+inline std::array<SurfaceRulePoint<2>, 3> triangleRule3() {
+  constexpr double w = 1.0 / 6.0;
+  return {{{{1.0 / 6.0, 1.0 / 6.0}, w}, {{2.0 / 3.0, 1.0 / 6.0}, w}, {{1.0 / 6.0, 2.0 / 3.0}, w}}};
+}
 
 /// 2-node straight master segment in 2D (plane strain): ξ ∈ [−1, 1], H_1 = (1 − ξ)/2, H_2 = (1 + ξ)/2.
 ///
@@ -71,6 +118,9 @@ struct Line2Facet {
   static SurfaceCoords center() { return {0.0}; }
   static SurfaceCoords nodeCoords(int i) { return {i == 0 ? -1.0 : 1.0}; }
   static constexpr bool kAffine = true;
+  static constexpr bool kCubic = false;
+  static std::array<SurfaceRulePoint<1>, 2> quadrature() { return gaussRuleOnSquare<1, 2>(); }
+  static constexpr bool kSubFacetTributary = false;
 };
 
 /// 4-node bilinear master face in 3D: (ξ^1, ξ^2) ∈ [−1, 1]², nodes at (−1,−1), (1,−1), (1,1), (−1,1),
@@ -129,10 +179,351 @@ struct Quad4Facet {
   static SurfaceCoords nodeCoords(int i) { return {kNodeXi[i], kNodeEta[i]}; }
   /// A warped face is curved (b̄_12 ≠ 0), and even a flat non-parallelogram face has x̄,12 ≠ 0.
   static constexpr bool kAffine = false;
+  static constexpr bool kCubic = false;
+  /// 2 × 2 Gauss points, ξ^1 outer, ξ^2 inner (the order the 3D tributary areas have always been summed in).
+  static std::array<SurfaceRulePoint<2>, 4> quadrature() { return gaussRuleOnSquare<2, 2>(); }
+  static constexpr bool kSubFacetTributary = false;
 
   /// Two triangles split along the diagonal node 0 – node 2, each counter-clockwise seen from outside.
   static constexpr int kPieces = 2;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1, 2}, {0, 2, 3}}}; }
+};
+
+/// The three quadratic Lagrange polynomials of one coordinate s ∈ [−1, 1] with nodes −1, +1, 0 (in this
+/// order, as the corners come before the mid-edge node): values, first and second derivatives. The third
+/// derivatives vanish.
+struct QuadraticLagrange1D {
+  static constexpr std::array<double, 3> values(double s) {
+    return {0.5 * s * (s - 1.0), 0.5 * s * (s + 1.0), 1.0 - s * s};
+  }
+  static constexpr std::array<double, 3> first(double s) { return {s - 0.5, s + 0.5, -2.0 * s}; }
+  static constexpr std::array<double, 3> second(double /*s*/) { return {1.0, 1.0, -2.0}; }
+};
+
+/// The normal of a facet of a 3D body, eq. (5): n̄ = ā_1 × ā_2 / ‖ā_1 × ā_2‖, out of the master body when
+/// the facet's corners run counter-clockwise seen from outside (as Quad4Facet).
+struct FaceNormal {
+  static Vector<3> areaNormal(const std::array<Vector<3>, 2>& a) { return cross(a[0], a[1]); }
+  static Vector<3> unitNormal(const std::array<Vector<3>, 2>& a) {
+    const Vector<3> n = areaNormal(a);
+    return scaled(1.0 / norm(n), n);
+  }
+};
+
+/// 3-node quadratic master segment in 2D (edges of Tri6, Q8, Q9): ξ ∈ [−1, 1], nodes at −1, +1 (the
+/// corners) and 0 (the mid-edge node), H_i the quadratic Lagrange polynomials. Normal convention as
+/// Line2Facet (the master body on the left of the direction node 1 → node 2). A curved segment: b̄_11 ≠ 0.
+struct Line3Facet {
+  static constexpr int kSpaceDim = 2;
+  static constexpr int kSurfaceDim = 1;
+  static constexpr int kNodes = 3;
+  using Point = Vector<kSpaceDim>;
+  using SurfaceCoords = Vector<kSurfaceDim>;
+
+  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return QuadraticLagrange1D::values(xi[0]); }
+
+  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+    Matrix<kNodes, kSurfaceDim> d;
+    d.entries = QuadraticLagrange1D::first(xi[0]);
+    return d;
+  }
+
+  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& xi) {
+    const auto h = QuadraticLagrange1D::second(xi[0]);
+    std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> d{};
+    for (int i = 0; i < kNodes; ++i) d[i](0, 0) = h[i];
+    return d;
+  }
+
+  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::areaNormal(a); }
+  static Point unitNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::unitNormal(a); }
+  static bool contains(const SurfaceCoords& xi, double tolerance) { return Line2Facet::contains(xi, tolerance); }
+
+  /// The two halves, corner → mid-edge node → corner.
+  static constexpr int kPieces = 2;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 2}, {2, 1}}}; }
+
+  static SurfaceCoords center() { return {0.0}; }
+  static SurfaceCoords nodeCoords(int i) { return {i == 0 ? -1.0 : i == 1 ? 1.0 : 0.0}; }
+  static constexpr bool kAffine = false;
+  static constexpr bool kCubic = false;
+  /// 3 Gauss points: ∫ H_i ds and ∫ H_i 2π r ds exact on a straight edge with a centred mid-edge node. There
+  /// ∫ H_i ds = (1/6, 1/6, 2/3) l, all positive, and a uniform gap gives the consistent load of a uniform
+  /// pressure: the slave weights are these.
+  static std::array<SurfaceRulePoint<1>, 3> quadrature() { return gaussRuleOnSquare<1, 3>(); }
+  static constexpr bool kSubFacetTributary = false;
+};
+
+/// 3-node flat master face in 3D (Tet4, Wedge6 faces): the unit triangle ξ^1, ξ^2 ≥ 0, ξ^1 + ξ^2 ≤ 1, nodes
+/// at (0,0), (1,0), (0,1), H = (1 − ξ^1 − ξ^2, ξ^1, ξ^2): x̄ is affine, the projection exact in one step.
+/// Normal convention as Quad4Facet (counter-clockwise seen from outside).
+struct Tri3Facet : FaceNormal {
+  static constexpr int kSpaceDim = 3;
+  static constexpr int kSurfaceDim = 2;
+  static constexpr int kNodes = 3;
+  using Point = Vector<kSpaceDim>;
+  using SurfaceCoords = Vector<kSurfaceDim>;
+
+  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return {1.0 - xi[0] - xi[1], xi[0], xi[1]}; }
+
+  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& /*xi*/) {
+    Matrix<kNodes, kSurfaceDim> d;
+    d.entries = {-1.0, -1.0, 1.0, 0.0, 0.0, 1.0};
+    return d;
+  }
+
+  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
+    return {};
+  }
+
+  /// The unit triangle enlarged by `tolerance` across each of its three edges.
+  static bool contains(const SurfaceCoords& xi, double tolerance) {
+    return xi[0] >= -tolerance && xi[1] >= -tolerance && xi[0] + xi[1] <= 1.0 + tolerance;
+  }
+
+  static constexpr int kPieces = 1;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1, 2}}}; }
+
+  static SurfaceCoords center() { return {1.0 / 3.0, 1.0 / 3.0}; }
+  static SurfaceCoords nodeCoords(int i) { return {i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0}; }
+  static constexpr bool kAffine = true;
+  static constexpr bool kCubic = false;
+  static std::array<SurfaceRulePoint<2>, 3> quadrature() { return triangleRule3(); }
+  static constexpr bool kSubFacetTributary = false;
+};
+
+/// 6-node quadratic master face in 3D (Tet10, Wedge15 faces): the unit triangle of Tri3Facet, corners 0–2,
+/// mid-edge nodes 3 (edge 0–1), 4 (1–2), 5 (2–0). With the area coordinates L = (1 − ξ^1 − ξ^2, ξ^1, ξ^2):
+/// H_corner = L_i (2 L_i − 1), H_mid = 4 L_a L_b. Total degree 2: H_i,αβ constant, H_i,αβγ = 0.
+struct Tri6Facet : FaceNormal {
+  static constexpr int kSpaceDim = 3;
+  static constexpr int kSurfaceDim = 2;
+  static constexpr int kNodes = 6;
+  using Point = Vector<kSpaceDim>;
+  using SurfaceCoords = Vector<kSurfaceDim>;
+
+  /// The corners of each node: a corner twice, a mid-edge node its edge's two ends.
+  static constexpr std::array<std::array<int, 2>, kNodes> kEnds{{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}}};
+  /// ∂L_a/∂ξ^α (row a).
+  static constexpr std::array<std::array<double, 2>, 3> kDL{{{-1.0, -1.0}, {1.0, 0.0}, {0.0, 1.0}}};
+
+  static Vector<3> areaCoordinates(const SurfaceCoords& xi) { return {1.0 - xi[0] - xi[1], xi[0], xi[1]}; }
+
+  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) {
+    const Vector<3> L = areaCoordinates(xi);
+    Vector<kNodes> h{};
+    for (int i = 0; i < 3; ++i) h[i] = L[i] * (2.0 * L[i] - 1.0);
+    for (int i = 3; i < kNodes; ++i) h[i] = 4.0 * L[kEnds[i][0]] * L[kEnds[i][1]];
+    return h;
+  }
+
+  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+    const Vector<3> L = areaCoordinates(xi);
+    Matrix<kNodes, kSurfaceDim> d;
+    for (int al = 0; al < kSurfaceDim; ++al) {
+      for (int i = 0; i < 3; ++i) d(i, al) = (4.0 * L[i] - 1.0) * kDL[i][al];
+      for (int i = 3; i < kNodes; ++i) {
+        const int a = kEnds[i][0], b = kEnds[i][1];
+        d(i, al) = 4.0 * (kDL[a][al] * L[b] + L[a] * kDL[b][al]);
+      }
+    }
+    return d;
+  }
+
+  /// H_i,αβ = 4 (L_a,α L_b,β + L_a,β L_b,α)/(1 + [a = b]): 4 L_i,α L_i,β at a corner.
+  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
+    std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> d{};
+    for (int i = 0; i < kNodes; ++i) {
+      const int a = kEnds[i][0], b = kEnds[i][1];
+      const double scale = a == b ? 2.0 : 4.0;
+      for (int al = 0; al < kSurfaceDim; ++al)
+        for (int be = 0; be < kSurfaceDim; ++be)
+          d[i](al, be) = scale * (kDL[a][al] * kDL[b][be] + kDL[a][be] * kDL[b][al]);
+    }
+    return d;
+  }
+
+  static bool contains(const SurfaceCoords& xi, double tolerance) { return Tri3Facet::contains(xi, tolerance); }
+
+  /// Four triangles: one at each corner and the middle one of the mid-edge nodes, counter-clockwise.
+  static constexpr int kPieces = 4;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() {
+    return {{{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
+  }
+
+  static SurfaceCoords center() { return Tri3Facet::center(); }
+  static SurfaceCoords nodeCoords(int i) {
+    const SurfaceCoords a = Tri3Facet::nodeCoords(kEnds[i][0]), b = Tri3Facet::nodeCoords(kEnds[i][1]);
+    return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
+  }
+  static constexpr bool kAffine = false;
+  static constexpr bool kCubic = false;
+  /// Exact for ∫ H_i dA on a flat face with straight edges, where it is (0, 0, 0, 1/3, 1/3, 1/3) A: no
+  /// weight at the corners. The slave weights come from the four sub-triangles instead (A/12 at a corner,
+  /// A/4 at a mid-edge node on such a face).
+  static std::array<SurfaceRulePoint<2>, 3> quadrature() { return triangleRule3(); }
+  static constexpr bool kSubFacetTributary = true;
+  static constexpr std::array<std::array<int, 4>, 4> tributaryPieces() {
+    return {{{0, 3, 5, -1}, {3, 1, 4, -1}, {5, 4, 2, -1}, {3, 4, 5, -1}}};
+  }
+};
+
+/// 9-node biquadratic master face in 3D (Hex27 faces): [−1, 1]², corners 0–3 as Quad4Facet, mid-edge nodes
+/// 4 (edge 0–1), 5 (1–2), 6 (2–3), 7 (3–0), centre 8; H_i = l_a(ξ^1) l_b(η) with the quadratic Lagrange
+/// polynomials of QuadraticLagrange1D (a, b index their nodes −1, +1, 0). Its ξ²η, ξη², ξ²η² terms give
+/// non-zero H_i,112, H_i,122 (kCubic).
+struct Quad9Facet : FaceNormal {
+  static constexpr int kSpaceDim = 3;
+  static constexpr int kSurfaceDim = 2;
+  static constexpr int kNodes = 9;
+  using Point = Vector<kSpaceDim>;
+  using SurfaceCoords = Vector<kSurfaceDim>;
+  using Second = std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes>;
+  using Third = std::array<std::array<Matrix<kSurfaceDim, kSurfaceDim>, kSurfaceDim>, kNodes>;
+
+  /// The 1D node index (0: −1, 1: +1, 2: 0) of each node along ξ^1 and along ξ^2.
+  static constexpr std::array<int, kNodes> kA{0, 1, 1, 0, 2, 1, 2, 0, 2};
+  static constexpr std::array<int, kNodes> kB{0, 0, 1, 1, 0, 2, 1, 2, 2};
+
+  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) {
+    const auto u = QuadraticLagrange1D::values(xi[0]), v = QuadraticLagrange1D::values(xi[1]);
+    Vector<kNodes> h{};
+    for (int i = 0; i < kNodes; ++i) h[i] = u[kA[i]] * v[kB[i]];
+    return h;
+  }
+
+  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+    const auto u = QuadraticLagrange1D::values(xi[0]), v = QuadraticLagrange1D::values(xi[1]);
+    const auto du = QuadraticLagrange1D::first(xi[0]), dv = QuadraticLagrange1D::first(xi[1]);
+    Matrix<kNodes, kSurfaceDim> d;
+    for (int i = 0; i < kNodes; ++i) {
+      d(i, 0) = du[kA[i]] * v[kB[i]];
+      d(i, 1) = u[kA[i]] * dv[kB[i]];
+    }
+    return d;
+  }
+
+  static Second shapeSecondDerivatives(const SurfaceCoords& xi) {
+    const auto u = QuadraticLagrange1D::values(xi[0]), v = QuadraticLagrange1D::values(xi[1]);
+    const auto du = QuadraticLagrange1D::first(xi[0]), dv = QuadraticLagrange1D::first(xi[1]);
+    const auto ddu = QuadraticLagrange1D::second(xi[0]), ddv = QuadraticLagrange1D::second(xi[1]);
+    Second d{};
+    for (int i = 0; i < kNodes; ++i) {
+      d[i](0, 0) = ddu[kA[i]] * v[kB[i]];
+      d[i](0, 1) = d[i](1, 0) = du[kA[i]] * dv[kB[i]];
+      d[i](1, 1) = u[kA[i]] * ddv[kB[i]];
+    }
+    return d;
+  }
+
+  /// H_i,αβγ: only the mixed ones, H_i,112 = l_a'' l_b', H_i,122 = l_a' l_b'' (in every index order).
+  static Third shapeThirdDerivatives(const SurfaceCoords& xi) {
+    const auto du = QuadraticLagrange1D::first(xi[0]), dv = QuadraticLagrange1D::first(xi[1]);
+    const auto ddu = QuadraticLagrange1D::second(xi[0]), ddv = QuadraticLagrange1D::second(xi[1]);
+    Third d{};
+    for (int i = 0; i < kNodes; ++i) {
+      const double h112 = ddu[kA[i]] * dv[kB[i]], h122 = du[kA[i]] * ddv[kB[i]];
+      d[i][0](0, 1) = d[i][0](1, 0) = d[i][1](0, 0) = h112;
+      d[i][0](1, 1) = d[i][1](0, 1) = d[i][1](1, 0) = h122;
+    }
+    return d;
+  }
+
+  static bool contains(const SurfaceCoords& xi, double tolerance) { return Quad4Facet::contains(xi, tolerance); }
+
+  /// Four bilinear quarters, each as two triangles, counter-clockwise seen from outside.
+  static constexpr int kPieces = 8;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() {
+    return {{{0, 4, 8}, {0, 8, 7}, {4, 1, 5}, {4, 5, 8}, {8, 5, 2}, {8, 2, 6}, {7, 8, 6}, {7, 6, 3}}};
+  }
+
+  static SurfaceCoords center() { return {0.0, 0.0}; }
+  static SurfaceCoords nodeCoords(int i) {
+    constexpr std::array<double, 3> at{-1.0, 1.0, 0.0};
+    return {at[kA[i]], at[kB[i]]};
+  }
+  static constexpr bool kAffine = false;
+  static constexpr bool kCubic = true;
+  /// 3 × 3 Gauss points: on a parallelogram ∫ H_i dA = (1/36, 1/9, 4/9) A at the corners, mid-edge nodes and
+  /// centre, all positive, the consistent load of a uniform pressure: the slave weights are these.
+  static std::array<SurfaceRulePoint<2>, 9> quadrature() { return gaussRuleOnSquare<2, 3>(); }
+  static constexpr bool kSubFacetTributary = false;
+};
+
+/// 8-node serendipity master face in 3D (Hex20, Wedge15 faces): Quad9Facet's nodes without the centre. Its
+/// shape functions are Quad9Facet's with the centre's eliminated, H_i = H⁹_i + c_i H⁹_8, c = −1/4 at a
+/// corner and +1/2 at a mid-edge node (which removes every ξ²η² term and keeps H_i(x_j) = δ_ij):
+/// H_corner = (1 + ξ_i ξ)(1 + η_i η)(ξ_i ξ + η_i η − 1)/4, H_mid = (1 − ξ²)(1 + η_i η)/2 or (1 + ξ_i ξ)(1 − η²)/2.
+/// The ξ²η and ξη² terms give non-zero H_i,112, H_i,122 (kCubic).
+struct Quad8Facet : FaceNormal {
+  static constexpr int kSpaceDim = 3;
+  static constexpr int kSurfaceDim = 2;
+  static constexpr int kNodes = 8;
+  using Point = Vector<kSpaceDim>;
+  using SurfaceCoords = Vector<kSurfaceDim>;
+  using Second = std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes>;
+  using Third = std::array<std::array<Matrix<kSurfaceDim, kSurfaceDim>, kSurfaceDim>, kNodes>;
+
+  static constexpr double centreShare(int i) { return i < 4 ? -0.25 : 0.5; }
+
+  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) {
+    const auto h9 = Quad9Facet::shapeFunctions(xi);
+    Vector<kNodes> h{};
+    for (int i = 0; i < kNodes; ++i) h[i] = h9[i] + centreShare(i) * h9[8];
+    return h;
+  }
+
+  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+    const auto d9 = Quad9Facet::shapeDerivatives(xi);
+    Matrix<kNodes, kSurfaceDim> d;
+    for (int i = 0; i < kNodes; ++i)
+      for (int al = 0; al < kSurfaceDim; ++al) d(i, al) = d9(i, al) + centreShare(i) * d9(8, al);
+    return d;
+  }
+
+  static Second shapeSecondDerivatives(const SurfaceCoords& xi) {
+    const auto d9 = Quad9Facet::shapeSecondDerivatives(xi);
+    Second d{};
+    for (int i = 0; i < kNodes; ++i) {
+      d[i] = d9[i];
+      addScaled(d[i], centreShare(i), d9[8]);
+    }
+    return d;
+  }
+
+  static Third shapeThirdDerivatives(const SurfaceCoords& xi) {
+    const auto d9 = Quad9Facet::shapeThirdDerivatives(xi);
+    Third d{};
+    for (int i = 0; i < kNodes; ++i)
+      for (int al = 0; al < kSurfaceDim; ++al) {
+        d[i][al] = d9[i][al];
+        addScaled(d[i][al], centreShare(i), d9[8][al]);
+      }
+    return d;
+  }
+
+  static bool contains(const SurfaceCoords& xi, double tolerance) { return Quad4Facet::contains(xi, tolerance); }
+
+  /// A triangle at each corner (corner and its two mid-edge nodes) and the middle quadrilateral of the
+  /// mid-edge nodes as two triangles, counter-clockwise seen from outside.
+  static constexpr int kPieces = 6;
+  static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() {
+    return {{{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {7, 6, 3}, {4, 5, 6}, {4, 6, 7}}};
+  }
+
+  static SurfaceCoords center() { return {0.0, 0.0}; }
+  static SurfaceCoords nodeCoords(int i) { return Quad9Facet::nodeCoords(i); }
+  static constexpr bool kAffine = false;
+  static constexpr bool kCubic = true;
+  /// 3 × 3 Gauss points: on a parallelogram ∫ H_i dA = (−1/12, 1/3) A at the corners and mid-edge nodes, negative
+  /// at the corners. The slave weights come from the sub-facets instead: the corner triangles (corner and its
+  /// two mid-edge nodes) and the bilinear quadrilateral of the four mid-edge nodes (A/24 at a corner, 5A/24
+  /// at a mid-edge node on a parallelogram).
+  static std::array<SurfaceRulePoint<2>, 9> quadrature() { return gaussRuleOnSquare<2, 3>(); }
+  static constexpr bool kSubFacetTributary = true;
+  static constexpr std::array<std::array<int, 4>, 5> tributaryPieces() {
+    return {{{0, 4, 7, -1}, {4, 1, 5, -1}, {5, 2, 6, -1}, {7, 6, 3, -1}, {4, 5, 6, 7}}};
+  }
 };
 
 /// One master facet as the contact search and the history transfer see it: an id, the global ids of its

@@ -62,6 +62,7 @@ struct FacetKinematics {
   std::array<Weights, M> base{};                   // [0, H_i,α]: δā_α at fixed ξ
   std::array<std::array<Weights, M>, M> curve{};   // [0, H_i,αβ]: δx̄,αβ
   std::array<std::array<Point, M>, M> xbar2{};     // x̄,αβ = Σ H_i,αβ x_i
+  std::array<std::array<std::array<Point, M>, M>, M> xbar3{};  // x̄,αβγ = Σ H_i,αβγ x_i (Facet::kCubic only)
   Matrix<M, M> b{};                                // b̄_αβ = x̄,αβ·n̄
   Matrix<M, M> AInv{};                             // (A⁻¹)^αβ, A_αβ = ā_αβ − g_N b̄_αβ
   std::array<std::array<std::array<double, M>, M>, M> gamma{};  // Γ_αβγ = x̄,αβ·ā_γ
@@ -86,6 +87,13 @@ struct FacetKinematics {
           addScaled(xbar2[al][be], d2H[i](al, be), master[i]);
         }
       }
+    }
+    if constexpr (Facet::kCubic) {
+      const auto d3H = Facet::shapeThirdDerivatives(p.xi);
+      for (int i = 0; i < Facet::kNodes; ++i)
+        for (int al = 0; al < M; ++al)
+          for (int be = 0; be < M; ++be)
+            for (int ga = 0; ga < M; ++ga) addScaled(xbar3[al][be][ga], d3H[i][al](be, ga), master[i]);
     }
     Matrix<M, M> A;
     for (int al = 0; al < M; ++al)
@@ -290,10 +298,10 @@ void addTractionVariation(typename Operators<Facet>::Square& K, const FacetKinem
 
 /// Tangent term (c): t_Tβ ∂²ξ̄^β/∂u². ξ̄(u) solves F_α(u, ξ) = (x^k − x̄)·ā_α = 0 with ∂F_α/∂ξ^β = −A_αβ, so
 ///   ∂²ξ̄^β/∂u² = (A⁻¹)^βα [F_α,uu + F_α,uξ^γ Ξ^γᵀ + Ξ^γ F_α,uξ^γᵀ + F_α,ξ^γξ^δ Ξ^γ Ξ^δᵀ]
-/// with (x̄,αβγ = 0 for the multilinear facets of MasterFacet.hpp)
+/// with
 ///   F_α,uu      = ([1, −H_i] ⊗ I)ᵀ([0, H_i,α] ⊗ I) + transpose
 ///   F_α,uξ^γ    = −[0, H_i,γ] ⊗ ā_α − [0, H_i,α] ⊗ ā_γ + [1, −H_i] ⊗ x̄,αγ + g_N [0, H_i,αγ] ⊗ n̄
-///   F_α,ξ^γξ^δ  = −(Γ_γδα + Γ_αδγ + Γ_αγδ)
+///   F_α,ξ^γξ^δ  = −(Γ_γδα + Γ_αδγ + Γ_αγδ) + g_N n̄·x̄,αγδ   (the last only on a Facet::kCubic facet)
 /// contracted with t_Tβ: weights w_α = t_Tβ (A⁻¹)^βα.
 template <class Facet>
 void addProjectionCurvature(typename Operators<Facet>::Square& K, const FacetKinematics<Facet>& k,
@@ -314,7 +322,8 @@ void addProjectionCurvature(typename Operators<Facet>::Square& K, const FacetKin
       addScaled(fuxi, k.gN, Op::kron(k.curve[al][ga], k.n));
       Op::addSymmetricOuter(K, w[al], fuxi, k.Xi[ga]);
       for (int de = 0; de < M; ++de) {
-        const double fxixi = -(k.gamma[ga][de][al] + k.gamma[al][de][ga] + k.gamma[al][ga][de]);
+        double fxixi = -(k.gamma[ga][de][al] + k.gamma[al][de][ga] + k.gamma[al][ga][de]);
+        if constexpr (Facet::kCubic) fxixi += k.gN * dot(k.n, k.xbar3[al][ga][de]);
         addOuter(K, w[al] * fxixi, k.Xi[ga], k.Xi[de]);
       }
     }
@@ -410,5 +419,10 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
 
 template class NodeToFacetContact<Line2Facet>;
 template class NodeToFacetContact<Quad4Facet>;
+template class NodeToFacetContact<Line3Facet>;
+template class NodeToFacetContact<Tri3Facet>;
+template class NodeToFacetContact<Tri6Facet>;
+template class NodeToFacetContact<Quad8Facet>;
+template class NodeToFacetContact<Quad9Facet>;
 
 }  // namespace contessa::contact

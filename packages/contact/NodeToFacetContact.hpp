@@ -169,5 +169,10 @@ class NodeToFacetContact {
 
 extern template class NodeToFacetContact<Line2Facet>;
 extern template class NodeToFacetContact<Quad4Facet>;
+extern template class NodeToFacetContact<Line3Facet>;
+extern template class NodeToFacetContact<Tri3Facet>;
+extern template class NodeToFacetContact<Tri6Facet>;
+extern template class NodeToFacetContact<Quad8Facet>;
+extern template class NodeToFacetContact<Quad9Facet>;
 
 }  // namespace contessa::contact

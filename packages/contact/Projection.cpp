@@ -201,5 +201,10 @@ ProjectionResult<Facet> Projection<Facet>::project(const Point& slave, const Nod
 
 template class Projection<Line2Facet>;
 template class Projection<Quad4Facet>;
+template class Projection<Line3Facet>;
+template class Projection<Tri3Facet>;
+template class Projection<Tri6Facet>;
+template class Projection<Quad8Facet>;
+template class Projection<Quad9Facet>;
 
 }  // namespace contessa::contact

@@ -89,6 +89,11 @@ class Projection {
 
 extern template class Projection<Line2Facet>;
 extern template class Projection<Quad4Facet>;
+extern template class Projection<Line3Facet>;
+extern template class Projection<Tri3Facet>;
+extern template class Projection<Tri6Facet>;
+extern template class Projection<Quad8Facet>;
+extern template class Projection<Quad9Facet>;
 
 using SegmentProjection2D = Projection<Line2Facet>;
 using FaceProjection3D = Projection<Quad4Facet>;

@@ -2,8 +2,13 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
+#include "mechanics/QuadraticCells.hpp"
 #include "mechanics/ReferenceElement.hpp"
+#include "mechanics/ShapeFunctions.hpp"
+#include "mechanics/Simplices.hpp"
 
 namespace contessa::mechanics {
 namespace {
@@ -24,6 +29,10 @@ struct MultilinearCell {
   }
   std::array<double, kNodes> N{};      ///< shape functions at a point
   std::array<double, kNodes * M> dN{};  ///< ∂N_a/∂ξ_m at M·a + m
+
+  /// 2 Gauss points per direction: N_a times the area vector (degree ≤ 2 per direction) exactly, also
+  /// with w = 2πr.
+  static auto rule() { return gaussLegendreRule<M, 2>(); }
 
   explicit MultilinearCell(const std::array<double, M>& xi) {
     for (int a = 0; a < kNodes; ++a) {
@@ -58,6 +67,109 @@ struct MultilinearCell {
     return g;
   }
 };
+
+// The 1D shapes of the edges of 2D cells, in Exodus order (corners, then the mid-edge node).
+struct LinearSegment : ShapeFromValues<LinearSegment, 1, 2> {
+  static constexpr int kNodes = 2;
+  template <class T>
+  static void values(const T* xi, T* N) {
+    N[0] = 0.5 * (1.0 - xi[0]);
+    N[1] = 0.5 * (1.0 + xi[0]);
+  }
+};
+struct QuadraticSegment : ShapeFromValues<QuadraticSegment, 1, 3> {
+  static constexpr int kNodes = 3;
+  template <class T>
+  static void values(const T* xi, T* N) {
+    N[0] = 0.5 * xi[0] * (xi[0] - 1.0);
+    N[1] = 0.5 * xi[0] * (xi[0] + 1.0);
+    N[2] = 1.0 - xi[0] * xi[0];
+  }
+};
+
+/// The degree-4 rule on the unit triangle (6 points; Dunavant 1985, table for p = 4), for the quadratic
+/// triangle: N_a (degree 2) times the area vector of a curved face (degree 2).
+std::array<QuadraturePoint<2>, 6> triangleRuleDegree4() {
+  const double a = 0.445948490915965, wa = 0.5 * 0.223381589678011;
+  const double b = 0.091576213509771, wb = 0.5 * 0.109951743655322;
+  return {{{{a, a}, wa}, {{1.0 - 2.0 * a, a}, wa}, {{a, 1.0 - 2.0 * a}, wa},
+           {{b, b}, wb}, {{1.0 - 2.0 * b, b}, wb}, {{b, 1.0 - 2.0 * b}, wb}}};
+}
+
+/// A facet of any shape of the solid kernels (or the segments above) at one point: the interface of
+/// MultilinearCell (N, dN, point, tangents), the shape's values and gradients, and its load rule.
+template <int M, class Shape, class Rule>
+struct ShapeCell {
+  static constexpr int kNodes = Shape::kNodes;
+  std::array<double, kNodes> N{};
+  std::array<double, kNodes * M> dN{};
+
+  static auto rule() { return Rule::get(); }
+  explicit ShapeCell(const std::array<double, M>& xi) {
+    Shape::shapeValues(xi.data(), N.data());
+    Shape::shapeGradients(xi.data(), dN.data());
+  }
+  template <int D>
+  std::array<double, D> point(const double* x) const {
+    std::array<double, D> p{};
+    for (int a = 0; a < kNodes; ++a)
+      for (int i = 0; i < D; ++i) p[i] += N[a] * x[D * a + i];
+    return p;
+  }
+  template <int D>
+  std::array<std::array<double, D>, M> tangents(const double* x) const {
+    std::array<std::array<double, D>, M> g{};
+    for (int a = 0; a < kNodes; ++a)
+      for (int m = 0; m < M; ++m)
+        for (int i = 0; i < D; ++i) g[m][i] += dN[M * a + m] * x[D * a + i];
+    return g;
+  }
+};
+
+// The rules, exact for N_a times the area vector on a facet of the shape (and with w = 2πr on a 2D edge):
+// degree 3 on a 3-node edge (5 with w), degree 1 on a flat triangle, 4 on a 6-node one, 5 per direction
+// on an 8- or 9-node face.
+struct GaussLine3 {
+  static auto get() { return gaussLegendreRule<1, 3>(); }
+};
+struct TriangleCentroid {
+  static auto get() { return triangleRule<1>(); }
+};
+struct TriangleDegree4 {
+  static auto get() { return triangleRuleDegree4(); }
+};
+struct GaussSquare3 {
+  static auto get() { return gaussLegendreRule<2, 3>(); }
+};
+
+using Line3Cell = ShapeCell<1, QuadraticSegment, GaussLine3>;
+using Tri3Cell = ShapeCell<2, LinearTriangle, TriangleCentroid>;
+using Tri6Cell = ShapeCell<2, QuadraticTriangle, TriangleDegree4>;
+using Quad8Cell = ShapeCell<2, SerendipityQuadrilateral, GaussSquare3>;
+using Quad9Cell = ShapeCell<2, LagrangeQuadrilateral, GaussSquare3>;
+
+template <class Cell>
+struct CellTag {
+  using type = Cell;
+};
+
+/// Calls f with the CellTag of the facet cell of `nodes` nodes of a D-dimensional solid: 2D edges of 2 or 3
+/// nodes, 3D faces of 3, 4, 6, 8 or 9 (the Exodus sides of every cell family, mesh::sideNodes).
+template <int D, class F>
+auto withFacetCell(int nodes, F&& f) {
+  if constexpr (D == 2) {
+    if (nodes == 2) return f(CellTag<MultilinearCell<1>>{});
+    if (nodes == 3) return f(CellTag<Line3Cell>{});
+  } else {
+    if (nodes == 4) return f(CellTag<MultilinearCell<2>>{});
+    if (nodes == 3) return f(CellTag<Tri3Cell>{});
+    if (nodes == 6) return f(CellTag<Tri6Cell>{});
+    if (nodes == 8) return f(CellTag<Quad8Cell>{});
+    if (nodes == 9) return f(CellTag<Quad9Cell>{});
+  }
+  throw std::logic_error("DistributedLoads: no facet of " + std::to_string(nodes) + " nodes in " +
+                         std::to_string(D) + "D");
+}
 
 int permutationSign(int i, int j, int k) { return (i - j) * (j - k) * (k - i) / 2; }  // ε_ijk for 0..2
 
@@ -106,15 +218,17 @@ void RevolvedMeasure::gradient(const double*, double* dwdx) const {
   dwdx[1] = 0.0;
 }
 
-template <int D>
-void followerPressure(const double* x, double p, const LoadMeasure& measure, double* force, double* stiffness) {
-  constexpr int M = D - 1, K = 1 << M, n = D * K;
+namespace {
+
+template <int D, class Cell>
+void followerPressureOn(const double* x, double p, const LoadMeasure& measure, double* force, double* stiffness) {
+  constexpr int M = D - 1, K = Cell::kNodes, n = D * K;
   for (int r = 0; r < n; ++r) force[r] = 0.0;
   if (stiffness)
     for (int r = 0; r < n * n; ++r) stiffness[r] = 0.0;
-  // Two Gauss points per direction integrate N_a a exactly (degree ≤ 2 per direction), also with w = 2πr.
-  for (const auto& q : gaussLegendreRule<M, 2>()) {
-    const MultilinearCell<M> cell(q.xi);
+  // The cell's rule integrates N_a a exactly on an undistorted facet (Cell::rule).
+  for (const auto& q : Cell::rule()) {
+    const Cell cell(q.xi);
     const auto g = cell.template tangents<D>(x);
     const auto xq = cell.template point<D>(x);
     const auto area = areaVector<D>(g);
@@ -143,18 +257,70 @@ void followerPressure(const double* x, double p, const LoadMeasure& measure, dou
   }
 }
 
-template <int D>
-void facetTraction(const double* X, const double* t, const LoadMeasure& measure, double* force) {
-  constexpr int M = D - 1, K = 1 << M;
+template <int D, class Cell>
+void facetTractionOn(const double* X, const double* t, const LoadMeasure& measure, double* force) {
+  constexpr int K = Cell::kNodes;
   for (int r = 0; r < D * K; ++r) force[r] = 0.0;
-  for (const auto& q : gaussLegendreRule<M, 2>()) {
-    const MultilinearCell<M> cell(q.xi);
+  for (const auto& q : Cell::rule()) {
+    const Cell cell(q.xi);
     const auto Xq = cell.template point<D>(X);
     // eq. (8.5): dA = |a(X)| dξ.
     const double dA = q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
     for (int a = 0; a < K; ++a)
       for (int i = 0; i < D; ++i) force[D * a + i] += dA * cell.N[a] * t[i];
   }
+}
+
+template <int D, class Cell>
+double facetMeasureOn(const double* X, const LoadMeasure& measure) {
+  double total = 0.0;
+  for (const auto& q : Cell::rule()) {
+    const Cell cell(q.xi);
+    const auto Xq = cell.template point<D>(X);
+    total += q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
+  }
+  return total;
+}
+
+}  // namespace
+
+bool isLoadFacet(int D, int nodes) {
+  if (D == 2) return nodes == 2 || nodes == 3;
+  return D == 3 && (nodes == 3 || nodes == 4 || nodes == 6 || nodes == 8 || nodes == 9);
+}
+
+template <int D>
+void followerPressure(int nodes, const double* x, double p, const LoadMeasure& measure, double* force,
+                      double* stiffness) {
+  withFacetCell<D>(nodes, [&](auto cell) {
+    followerPressureOn<D, typename decltype(cell)::type>(x, p, measure, force, stiffness);
+  });
+}
+
+template <int D>
+void followerPressure(const double* x, double p, const LoadMeasure& measure, double* force, double* stiffness) {
+  followerPressure<D>(facetNodeCount(D), x, p, measure, force, stiffness);
+}
+
+template <int D>
+void facetTraction(int nodes, const double* X, const double* t, const LoadMeasure& measure, double* force) {
+  withFacetCell<D>(nodes, [&](auto cell) { facetTractionOn<D, typename decltype(cell)::type>(X, t, measure, force); });
+}
+
+template <int D>
+void facetTraction(const double* X, const double* t, const LoadMeasure& measure, double* force) {
+  facetTraction<D>(facetNodeCount(D), X, t, measure, force);
+}
+
+template <int D>
+double facetMeasure(int nodes, const double* X, const LoadMeasure& measure) {
+  return withFacetCell<D>(nodes,
+                          [&](auto cell) { return facetMeasureOn<D, typename decltype(cell)::type>(X, measure); });
+}
+
+template <int D>
+double facetMeasure(const double* X, const LoadMeasure& measure) {
+  return facetMeasure<D>(facetNodeCount(D), X, measure);
 }
 
 namespace {
@@ -185,17 +351,6 @@ void bodyForce(const double* X, const double* b, const LoadMeasure& measure, dou
 }
 
 template <int D>
-double facetMeasure(const double* X, const LoadMeasure& measure) {
-  double total = 0.0;
-  for (const auto& q : gaussLegendreRule<D - 1, 2>()) {
-    const MultilinearCell<D - 1> cell(q.xi);
-    const auto Xq = cell.template point<D>(X);
-    total += q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
-  }
-  return total;
-}
-
-template <int D>
 double cellMeasure(const double* X, const LoadMeasure& measure) {
   double total = 0.0;
   for (const auto& q : gaussLegendreRule<D, 2>()) {
@@ -214,6 +369,12 @@ template void bodyForce<2>(const double*, const double*, const LoadMeasure&, dou
 template void bodyForce<3>(const double*, const double*, const LoadMeasure&, double*);
 template double facetMeasure<2>(const double*, const LoadMeasure&);
 template double facetMeasure<3>(const double*, const LoadMeasure&);
+template void followerPressure<2>(int, const double*, double, const LoadMeasure&, double*, double*);
+template void followerPressure<3>(int, const double*, double, const LoadMeasure&, double*, double*);
+template void facetTraction<2>(int, const double*, const double*, const LoadMeasure&, double*);
+template void facetTraction<3>(int, const double*, const double*, const LoadMeasure&, double*);
+template double facetMeasure<2>(int, const double*, const LoadMeasure&);
+template double facetMeasure<3>(int, const double*, const LoadMeasure&);
 template double cellMeasure<2>(const double*, const LoadMeasure&);
 template double cellMeasure<3>(const double*, const LoadMeasure&);
 

@@ -4,9 +4,10 @@
 // nodal forces and, for the follower pressure, its load stiffness only; the model assembles
 // (model/ExternalLoads). Equations: docs/theory-solids.md §8.
 //
-// One code path for 2D and 3D. A facet of a D-dimensional solid is a multilinear cell of dimension
-// M = D − 1 (an edge of two nodes, a face of four), a cell one of dimension D (Quad4, Hex8); nodes in
-// Exodus order. The only dimension-specific piece is the facet's area vector from its tangents
+// One code path for 2D and 3D and every facet shape. A facet of a D-dimensional solid is a cell of
+// dimension M = D − 1: an edge of 2 or 3 nodes, a face of 3, 4, 6, 8 or 9 (the sides of every cell family,
+// their shapes those of the solid kernels), integrated by a rule exact on an undistorted facet; a cell one
+// of dimension D (Quad4, Hex8); nodes in Exodus order. The only dimension-specific piece is the facet's area vector from its tangents
 // (areaVector: the rotated tangent in 2D, the cross product in 3D), which points out of the body for a
 // side in Exodus order.
 //
@@ -51,6 +52,11 @@ constexpr int facetNodeCount(int D) { return D == 2 ? 2 : 4; }
 /// Nodes of a cell: 4 (Quad4) in 2D, 8 (Hex8) in 3D.
 constexpr int cellNodeCount(int D) { return D == 2 ? 4 : 8; }
 
+/// Whether the facet kernels take a side of `nodes` nodes of a D-dimensional solid: the sides of every cell
+/// family, in Exodus side order (mesh::sideNodes): 2D edges of 2 (Quad4, Tri3) or 3 nodes (Tri6, Q8, Q9);
+/// 3D faces of 3 (Tet4, Wedge6), 4 (Hex8, Wedge6), 6 (Tet10, Wedge15), 8 (Hex20, Wedge15) or 9 nodes (Hex27).
+bool isLoadFacet(int D, int nodes);
+
 /// Follower pressure p (> 0 pushes into the body) on a facet at current nodal coordinates x
 /// (facetNodeCount(D) × D, node-major, Exodus side order): the force it exerts on the nodes,
 /// f_a = −p ∫ N_a n w da (n the outward unit normal; theory-solids eq. 8.2), into `force`
@@ -58,11 +64,17 @@ constexpr int cellNodeCount(int D) { return D == 2 ? 4 : 8; }
 /// with K = facetNodeCount(D); eq. 8.4), which is not symmetric.
 template <int D>
 void followerPressure(const double* x, double p, const LoadMeasure& measure, double* force, double* stiffness);
+/// The same on a facet of `nodes` nodes (isLoadFacet): x is nodes × D, the stiffness (D·nodes)².
+template <int D>
+void followerPressure(int nodes, const double* x, double p, const LoadMeasure& measure, double* force,
+                      double* stiffness);
 
 /// Dead traction t (D components, force per reference area) on a facet with reference coordinates X:
 /// f_a = ∫ N_a t w dA (eq. 8.5), into `force` (overwritten).
 template <int D>
 void facetTraction(const double* X, const double* t, const LoadMeasure& measure, double* force);
+template <int D>
+void facetTraction(int nodes, const double* X, const double* t, const LoadMeasure& measure, double* force);
 
 /// Body force b (D components, force per reference volume) over a cell with reference coordinates X
 /// (cellNodeCount(D) × D): f_a = ∫ N_a b w dV (eq. 8.6), into `force` (overwritten).
@@ -73,6 +85,8 @@ void bodyForce(const double* X, const double* b, const LoadMeasure& measure, dou
 /// weighted by w: for resultants and checks.
 template <int D>
 double facetMeasure(const double* X, const LoadMeasure& measure);
+template <int D>
+double facetMeasure(int nodes, const double* X, const LoadMeasure& measure);
 template <int D>
 double cellMeasure(const double* X, const LoadMeasure& measure);
 

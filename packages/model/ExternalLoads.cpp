@@ -44,10 +44,10 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
         const int npe = mesh::nodesPerCell(block.cellType);
         std::vector<GlobalIndex> nodes;
         for (int a : mesh::sideNodes(block.cellType, set.sides[k])) nodes.push_back(block.connectivity[where.local * npe + a]);
-        // The kernels integrate multilinear facets: 2-node edges (2D), 4-node faces (3D).
-        if (static_cast<int>(nodes.size()) != mechanics::facetNodeCount(dim_))
+        // The kernels take the sides of every cell family (mechanics::isLoadFacet).
+        if (!mechanics::isLoadFacet(dim_, static_cast<int>(nodes.size())))
           throw std::logic_error("ExternalLoads: a side of " + std::to_string(nodes.size()) + " nodes in side set '" +
-                                 load.set + "'; the load kernels take 2-node edges and 4-node faces");
+                                 load.set + "', which no load kernel takes");
         appendNodes(entries, nodes, problem, localDof);
       }
       (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(entries));
@@ -89,8 +89,8 @@ void ExternalLoads::addDeadLoads(double* f, bool change) const {
         if (dim_ == 2) mechanics::bodyForce<2>(X, value.data(), *measure_, fe.data());
         else mechanics::bodyForce<3>(X, value.data(), *measure_, fe.data());
       } else {
-        if (dim_ == 2) mechanics::facetTraction<2>(X, value.data(), *measure_, fe.data());
-        else mechanics::facetTraction<3>(X, value.data(), *measure_, fe.data());
+        if (dim_ == 2) mechanics::facetTraction<2>(entries.nodes, X, value.data(), *measure_, fe.data());
+        else mechanics::facetTraction<3>(entries.nodes, X, value.data(), *measure_, fe.data());
       }
       for (int i = 0; i < n; ++i) f[entries.dofs[k * n + i]] += fe[i];
     }
@@ -114,7 +114,7 @@ void ExternalLoads::assembleFollowerLoads(const double* u, double a, double slop
       const int* dofs = entries.dofs.data() + k * n;
       for (int i = 0; i < n; ++i) x[i] = entries.X[k * n + i] + u[dofs[i]];  // current position
       double* K = stiffness ? ke.data() : nullptr;
-      facetPressure(x.data(), dp, fe.data(), K);
+      facetPressure(entries.nodes, x.data(), dp, fe.data(), K);
       // f_p is linear in p: f_p(p_0 + a Δp) = f_p(p_0) + a f_p(Δp), ∂/∂λ = a' f_p(Δp); the residual
       // carries −f_ext. Without load steps p_0 = 0 and a = λ.
       for (int i = 0; i < n; ++i) {
@@ -123,7 +123,7 @@ void ExternalLoads::assembleFollowerLoads(const double* u, double a, double slop
       }
       if (K) for (double& v : ke) v *= -a;
       if (p0 != 0.0) {
-        facetPressure(x.data(), p0, fe0.data(), K ? ke0.data() : nullptr);
+        facetPressure(entries.nodes, x.data(), p0, fe0.data(), K ? ke0.data() : nullptr);
         for (int i = 0; i < n; ++i) force[dofs[i]] -= fe0[i];
         if (K) for (std::size_t i = 0; i < ke.size(); ++i) ke[i] -= ke0[i];
       }
@@ -132,9 +132,9 @@ void ExternalLoads::assembleFollowerLoads(const double* u, double a, double slop
   }
 }
 
-void ExternalLoads::facetPressure(const double* x, double p, double* fe, double* K) const {
-  if (dim_ == 2) mechanics::followerPressure<2>(x, p, *measure_, fe, K);
-  else mechanics::followerPressure<3>(x, p, *measure_, fe, K);
+void ExternalLoads::facetPressure(int nodes, const double* x, double p, double* fe, double* K) const {
+  if (dim_ == 2) mechanics::followerPressure<2>(nodes, x, p, *measure_, fe, K);
+  else mechanics::followerPressure<3>(nodes, x, p, *measure_, fe, K);
 }
 
 }  // namespace contessa::model

@@ -56,7 +56,7 @@ class ExternalLoads {
     std::size_t count = 0;
   };
   /// One facet's follower-pressure force (and with K, its stiffness) at current positions x, pressure p.
-  void facetPressure(const double* x, double p, double* fe, double* K) const;
+  void facetPressure(int nodes, const double* x, double p, double* fe, double* K) const;
 
   int dim_;
   std::unique_ptr<mechanics::LoadMeasure> measure_;  ///< w = 1; 2πr in an axisymmetric problem
