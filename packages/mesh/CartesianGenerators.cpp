@@ -1,6 +1,8 @@
 // The Cartesian grids: Rectangle (Quad4) and Box (Hex8), graded along each axis.
 #include "mesh/Generators.hpp"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/GeneratorSupport.hpp"
@@ -35,32 +37,40 @@ GridRecipe boxRecipe(const BoxSpec& spec) {
           spec.blockName, {"left", "right", "bottom", "top", "back", "front"}, "box mesh"};
 }
 
+// One axis of a structured grid's spec, with the deck parameters its checks name.
+struct GridAxis {
+  double origin, length;
+  int count;
+  double bias;
+  const char* originName;
+  const char* lengthName;
+  const char* countName;
+  const char* biasName;
+};
+
+// The grid's checks in the deck's order (every origin, every length, every count, every bias, so the
+// first failing parameter is named), then whether the grid fits.
+std::string checkGrid(const std::vector<GridAxis>& axes) {
+  for (const GridAxis& a : axes) requireFinite(a.origin, a.originName);
+  for (const GridAxis& a : axes) requirePositive(a.length, a.lengthName);
+  std::vector<std::pair<std::string, int>> counts;
+  for (const GridAxis& a : axes) {
+    requirePositiveCount(a.count, a.countName);
+    counts.emplace_back(a.countName, a.count);
+  }
+  for (const GridAxis& a : axes) requireBias(a.bias, a.biasName);
+  return requireGridFits(counts);
+}
+
 std::string checkRectangle(const RectangleSpec& spec) {
-  requireFinite(spec.x0, "X0");
-  requireFinite(spec.y0, "Y0");
-  requirePositive(spec.lx, "Length X");
-  requirePositive(spec.ly, "Length Y");
-  requirePositiveCount(spec.nx, "Elements X");
-  requirePositiveCount(spec.ny, "Elements Y");
-  requireBias(spec.biasX, "Bias X");
-  requireBias(spec.biasY, "Bias Y");
-  return requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}});
+  return checkGrid({{spec.x0, spec.lx, spec.nx, spec.biasX, "X0", "Length X", "Elements X", "Bias X"},
+                    {spec.y0, spec.ly, spec.ny, spec.biasY, "Y0", "Length Y", "Elements Y", "Bias Y"}});
 }
 
 std::string checkBox(const BoxSpec& spec) {
-  requireFinite(spec.x0, "X Origin");
-  requireFinite(spec.y0, "Y Origin");
-  requireFinite(spec.z0, "Z Origin");
-  requirePositive(spec.lx, "Length X");
-  requirePositive(spec.ly, "Length Y");
-  requirePositive(spec.lz, "Length Z");
-  requirePositiveCount(spec.nx, "Elements X");
-  requirePositiveCount(spec.ny, "Elements Y");
-  requirePositiveCount(spec.nz, "Elements Z");
-  requireBias(spec.biasX, "Bias X");
-  requireBias(spec.biasY, "Bias Y");
-  requireBias(spec.biasZ, "Bias Z");
-  return requireGridFits({{"Elements X", spec.nx}, {"Elements Y", spec.ny}, {"Elements Z", spec.nz}});
+  return checkGrid({{spec.x0, spec.lx, spec.nx, spec.biasX, "X Origin", "Length X", "Elements X", "Bias X"},
+                    {spec.y0, spec.ly, spec.ny, spec.biasY, "Y Origin", "Length Y", "Elements Y", "Bias Y"},
+                    {spec.z0, spec.lz, spec.nz, spec.biasZ, "Z Origin", "Length Z", "Elements Z", "Bias Z"}});
 }
 
 }  // namespace

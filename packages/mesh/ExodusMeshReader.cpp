@@ -186,15 +186,25 @@ class Reader {
     }
   }
 
+  // A set's entries as the file lists them (1-based): its nodes or elements, and a side set's sides.
+  struct SetEntries {
+    std::vector<int64_t> entries, sides;
+  };
+  SetEntries readSet(ex_entity_type type, int64_t setId, const std::string& what) {
+    int64_t count = 0, numFactors = 0;
+    check(ex_get_set_param(id(), type, setId, &count, &numFactors), what);
+    SetEntries set{std::vector<int64_t>(static_cast<size_t>(count)),
+                   std::vector<int64_t>(type == EX_SIDE_SET ? static_cast<size_t>(count) : 0)};
+    if (count > 0)
+      check(ex_get_set(id(), type, setId, set.entries.data(), type == EX_SIDE_SET ? set.sides.data() : nullptr), what);
+    return set;
+  }
+
   void readNodeSets(Mesh& mesh, int64_t numSets) {
     const auto setIds = ids(EX_NODE_SET, numSets, "node set ids");
     const auto setNames = names(EX_NODE_SET, setIds, "nodeset_", "node set names");
     for (size_t s = 0; s < setIds.size(); ++s) {
-      const std::string what = "node set '" + setNames[s] + "'";
-      int64_t count = 0, numFactors = 0;
-      check(ex_get_set_param(id(), EX_NODE_SET, setIds[s], &count, &numFactors), what);
-      std::vector<int64_t> nodes(static_cast<size_t>(count));
-      if (count > 0) check(ex_get_set(id(), EX_NODE_SET, setIds[s], nodes.data(), nullptr), what);
+      const std::vector<int64_t> nodes = readSet(EX_NODE_SET, setIds[s], "node set '" + setNames[s] + "'").entries;
       NodeSet set;
       set.name = setNames[s];
       set.nodes.assign(nodes.begin(), nodes.end());
@@ -210,11 +220,7 @@ class Reader {
     const auto setIds = ids(EX_SIDE_SET, numSets, "side set ids");
     const auto setNames = names(EX_SIDE_SET, setIds, "sideset_", "side set names");
     for (size_t s = 0; s < setIds.size(); ++s) {
-      const std::string what = "side set '" + setNames[s] + "'";
-      int64_t count = 0, numFactors = 0;
-      check(ex_get_set_param(id(), EX_SIDE_SET, setIds[s], &count, &numFactors), what);
-      std::vector<int64_t> elements(static_cast<size_t>(count)), sides(static_cast<size_t>(count));
-      if (count > 0) check(ex_get_set(id(), EX_SIDE_SET, setIds[s], elements.data(), sides.data()), what);
+      const auto [elements, sides] = readSet(EX_SIDE_SET, setIds[s], "side set '" + setNames[s] + "'");
       SideSet set;
       set.name = setNames[s];
       // Exodus numbers elements 1.. over the blocks in file order: our global id plus one.

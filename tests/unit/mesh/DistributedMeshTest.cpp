@@ -193,9 +193,7 @@ TEST(DistributedMesh, GeneratedRectanglePartsAreTheReplicatedMeshs) {
 }
 
 TEST(DistributedMesh, GeneratedAnnulusSectorPartsAreTheReplicatedMeshs) {
-  AnnulusSectorSpec spec;
-  spec.elementsThroughThickness = 3;
-  spec.elementsAroundArc = 6;
+  AnnulusSectorSpec spec = test_support::annulusSpec(3, 6);
   spec.radialBias = 0.5;
   const Mesh mesh = generateAnnulusSector(spec);
   expectGeneratedPartsMatch(mesh, gridOwners(3, 6, 1),

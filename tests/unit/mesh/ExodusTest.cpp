@@ -40,13 +40,7 @@ double value(int step, int variable, GlobalIndex entity) { return 1000.0 * step 
 }  // namespace
 
 TEST(ExodusRoundTrip, AnnulusSectorMeshAndResults) {
-  AnnulusSectorSpec spec;
-  spec.innerRadius = 50;
-  spec.thickness = 5;
-  spec.startAngleDeg = 10;
-  spec.endAngleDeg = 100;
-  spec.elementsThroughThickness = 3;
-  spec.elementsAroundArc = 8;
+  AnnulusSectorSpec spec = test_support::annulusSpec(3, 8, 50, 5, 10, 100);
   spec.blockName = "ring";
   const Mesh mesh = generateAnnulusSector(spec);
   const std::string path = tempPath("annulus");

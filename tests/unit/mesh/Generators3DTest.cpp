@@ -194,10 +194,7 @@ TEST(BoxGenerator, RejectsBadSpecs) {
 
 TEST(HollowCylinderSectorGenerator, LayerZeroIsTheAnnulusSector) {
   HollowCylinderSectorSpec spec;
-  spec.section.innerRadius = 100;
-  spec.section.thickness = 20;
-  spec.section.elementsThroughThickness = 3;
-  spec.section.elementsAroundArc = 7;
+  spec.section = test_support::annulusSpec(3, 7, 100, 20);
   spec.section.radialBias = 0.5;
   spec.section.arcBias = 2;
   spec.section.blockName = "tube";
@@ -242,12 +239,7 @@ TEST(HollowCylinderSectorGenerator, LayerZeroIsTheAnnulusSector) {
 
 TEST(HollowCylinderSectorGenerator, LayersVolumeAndOutwardSides) {
   HollowCylinderSectorSpec spec;
-  spec.section.innerRadius = 2;
-  spec.section.thickness = 1;
-  spec.section.startAngleDeg = 30;
-  spec.section.endAngleDeg = 120;
-  spec.section.elementsThroughThickness = 2;
-  spec.section.elementsAroundArc = 6;
+  spec.section = test_support::annulusSpec(2, 6, 2, 1, 30, 120);
   spec.length = 3;
   spec.layers = 4;
   spec.axialBias = 3;
@@ -399,10 +391,8 @@ TEST(SphereOctantGenerator, VolumeAndAreaConvergeToTheSphere) {
 }
 
 TEST(SphereOctantGenerator, GradingRefinesAtThePoleAndTheSurface) {
-  SphereOctantSpec spec;
+  SphereOctantSpec spec = test_support::octantSpec(6, 5);
   spec.radius = 1;
-  spec.elementsAlongEdge = 6;
-  spec.elementsThroughShell = 5;
   spec.poleBias = 10;
   spec.radialBias = 0.2;
   spec.innerCubeFraction = 0.4;

@@ -124,13 +124,7 @@ TEST(RectangleGenerator, RejectsBadSpecs) {
 }
 
 TEST(AnnulusSectorGenerator, CountsRadiiAndAngles) {
-  AnnulusSectorSpec spec;
-  spec.innerRadius = 100;
-  spec.thickness = 20;
-  spec.startAngleDeg = 30;
-  spec.endAngleDeg = 120;
-  spec.elementsThroughThickness = 4;
-  spec.elementsAroundArc = 9;
+  AnnulusSectorSpec spec = test_support::annulusSpec(4, 9, 100, 20, 30, 120);
   const Mesh m = generateAnnulusSector(spec);
   EXPECT_EQ(m.numNodes(), 5 * 10);
   EXPECT_EQ(m.numElements(), 4 * 9);
@@ -171,13 +165,7 @@ TEST(AnnulusSectorGenerator, DefaultSpecMatchesTheDocumentedRing) {
 }
 
 TEST(AnnulusSectorGenerator, NodeAndSideSets) {
-  AnnulusSectorSpec spec;
-  spec.innerRadius = 10;
-  spec.thickness = 2;
-  spec.startAngleDeg = -45;
-  spec.endAngleDeg = 45;
-  spec.elementsThroughThickness = 3;
-  spec.elementsAroundArc = 6;
+  AnnulusSectorSpec spec = test_support::annulusSpec(3, 6, 10, 2, -45, 45);
   const Mesh m = generateAnnulusSector(spec);
   ASSERT_EQ(m.nodeSet("inner").nodes.size(), 7u);
   ASSERT_EQ(m.nodeSet("outer").nodes.size(), 7u);
@@ -204,11 +192,7 @@ TEST(AnnulusSectorGenerator, NodeAndSideSets) {
 }
 
 TEST(AnnulusSectorGenerator, FullRingIsAllowed) {
-  AnnulusSectorSpec spec;
-  spec.startAngleDeg = 0;
-  spec.endAngleDeg = 360;
-  spec.elementsThroughThickness = 2;
-  spec.elementsAroundArc = 12;
+  AnnulusSectorSpec spec = test_support::annulusSpec(2, 12, 100, 20, 0, 360);
   const Mesh m = generateAnnulusSector(spec);
   EXPECT_EQ(m.numElements(), 24);
   for (size_t e = 0; e < 24; ++e) EXPECT_GT(signedArea(m, m.blocks[0], e), 0);
@@ -349,13 +333,7 @@ TEST(RectangleGenerator, RejectsBadBias) {
 }
 
 TEST(AnnulusSectorGenerator, GradedSizesFollowTheBias) {
-  AnnulusSectorSpec spec;
-  spec.innerRadius = 100;
-  spec.thickness = 20;
-  spec.startAngleDeg = 0;
-  spec.endAngleDeg = 90;
-  spec.elementsThroughThickness = 8;
-  spec.elementsAroundArc = 30;
+  AnnulusSectorSpec spec = test_support::annulusSpec(8, 30, 100, 20, 0, 90);
   spec.radialBias = 0.1;  // fine at the outer surface
   spec.arcBias = 6;       // fine near the start angle
   const Mesh m = generateAnnulusSector(spec);
@@ -387,11 +365,7 @@ TEST(AnnulusSectorGenerator, GradedSizesFollowTheBias) {
 TEST(AnnulusSectorGenerator, GradedEndAngleIsExact) {
   // −50.6 + (87.8 − (−50.6)) is not 87.8 in floating point (and moves the node); the last angle must
   // still be exactly 87.8 degrees.
-  AnnulusSectorSpec spec;
-  spec.startAngleDeg = -50.6;
-  spec.endAngleDeg = 87.8;
-  spec.elementsThroughThickness = 2;
-  spec.elementsAroundArc = 5;
+  AnnulusSectorSpec spec = test_support::annulusSpec(2, 5, 100, 20, -50.6, 87.8);
   spec.arcBias = 0.5;
   const Mesh m = generateAnnulusSector(spec);
   const double theta = 87.8 * (std::acos(-1.0) / 180.0);

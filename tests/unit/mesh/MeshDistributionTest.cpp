@@ -93,14 +93,8 @@ void expectSameSurface(const ReplicatedSurface& a, const ReplicatedSurface& b) {
 // Two boxes one above the other (two blocks), maybe with the upper one's bottom side set listed
 // backwards: a file's side sets need not be in element order.
 Mesh twoBodies(bool reversedSideSet = true) {
-  BoxSpec lower, upper;
-  lower.nx = 4;
-  lower.ny = 2;
-  lower.nz = 3;
-  upper.nx = 3;
-  upper.ny = 2;
-  upper.nz = 2;
-  upper.y0 = 1;
+  const BoxSpec lower = test_support::boxSpec(4, 2, 3);
+  BoxSpec upper = test_support::boxSpec(3, 2, 2, 1, 1, 1, 0, 1);
   upper.biasX = 2;
   Mesh mesh = mergeMeshes({{"lower", generateBox(lower)}, {"upper", generateBox(upper)}});
   for (auto& set : mesh.sideSets)

@@ -20,11 +20,21 @@ inline RectangleSpec rectangleSpec(int nx, int ny, double lx = 1, double ly = 1,
   return spec;
 }
 
+/// An Annulus Sector of the given element counts over radii [innerRadius, innerRadius + thickness] and
+/// angles [startDeg, endDeg] (the other fields at their defaults).
+inline AnnulusSectorSpec annulusSpec(int throughThickness, int aroundArc, double innerRadius = 100, double thickness = 20,
+                                     double startDeg = 0, double endDeg = 90) {
+  AnnulusSectorSpec spec;
+  spec.elementsThroughThickness = throughThickness, spec.elementsAroundArc = aroundArc;
+  spec.innerRadius = innerRadius, spec.thickness = thickness;
+  spec.startAngleDeg = startDeg, spec.endAngleDeg = endDeg;
+  return spec;
+}
+
 /// A Hollow Cylinder Sector of `layers` layers over the default ring of the given element counts.
 inline HollowCylinderSectorSpec tubeSpec(int throughThickness, int aroundArc, int layers) {
   HollowCylinderSectorSpec spec;
-  spec.section.elementsThroughThickness = throughThickness;
-  spec.section.elementsAroundArc = aroundArc;
+  spec.section = annulusSpec(throughThickness, aroundArc);
   spec.layers = layers;
   return spec;
 }
