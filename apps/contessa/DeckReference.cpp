@@ -84,6 +84,14 @@ std::string deckReference() {
     md << "#### `Law` = `" << law << "`\n\n" << deck::ContactLawFactory::description(law) << ".\n\n";
     describe(md, *deck::ContactLawFactory::validParameters(law), "Problem/Contact/<name>", 5);
   }
+  md << "### `Problem/Load Steps/<step>`\n\n"
+        "Optional; the steps run in the order written, each a continuation in its own load factor from 0 to 1 "
+        "(docs/user-guide.md, \"Load Steps\"). Its sublists name end values: `Dirichlet Conditions/<condition>` "
+        "(double), `Loads/<load or nodal force>` (double for a Pressure or a Nodal Force, Array(double) for a "
+        "Traction or a Body Force), `Contact/<interface>/Motion` (Array(double)) and `/Friction Coefficient` "
+        "(double); `Amplitude` has `Times` and `Values` (Array(double)); `Step Size` takes the parameters of "
+        "`Piro/LOCA/Step Size`.\n\n";
+  describe(md, *deck::loadStepValidParameters(), "Problem/Load Steps/<step>", 4);
   md << "### `Problem/Regression/<name>`\n\n";
   describe(md, *deck::regressionValidParameters(), "Problem/Regression/<name>", 4);
   md << "## `Piro`\n\n";

@@ -97,6 +97,7 @@ struct ValidatedInput {
   std::shared_ptr<const deck::ProblemDefinition> problem;  ///< shared with the model
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
   output::RunDescription description;
+  std::vector<Teuchos::ParameterList> stepSizes;  ///< per load step (none without Problem/Load Steps)
 };
 
 // The whole deck is validated before anything runs. Rank 0 reads the deck file once; every rank
@@ -121,6 +122,7 @@ ValidatedInput readInput(const CommandLine& cl, const Teuchos::Comm<int>& comm) 
     input.problem = std::make_shared<const deck::ProblemDefinition>(
         deck::buildProblem(input.deck->sublist("Problem"), deckDirectory));
     solvers::validatePiro(input.deck->sublist("Piro"), comm.getSize());
+    input.stepSizes = solvers::loadStepSizes(*input.problem, input.deck->sublist("Piro"));
     input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"));
 
     std::error_code ec;
@@ -155,7 +157,8 @@ Teuchos::RCP<model::ContactMechanicsModel> buildModel(const CommandLine& cl,
 solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::ContactMechanicsModel>& model,
                           Teuchos::ParameterList& piro, bool continuation, output::ResultsOutput& results,
                           RunCheckpoints& checkpoints,
-                          const std::shared_ptr<const solvers::ContinuationPoint>& resumed) {
+                          const std::shared_ptr<const solvers::ContinuationPoint>& resumed,
+                          const std::vector<Teuchos::ParameterList>& stepSizes) {
   timers::switchTo(timers::Phase::Other);
   solvers::RunSummary summary;
   // --check-jacobian: a NOX observer of the solves that sees the increment reports before the output.
@@ -171,6 +174,7 @@ solvers::RunSummary solve(const CommandLine& cl, const Teuchos::RCP<model::Conta
       solvers::ContinuationDriver driver(solvers::SolverModel::of(model), piro, observer, jacobianCheck);
       driver.setCheckpointControl(&checkpoints);
       if (resumed) driver.resumeFrom(resumed);
+      driver.setLoadSteps(stepSizes);
       summary = driver.run();
     }
   } catch (const std::exception&) {
@@ -296,7 +300,8 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   // 3. The solve, its outcome and the run's summary.
   RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
                              problem.maxWallSeconds, start, !cl.quiet);
-  const solvers::RunSummary summary = solve(cl, model, piro, continuation, results, checkpoints, resumed);
+  const solvers::RunSummary summary = solve(cl, model, piro, continuation, results, checkpoints, resumed,
+                                                input.stepSizes);
   CommandLine continued = cl;  // the command that continues the run, literally (with the same launcher)
   continued.restart = restartPath;
   const int exitStatus = reportOutcome(summary, problem, results, restartPath, commandLineText(continued), *comm);

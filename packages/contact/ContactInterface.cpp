@@ -72,6 +72,14 @@ class ContactInterface final : public ContactInterfaceBase {
         lastSlave_(spec_.slaveNodes.size()) {}
 
   std::unique_ptr<ContactInterfaceBase> clone() const override { return std::make_unique<ContactInterface>(*this); }
+  void setRigidMotion(const std::vector<double>& offset, const std::vector<double>& motion) override {
+    master_.setMotion(offset, motion);
+  }
+  void setFrictionCoefficient(double mu) override {
+    spec_.law.frictionCoefficient = mu;
+    spec_.law.validate();
+    element_ = NodeToFacetContact<Facet>(spec_.law);
+  }
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) override;
   std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const override;
   std::vector<TunnellingNode> tunnellingNodes() const override;

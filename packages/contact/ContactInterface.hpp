@@ -78,6 +78,12 @@ class ContactInterfaceBase {
   /// facet's straight motion (SweptCrossing) among the candidates of a tree of swept boxes, so the check
   /// costs O((n + m) log m).
   virtual std::vector<TunnellingNode> tunnellingNodes() const = 0;
+  /// Load steps (continuation::LoadSchedule): a rigid master's points at X + offset + a · motion, a the
+  /// load factor evaluate() is given; nothing for a deformable master.
+  virtual void setRigidMotion(const std::vector<double>& offset, const std::vector<double>& motion) = 0;
+  /// Load steps: the Coulomb coefficient μ of the evaluations from now on (InputError if the law cannot
+  /// take it).
+  virtual void setFrictionCoefficient(double mu) = 0;
   /// The increment converged: trial → committed (and the master positions the history refers to).
   virtual void commit() = 0;
   /// The increment is abandoned: back to the committed state.

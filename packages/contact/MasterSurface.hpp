@@ -41,6 +41,16 @@ class MasterSurface {
 
   std::size_t size() const { return nodes_.size(); }
 
+  /// A rigid master's points at X + offset + λ · motion (load steps: offset the step's start, motion its
+  /// change); nothing for a deformable master.
+  void setMotion(const std::vector<double>& offset, const std::vector<double>& motion) {
+    if (!rigid_) return;
+    for (int c = 0; c < kDim; ++c) {
+      offset_[c] = offset.at(c);
+      motion_[c] = motion.at(c);
+    }
+  }
+
   /// Every facet at the current positions (mesh nodes from `position`, rigid points at X + λ · motion).
   std::vector<MasterFacetNodes<Facet>> facets(const ContactInterfaceBase::NodePosition& position,
                                               double loadFactor) const {
@@ -54,7 +64,7 @@ class MasterSurface {
           position(node, out[f].x[a].data());
         } else {
           const Point& X = points_[static_cast<std::size_t>(-1 - node)];
-          for (int c = 0; c < kDim; ++c) out[f].x[a][c] = X[c] + loadFactor * motion_[c];
+          for (int c = 0; c < kDim; ++c) out[f].x[a][c] = X[c] + offset_[c] + loadFactor * motion_[c];
         }
       }
     }
@@ -86,6 +96,7 @@ class MasterSurface {
   std::vector<std::array<GlobalIndex, kNodes>> nodes_;
   std::vector<Point> points_;
   Point motion_{};
+  Point offset_{};  ///< 0 but in a load step after the one that moved the surface
 };
 
 }  // namespace contessa::contact

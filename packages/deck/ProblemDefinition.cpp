@@ -26,7 +26,8 @@ using Teuchos::rcp;
 using mesh::GlobalIndex;
 
 const char* kOpenLists[] = {"Mesh",         "Blocks",     "Materials", "Dirichlet Conditions", "Nodal Forces",
-                            "Loads",        "Regression", "Contact",   "Output/History"};
+                            "Loads",        "Regression", "Contact",   "Output/History",
+                            "Load Steps"};
 
 // A mesh list's parameters validated (defaults filled in) on every rank; returns its type.
 std::string validateMeshList(ParameterList& list, const std::string& where, bool isPart) {
@@ -324,6 +325,9 @@ RCP<const ParameterList> problemValidParameters() {
                  "the time of the last restart-file write would pass it");
   p->sublist("Regression", false, "Expected answers (one sublist per check): Quantity, Step, Expected, tolerances");
   p->sublist("Contact", false, "One sublist per contact interface (any name): slave, master, penalties, friction");
+  p->sublist("Load Steps", false,
+             "Optional ordered steps (one sublist per step, any name), each naming the end values of what changes in "
+             "it; see Load Steps below");
   return p;
 }
 
@@ -489,6 +493,8 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
   buildContacts(problem.sublist("Contact"), def);
   def.history = buildHistoryRequests(problem.sublist("Output").sublist("History"), def);
   def.regression = buildRegression(problem.sublist("Regression"));
+  def.loadSteps = buildLoadSteps(problem.sublist("Load Steps"), def);
+  requireLoadStepsChange(def);
   return def;
 }
 

@@ -12,6 +12,7 @@
 
 #include "contact/InterfaceSpec.hpp"
 #include "deck/LoadDefinitions.hpp"
+#include "deck/LoadStepDefinitions.hpp"
 #include "deck/OutputRequests.hpp"
 #include "mechanics/Element.hpp"
 #include "mechanics/Material.hpp"
@@ -75,6 +76,9 @@ struct ProblemDefinition {
   std::vector<HistoryRequest> history;  ///< Problem/Output/History: point histories (OutputRequests.hpp)
   /// Contact interfaces; a two-pass interface appears twice (the second with the roles swapped).
   std::vector<contact::ContactInterfaceSpec> contacts;
+  /// Problem/Load Steps in the order written (LoadStepDefinitions.hpp); empty: one step ending at the
+  /// deck's values (a single proportional load factor).
+  std::vector<LoadStepDefinition> loadSteps;
 };
 
 /// Valid parameters of each part, with docs and defaults (published for the deck reference).

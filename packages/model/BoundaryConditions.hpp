@@ -1,14 +1,19 @@
 #pragma once
-// The deck's boundary conditions on the DOF layout: Dirichlet rows with their values ū at λ = 1, the
-// dead external forces f_ext at λ = 1 (nodal forces, and the tractions and body forces of Problem/Loads),
-// the springs to ground (Problem/Loads, Type Spring), and the follower loads (ExternalLoads, which the
-// model's assembly pass calls). They turn the assembled forces into the residual of the model,
-// f = f_int + r_c − λ f_p(x) − λ f_ext + K_s u on free rows and u − λ ū on prescribed rows, and its ∂/∂λ.
+// The deck's boundary conditions on the DOF layout: Dirichlet rows with their values ū, the dead
+// external forces f_ext (nodal forces, and the tractions and body forces of Problem/Loads), the springs
+// to ground (Problem/Loads, Type Spring), and the follower loads (ExternalLoads, which the model's
+// assembly pass calls). In a load step (continuation::LoadSchedule) ū = ū_0 + a Δū and f_ext = f_0 +
+// a Δf, a = a(λ) the step's amplitude; without load steps ū_0 = f_0 = 0, a = λ and Δū, Δf the deck's
+// values. They turn the assembled forces into the residual of the model,
+// f = f_int + r_c − f_p(x) − f_ext + K_s u on free rows and u − ū on prescribed rows, and its ∂/∂λ.
 // A spring is a support: its force −K_s u is the reaction of its node set (reactions: f_int − λ f_ext
 // with the follower loads in the assembled forces, the springs not).
+#include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "continuation/LoadSchedule.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "model/DofLayout.hpp"
 #include "model/ExternalLoads.hpp"
@@ -22,15 +27,18 @@ class BoundaryConditions {
 
   ~BoundaryConditions();
 
-  /// f = force − λ f_ext + K_s x on free rows, x − λ ū on prescribed rows (owned vectors).
-  void residual(const Vector& force, const Vector& x, double lambda, Vector& f) const;
-  /// d = ∂force/∂λ − f_ext on free rows (a rigid master moves with λ), −ū on prescribed rows.
-  void dResidualdLambda(const Vector& dForcedLambda, Vector& d) const;
+  /// The values of load step `step` of `schedule` (start and change of every condition and load).
+  void setLoadStep(const continuation::LoadSchedule& schedule, int step);
+
+  /// f = force − f_ext + K_s x on free rows, x − ū on prescribed rows (owned vectors), at amplitude a.
+  void residual(const Vector& force, const Vector& x, double a, Vector& f) const;
+  /// d = ∂force/∂λ − a' Δf on free rows (a rigid master moves with λ), −a' Δū on prescribed rows.
+  void dResidualdLambda(const Vector& dForcedLambda, double slope, Vector& d) const;
+  /// v −= f_ext at amplitude a (dead loads and nodal forces; owned).
+  void subtractExternalForce(double a, Vector& v) const;
 
   /// Owned local rows with a Dirichlet condition (rows of the identity in the Jacobian).
   const std::vector<LO>& prescribedRows() const { return prescribedRows_; }
-  /// Dead f_ext at λ = 1 (owned): nodal forces, tractions, body forces.
-  const Vector& externalForce() const { return *externalForce_; }
   /// The loads on sets; the model's assembly pass assembles their follower part.
   const ExternalLoads& loads() const { return *loads_; }
   /// Adds each spring's stiffness k to its diagonal entry (owned rows, overlapped numbering) through
@@ -41,9 +49,17 @@ class BoundaryConditions {
   }
 
  private:
+  /// Dead f_ext of the values `value(name)` of the loads and nodal forces (owned).
+  Teuchos::RCP<Vector> deadForce(const std::function<std::vector<double>(const std::string&)>& value,
+                                 bool change) const;
+
+  const deck::ProblemDefinition& problem_;
+  const DofLayout& layout_;
   std::vector<LO> prescribedRows_;        ///< owned local rows with a Dirichlet condition
-  std::vector<double> prescribedValues_;  ///< ū at λ = 1, per prescribed row
-  Teuchos::RCP<Vector> externalForce_;
+  std::vector<std::string> prescribedBy_;  ///< the condition of each prescribed row
+  std::vector<double> prescribedStart_, prescribedChange_;  ///< ū_0 and Δū per prescribed row
+  Teuchos::RCP<Vector> startForce_, changeForce_;           ///< f_0 and Δf
+  bool hasStartForce_ = false;
   std::unique_ptr<ExternalLoads> loads_;
   // Springs to ground, one entry per owned DOF with a spring (stiffnesses of several sets summed).
   std::vector<LO> springRows_;            ///< owned local rows

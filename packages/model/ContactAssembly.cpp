@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/LoadStepping.hpp"
+
 namespace contessa::model {
 
 using contact::GlobalIndex;
@@ -102,8 +104,27 @@ contact::ContactInterfaceBase::NodePosition ContactAssembly::positions(const dou
   };
 }
 
+void ContactAssembly::setLoadStep(const continuation::LoadSchedule& schedule, int step) {
+  frictionStart_.assign(interfaces_.size(), 0.0);
+  frictionChange_.assign(interfaces_.size(), 0.0);
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    auto& c = *interfaces_[i];
+    const std::string& name = c.spec().name;
+    if (c.spec().rigidMaster) c.setRigidMotion(schedule.start(step, motionKey(name)), schedule.change(step, motionKey(name)));
+    frictionStart_[i] = schedule.start(step, frictionKey(name))[0];
+    frictionChange_[i] = schedule.change(step, frictionKey(name))[0];
+    if (c.spec().law.frictionCoefficient != frictionStart_[i]) c.setFrictionCoefficient(frictionStart_[i]);
+  }
+}
+
+void ContactAssembly::frictionAt(double a) const {
+  for (std::size_t i = 0; i < frictionChange_.size(); ++i)
+    if (frictionChange_[i] != 0.0) interfaces_[i]->setFrictionCoefficient(frictionStart_[i] + a * frictionChange_[i]);
+}
+
 bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial, double* fo, double* dl,
-                               StiffnessScatter* scatter) {
+                               StiffnessScatter* scatter, double slope) {
+  frictionAt(lambda);
   // Each slave node's owner adds its contact element; rigid masters have no DOFs.
   const int dim = layout_.dimension();
   const bool withStiffness = scatter != nullptr;
@@ -132,7 +153,7 @@ bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                const int m = static_cast<int>(local.size());
                                for (int a = 0; a < m; ++a) {
                                  fo[local[a]] += r[entry[a]];
-                                 dl[local[a]] += drdl[entry[a]];
+                                 dl[local[a]] += slope * drdl[entry[a]];
                                }
                                if (!withStiffness) return;
                                // dofs: the slave node's, then the master facet's nodes'. A master node beyond the
@@ -199,6 +220,7 @@ std::vector<contact::SlaveNodeChange> ContactAssembly::collect(const Changes& ch
 
 std::vector<contact::SlaveNodeChange> ContactAssembly::changesAt(const double* u, double lambda) const {
   const auto position = positions(u);
+  frictionAt(lambda);
   return collect([&](const contact::ContactInterfaceBase& c) { return c.changesAt(position, lambda); });
 }
 

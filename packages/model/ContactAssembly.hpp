@@ -12,6 +12,7 @@
 
 #include "contact/ContactInterface.hpp"
 #include "contact/CouplingReservation.hpp"
+#include "continuation/LoadSchedule.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "common/StateRecord.hpp"
 #include "model/DofLayout.hpp"
@@ -42,8 +43,13 @@ class ContactAssembly {
   /// a slave node (of any rank) met a master facet outside the reserved couplings — their tangents are
   /// then incomplete, and the caller reserves again (reserveAround), rebuilds the graph and assembles
   /// again; throws std::logic_error when a reserved coupling is missing from the graph (a defect).
+  /// In a load step (setLoadStep) `lambda` is the step's amplitude a, and ∂r_c/∂λ is scaled by its slope
+  /// a' (the rigid masters move with a).
   bool assemble(const double* u, double lambda, bool updateTrial, double* force, double* dForcedLambda,
-                StiffnessScatter* scatter);
+                StiffnessScatter* scatter, double slope = 1.0);
+  /// Load step `step` of `schedule`: each rigid master's motion (X + start + a · change) and friction
+  /// coefficient (start + a · change: set before every evaluation where the step changes it).
+  void setLoadStep(const continuation::LoadSchedule& schedule, int step);
   /// After assemble() returned false: the first pairing outside the reservation (the same words on every
   /// rank), e.g. "contact interface 'strip': slave node 80 met a master facet beyond the reserved reach 0.5".
   const std::string& outsideReservation() const { return outside_; }
@@ -97,6 +103,9 @@ class ContactAssembly {
   std::vector<int> outsideByInterface_;  ///< per interface: the last stiffness pass met a pairing outside (all ranks)
   std::string outside_;                  ///< the first of them, in words
   bool frozen_ = false;
+  std::vector<double> frictionStart_, frictionChange_;  ///< per interface, of the current load step
+  /// Sets each interface's friction coefficient at amplitude a where the load step changes it.
+  void frictionAt(double a) const;
 };
 
 }  // namespace contessa::model

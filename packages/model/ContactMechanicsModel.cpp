@@ -59,6 +59,9 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
   passDfdLambda_ = rcp(new Vector(layout_->ownedMap()));
   conditions_ = std::make_unique<BoundaryConditions>(problem_, *layout_);
   results_ = std::make_unique<PostProcessing>(problem_, *layout_, *solids_, *contact_);
+  schedule_ = loadScheduleOf(problem_);
+  // Without load steps the parts keep the values they were made with (start 0, the deck's values).
+  if (!problem_.loadSteps.empty()) setLoadStep(0);
 
   xSpace_ = Thyra::createVectorSpace<double>(layout_->ownedMap());
   // λ is replicated: a locally replicated map of one entry.
@@ -168,6 +171,8 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   const auto phase = [&](Phase p) { return updateTrial ? p : Phase::Reactions; };
   timers::Scope assemblyScope(phase(Phase::Assembly));
   const auto u = overlapped(x);
+  // The step's amplitude a(λ) and its slope: every scheduled value is start + a · change.
+  const double a = schedule_.amplitude(loadStep_, lambda), slope = schedule_.amplitudeSlope(loadStep_, lambda);
   overlapForce_->putScalar(0.0);
   overlapDfdLambda_->putScalar(0.0);
   auto fo = overlapForce_->getDataNonConst(0);
@@ -185,15 +190,15 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   elementScope.reset();
   {
     timers::Scope contactScope(phase(Phase::Contact));
-    contactFitsGraph_ = contact_->assemble(u.getRawPtr(), lambda, updateTrial, fo.getRawPtr(), dl.getRawPtr(),
-                                           withStiffness ? scatter_.get() : nullptr);
+    contactFitsGraph_ = contact_->assemble(u.getRawPtr(), a, updateTrial, fo.getRawPtr(), dl.getRawPtr(),
+                                           withStiffness ? scatter_.get() : nullptr, slope);
   }
-  // Follower loads (the pressures: −λ f_p(x), its ∂/∂λ and load stiffness) through the same scatter as the
+  // Follower loads (the pressures: −f_p(x), its ∂/∂λ and load stiffness) through the same scatter as the
   // elements' (their facets couple only their element's DOFs); the springs' diagonal.
   const ExternalLoads::StiffnessSink facetSink = [this](const int* dofs, int n, const double* k) {
     scatter_->addStiffness(dofs, n, k);
   };
-  conditions_->loads().assembleFollowerLoads(u.getRawPtr(), lambda, fo.getRawPtr(), dl.getRawPtr(),
+  conditions_->loads().assembleFollowerLoads(u.getRawPtr(), a, slope, fo.getRawPtr(), dl.getRawPtr(),
                                              withStiffness ? &facetSink : nullptr);
   if (withStiffness) conditions_->addSpringStiffness([this](LO dof, double k) { scatter_->addStiffness(&dof, 1, &k); });
   fo = Teuchos::null;
@@ -273,7 +278,7 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
   if (!f.is_null()) lastElementStatus_ = status;
 
   if (!f.is_null()) {
-    conditions_->residual(*passForce_, *x, lambda, *f);
+    conditions_->residual(*passForce_, *x, schedule_.amplitude(loadStep_, lambda), *f);
     // An inadmissible element (inverted, failed internal solve) poisons the residual: NOX's
     // finite-value test then fails the solve and the continuation cuts the step back.
     if (!ok)
@@ -293,8 +298,21 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
   }
   if (!dfdp.is_null()) {
     dfdpTpetra->putScalar(0.0);  // the caller's storage may hold anything, and 0·NaN is NaN
-    conditions_->dResidualdLambda(*passDfdLambda_, *dfdpTpetra->getVectorNonConst(0));
+    conditions_->dResidualdLambda(*passDfdLambda_, schedule_.amplitudeSlope(loadStep_, lambda),
+                                  *dfdpTpetra->getVectorNonConst(0));
   }
+}
+
+void ContactMechanicsModel::setLoadStep(int step) {
+  if (step < 0 || step >= schedule_.numSteps())
+    throw std::logic_error("ContactMechanicsModel: load step " + std::to_string(step) + " of " +
+                           std::to_string(schedule_.numSteps()));
+  loadStep_ = step;
+  conditions_->setLoadStep(schedule_, step);
+  contact_->setLoadStep(schedule_, step);
+  // λ now means the new step's load factor: no earlier pass serves an evaluation or the reactions.
+  passServesEvaluations_ = false;
+  passServesReactions_ = false;
 }
 
 void ContactMechanicsModel::commitState() {
@@ -433,7 +451,7 @@ std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::committedIn
 std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrementAt(const Vector& x,
                                                                                       double loadFactor) const {
   const auto u = overlapped(x);
-  return results_->incrementAt(u.getRawPtr(), loadFactor);
+  return results_->incrementAt(u.getRawPtr(), schedule_.amplitude(loadStep_, loadFactor));
 }
 
 std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrementAt(const Thyra::VectorBase<double>& x,
@@ -451,7 +469,7 @@ RCP<MultiVector> ContactMechanicsModel::elementStresses(const Vector& x) const {
 
 std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, double loadFactor) const {
   timers::Scope scope(timers::Phase::Reactions);
-  // Σ (f_int + contact − λ f_ext): the converged residual before its Dirichlet rows, which the last
+  // Σ (f_int + contact − f_ext): the converged residual before its Dirichlet rows, which the last
   // Newton pass has just computed. Another state needs a pass of its own (leaving the trial state alone).
   Vector fint(layout_->ownedMap());
   if (latestPassIsAt(x, loadFactor, passServesReactions_)) {
@@ -462,7 +480,7 @@ std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, d
     passServesEvaluations_ = false;  // the element pass moved the trial internal variables
     passServesReactions_ = false;
   }
-  fint.update(-loadFactor, conditions_->externalForce(), 1.0);
+  conditions_->subtractExternalForce(schedule_.amplitude(loadStep_, loadFactor), fint);
   return results_->reactions(fint);
 }
 

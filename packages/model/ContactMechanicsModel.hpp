@@ -26,6 +26,7 @@
 #include "deck/ProblemDefinition.hpp"
 #include "io/RestartFile.hpp"
 #include "model/IncrementalState.hpp"
+#include "model/LoadStepping.hpp"
 #include "model/PostProcessing.hpp"
 #include "model/SolveDiagnostics.hpp"
 #include "model/SolidAssembler.hpp"
@@ -48,6 +49,7 @@ struct GraphRebuild {
 
 class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public IncrementalState,
+                              public LoadStepping,
                               public continuation::ContactEventSource,
                               public SolveDiagnostics {
  public:
@@ -80,6 +82,12 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   void restoreCommittedState(const StateRecord& state);
   /// Load factor of the latest evaluation (the one a failed increment was trying to reach).
   double lastLoadFactor() const override { return lastLoadFactor_; }
+
+  // LoadStepping: λ is the current load step's own load factor (continuation::LoadSchedule).
+  int numLoadSteps() const override { return schedule_.numSteps(); }
+  void setLoadStep(int step) override;
+  int loadStep() const override { return loadStep_; }
+  const continuation::LoadSchedule& loadSchedule() const { return schedule_; }
 
   // Post-processing for output, at a converged state (PostProcessing).
   const Teuchos::RCP<const Map>& ownedDofMap() const;
@@ -213,6 +221,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   mutable double graphRebuildSeconds_ = 0;
   std::function<void(const GraphRebuild&)> rebuildObserver_;
   mutable double lastLoadFactor_ = 0;
+  continuation::LoadSchedule schedule_;
+  int loadStep_ = 0;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank
 };
 

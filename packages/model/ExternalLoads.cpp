@@ -33,7 +33,9 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
   const mesh::Mesh& mesh = problem.mesh.local();  // the part: local numbering, its own elements' sides
   for (const auto& load : problem.loads) {
     Entries entries;
-    entries.value = load.type == deck::LoadType::Pressure ? std::vector<double>{load.pressure} : load.vector;
+    entries.name = load.name;
+    entries.change = load.type == deck::LoadType::Pressure ? std::vector<double>{load.pressure} : load.vector;
+    entries.start.assign(entries.change.size(), 0.0);
     if (load.type == deck::LoadType::Pressure || load.type == deck::LoadType::Traction) {
       const mesh::SideSet& set = mesh.sideSet(load.set);
       for (std::size_t k = 0; k < set.elements.size(); ++k) {
@@ -66,19 +68,29 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
   }
 }
 
-void ExternalLoads::addDeadLoads(double* f) const {
+void ExternalLoads::setStepValues(const std::function<std::vector<double>(const std::string&)>& start,
+                                  const std::function<std::vector<double>(const std::string&)>& change) {
+  for (auto* group : {&pressureFacets_, &tractionFacets_, &bodyCells_})
+    for (auto& entries : *group) {
+      entries.start = start(entries.name);
+      entries.change = change(entries.name);
+    }
+}
+
+void ExternalLoads::addDeadLoads(double* f, bool change) const {
   std::vector<double> fe;
   const auto add = [&](const Entries& entries, bool cells) {
+    const std::vector<double>& value = change ? entries.change : entries.start;
     const int n = entries.nodes * dim_;
     fe.resize(static_cast<std::size_t>(n));
     for (std::size_t k = 0; k < entries.count; ++k) {
       const double* X = entries.X.data() + k * n;
       if (cells) {
-        if (dim_ == 2) mechanics::bodyForce<2>(X, entries.value.data(), *measure_, fe.data());
-        else mechanics::bodyForce<3>(X, entries.value.data(), *measure_, fe.data());
+        if (dim_ == 2) mechanics::bodyForce<2>(X, value.data(), *measure_, fe.data());
+        else mechanics::bodyForce<3>(X, value.data(), *measure_, fe.data());
       } else {
-        if (dim_ == 2) mechanics::facetTraction<2>(X, entries.value.data(), *measure_, fe.data());
-        else mechanics::facetTraction<3>(X, entries.value.data(), *measure_, fe.data());
+        if (dim_ == 2) mechanics::facetTraction<2>(X, value.data(), *measure_, fe.data());
+        else mechanics::facetTraction<3>(X, value.data(), *measure_, fe.data());
       }
       for (int i = 0; i < n; ++i) f[entries.dofs[k * n + i]] += fe[i];
     }
@@ -87,32 +99,42 @@ void ExternalLoads::addDeadLoads(double* f) const {
   for (const auto& entries : bodyCells_) add(entries, true);
 }
 
-void ExternalLoads::assembleFollowerLoads(const double* u, double lambda, double* force, double* dForcedLambda,
-                                          const StiffnessSink* stiffness) const {
-  std::vector<double> x, fe, ke;
+void ExternalLoads::assembleFollowerLoads(const double* u, double a, double slope, double* force,
+                                          double* dForcedLambda, const StiffnessSink* stiffness) const {
+  std::vector<double> x, fe, ke, fe0, ke0;
   for (const auto& entries : pressureFacets_) {
     const int n = entries.nodes * dim_;
     x.resize(static_cast<std::size_t>(n));
     fe.resize(static_cast<std::size_t>(n));
+    fe0.resize(static_cast<std::size_t>(n));
     ke.resize(stiffness ? static_cast<std::size_t>(n * n) : 0);
-    const double p = entries.value[0];
+    ke0.resize(ke.size());
+    const double p0 = entries.start[0], dp = entries.change[0];
     for (std::size_t k = 0; k < entries.count; ++k) {
       const int* dofs = entries.dofs.data() + k * n;
       for (int i = 0; i < n; ++i) x[i] = entries.X[k * n + i] + u[dofs[i]];  // current position
       double* K = stiffness ? ke.data() : nullptr;
-      if (dim_ == 2) mechanics::followerPressure<2>(x.data(), p, *measure_, fe.data(), K);
-      else mechanics::followerPressure<3>(x.data(), p, *measure_, fe.data(), K);
-      // f_p is linear in p: f_p(λ p) = λ f_p(p), ∂/∂λ = f_p(p); the residual carries −f_ext.
+      facetPressure(x.data(), dp, fe.data(), K);
+      // f_p is linear in p: f_p(p_0 + a Δp) = f_p(p_0) + a f_p(Δp), ∂/∂λ = a' f_p(Δp); the residual
+      // carries −f_ext. Without load steps p_0 = 0 and a = λ.
       for (int i = 0; i < n; ++i) {
-        force[dofs[i]] -= lambda * fe[i];
-        dForcedLambda[dofs[i]] -= fe[i];
+        force[dofs[i]] -= a * fe[i];
+        dForcedLambda[dofs[i]] -= slope * fe[i];
       }
-      if (K) {
-        for (double& v : ke) v *= -lambda;
-        (*stiffness)(dofs, n, K);
+      if (K) for (double& v : ke) v *= -a;
+      if (p0 != 0.0) {
+        facetPressure(x.data(), p0, fe0.data(), K ? ke0.data() : nullptr);
+        for (int i = 0; i < n; ++i) force[dofs[i]] -= fe0[i];
+        if (K) for (std::size_t i = 0; i < ke.size(); ++i) ke[i] -= ke0[i];
       }
+      if (K) (*stiffness)(dofs, n, K);
     }
   }
+}
+
+void ExternalLoads::facetPressure(const double* x, double p, double* fe, double* K) const {
+  if (dim_ == 2) mechanics::followerPressure<2>(x, p, *measure_, fe, K);
+  else mechanics::followerPressure<3>(x, p, *measure_, fe, K);
 }
 
 }  // namespace contessa::model

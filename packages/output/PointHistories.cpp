@@ -74,12 +74,17 @@ void PointHistories::addColumns(const deck::HistoryRequest& request) {
         if (force.component != c) continue;
         const auto& forceSet = part.local().nodeSet(force.nodeSet);
         const auto setIndex = static_cast<std::size_t>(&forceSet - part.local().nodeSets.data());
-        const double share = force.totalForce / static_cast<double>(part.globalNodeSetSizes[setIndex]);
+        const double setSize = static_cast<double>(part.globalNodeSetSizes[setIndex]);
+        const double share = force.totalForce / setSize;
+        double fraction = 0.0;
         for (auto localNode : forceSet.nodes) {
           const model::GO node = part.part.globalNodes[localNode];
-          if (nodes.getLocalElement(node) != invalid && std::find(measured.begin(), measured.end(), node) != measured.end())
+          if (nodes.getLocalElement(node) != invalid && std::find(measured.begin(), measured.end(), node) != measured.end()) {
             column.appliedPerLoadFactor += share;
+            fraction += 1.0 / setSize;
+          }
         }
+        column.appliedFractions.emplace_back(force.name, fraction);
       }
     } else {
       for (model::GO node : measured) {
@@ -94,7 +99,7 @@ void PointHistories::addColumns(const deck::HistoryRequest& request) {
 }
 
 std::vector<double> PointHistories::values(const model::Vector& x, double loadFactor,
-                                           const std::vector<model::NodeSetReaction>& reactions) const {
+                                           const std::vector<model::NodeSetReaction>& reactions, int loadStep) const {
   const bool contact = std::any_of(sources_.begin(), sources_.end(), [](const Column& c) {
     return c.source == Column::Source::ContactPressure || c.source == Column::Source::ContactSlip;
   });
@@ -110,7 +115,13 @@ std::vector<double> PointHistories::values(const model::Vector& x, double loadFa
       source = fields->getData(column.source == Column::Source::ContactPressure ? kContactPressure : kContactSlip);
     }
     for (std::size_t r = 0; r < column.rows.size(); ++r) local[k] += column.weights[r] * source[column.rows[r]];
-    local[k] += loadFactor * column.appliedPerLoadFactor;
+    if (problem_.loadSteps.empty()) {
+      local[k] += loadFactor * column.appliedPerLoadFactor;
+    } else {
+      // Load steps: each nodal force at its scheduled value (continuation::LoadSchedule).
+      for (const auto& [name, fraction] : column.appliedFractions)
+        local[k] += fraction * model_.loadSchedule().value(loadStep, model::loadKey(name), loadFactor)[0];
+    }
   }
   if (!sources_.empty())
     Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(),

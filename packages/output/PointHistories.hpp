@@ -4,6 +4,7 @@
 // force, an interface slave node's contact pressure or slip. Each rank adds what it owns and the sums
 // are reduced, so every rank gets the same row whichever rank owns the node.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deck/ProblemDefinition.hpp"
@@ -20,10 +21,11 @@ class PointHistories {
 
   /// The requests' columns, in deck order (also their Exodus globals).
   const std::vector<std::string>& columns() const { return columns_; }
-  /// Collective: the values of columns() at the converged displacement `x` and load factor λ, given the
-  /// model's reactions there (over problem.reactionNodeSets).
+  /// Collective: the values of columns() at the converged displacement `x` and load factor λ of load step
+  /// `loadStep` (0 without Problem/Load Steps), given the model's reactions there (over
+  /// problem.reactionNodeSets).
   std::vector<double> values(const model::Vector& x, double loadFactor,
-                             const std::vector<model::NodeSetReaction>& reactions) const;
+                             const std::vector<model::NodeSetReaction>& reactions, int loadStep = 0) const;
 
  private:
   /// What this rank adds to one column: Σ weight · source[row] over its owned rows, plus a constant that
@@ -34,6 +36,9 @@ class PointHistories {
     std::vector<int> rows;          ///< owned local rows of x (displacement) or of the contact fields
     std::vector<double> weights;    ///< per row
     double appliedPerLoadFactor = 0;  ///< Applied: this rank's share of Σ f_ext on the set's nodes
+    /// Applied, with load steps: per nodal force (its name), the fraction of its total on this rank's
+    /// nodes of the set (the force's value comes from the schedule).
+    std::vector<std::pair<std::string, double>> appliedFractions;
     std::size_t reaction = 0;       ///< Reaction: index into the reactions
     int component = 0;
   };

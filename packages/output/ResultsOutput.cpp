@@ -69,6 +69,8 @@ std::vector<std::string> forceColumns(const deck::ProblemDefinition& problem,
                                       const model::ContactMechanicsModel& model) {
   const int dim = problem.dimension();
   std::vector<std::string> columns = kFixedColumns;
+  // Load steps: the step (1 for the first) and the time that runs on across steps (lambda is λ_s of the step).
+  if (!problem.loadSteps.empty()) columns.insert(columns.end(), {"load_step", "time"});
   for (const auto& set : problem.reactionNodeSets)
     if (hasReactionColumns(problem, set))
       for (int c = 0; c < dim; ++c) columns.push_back("reaction_" + set + "_" + kAxes[c]);
@@ -196,7 +198,8 @@ std::vector<io::ExodusSurfaceBlock> ResultsOutput::rigidSurfaceBlocks() {
                                  {surface.facets.begin(), surface.facets.end()}};
     const auto points = static_cast<mesh::GlobalIndex>(surface.points.size()) / dim;
     rigidSurfaces_.push_back(RigidSurface{blockName, static_cast<std::size_t>(points),
-                                          std::vector<double>(surface.motion.begin(), surface.motion.end())});
+                                          std::vector<double>(surface.motion.begin(), surface.motion.end()),
+                                          contact.name});
     surfaceBlocks.push_back(std::move(block));
   }
   return surfaceBlocks;
@@ -430,21 +433,25 @@ std::vector<double> ResultsOutput::historyRow(const model::Vector& x, const solv
                              static_cast<double>(counts.slip),
                              report.residualNorm, report.wallSeconds,
                              static_cast<double>(report.linearIterations)};
+  if (!problem_.loadSteps.empty()) {
+    row.push_back(report.loadStep + 1);
+    row.push_back(model_.loadSchedule().time(report.loadStep, report.lambda));
+  }
   const auto reactions = model_.reactions(x, report.lambda);
   for (const auto& r : reactions)
     if (hasReactionColumns(problem_, r.nodeSet))
       for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
   for (const auto& [name, force] : model_.contactForces())
     for (int c = 0; c < dim; ++c) row.push_back(force[c]);
-  const auto histories = histories_->values(x, report.lambda, reactions);
+  const auto histories = histories_->values(x, report.lambda, reactions, report.loadStep);
   row.insert(row.end(), histories.begin(), histories.end());
   return row;
 }
 
 void ResultsOutput::writeExodusStep(const FileValues& values, const solvers::IncrementReport& report,
                                     const contact::ContactCounts& counts, const std::vector<double>& row) {
-  // Nodal values: the file's mesh nodes, then the rigid surfaces' points (displaced by λ · motion,
-  // no contact values of their own).
+  // Nodal values: the file's mesh nodes, then the rigid surfaces' points (displaced by their scheduled
+  // motion, λ · Motion without load steps; no contact values of their own).
   const int dim = problem_.dimension();
   const auto meshNodes = static_cast<std::size_t>(fileNodeMap_->getNodeNumElements());
   const auto totalNodes = static_cast<std::size_t>(exodus_->numNodes());
@@ -453,9 +460,15 @@ void ResultsOutput::writeExodusStep(const FileValues& values, const solvers::Inc
   for (std::size_t n = 0; n < meshNodes; ++n)
     for (int c = 0; c < dim; ++c) nodal[c][n] = u[n * dim + c];
   std::size_t point = meshNodes;
-  for (const auto& surface : rigidSurfaces_)
+  const auto& schedule = model_.loadSchedule();
+  for (const auto& surface : rigidSurfaces_) {
+    const auto motion = problem_.loadSteps.empty()
+                            ? surface.motion
+                            : schedule.value(report.loadStep, model::motionKey(surface.interfaceName), report.lambda);
+    const double scale = problem_.loadSteps.empty() ? report.lambda : 1.0;
     for (std::size_t p = 0; p < surface.points; ++p, ++point)
-      for (int c = 0; c < dim; ++c) nodal[c][point] = report.lambda * surface.motion[c];
+      for (int c = 0; c < dim; ++c) nodal[c][point] = scale * motion[c];
+  }
   if (model_.hasContact())
     for (std::size_t v = 0; v < 4; ++v) {
       const auto col = values.contact.getData(v);
@@ -470,7 +483,9 @@ void ResultsOutput::writeExodusStep(const FileValues& values, const solvers::Inc
   std::vector<double> globals = {report.lambda, report.dlambda, report.beta, static_cast<double>(counts.active),
                                  static_cast<double>(report.newtonIterations)};
   globals.insert(globals.end(), row.begin() + kFixedColumns.size(), row.end());
-  exodus_->writeStep(report.lambda, nodal, element, globals);
+  const double time =
+      problem_.loadSteps.empty() ? report.lambda : model_.loadSchedule().time(report.loadStep, report.lambda);
+  exodus_->writeStep(time, nodal, element, globals);
 }
 
 void ResultsOutput::attemptFailed(const solvers::IncrementReport& report) {

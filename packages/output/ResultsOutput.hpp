@@ -72,6 +72,7 @@ class ResultsOutput : public solvers::IncrementObserver {
     std::string name;
     std::size_t points = 0;
     std::vector<double> motion;  ///< displacement at λ = 1, one entry per component
+    std::string interfaceName;   ///< its contact interface (the load steps' schedule key)
   };
 
   /// What the Exodus file(s) are made of.

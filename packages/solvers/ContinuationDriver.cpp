@@ -1,5 +1,6 @@
 #include "solvers/ContinuationDriver.hpp"
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -33,8 +34,8 @@ using Teuchos::rcp;
 namespace {
 
 // The parameter list LOCA and NOX read, made from the validated deck list.
-RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, const RCP<NOX::Observer>& observer,
-                                           const RCP<std::ostringstream>& errors) {
+RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, const Teuchos::ParameterList& stepSize,
+                                           const RCP<NOX::Observer>& observer, const RCP<std::ostringstream>& errors) {
   auto top = rcp(new Teuchos::ParameterList("Contessa solver"));
   setNoxParameters(top->sublist("NOX"), piro.sublist("NOX"), observer, Teuchos::rcp_implicit_cast<std::ostream>(errors),
                    NoxPrinting::Continuation);
@@ -46,7 +47,7 @@ RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, c
   stepper.set("Continuation Parameter", "Load Factor");
   stepper.set("Compute Eigenvalues", false);
   loca.sublist("Predictor").setParameters(deckLoca.sublist("Predictor"));
-  loca.sublist("Step Size").setParameters(deckLoca.sublist("Step Size"));
+  loca.sublist("Step Size").setParameters(stepSize);
   return top;
 }
 
@@ -63,7 +64,8 @@ std::unique_ptr<NewtonStatusTests> newtonTests(const SolverModel& model, const T
 
 // How the continuation ended, when it did not reach Max Value.
 StopCause stopCause(const IncrementBookkeeper& bookkeeper, const NewtonCounter& newton, const StepControl& stepControl,
-                    const Teuchos::ParameterList& loca, double initialLambda, const std::string& locaErrors) {
+                    const Teuchos::ParameterList& loca, const Teuchos::ParameterList& stepSize, double initialLambda,
+                    const std::string& locaErrors) {
   StopCause cause;
   cause.initialStateSolved = bookkeeper.initialStateSolved();
   cause.initialLambda = initialLambda;
@@ -71,7 +73,7 @@ StopCause stopCause(const IncrementBookkeeper& bookkeeper, const NewtonCounter& 
   cause.increments = bookkeeper.increments;
   cause.maxSteps = loca.sublist("Stepper").get<int>("Max Steps");
   cause.maxStepsReached = bookkeeper.increments + bookkeeper.failedAttempts >= cause.maxSteps;
-  cause.minStep = loca.sublist("Step Size").get<double>("Min Step Size");
+  cause.minStep = stepSize.get<double>("Min Step Size");
   cause.lastAttemptFailed = bookkeeper.lastAttemptFailed;
   // The initial solve is no step of LOCA's: its failure is the latest solve's.
   cause.failure = cause.initialStateSolved ? bookkeeper.lastFailure : newton.failure;
@@ -83,13 +85,61 @@ StopCause stopCause(const IncrementBookkeeper& bookkeeper, const NewtonCounter& 
 
 }  // namespace
 
+// The continuation of one load step, as the step loop needs it.
+struct ContinuationDriver::StepOutcome {
+  RunSummary summary;  ///< finished, checkpointed, message, and the run's counts so far
+  RCP<IncrementBookkeeper> bookkeeper;
+  RCP<const Thyra::VectorBase<double>> x;  ///< the step's last converged state
+};
+
 ContinuationDriver::ContinuationDriver(const SolverModel& model, const Teuchos::ParameterList& piro,
                                        IncrementObserver& observer, Teuchos::RCP<NOX::Observer> iterationObserver)
     : model_(model), piro_(piro), observer_(observer), iterationObserver_(std::move(iterationObserver)) {}
 
 RunSummary ContinuationDriver::run() {
+  if (stepSizes_.empty()) stepSizes_.push_back(piro_.sublist("LOCA").sublist("Step Size"));
+  const int steps = static_cast<int>(stepSizes_.size());
+  const long solvesBefore = mumpsCounters().solves;
+  const int jacobiansBefore = model_.diagnostics->jacobianEvaluations();
+  const long krylovBefore = iterativeSolveLog().iterations;
+  const double maxValue = piro_.sublist("LOCA").sublist("Stepper").get<double>("Max Value");
+
+  // A restart file's point inside a load step resumes there; one at a step's end (its λ_s at Max Value)
+  // starts the next step from that state, as the uninterrupted run does.
+  StepStart start;
+  if (resume_ != nullptr) {
+    start.step = resume_->loadStep;
+    if (resume_->lambda >= maxValue * (1.0 - 1.0e-15) && resume_->loadStep + 1 < steps) {
+      ++start.step;
+      start.afterResume = resume_.get();
+      start.x = Thyra::createVector(Teuchos::rcp_const_cast<model::Vector>(resume_->x), model_.evaluator->get_x_space());
+    } else {
+      start.resume = resume_.get();
+    }
+  }
+  StepOutcome outcome;
+  int newtonThisJob = 0;
+  for (; start.step < steps; ++start.step) {
+    if (steps > 1 || start.step > 0) model_.loadStepping->setLoadStep(start.step);
+    outcome = runStep(start, stepSizes_[static_cast<std::size_t>(start.step)], start.step + 1 == steps);
+    newtonThisJob += outcome.summary.newtonIterations;
+    if (!outcome.summary.finished) break;
+    start = StepStart{start.step, nullptr, nullptr, outcome.x, outcome.bookkeeper.get()};
+  }
+  RunSummary summary = outcome.summary;
+  summary.newtonIterations = newtonThisJob;
+  // A direct solver solves once per Jacobian; iterative solvers are counted as Jacobian evaluations.
+  const long mumpsSolves = mumpsCounters().solves - solvesBefore;
+  summary.linearSolves =
+      mumpsSolves > 0 ? static_cast<int>(mumpsSolves) : model_.diagnostics->jacobianEvaluations() - jacobiansBefore;
+  summary.linearIterations = iterativeSolveLog().iterations - krylovBefore;
+  return summary;
+}
+
+ContinuationDriver::StepOutcome ContinuationDriver::runStep(const StepStart& start, const Teuchos::ParameterList& stepSize,
+                                                            bool lastStep) {
   const auto& loca = piro_.sublist("LOCA");
-  const auto& stepSize = loca.sublist("Step Size");
+  const ContinuationPoint* resume = start.resume;
   auto stepControl = createStepControl({stepSize, loca.sublist("Stepper").get<double>("Max Value"), *model_.events});
   auto tests = newtonTests(model_, piro_.sublist("NOX").sublist("Status Tests"), *stepControl);
 
@@ -106,44 +156,50 @@ RunSummary ContinuationDriver::run() {
     const bool print = space.is_null() || space->getComm()->getRank() == 0;
     observers->pushBack(rcp(new IterateContactStates(*model_.events, print, std::cout)));
   }
-  auto params = locaParameters(piro_, observers, errors);
+  auto params = locaParameters(piro_, stepSize, observers, errors);
   auto globalData = LOCA::createGlobalData(params, rcp(new StepSizeFactory(*stepControl)));
 
   // A restarted run starts from the restart file's increment k: x_k and λ_k are the initial guess and
-  // LOCA's Initial Value (taken as converged, not solved again).
-  if (resume_ != nullptr) params->sublist("LOCA").sublist("Stepper").set("Initial Value", resume_->lambda);
+  // LOCA's Initial Value (taken as converged, not solved again). A later load step starts from the
+  // previous step's end state, solved again at its own λ_s = Initial Value.
+  if (resume != nullptr) params->sublist("LOCA").sublist("Stepper").set("Initial Value", resume->lambda);
   const double lambda0 = params->sublist("LOCA").sublist("Stepper").get<double>("Initial Value");
   LOCA::ParameterVector p;
   p.addParameter("Load Factor", lambda0);
   RCP<Thyra::VectorBase<double>> x0 =
-      resume_ != nullptr
-          ? Thyra::createVector(Teuchos::rcp_const_cast<model::Vector>(resume_->x), model_.evaluator->get_x_space())->clone_v()
-          : model_.evaluator->getNominalValues().get_x()->clone_v();
+      resume != nullptr ? Thyra::createVector(Teuchos::rcp_const_cast<model::Vector>(resume->x), model_.evaluator->get_x_space())->clone_v()
+      : !start.x.is_null() ? start.x->clone_v()
+                           : model_.evaluator->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_.evaluator, p, 0, true));
   auto bookkeeper = rcp(new IncrementBookkeeper(
       *model_.state, *model_.events, observer_, *newton, *stepControl,
       continuation::countedEventsByName(stepSize.get<std::string>("Counted Events")), lambda0));
-  if (checkpoint_ != nullptr)
-    bookkeeper->enableCheckpoints(checkpoint_, loca.sublist("Stepper").get<double>("Max Value"), model_.dimension);
-  if (resume_ != nullptr) bookkeeper->resumeAt(*resume_);
+  bookkeeper->startLoadStep(start.step, start.earlier);
+  if (start.afterResume != nullptr) bookkeeper->startLoadStepAfter(start.step, *start.afterResume);
+  // A checkpoint at the end of every load step but the last (the run ends there anyway).
+  const double finalLambda = lastStep ? loca.sublist("Stepper").get<double>("Max Value") : HUGE_VAL;
+  if (checkpoint_ != nullptr) bookkeeper->enableCheckpoints(checkpoint_, finalLambda, model_.dimension);
+  if (resume != nullptr) bookkeeper->resumeAt(*resume);
   group->setSaveDataStrategy(bookkeeper);
 
-  RunSummary summary;
-  const long solvesBefore = mumpsCounters().solves;
-  const int jacobiansBefore = model_.diagnostics->jacobianEvaluations();
-  const long krylovBefore = iterativeSolveLog().iterations;
+  StepOutcome out;
+  RunSummary& summary = out.summary;
   try {
     ResumableStepper stepper(globalData, group, tests->test(), params);
     bookkeeper->setStepper(&stepper);
     relay->setStepper(&stepper);
     LocaResumePoint locaPoint;
-    if (resume_ != nullptr) {
-      locaPoint = locaResumePoint(*resume_, loca.sublist("Predictor").get<std::string>("Method") == "Secant");
+    if (resume != nullptr) {
+      locaPoint = locaResumePoint(*resume, loca.sublist("Predictor").get<std::string>("Method") == "Secant");
       stepper.resumeFrom(locaPoint, [bookkeeper](bool resuming) { bookkeeper->setResuming(resuming); });
     }
     summary.finished = stepper.run() == LOCA::Abstract::Iterator::Finished;
-    if (!summary.finished) summary.message = stopMessage(stopCause(*bookkeeper, *newton, *stepControl, loca, lambda0, errors->str()));
+    if (!summary.finished)
+      summary.message = stopMessage(stopCause(*bookkeeper, *newton, *stepControl, loca, stepSize, lambda0, errors->str()));
+    // The step's end state starts the next load step.
+    const auto& end = dynamic_cast<const NOX::Thyra::Vector&>(stepper.getSolutionGroup()->getX());
+    out.x = end.getThyraVector().clone_v();
   } catch (const CheckpointStop& stop) {
     summary.checkpointed = true;
     summary.message = stop.reason;
@@ -157,15 +213,11 @@ RunSummary ContinuationDriver::run() {
   summary.increments = bookkeeper->increments;
   summary.failedAttempts = bookkeeper->failedAttempts;
   summary.newtonIterations = newton->total;
-  summary.runNewtonIterations = bookkeeper->earlierNewtonIterations + newton->total;
-  // A direct solver solves once per Jacobian; iterative solvers are counted as Jacobian evaluations.
-  const long mumpsSolves = mumpsCounters().solves - solvesBefore;
-  summary.linearSolves =
-      mumpsSolves > 0 ? static_cast<int>(mumpsSolves) : model_.diagnostics->jacobianEvaluations() - jacobiansBefore;
-  summary.linearIterations = iterativeSolveLog().iterations - krylovBefore;
+  summary.runNewtonIterations = bookkeeper->runNewtonIterations();
   summary.finalLambda = bookkeeper->lastLambda();
+  out.bookkeeper = bookkeeper;
   LOCA::destroyGlobalData(globalData);
-  return summary;
+  return out;
 }
 
 }  // namespace contessa::solvers

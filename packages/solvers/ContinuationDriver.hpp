@@ -8,9 +8,11 @@
 // NewtonStatusTests with ResidualTest (convergence), NewtonCounter, StepControlRelay, StopMessage.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <NOX_Observer.hpp>
 #include <Teuchos_ParameterList.hpp>
+#include <Thyra_VectorBase.hpp>
 
 #include "solvers/ContinuationRestart.hpp"
 #include "solvers/RunReports.hpp"
@@ -29,9 +31,26 @@ class ContinuationDriver {
   /// Continues from a restart file's continuation point (readContinuationPoint) instead of solving the
   /// initial state. The model's committed state must be restored already.
   void resumeFrom(std::shared_ptr<const ContinuationPoint> point) { resume_ = std::move(point); }
+  /// Load steps (Problem/Load Steps): each step's validated Step Size list, in order; one continuation
+  /// each, in the step's own load factor, through the model's LoadStepping. Without: one continuation
+  /// with Piro/LOCA/Step Size.
+  void setLoadSteps(std::vector<Teuchos::ParameterList> stepSizes) { stepSizes_ = std::move(stepSizes); }
   RunSummary run();
 
  private:
+  /// What the continuation of one load step starts from and hands on to the next.
+  struct StepStart {
+    int step = 0;
+    const ContinuationPoint* resume = nullptr;        ///< inside the step (LOCA resumes there)
+    const ContinuationPoint* afterResume = nullptr;   ///< at the end of the previous step (a fresh start)
+    Teuchos::RCP<const Thyra::VectorBase<double>> x;  ///< the previous step's end (null: the nominal x)
+    const class IncrementBookkeeper* earlier = nullptr;
+  };
+  struct StepOutcome;
+  /// LOCA natural continuation of one load step with its Step Size list.
+  StepOutcome runStep(const StepStart& start, const Teuchos::ParameterList& stepSize, bool lastStep);
+
+  std::vector<Teuchos::ParameterList> stepSizes_;
   CheckpointControl* checkpoint_ = nullptr;
   std::shared_ptr<const ContinuationPoint> resume_;
   SolverModel model_;

@@ -83,8 +83,8 @@ StateRecord continuationState(const ContinuationPoint& point, int dimension) {
 
 LocaResumePoint locaResumePoint(const ContinuationPoint& point, bool secantPredictor) {
   LocaResumePoint loca;
-  loca.increments = point.increments;
-  loca.failedAttempts = point.failedAttempts;
+  loca.increments = point.stepIncrements;
+  loca.failedAttempts = point.stepFailedAttempts;
   loca.newtonIterations = point.newtonIterations;
   loca.stepSize = point.stepSize;
   loca.previousLambda = point.previousLambda;

@@ -18,6 +18,9 @@ struct LocaResumePoint;
 // strategy need to take increment k + 1 exactly as the uninterrupted run does.
 struct ContinuationPoint {
   int increments = 0, failedAttempts = 0;  ///< converged increments (k) and failed attempts so far
+  int loadStep = 0;                        ///< the load step of increment k (0-based; 0 without steps)
+  /// Of those, the load step's own (LOCA's stepper counts them, each load step from 0).
+  int stepIncrements = 0, stepFailedAttempts = 0;
   int newtonIterations = 0;                ///< of increment k's solve (what the step-size strategy reads)
   int runNewtonIterations = 0;             ///< of the whole run up to increment k, failed attempts included
   double lambda = 0, previousLambda = 0;   ///< λ_k, λ_{k-1}
@@ -32,6 +35,9 @@ struct ContinuationPoint {
   static void stateFields(Self& self, Fields& field) {
     field("increments", self.increments);
     field("failed_attempts", self.failedAttempts);
+    field("load_step", self.loadStep);
+    field("load_step_increments", self.stepIncrements);
+    field("load_step_failed_attempts", self.stepFailedAttempts);
     field("newton_iterations", self.newtonIterations);
     field("run_newton_iterations", self.runNewtonIterations);
     field("lambda", self.lambda);

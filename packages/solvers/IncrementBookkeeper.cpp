@@ -56,7 +56,7 @@ void IncrementBookkeeper::saveSolution(const NOX::Abstract::Vector& x, double la
   IncrementReport r = report(lambda);
   r.dlambda = first_ ? 0.0 : lambda - lastLambda_;
   r.newEvents = first_ ? 0 : continuation::countEvents(events_.committedIncrement(), counted_);
-  observer_.incrementConverged(*tpetraX, r);
+  if (!first_ || reportInitial_) observer_.incrementConverged(*tpetraX, r);
   const bool initial = first_;
   if (!first_) ++increments;
   previousLambda_ = lastLambda_;
@@ -76,8 +76,11 @@ void IncrementBookkeeper::saveSolution(const NOX::Abstract::Vector& x, double la
 void IncrementBookkeeper::rememberPoint(double lambda, const IncrementReport& r) {
   point_.increments = increments;
   point_.failedAttempts = failedAttempts;
+  point_.loadStep = loadStep_;
+  point_.stepIncrements = increments - stepFirstIncrement_;
+  point_.stepFailedAttempts = failedAttempts - stepFirstFailure_;
   point_.newtonIterations = newton_.iterations;
-  point_.runNewtonIterations = earlierNewtonIterations + newton_.total;
+  point_.runNewtonIterations = runNewtonIterations();
   point_.lambda = lambda;
   point_.previousLambda = previousLambda_;
   point_.stepSize = stepper_ != nullptr ? stepper_->currentStepSize() : 0.0;
@@ -97,6 +100,9 @@ void IncrementBookkeeper::resumeAt(const ContinuationPoint& p) {
   point_ = p;
   increments = p.increments;
   failedAttempts = p.failedAttempts;
+  loadStep_ = p.loadStep;
+  stepFirstIncrement_ = p.increments - p.stepIncrements;
+  stepFirstFailure_ = p.failedAttempts - p.stepFailedAttempts;
   earlierNewtonIterations = p.runNewtonIterations;
   lastLambda_ = p.lambda;
   previousLambda_ = p.previousLambda;
@@ -106,9 +112,31 @@ void IncrementBookkeeper::resumeAt(const ContinuationPoint& p) {
   start_ = Clock::now() - std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(p.wallSeconds));
 }
 
+void IncrementBookkeeper::startLoadStep(int loadStep, const IncrementBookkeeper* earlier) {
+  loadStep_ = loadStep;
+  if (earlier == nullptr) return;
+  increments = stepFirstIncrement_ = earlier->increments;
+  failedAttempts = stepFirstFailure_ = earlier->failedAttempts;
+  earlierNewtonIterations = earlier->runNewtonIterations();
+  start_ = earlier->start_;
+  point_ = earlier->point_;  // a checkpoint before this step's first increment is of the last step's end
+  reportInitial_ = false;
+}
+
+void IncrementBookkeeper::startLoadStepAfter(int loadStep, const ContinuationPoint& p) {
+  loadStep_ = loadStep;
+  increments = stepFirstIncrement_ = p.increments;
+  failedAttempts = stepFirstFailure_ = p.failedAttempts;
+  earlierNewtonIterations = p.runNewtonIterations;
+  start_ = Clock::now() - std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(p.wallSeconds));
+  point_ = p;
+  reportInitial_ = false;
+}
+
 IncrementReport IncrementBookkeeper::report(double lambda) const {
   IncrementReport r;
-  r.step = first_ ? 0 : increments + 1;
+  r.loadStep = loadStep_;
+  r.step = first_ ? (reportInitial_ ? 0 : increments) : increments + 1;
   r.beta = first_ ? 1.0 : stepControl_.correctionFactor();
   r.lambda = lambda;
   r.attempts = attempts_;

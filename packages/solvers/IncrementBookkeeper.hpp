@@ -41,12 +41,23 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   void setStepper(const ResumableStepper* stepper) { stepper_ = stepper; }
   /// The run continues from a restart file's increment: counters, load factors and the vectors as they were.
   void resumeAt(const ContinuationPoint& p);
+  /// Load steps: this bookkeeper's continuation is load step `loadStep` of the run; `earlier` (the
+  /// previous step's bookkeeper, or null for the run's first) holds the run's counts and clock so far.
+  /// After the run's first step the step's initial state (the previous step's end) is no new increment:
+  /// it is committed, not reported.
+  void startLoadStep(int loadStep, const IncrementBookkeeper* earlier);
+  /// The continuation resumed from a restart file's point at the end of load step `p.loadStep` goes on
+  /// with load step `loadStep` from its start.
+  void startLoadStepAfter(int loadStep, const ContinuationPoint& p);
   /// While the resumed stepper re-creates LOCA's state, LOCA's calls leave the model alone.
   void setResuming(bool resuming) { resuming_ = resuming; }
 
-  int increments = 0, failedAttempts = 0;
-  /// Newton iterations of the jobs before this one (0 for a new run; from the restart file's point).
+  int increments = 0, failedAttempts = 0;  ///< of the whole run (every load step)
+  /// Newton iterations before this load step's continuation: the jobs before this one (0 for a new run;
+  /// from the restart file's point) and the earlier load steps of this job.
   int earlierNewtonIterations = 0;
+  /// Newton iterations of the run so far (earlier jobs and steps, failed attempts included).
+  int runNewtonIterations() const { return earlierNewtonIterations + newton_.total; }
   double lastLambda() const { return lastLambda_; }
   bool initialStateSolved() const { return !first_; }
   bool lastAttemptFailed = false;  ///< the latest attempt failed (no converged increment since)
@@ -77,6 +88,9 @@ class IncrementBookkeeper : public LOCA::Thyra::SaveDataStrategy {
   continuation::CountedEvents counted_;
   double lastLambda_;
   Clock::time_point start_;
+  int loadStep_ = 0;
+  int stepFirstIncrement_ = 0, stepFirstFailure_ = 0;  ///< the run's counts when the load step began
+  bool reportInitial_ = true;  ///< the initial state is the run's (false: a later load step's start)
   bool first_ = true, pendingSuccess_ = false;
   int attempts_ = 1;
 };

@@ -12,6 +12,7 @@ namespace contessa::solvers {
 /// What is known of one increment when it ends.
 struct IncrementReport {
   int step = 0;              ///< converged increments so far (0 = the initial state)
+  int loadStep = 0;          ///< the load step (0-based; 0 without Problem/Load Steps); lambda is its own λ_s
   double lambda = 0;         ///< load factor reached
   double dlambda = 0;        ///< increment of the load factor
   double beta = 1;           ///< step correction factor of the step-size strategy (1 = none)

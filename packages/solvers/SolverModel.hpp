@@ -8,6 +8,7 @@
 
 #include "continuation/ContactEventSource.hpp"
 #include "model/IncrementalState.hpp"
+#include "model/LoadStepping.hpp"
 #include "model/SolveDiagnostics.hpp"
 
 namespace contessa::solvers {
@@ -17,11 +18,12 @@ struct SolverModel {
   model::IncrementalState* state = nullptr;
   continuation::ContactEventSource* events = nullptr;
   const model::SolveDiagnostics* diagnostics = nullptr;
+  model::LoadStepping* loadStepping = nullptr;  ///< the load steps (continuation::LoadSchedule)
   int dimension = 0;  ///< displacement components per node (the restart file's node table)
 
   template <class Model>
   static SolverModel of(const Teuchos::RCP<Model>& model) {
-    return {model, model.get(), model.get(), model.get(), model->dimension()};
+    return {model, model.get(), model.get(), model.get(), model.get(), model->dimension()};
   }
 };
 

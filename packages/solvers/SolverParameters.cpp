@@ -154,4 +154,31 @@ void validatePiro(ParameterList& piro, int numRanks) {
   }
 }
 
+std::vector<ParameterList> loadStepSizes(const deck::ProblemDefinition& problem, const ParameterList& piro) {
+  std::vector<ParameterList> out;
+  if (problem.loadSteps.empty()) return out;
+  requireInput(piro.get<std::string>("Solver Type") == "LOCA",
+               "Problem/Load Steps: each step is a continuation; expected Piro/Solver Type = LOCA");
+  const auto& stepper = piro.sublist("LOCA").sublist("Stepper");
+  requireInput(stepper.get<double>("Initial Value") == 0.0 && stepper.get<double>("Max Value") == 1.0,
+               "Problem/Load Steps: each step runs its own load factor from 0 to 1; expected Piro/LOCA/Stepper/"
+               "Initial Value = 0 and Max Value = 1");
+  const auto valid = piroValidParameters();
+  const auto& validStepSize = valid->sublist("LOCA").sublist("Step Size");
+  for (const auto& step : problem.loadSteps) {
+    if (!step.hasStepSize) {
+      out.push_back(piro.sublist("LOCA").sublist("Step Size"));
+      continue;
+    }
+    const std::string where = "Problem/Load Steps/" + step.name + "/Step Size";
+    ParameterList list = step.stepSize;
+    deck::validateAndSetDefaults(list, validStepSize, where);
+    requireInput(list.get<double>("Min Step Size") <= list.get<double>("Initial Step Size") &&
+                     list.get<double>("Initial Step Size") <= list.get<double>("Max Step Size"),
+                 where + ": expected Min Step Size <= Initial Step Size <= Max Step Size");
+    out.push_back(list);
+  }
+  return out;
+}
+
 }  // namespace contessa::solvers

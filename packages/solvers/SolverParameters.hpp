@@ -8,6 +8,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "deck/ProblemDefinition.hpp"
+
 #include "solvers/StepSizeMethods.hpp"  // stepSizeMethods()
 
 namespace contessa::solvers {
@@ -23,5 +25,11 @@ Teuchos::RCP<const Teuchos::ParameterList> piroValidParameters();
 /// Validates the deck's "Piro" list in place (defaults filled in); `numRanks` rejects solvers that
 /// are wrong in parallel in this Trilinos build. Throws InputError naming the deck path.
 void validatePiro(Teuchos::ParameterList& piro, int numRanks);
+
+/// Each load step's Step Size list (Problem/Load Steps): the step's own, validated as Piro/LOCA/Step Size
+/// (defaults filled in), or the validated `piro`'s; none without load steps. InputError naming the step.
+/// Load steps need the continuation (Solver Type LOCA) from Initial Value 0 to Max Value 1.
+std::vector<Teuchos::ParameterList> loadStepSizes(const deck::ProblemDefinition& problem,
+                                                  const Teuchos::ParameterList& piro);
 
 }  // namespace contessa::solvers
