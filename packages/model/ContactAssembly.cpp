@@ -65,8 +65,9 @@ void ContactAssembly::addMortarCouplings(const contact::ContactInterfaceSpec& sp
     support.clear();
     for (std::size_t j : contact::mortarSlaveNeighbours(spec, k))
       for (int c = 0; c < dim; ++c) support.push_back(layout_.overlapDof(spec.slaveNodes[j], c));
-    for (const GlobalIndex* m = reservation.begin(k); m != reservation.end(k); ++m)
-      for (int c = 0; c < dim; ++c) support.push_back(layout_.overlapDof(*m, c));
+    if (!spec.rigidMaster)
+      for (const GlobalIndex* m = reservation.begin(k); m != reservation.end(k); ++m)
+        for (int c = 0; c < dim; ++c) support.push_back(layout_.overlapDof(*m, c));
     for (LO a : support) rows[a].insert(rows[a].end(), support.begin(), support.end());
   }
 }
@@ -81,6 +82,8 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
     const auto& spec = interfaces_[i]->spec();
     const auto& evaluates = interfaces_[i]->evaluatesSlave();
     const auto& reservation = reservations_[i];
+    // A mortar slave node's term also couples its neighbouring slave nodes, rigid master or not.
+    if (spec.mortar) addMortarCouplings(spec, evaluates, reservation, rows);
     if (spec.rigidMaster) continue;
     const auto dofsOf = [&](GO node, LO* out) {
       for (int c = 0; c < dim; ++c) out[c] = layout_.overlapDof(node, c);
@@ -97,7 +100,6 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
           for (int c = 0; c < dim; ++c)
             for (int d = 0; d < dim; ++d) rows[a[c]].push_back(b[d]);
         }
-    if (spec.mortar) addMortarCouplings(spec, evaluates, reservation, rows);
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
       if (!evaluates[k] || spec.mortar) continue;
       dofsOf(spec.slaveNodes[k], a);
