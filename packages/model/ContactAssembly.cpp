@@ -179,7 +179,8 @@ bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                // (A mortar term also holds the slave node's neighbours: reserved with it.)
                                for (int a = dim; a < n; a += dim)
                                  if (dofs[a] >= 0 && !contact::isReserved(reservation, slaveIndex, dofs[a] / dim) &&
-                                     !std::binary_search(slaves.begin(), slaves.end(), dofs[a] / dim)) {
+                                     !(interfaces_[i]->spec().mortar &&
+                                       std::binary_search(slaves.begin(), slaves.end(), dofs[a] / dim))) {
                                    outsideReach = std::min(outsideReach, static_cast<long long>(i) * numNodes + slave);
                                    outside[i] = 1;
                                    return;
