@@ -42,6 +42,13 @@ struct ContactInterfaceSpec {
   /// Two Pass: this spec is the interface's second pass, slave and master swapped, with its own history;
   /// its force acts on the first pass's master body. `name` is the deck's name in both passes.
   bool secondPass = false;
+  /// Discretization = Mortar: the slave nodes' weighted gaps over the slave segments (MortarInterface.hpp)
+  /// instead of one node-to-segment element per slave node.
+  bool mortar = false;
+  /// The slave side's facets as mesh node tuples, nodesPerFacet() per facet, oriented so their normal is
+  /// the slave body's outward normal (the mortar integrates over them).
+  std::vector<GlobalIndex> slaveFacets;
+  std::vector<double> slaveSegmentLengths;  ///< 2D: each slave facet's reference length (the mortar's measure)
 
   /// The interface in messages: its name, "(second pass)" added for the second pass.
   std::string label() const { return secondPass ? name + " (second pass)" : name; }

@@ -140,6 +140,16 @@ contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const
   return contact::ContactSurface::fromSurface(facets, where, revolved);
 }
 
+// What Discretization = Mortar does not do yet (docs/theory-contact.md, "Mortar"): one-line InputErrors.
+void requireMortarSupported(const ParameterList& list, int dimension, bool revolved, const contact::ContactLawParameters& law,
+                            const std::string& where) {
+  const std::string what = where + "/Discretization: Mortar is implemented ";
+  requireInput(dimension == 2, what + "in 2D only, this mesh is 3D; use Node To Segment");
+  requireInput(law.isFrictionless(), what + "frictionless only, Friction Coefficient must be 0; use Node To Segment");
+  requireInput(!revolved, what + "for plane strain only, not for an axisymmetric problem; use Node To Segment");
+  requireInput(!list.get<bool>("Two Pass"), what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
+}
+
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
                                                         const mesh::DistributedMesh& part,
                                                         SurfaceCoordinates& coordinates, bool revolved) {
@@ -165,8 +175,17 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   requireInput(rigid != points.empty(),
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
+  spec.mortar = list.get<std::string>("Discretization") == "Mortar";
+  if (spec.mortar) requireMortarSupported(list, mesh.dimension, revolved, spec.law, where);
   mesh::ReplicatedSurface slaveFacets;
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
+  spec.slaveFacets = slave.facets;
+  if (spec.dimension == 2)
+    for (std::size_t f = 0; f + 1 < slave.facets.size(); f += 2) {
+      const auto& a = coordinates.at(slave.facets[f]);
+      const auto& b = coordinates.at(slave.facets[f + 1]);
+      spec.slaveSegmentLengths.push_back(std::hypot(b[0] - a[0], b[1] - a[1]));
+    }
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
   spec.slaveFacetLengths = slave.facetLengths;
@@ -280,6 +299,10 @@ RCP<const ParameterList> contactValidParameters() {
          "graph and fewer rebuilds. -1 = automatic: the whole master surface when slave x master nodes <= "
          "250000 (never rebuilt), else as 0");
   p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
+  setChoice(*p, "Discretization", "Node To Segment", {"Node To Segment", "Mortar"},
+            "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: weighted gaps "
+            "over the slave segments against every master segment they overlap (2D, frictionless, single pass: "
+            "passes the non-matching contact patch test)");
   return p;
 }
 

@@ -1,5 +1,7 @@
 #include "model/ContactAssembly.hpp"
 
+#include "contact/MortarInterface.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <sstream>
@@ -11,6 +13,14 @@ namespace contessa::model {
 
 using contact::GlobalIndex;
 
+namespace {
+// The spec a reservation is made for: a mortar interface reaches one slave segment further.
+contact::ContactInterfaceSpec reservationSpec(const contact::ContactInterfaceSpec& spec) {
+  return spec.mortar ? contact::mortarReservationSpec(spec) : spec;
+}
+}  // namespace
+
+
 ContactAssembly::ContactAssembly(const deck::ProblemDefinition& problem, const DofLayout& layout)
     : layout_(layout), numGlobalNodes_(problem.mesh.numGlobalNodes) {
   const mesh::DistributedMesh& part = problem.mesh;
@@ -21,7 +31,8 @@ ContactAssembly::ContactAssembly(const deck::ProblemDefinition& problem, const D
       const mesh::GlobalIndex local = part.localNode(spec.slaveNodes[k]);
       evaluates[k] = local >= 0 && part.nodeOwner[static_cast<std::size_t>(local)] == part.rank;
     }
-    interfaces_.push_back(contact::makeContactInterface(spec, evaluates));
+    interfaces_.push_back(spec.mortar ? contact::makeMortarInterface(spec, evaluates)
+                                      : contact::makeContactInterface(spec, evaluates));
   }
   referenceX_.assign(static_cast<std::size_t>(layout.numOverlapDofs()), 0.0);
   for (std::size_t k = 0; k < problem.contactNodes.size(); ++k)
@@ -30,7 +41,8 @@ ContactAssembly::ContactAssembly(const deck::ProblemDefinition& problem, const D
   // The first reservation, around the reference configuration.
   const std::vector<double> zero(referenceX_.size(), 0.0);
   for (const auto& interface : interfaces_)
-    reservations_.push_back(contact::reserveCouplings(interface->spec(), positions(zero.data()), interface->evaluatesSlave()));
+    reservations_.push_back(contact::reserveCouplings(reservationSpec(interface->spec()), positions(zero.data()),
+                                                      interface->evaluatesSlave()));
   outsideByInterface_.assign(interfaces_.size(), 0);
 }
 
@@ -43,6 +55,25 @@ std::vector<mesh::GlobalIndex> ContactAssembly::surfaceNodes(const std::vector<c
   return nodes;
 }
 
+void ContactAssembly::addMortarCouplings(const contact::ContactInterfaceSpec& spec, const std::vector<char>& evaluates,
+                                         const contact::CouplingReservation& reservation,
+                                         std::vector<std::vector<LO>>& rows) const {
+  // A mortar slave node's term couples every node of its weighted gap's support with every other: its
+  // neighbouring slave nodes and the master nodes reserved for it, in this rank's overlap rows.
+  const int dim = layout_.dimension();
+  std::vector<LO> support;
+  for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+    if (!evaluates[k]) continue;
+    support.clear();
+    for (std::size_t j : contact::mortarSlaveNeighbours(spec, k))
+      for (int c = 0; c < dim; ++c) support.push_back(layout_.overlapDof(spec.slaveNodes[j], c));
+    if (!spec.rigidMaster)
+      for (const GlobalIndex* m = reservation.begin(k); m != reservation.end(k); ++m)
+        for (int c = 0; c < dim; ++c) support.push_back(layout_.overlapDof(*m, c));
+    for (LO a : support) rows[a].insert(rows[a].end(), support.begin(), support.end());
+  }
+}
+
 void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) const {
   // The reach rule of contact::CouplingReservation: the whole master surface for a small interface, else
   // the master facets within reach of the slave node found by a box search, so the graph grows with the
@@ -53,6 +84,8 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
     const auto& spec = interfaces_[i]->spec();
     const auto& evaluates = interfaces_[i]->evaluatesSlave();
     const auto& reservation = reservations_[i];
+    // A mortar slave node's term also couples its neighbouring slave nodes, rigid master or not.
+    if (spec.mortar) addMortarCouplings(spec, evaluates, reservation, rows);
     if (spec.rigidMaster) continue;
     const auto dofsOf = [&](GO node, LO* out) {
       for (int c = 0; c < dim; ++c) out[c] = layout_.overlapDof(node, c);
@@ -70,7 +103,7 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
             for (int d = 0; d < dim; ++d) rows[a[c]].push_back(b[d]);
         }
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
-      if (!evaluates[k]) continue;
+      if (!evaluates[k] || spec.mortar) continue;
       dofsOf(spec.slaveNodes[k], a);
       for (const GlobalIndex* m = reservation.begin(k); m != reservation.end(k); ++m) {
         dofsOf(*m, b);
@@ -91,7 +124,8 @@ void ContactAssembly::reserveAround(const double* u) {
   const auto position = positions(u);
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
     if (outsideByInterface_[i] != 0)
-      reservations_[i] = contact::reserveCouplings(interfaces_[i]->spec(), position, interfaces_[i]->evaluatesSlave());
+      reservations_[i] = contact::reserveCouplings(reservationSpec(interfaces_[i]->spec()), position,
+                                                   interfaces_[i]->evaluatesSlave());
 }
 
 contact::ContactInterfaceBase::NodePosition ContactAssembly::positions(const double* u) const {
@@ -163,8 +197,11 @@ bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial,
                                const auto& slaves = interfaces_[i]->spec().slaveNodes;
                                const std::size_t slaveIndex = static_cast<std::size_t>(
                                    std::lower_bound(slaves.begin(), slaves.end(), slave) - slaves.begin());
+                               // (A mortar term also holds the slave node's neighbours: reserved with it.)
                                for (int a = dim; a < n; a += dim)
-                                 if (dofs[a] >= 0 && !contact::isReserved(reservation, slaveIndex, dofs[a] / dim)) {
+                                 if (dofs[a] >= 0 && !contact::isReserved(reservation, slaveIndex, dofs[a] / dim) &&
+                                     !(interfaces_[i]->spec().mortar &&
+                                       std::binary_search(slaves.begin(), slaves.end(), dofs[a] / dim))) {
                                    outsideReach = std::min(outsideReach, static_cast<long long>(i) * numNodes + slave);
                                    outside[i] = 1;
                                    return;

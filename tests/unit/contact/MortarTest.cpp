@@ -1,0 +1,245 @@
+// The 2D mortar kernels (MortarSegment) and interface (MortarInterface): the weighted gaps of a non-matching
+// pair against their closed form, their exact first and second derivatives against central differences,
+// and the interface's residual, tangent and ∂r/∂λ against central differences of its residual.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "contact/MortarInterface.hpp"
+#include "contact/MortarSegment.hpp"
+
+namespace contessa::contact {
+namespace {
+
+// A slave segment on top of a body below (traversed right to left: its normal, the right of the direction,
+// points up) under a master segment above (traversed left to right: its normal points down).
+SegmentPairCoordinates<double> flatPair(double masterLeft, double masterRight, double gap) {
+  return {1.0, 0.0, 0.0, 0.0, masterLeft, gap, masterRight, gap};
+}
+
+TEST(MortarSegment, WeightedGapsOfAFlatPartialOverlapAreTheGapTimesTheMortarLengths) {
+  // Master over x ∈ [0.3, 2]: it covers ξ ∈ [0, 0.7] of the slave segment (ξ = 1 − x), so
+  // ∫ N_0 = ∫_0^0.7 (1 − ξ) dξ = 0.455 and ∫ N_1 = ∫_0^0.7 ξ dξ = 0.245.
+  const double gap = -0.01;
+  const MortarPairGaps<double> g = segmentPairGaps(flatPair(0.3, 2.0, gap), 1.0);
+  ASSERT_TRUE(g.overlaps);
+  EXPECT_NEAR(g.mortarLength[0], 0.455, 1e-14);
+  EXPECT_NEAR(g.mortarLength[1], 0.245, 1e-14);
+  EXPECT_NEAR(g.weightedGap[0], gap * 0.455, 1e-15);
+  EXPECT_NEAR(g.weightedGap[1], gap * 0.245, 1e-15);
+}
+
+TEST(MortarSegment, PairsThatDoNotFaceOrOverlapOrLieFarAwayCountNothing) {
+  EXPECT_FALSE(segmentPairGaps(flatPair(1.5, 2.0, 0.0), 1.0).overlaps);    // beside the slave segment
+  EXPECT_FALSE(segmentPairGaps(flatPair(2.0, -1.0, 0.0), 1.0).overlaps);   // turned away: normal up, like the slave's
+  EXPECT_FALSE(segmentPairGaps(flatPair(0.0, 1.0, -3.0), 1.0).overlaps);   // far behind: another side of the body
+  EXPECT_FALSE(segmentPairGaps(flatPair(0.0, 1.0, 3.0), 1.0).overlaps);    // far in front
+  EXPECT_TRUE(segmentPairGaps(flatPair(0.0, 1.0, 0.5), 1.0).overlaps);
+}
+
+TEST(MortarSegment, AMasterEndFlushWithASlaveEndWithinRoundOffClipsAtTheSlaveEnd) {
+  // Penetration g under a master from x = δ to 2 (the slave's end ξ = 1 is x = 0). Clipped at the master's
+  // end ξ_b = 1 − x_m0, g̃_1 owes that end's motion along the line the edge term g N_1(ξ_b) ∂ξ_b/∂x_m0 =
+  // −g (1 − δ); snapped to the
+  // slave's end (δ below kMortarSnap), it owes nothing: flush edges give one answer, not two by round-off.
+  const double gap = -0.01;
+  const MortarPairDerivatives apart = segmentPairDerivatives(flatPair(1e-6, 2.0, gap), 1.0);
+  EXPECT_NEAR(apart.gradient[1][4], -gap * (1.0 - 1e-6), 1e-12);
+  const MortarPairDerivatives flush = segmentPairDerivatives(flatPair(1e-13, 2.0, gap), 1.0);
+  EXPECT_EQ(flush.gradient[1][4], 0.0);
+  EXPECT_NEAR(flush.mortarLength[1], 0.5, 1e-15);
+}
+
+// A tilted, curved-looking pair clipped at one slave end and one master end.
+// Its slave segment's reference length (here other than its current one: a stretched segment).
+constexpr double kTiltedLength = 1.2;
+SegmentPairCoordinates<double> tiltedPair() { return {1.1, 0.05, -0.02, -0.07, 0.35, -0.03, 1.6, 0.12}; }
+
+TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps) {
+  const auto x = tiltedPair();
+  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength);
+  ASSERT_TRUE(d.overlaps);
+  const MortarPairGaps<double> plain = segmentPairGaps(x, kTiltedLength);
+  const double h = 1e-6;
+  for (int a = 0; a < 2; ++a) {
+    EXPECT_DOUBLE_EQ(d.weightedGap[a], plain.weightedGap[a]);
+    double scale = 0, gradientError = 0, hessianScale = 0, hessianError = 0;
+    for (int j = 0; j < 8; ++j) {
+      auto plus = x, minus = x;
+      plus[j] += h;
+      minus[j] -= h;
+      const double fd = (segmentPairGaps(plus, kTiltedLength).weightedGap[a] - segmentPairGaps(minus, kTiltedLength).weightedGap[a]) / (2 * h);
+      scale = std::max(scale, std::abs(d.gradient[a][j]));
+      gradientError = std::max(gradientError, std::abs(fd - d.gradient[a][j]));
+      const MortarPairDerivatives dp = segmentPairDerivatives(plus, kTiltedLength),
+                                  dm = segmentPairDerivatives(minus, kTiltedLength);
+      for (int i = 0; i < 8; ++i) {
+        const double fdHessian = (dp.gradient[a][i] - dm.gradient[a][i]) / (2 * h);
+        hessianScale = std::max(hessianScale, std::abs(d.hessian[a][i * 8 + j]));
+        hessianError = std::max(hessianError, std::abs(fdHessian - d.hessian[a][i * 8 + j]));
+        EXPECT_NEAR(d.hessian[a][i * 8 + j], d.hessian[a][j * 8 + i], 1e-12) << "a Hessian is symmetric";
+      }
+    }
+    EXPECT_GT(scale, 0.1);
+    EXPECT_GT(hessianScale, 0.1);
+    EXPECT_LT(gradientError, 1e-8 * scale) << "slave node " << a;
+    EXPECT_LT(hessianError, 1e-7 * hessianScale) << "slave node " << a;
+  }
+}
+
+// A non-matching interface: 3 slave segments on y = 0 (x ∈ [0, 3]) under 2 master segments (x ∈ [−0.2, 3.2]).
+// Nodes 0–3 slave (right to left along the slave surface), 4–6 master (left to right), DOFs node·2 + c.
+constexpr double kPenalty = 1e3;
+
+ContactInterfaceSpec patchSpec(bool rigidMaster) {
+  ContactInterfaceSpec spec;
+  spec.name = "patch";
+  spec.dimension = 2;
+  spec.mortar = true;
+  spec.slaveNodes = {0, 1, 2, 3};
+  spec.slaveFacets = {0, 1, 1, 2, 2, 3};
+  spec.slaveSegmentLengths = {1.0, 1.0, 1.0};
+  spec.slaveAreas = {0.5, 1.0, 1.0, 0.5};
+  spec.slaveFacetLengths = {1.0, 1.0, 1.0, 1.0};
+  spec.law.normalPenalty = kPenalty;
+  if (rigidMaster) {
+    spec.rigidMaster = true;
+    spec.rigidSurface.points = {-0.2, -0.03, 1.5, -0.03, 3.2, -0.03};
+    spec.rigidSurface.facets = {0, 1, 1, 2};
+    spec.rigidSurface.motion = {0.1, -0.02};
+  } else {
+    spec.masterFacets = {4, 5, 5, 6};
+  }
+  return spec;
+}
+
+std::vector<double> patchCoordinates(double penetration) {
+  // Slave nodes at x = 3, 2, 1, 0 on y = 0; master nodes at x = −0.2, 1.5, 3.2 on y = −penetration.
+  return {3, 0, 2, 0, 1, 0, 0, 0, -0.2, -penetration, 1.5, -penetration, 3.2, -penetration};
+}
+
+struct Assembled {
+  std::vector<double> residual, tangent, dLambda;  // over every DOF of the 7 nodes
+  std::vector<SlaveNodeState> states;
+};
+
+Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+  const int n = static_cast<int>(x.size());
+  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}};
+  interface.evaluate([&](GlobalIndex node, double* p) { p[0] = x[2 * node], p[1] = x[2 * node + 1]; }, lambda, true,
+                     [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
+                       for (int a = 0; a < m; ++a) {
+                         if (dofs[a] < 0) continue;
+                         out.residual[dofs[a]] += r[a];
+                         out.dLambda[dofs[a]] += drdl[a];
+                         for (int b = 0; b < m; ++b)
+                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
+                       }
+                     });
+  interface.commit();
+  out.states = interface.committedStates();
+  return out;
+}
+
+std::unique_ptr<ContactInterfaceBase> patchInterface(bool rigidMaster) {
+  return makeMortarInterface(patchSpec(rigidMaster), std::vector<char>(4, 1));
+}
+
+TEST(MortarInterface, NonMatchingFlatPenetrationGivesTheSamePressureAtEverySlaveNode) {
+  // The contact patch test at the interface: a uniform penetration d over non-matching segments gives
+  // p = ε_N d at every slave node, the end nodes included, and the master takes the opposite force.
+  const double d = 1e-3;
+  auto interface = patchInterface(false);
+  const Assembled a = assemble(*interface, patchCoordinates(d), 0.0);
+  for (const auto& s : a.states) {
+    EXPECT_EQ(s.status, ContactStatus::Slip);
+    EXPECT_NEAR(s.pressure, kPenalty * d, 1e-12 * kPenalty * d);
+  }
+  double slaveForce = 0, masterForce = 0;
+  for (int node = 0; node < 7; ++node) (node < 4 ? slaveForce : masterForce) -= a.residual[2 * node + 1];
+  EXPECT_NEAR(slaveForce, -kPenalty * d * 3.0, 1e-12);  // pressure × slave length 3, pushing the slave down
+  EXPECT_NEAR(masterForce, kPenalty * d * 3.0, 1e-12);
+  EXPECT_NEAR(interface->committedSlaveForce()[1], -kPenalty * d * 3.0, 1e-12);
+}
+
+// A tilted, uneven configuration: every slave node closed, the clip points inside segments.
+std::vector<double> unevenCoordinates() {
+  return {3.02, 0.01, 2.05, -0.01, 0.97, 0.02, 0.01, 0.0, -0.2, -0.031, 1.45, -0.024, 3.2, -0.034};
+}
+
+double tangentError(bool rigidMaster, double* scale) {
+  auto interface = patchInterface(rigidMaster);
+  const auto x = unevenCoordinates();
+  const Assembled a = assemble(*interface, x, 0.3);
+  for (const auto& s : a.states) EXPECT_EQ(s.status, ContactStatus::Slip) << "the test wants every node closed";
+  const int n = static_cast<int>(x.size());
+  const double h = 1e-7;
+  double error = 0;
+  *scale = 0;
+  for (int j = 0; j < n; ++j) {
+    auto plus = x, minus = x;
+    plus[j] += h;
+    minus[j] -= h;
+    const auto rp = assemble(*patchInterface(rigidMaster), plus, 0.3).residual;
+    const auto rm = assemble(*patchInterface(rigidMaster), minus, 0.3).residual;
+    for (int i = 0; i < n; ++i) {
+      *scale = std::max(*scale, std::abs(a.tangent[i * n + j]));
+      error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
+    }
+  }
+  return error;
+}
+
+TEST(MortarInterface, TangentIsTheCentralDifferenceOfTheResidualWithADeformableMaster) {
+  double scale = 0;
+  const double error = tangentError(false, &scale);
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+}
+
+TEST(MortarInterface, TangentAndLoadDerivativeAreCentralDifferencesWithAMovingRigidMaster) {
+  double scale = 0;
+  const double error = tangentError(true, &scale);
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+  // ∂r/∂λ: the rigid master moves by λ · motion.
+  const auto x = unevenCoordinates();
+  const double lambda = 0.3, h = 1e-7;
+  const Assembled a = assemble(*patchInterface(true), x, lambda);
+  const auto rp = assemble(*patchInterface(true), x, lambda + h).residual;
+  const auto rm = assemble(*patchInterface(true), x, lambda - h).residual;
+  double dScale = 0, dError = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    dScale = std::max(dScale, std::abs(a.dLambda[i]));
+    dError = std::max(dError, std::abs((rp[i] - rm[i]) / (2 * h) - a.dLambda[i]));
+  }
+  EXPECT_GT(dScale, 1.0);
+  EXPECT_LT(dError, 1e-6 * dScale);
+}
+
+TEST(MortarInterface, OpenNodesCarryNoForceAndCountAsOpenEvents) {
+  auto interface = patchInterface(false);
+  const Assembled a = assemble(*interface, patchCoordinates(-0.01), 0.0);  // master 0.01 above
+  for (const auto& s : a.states) {
+    EXPECT_EQ(s.status, ContactStatus::Open);
+    EXPECT_NEAR(s.gap, 0.01, 1e-14);
+  }
+  for (double r : a.residual) EXPECT_EQ(r, 0.0);
+  // Closing it: each slave node's change goes from open at the commit to closed in the trial state.
+  interface->evaluate([&](GlobalIndex node, double* p) {
+    const auto x = patchCoordinates(1e-3);
+    p[0] = x[2 * node], p[1] = x[2 * node + 1];
+  }, 0.0, true, [](const GlobalIndex*, int, const double*, const double*, const double*) {});
+  for (const auto& c : interface->trialChanges()) {
+    EXPECT_EQ(c.committedStatus, ContactStatus::Open);
+    EXPECT_EQ(c.trialStatus, ContactStatus::Slip);
+    EXPECT_NEAR(c.committedGap, 0.01, 1e-14);
+    EXPECT_NEAR(c.trialGap, -1e-3, 1e-14);
+  }
+}
+
+}  // namespace
+}  // namespace contessa::contact
