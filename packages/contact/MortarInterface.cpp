@@ -58,6 +58,13 @@ class MortarInterface final : public ContactInterfaceBase {
   }
 
   std::unique_ptr<ContactInterfaceBase> clone() const override { return std::make_unique<MortarInterface>(*this); }
+  void setRigidMotion(const std::vector<double>& offset, const std::vector<double>& motion) override {
+    master_.setMotion(offset, motion);
+  }
+  /// Frictionless for now: the deck refuses a load step's μ > 0 on a mortar interface (LoadStepDefinitions).
+  void setFrictionCoefficient(double mu) override {
+    if (mu != 0.0) throw std::logic_error("MortarInterface '" + spec_.label() + "': friction is not implemented");
+  }
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) override;
   std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const override;
   /// None: a mortar node's penetration is measured by its weighted gap, which sees a master segment
