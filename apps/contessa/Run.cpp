@@ -50,6 +50,18 @@ void requireHistoryColumns(const deck::ProblemDefinition& problem, const std::ve
   }
 }
 
+// The last history row of load step `loadStep` (the history's load_step column, 1 for the first); -1 when
+// the run did not finish it (its last row is not at lambda 1).
+int lastRowOfLoadStep(const std::vector<std::string>& columns, const std::vector<std::vector<double>>& rows,
+                      int loadStep) {
+  const auto stepColumn = std::find(columns.begin(), columns.end(), "load_step") - columns.begin();
+  const auto lambdaColumn = std::find(columns.begin(), columns.end(), "lambda") - columns.begin();
+  int last = -1;
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    if (rows[r][stepColumn] == loadStep) last = static_cast<int>(r);
+  return last >= 0 && rows[static_cast<std::size_t>(last)][lambdaColumn] >= 1.0 - 1e-12 ? last : -1;
+}
+
 // The deck's own expected answers ("Problem/Regression"); returns the number of failed checks.
 int checkRegression(const deck::ProblemDefinition& problem, const output::ResultsOutput& results) {
   int failed = 0;
@@ -57,9 +69,13 @@ int checkRegression(const deck::ProblemDefinition& problem, const output::Result
   const auto& rows = results.historyRows();
   for (const auto& check : problem.regression) {
     const auto col = std::find(columns.begin(), columns.end(), check.quantity);
-    const int step = check.step < 0 ? static_cast<int>(rows.size()) - 1 : check.step;
+    int step = check.step < 0 ? static_cast<int>(rows.size()) - 1 : check.step;
+    if (check.loadStep > 0) step = lastRowOfLoadStep(columns, rows, check.loadStep);
     if (step < 0 || step >= static_cast<int>(rows.size())) {
-      std::printf("regression %-24s FAILED: step %d was not reached\n", check.name.c_str(), check.step);
+      if (check.loadStep > 0)
+        std::printf("regression %-24s FAILED: load step %d was not reached\n", check.name.c_str(), check.loadStep);
+      else
+        std::printf("regression %-24s FAILED: step %d was not reached\n", check.name.c_str(), check.step);
       ++failed;
       continue;
     }

@@ -182,7 +182,7 @@ RCP<const ParameterList> historyRequestValidParameters() {
   setChoice(*p, "Quantity", "Displacement", historyQuantityNames(),
             "What is written every increment: Displacement (of the node nearest Coordinates, or the mean over "
             "Node Set; columns <name>_x, <name>_y[, <name>_z]), Reaction Force (summed over Node Set, as Reaction "
-            "Node Sets), Applied Force (load factor x the Nodal Forces on Node Set's nodes, summed), Contact "
+            "Node Sets), Applied Force (the Nodal Forces and the loads of Problem/Loads on Node Set's nodes, summed), Contact "
             "Pressure or Contact Slip (accumulated slip) at the slave node of Interface nearest Coordinates "
             "(column <name>)");
   p->set("Node Set", std::string(""), "Node set measured (Displacement: its mean; the forces: their sum)");

@@ -267,6 +267,9 @@ RCP<const ParameterList> regressionValidParameters() {
   auto p = rcp(new ParameterList("Regression Check"));
   p->set("Quantity", std::string(""), "History column to check, e.g. reaction_top_y or newton_iterations; required");
   p->set("Step", -1, "History step to check; -1 = the last converged increment");
+  p->set("Load Step", 0,
+         "With Problem/Load Steps: check the value at the end of this load step (1 for the first; its last "
+         "history row) instead of Step; 0 = not used");
   p->set("Expected", 0.0, "Expected value");
   setNonNegative(*p, "Relative Tolerance", 1e-6, "Relative tolerance on |value - expected| / |expected|");
   setNonNegative(*p, "Absolute Tolerance", 0.0, "Absolute tolerance; the check passes if either tolerance holds");
@@ -490,6 +493,7 @@ std::vector<RegressionCheck> buildRegression(ParameterList& regressionList) {
     check.quantity = r.get<std::string>("Quantity");
     requireInput(!check.quantity.empty(), "Problem/Regression/" + name + "/Quantity: required (a history column)");
     check.step = r.get<int>("Step");
+    check.loadStep = r.get<int>("Load Step");
     check.expected = r.get<double>("Expected");
     check.relativeTolerance = r.get<double>("Relative Tolerance");
     check.absoluteTolerance = r.get<double>("Absolute Tolerance");
@@ -518,6 +522,11 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
   def.regression = buildRegression(problem.sublist("Regression"));
   def.loadSteps = buildLoadSteps(problem.sublist("Load Steps"), def);
   requireLoadStepsChange(def);
+  for (const auto& check : def.regression)
+    requireInput(check.loadStep >= 0 && check.loadStep <= static_cast<int>(def.loadSteps.size()) &&
+                     (check.loadStep == 0 || check.step == -1),
+                 "Problem/Regression/" + check.name + "/Load Step: expected 0 or a load step of Problem/Load Steps (1 to " +
+                     std::to_string(def.loadSteps.size()) + "), without Step, got " + std::to_string(check.loadStep));
   return def;
 }
 

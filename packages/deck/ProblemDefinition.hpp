@@ -46,6 +46,7 @@ struct NodalForce {
 struct RegressionCheck {
   std::string name, quantity;
   int step = -1;  ///< history step to compare; -1 = the last converged increment
+  int loadStep = 0;  ///< > 0: the last history row of this load step (1 for the first) instead of `step`
   double expected = 0, relativeTolerance = 0, absoluteTolerance = 0;
 };
 

@@ -467,6 +467,23 @@ RCP<MultiVector> ContactMechanicsModel::elementStresses(const Vector& x) const {
   return results_->elementStresses(u.getRawPtr());
 }
 
+RCP<Vector> ContactMechanicsModel::loadsOnSets(const Vector& x, double loadFactor) const {
+  const double a = schedule_.amplitude(loadStep_, loadFactor);
+  const auto u = overlapped(x);
+  Vector start(layout_->overlapMap()), change(layout_->overlapMap()), follower(layout_->overlapMap()),
+      dFollower(layout_->overlapMap());
+  const ExternalLoads& loads = conditions_->loads();
+  loads.addDeadLoads(start.getDataNonConst(0).getRawPtr(), false);
+  loads.addDeadLoads(change.getDataNonConst(0).getRawPtr(), true);
+  // The follower pressures enter the residual as −f_p: their external force is −(that).
+  loads.assembleFollowerLoads(u.getRawPtr(), a, 1.0, follower.getDataNonConst(0).getRawPtr(),
+                              dFollower.getDataNonConst(0).getRawPtr(), nullptr);
+  start.update(a, change, -1.0, follower, 1.0);
+  auto owned = rcp(new Vector(layout_->ownedMap()));
+  owned->doExport(start, layout_->exporter(), Tpetra::ADD);
+  return owned;
+}
+
 std::vector<NodeSetReaction> ContactMechanicsModel::reactions(const Vector& x, double loadFactor) const {
   timers::Scope scope(timers::Phase::Reactions);
   // Σ (f_int + contact − f_ext): the converged residual before its Dirichlet rows, which the last

@@ -99,6 +99,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
     return PostProcessing::elementStressNames(dimension, axisymmetric);
   }
   std::vector<NodeSetReaction> reactions(const Vector& x, double loadFactor) const;
+  /// Collective: the loads on sets (Problem/Loads: tractions, body forces, follower pressures on the
+  /// deformed faces at `x`; not the nodal forces) at load factor λ of the current load step, as nodal
+  /// forces on owned rows (the external force's part that the Applied Force history sums).
+  Teuchos::RCP<Vector> loadsOnSets(const Vector& x, double loadFactor) const;
 
   // Contact results at the last committed state.
   bool hasContact() const override;

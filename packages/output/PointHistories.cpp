@@ -29,6 +29,11 @@ PointHistories::PointHistories(const deck::ProblemDefinition& problem, const mod
   }
 }
 
+bool PointHistories::hasLoadsOnSets() const {
+  return std::any_of(problem_.loads.begin(), problem_.loads.end(),
+                     [](const deck::LoadDefinition& l) { return l.type != deck::LoadType::Spring; });
+}
+
 void PointHistories::addColumns(const deck::HistoryRequest& request) {
   const int dim = problem_.dimension();
   const mesh::DistributedMesh& part = problem_.mesh;
@@ -86,6 +91,12 @@ void PointHistories::addColumns(const deck::HistoryRequest& request) {
         }
         column.appliedFractions.emplace_back(force.name, fraction);
       }
+      // The loads on sets (pressure, traction, body force) on the set's nodes, from the model's vector.
+      if (hasLoadsOnSets())
+        for (model::GO node : measured) {
+          const model::LO row = dofs.getLocalElement(node * dim + c);
+          if (row != invalid) column.loadRows.push_back(row);
+        }
     } else {
       for (model::GO node : measured) {
         const model::LO row = dofs.getLocalElement(node * dim + c);
@@ -106,6 +117,11 @@ std::vector<double> PointHistories::values(const model::Vector& x, double loadFa
   Teuchos::RCP<const model::MultiVector> fields;
   if (contact && model_.hasContact()) fields = model_.contactNodalFields();
   const auto u = x.getData(0);
+  // Collective where needed: every rank has the same columns.
+  const bool applied = hasLoadsOnSets() && std::any_of(sources_.begin(), sources_.end(), [](const Column& c) {
+    return c.source == Column::Source::Applied;
+  });
+  Teuchos::RCP<const model::Vector> loads = applied ? model_.loadsOnSets(x, loadFactor) : Teuchos::null;
   std::vector<double> local(sources_.size(), 0.0), global(sources_.size(), 0.0);
   for (std::size_t k = 0; k < sources_.size(); ++k) {
     const Column& column = sources_[k];
@@ -121,6 +137,10 @@ std::vector<double> PointHistories::values(const model::Vector& x, double loadFa
       // Load steps: each nodal force at its scheduled value (continuation::LoadSchedule).
       for (const auto& [name, fraction] : column.appliedFractions)
         local[k] += fraction * model_.loadSchedule().value(loadStep, model::loadKey(name), loadFactor)[0];
+    }
+    if (!column.loadRows.empty()) {
+      const auto f = loads->getData(0);
+      for (int row : column.loadRows) local[k] += f[row];
     }
   }
   if (!sources_.empty())

@@ -1,7 +1,8 @@
 #pragma once
 // The values of the deck's point histories (Problem/Output/History, deck/OutputRequests.hpp) at a
 // converged increment: a node's displacement or a node set's mean, a node set's reaction or applied
-// force, an interface slave node's contact pressure or slip. Each rank adds what it owns and the sums
+// force (its nodal forces and the loads on sets that act on its nodes), an interface slave node's contact
+// pressure or slip. Each rank adds what it owns and the sums
 // are reduced, so every rank gets the same row whichever rank owns the node.
 #include <string>
 #include <utility>
@@ -39,11 +40,16 @@ class PointHistories {
     /// Applied, with load steps: per nodal force (its name), the fraction of its total on this rank's
     /// nodes of the set (the force's value comes from the schedule).
     std::vector<std::pair<std::string, double>> appliedFractions;
+    /// Applied: the owned rows (of x's map) of the set's nodes in this component, where the loads on sets
+    /// (ContactMechanicsModel::loadsOnSets) are summed.
+    std::vector<int> loadRows;
     std::size_t reaction = 0;       ///< Reaction: index into the reactions
     int component = 0;
   };
 
   void addColumns(const deck::HistoryRequest& request);
+  /// The deck has loads on sets (Problem/Loads other than springs).
+  bool hasLoadsOnSets() const;
 
   const deck::ProblemDefinition& problem_;
   const model::ContactMechanicsModel& model_;

@@ -4,6 +4,8 @@
 // Piro::LOCASolver in Trilinos 13.2 cannot take a user LOCA factory, and Contessa's step-size
 // strategies are registered through one (StepSizeFactory). The driver knows no step-size method: what
 // a method adds (Newton tests, reports, stop words) comes through its StepControl.
+// With load steps (Problem/Load Steps) it runs one continuation per step, each in the step's own load
+// factor from 0 to 1 with the step's Step Size list, from the previous step's end state.
 // Its parts: ContinuationRestart (restart file), IncrementBookkeeper (commit, report, checkpoint),
 // NewtonStatusTests with ResidualTest (convergence), NewtonCounter, StepControlRelay, StopMessage.
 #include <memory>

@@ -23,6 +23,9 @@ parser.add_argument("reference")
 parser.add_argument("--load-step", type=int, required=True)
 parser.add_argument("--rtol", type=float, default=1e-8)
 parser.add_argument("--columns", default="")
+parser.add_argument("--shift", default="",
+                    help="a rigid translation added to the stepped run's displacements (x,y[,z]), e.g. when its "
+                         "loading differs from the reference's by a frame moving at constant velocity")
 args = parser.parse_args()
 
 stepped_rows = read_history(args.stepped + ".history.csv")
@@ -41,6 +44,8 @@ failed = False
 components = [c for c in ("displ_x", "displ_y", "displ_z") if c in reference.nodal_names]
 u_ref = np.stack([reference.nodal(c) for c in components])
 u = np.stack([stepped.nodal(c, row) for c in components])
+if args.shift:
+    u += np.array([float(v) for v in args.shift.split(",")])[:len(components), None]
 if u.shape != u_ref.shape:
     sys.exit(f"FAIL: {u.shape} displacements, the reference has {u_ref.shape}")
 scale = np.max(np.abs(u_ref))
