@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""check_regularisation_warning.py --interface NAME --expect warn|clean --exit N --history CSV
+"""check_regularisation_warning.py --interface NAME --expect warn|clean|penetration --exit N --history CSV
                                    [--elastic-slip S] -- COMMAND...
 
 Issue 21, point 3: the run says when the penalty regularisation spoils the answer. Runs COMMAND (a contessa
@@ -12,6 +12,9 @@ run that writes CSV) and checks
   when a warning is expected (the criterion of docs/theory-contact.md §13), and no penetration warning
   unless max_penetration_NAME exceeds a tenth of the slave displacements (not measured here: it must stay
   silent);
+- with --expect penetration, stderr holds exactly one "contessa: warning: contact interface 'NAME': the
+  penetration P exceeds a tenth of the largest slave displacement ..." line naming Problem/Contact/NAME/Normal
+  Penalty, and P is the history's last max_penetration_NAME (3 digits);
 - with --elastic-slip S, the largest elastic slip of every increment with a slipping node is S (relative
   1e-9): a slipping node's elastic slip is Slip Tolerance x L exactly (theory-contact.md §5.1).
 """
@@ -23,7 +26,7 @@ import sys
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--interface", required=True)
-parser.add_argument("--expect", choices=["warn", "clean"], required=True)
+parser.add_argument("--expect", choices=["warn", "clean", "penetration"], required=True)
 parser.add_argument("--exit", type=int, default=0)
 parser.add_argument("--history", required=True)
 parser.add_argument("--elastic-slip", type=float)
@@ -47,6 +50,20 @@ if args.expect == "warn":
 
 rows = list(csv.DictReader(open(args.history)))
 last = rows[-1]
+if args.expect == "penetration":
+    pattern = (rf"^contessa: warning: contact interface '{re.escape(name)}': the penetration (\S+) exceeds a tenth of "
+               rf"the largest slave displacement \S+ at step \d+ .*raise Problem/Contact/{re.escape(name)}/Normal Penalty$")
+    match = re.match(pattern, warnings[0]) if len(warnings) == 1 else None
+    if not match:
+        failures.append(f"expected one penetration warning for '{name}', got {warnings}")
+    elif abs(float(match.group(1)) / float(last[f"max_penetration_{name}"]) - 1) > 1e-2:
+        failures.append(f"warning's penetration {match.group(1)} is not the history's {last[f'max_penetration_{name}']}")
+    print(f"penetration {last[f'max_penetration_{name}']}; warnings: {warnings}")
+    if failures:
+        print("FAIL:\n  " + "\n  ".join(failures))
+        sys.exit(1)
+    print("ok")
+    sys.exit(0)
 elastic, mean = float(last[f"max_elastic_slip_{name}"]), float(last[f"mean_slip_{name}"])
 slipping = int(float(last["slip"]))
 spoils = slipping > 0 and elastic > 0.1 * mean
