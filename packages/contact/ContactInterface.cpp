@@ -18,8 +18,6 @@ namespace contessa::contact {
 namespace {
 constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
 
-/// The largest distance between two nodes of a facet: the segment's length, the face's longer diagonal
-/// (or edge): the size the global search enlarges boxes by.
 /// ‖t_T‖/ε_T of an element result (RegularisationMeasures), ‖t_T‖ = √(t_α ā^αβ t_β) of eq. (19).
 template <class Facet>
 double elasticSlipOf(const NodeToFacetResult<Facet>& r) {
@@ -28,6 +26,8 @@ double elasticSlipOf(const NodeToFacetResult<Facet>& r) {
   return contact::elasticSlipOf(std::sqrt(dot(t, multiply(r.projection.inverseMetric, t))), r.friction.tangentialPenalty);
 }
 
+/// The largest distance between two nodes of a facet: the segment's length, the face's longer diagonal
+/// (or edge): the size the global search enlarges boxes by.
 template <class Facet>
 double facetSize(const MasterFacetNodes<Facet>& m) {
   double size = 0;
