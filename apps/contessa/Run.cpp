@@ -215,6 +215,8 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
                 summary.newtonIterations, summary.linearSolves, summary.finalLambda);
     std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
     std::fflush(stdout);
+    for (const auto& warning : results.regularisationWarnings())  // issue 21: the final state's contact
+      std::fprintf(stderr, "contessa: warning: %s\n", warning.c_str());
   }
   timers::printTable(mpiCommOf(comm), stdout);
   if (summary.checkpointed) {

@@ -18,6 +18,14 @@ namespace contessa::contact {
 namespace {
 constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
 
+/// ‖t_T‖/ε_T of an element result (RegularisationMeasures), ‖t_T‖ = √(t_α ā^αβ t_β) of eq. (19).
+template <class Facet>
+double elasticSlipOf(const NodeToFacetResult<Facet>& r) {
+  if (r.status == ContactStatus::Open) return 0.0;
+  const auto& t = r.tangentialTraction;
+  return contact::elasticSlipOf(std::sqrt(dot(t, multiply(r.projection.inverseMetric, t))), r.friction.tangentialPenalty);
+}
+
 /// The largest distance between two nodes of a facet: the segment's length, the face's longer diagonal
 /// (or edge): the size the global search enlarges boxes by.
 template <class Facet>
@@ -43,6 +51,22 @@ ContactInterfaceBase::ContactInterfaceBase(ContactInterfaceSpec spec, std::vecto
     throw std::logic_error("ContactInterface '" + spec_.label() + "': one area and facet length per slave node expected");
   for (auto& s : trialOutput_) s.gap = std::numeric_limits<double>::infinity();
   committedOutput_ = trialOutput_;
+}
+
+RegularisationMeasures ContactInterfaceBase::committedRegularisation() const {
+  RegularisationMeasures m;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const SlaveNodeState& s = committedOutput_[k];
+    if (s.status != ContactStatus::Open && std::isfinite(s.gap)) m.penetration = std::max(m.penetration, -s.gap);
+    m.elasticSlip = std::max(m.elasticSlip, s.elasticSlip);
+    m.slip = std::max(m.slip, s.slip);
+    if (s.status == ContactStatus::Slip && !spec_.law.isFrictionless()) {
+      m.slippingNodes += 1.0;
+      m.slipSum += s.slip;
+    }
+  }
+  return m;
 }
 
 std::vector<SlaveNodeChange> ContactInterfaceBase::owned(const std::vector<SlaveNodeChange>& all) const {
@@ -220,6 +244,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       change = changeOf(k, out.gap, &r, committed);
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
+      out.elasticSlip = elasticSlipOf(r);
       if (r.status != ContactStatus::Open) {
         const Vector<kDofs> residual = scatter(k, selection.facet, r, sink);
         for (int c = 0; c < kDim; ++c) force[c] -= residual[c];

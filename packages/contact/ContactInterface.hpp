@@ -17,6 +17,7 @@
 #include "contact/ContactCounts.hpp"
 #include "contact/ContactHistory.hpp"
 #include "contact/InterfaceSpec.hpp"
+#include "contact/RegularisationMeasures.hpp"
 
 namespace contessa::contact {
 
@@ -26,6 +27,9 @@ struct SlaveNodeState {
   double gap = 0;       ///< g_N, eq. (4); +∞ when no master facet is in reach
   ContactStatus status = ContactStatus::Open;
   double slip = 0;      ///< accumulated slip g_T, eq. (7)
+  /// ‖t_T‖/ε_T, the stretch of the stick spring (RegularisationMeasures); not in the restart file (a
+  /// restarted run shows it from its first increment on).
+  double elasticSlip = 0;
 };
 
 /// An owned slave node over the increment: the last commit against a trial state, for the load-step
@@ -121,6 +125,9 @@ class ContactInterfaceBase {
   /// Total force the master exerts on the owned slave nodes at the last commit (spec().dimension
   /// components; per unit thickness in 2D).
   const std::vector<double>& committedSlaveForce() const { return committedForce_; }
+  /// Largest penetration, elastic slip and slip over the owned slave nodes at the last commit (the
+  /// displacement scale is the model's to fill in: the interface does not know the reference positions).
+  RegularisationMeasures committedRegularisation() const;
 
  protected:
   /// `evaluatesSlave[i]`: this rank evaluates slave node i (its owner does, so each contribution is

@@ -18,10 +18,15 @@ using Teuchos::rcp;
 
 RCP<ParameterList> penaltyCoulombParameters() {
   auto p = rcp(new ParameterList("Penalty Coulomb"));
-  setNonNegative(*p, "Normal Penalty", 0.0, "Normal penalty ε_N (pressure per unit penetration), eq. (16); required");
+  setNonNegative(*p, "Normal Penalty", 0.0,
+                 "Normal penalty ε_N (pressure per unit penetration), eq. (16); 0 or not given = automatic: Penalty "
+                 "Factor × the largest E'/h of the elements under the slave side (E' = E/(1 − ν²), h their "
+                 "thickness under the side), printed at the start of the run");
+  setPositive(*p, "Penalty Factor", 100.0,
+              "The factor f of the automatic Normal Penalty ε_N = f × max E'/h (used only without a Normal Penalty)");
   setNonNegative(*p, "Tangential Penalty", 0.0,
-                 "Tangential (stick) penalty ε_T, eq. (17): with Slip Tolerance = 0 the constant ε_T (required when "
-                 "Friction Coefficient > 0); with Slip Tolerance > 0 an upper bound of ε_T = μ|t_N|/(Slip Tolerance × "
+                 "Tangential (stick) penalty ε_T, eq. (17): with Slip Tolerance = 0 the constant ε_T (0 or not given "
+                 "= the Normal Penalty); with Slip Tolerance > 0 an upper bound of ε_T = μ|t_N|/(Slip Tolerance × "
                  "facet length) (0 = no bound)");
   setNonNegative(*p, "Friction Coefficient", 0.0, "Coulomb coefficient μ, eq. (18); 0 = frictionless");
   setBounded(*p, "Slip Tolerance", 0.005, 0.0, 1.0,
@@ -32,15 +37,16 @@ RCP<ParameterList> penaltyCoulombParameters() {
   return p;
 }
 
-contact::ContactLawParameters createPenaltyCoulomb(const ParameterList& list, const std::string& where) {
+contact::ContactLawParameters createPenaltyCoulomb(const ParameterList& list, const std::string& /*where*/) {
   contact::ContactLawParameters law;
   law.normalPenalty = list.get<double>("Normal Penalty");
   law.tangentialPenalty = list.get<double>("Tangential Penalty");
   law.frictionCoefficient = list.get<double>("Friction Coefficient");
   law.slipTolerance = list.get<double>("Slip Tolerance");
-  requireInput(law.normalPenalty > 0, where + "/Normal Penalty: required; expected a value > 0");
-  requireInput(law.frictionCoefficient == 0 || law.slipTolerance > 0 || law.tangentialPenalty > 0,
-               where + "/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0 and Slip Tolerance = 0");
+  // Normal Penalty 0: automatic, set from the elements under the slave side (deck/AutomaticPenalty.hpp);
+  // a constant stick penalty left out is the normal one (set there too when that is automatic).
+  if (!law.isFrictionless() && !law.hasSlipTolerance() && law.tangentialPenalty == 0)
+    law.tangentialPenalty = law.normalPenalty;
   return law;
 }
 
@@ -57,7 +63,8 @@ const Registry<LawRow>& registry() {
       {{"Penalty Coulomb",
         "Penalty normal contact, t_N = ε_N g_N for a penetration g_N < 0 (eq. 16), and Coulomb friction by return "
         "mapping (eq. 17–23): stick with the penalty ε_T while |t_T| < μ|t_N|, slip on the cone otherwise; the "
-        "stick penalty follows the pressure through Slip Tolerance (docs/theory-contact.md §5)",
+        "stick penalty follows the pressure through Slip Tolerance (docs/theory-contact.md §5); without a Normal "
+        "Penalty, ε_N comes from the stiffness of the elements under the slave side (§5.3)",
         {penaltyCoulombParameters, createPenaltyCoulomb}}});
   return rows;
 }

@@ -8,6 +8,7 @@
 
 #include "common/Error.hpp"
 #include "deck/Axisymmetry.hpp"
+#include "deck/AutomaticPenalty.hpp"
 #include "deck/ContactLawFactory.hpp"
 #include "deck/LoadDefinitions.hpp"
 #include "deck/MeshReferences.hpp"
@@ -475,9 +476,11 @@ void readOutput(const ParameterList& output, const mesh::Mesh& mesh, ProblemDefi
 // gathered from every rank's part).
 void buildContacts(ParameterList& contactList, ProblemDefinition& def) {
   SurfaceCoordinates surfaceCoordinates;
-  for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact"))
-    for (auto& spec : buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates, def.axisymmetric))
-      def.contacts.push_back(std::move(spec));
+  for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact")) {
+    auto passes = buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates, def.axisymmetric);
+    setAutomaticPenalties(passes, contactList.sublist(name), def.mesh, def.blocks);  // no Normal Penalty given
+    for (auto& spec : passes) def.contacts.push_back(std::move(spec));
+  }
   for (const auto& [node, x] : surfaceCoordinates) {
     def.contactNodes.push_back(node);
     def.contactNodeCoordinates.insert(def.contactNodeCoordinates.end(), x.begin(), x.end());

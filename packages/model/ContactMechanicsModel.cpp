@@ -440,6 +440,11 @@ std::vector<std::pair<std::string, std::vector<double>>> ContactMechanicsModel::
   return results_->contactForces();
 }
 
+std::vector<std::pair<std::string, contact::RegularisationMeasures>> ContactMechanicsModel::contactRegularisation(
+    const Vector& x) const {
+  return results_->contactRegularisation(x);
+}
+
 std::vector<continuation::SlaveNodeIncrement> ContactMechanicsModel::trialIncrement() const {
   return results_->trialIncrement();
 }

@@ -22,6 +22,7 @@
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
 
 #include "contact/ContactCounts.hpp"
+#include "contact/RegularisationMeasures.hpp"
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "io/RestartFile.hpp"
@@ -115,6 +116,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// Force the master exerts on the slave body, per interface (both passes of a two-pass interface
   /// are summed under the interface name), summed over ranks: one component per space dimension.
   std::vector<std::pair<std::string, std::vector<double>>> contactForces() const;
+  /// Per interface: the largest penetration, elastic slip and slip at the last commit, and the largest
+  /// displacement magnitude of its slave nodes in `x` (PostProcessing::contactRegularisation), collective.
+  std::vector<std::pair<std::string, contact::RegularisationMeasures>> contactRegularisation(const Vector& x) const;
 
   // continuation::ContactEventSource: every slave node (all ranks, all interfaces, the same order on
   // every rank) for Contact Beta.

@@ -120,6 +120,45 @@ std::vector<std::pair<std::string, std::vector<double>>> PostProcessing::contact
   return out;
 }
 
+std::vector<std::pair<std::string, contact::RegularisationMeasures>> PostProcessing::contactRegularisation(
+    const Vector& x) const {
+  const int dim = layout_.dimension();
+  const Map& owned = *layout_.ownedMap();
+  const auto u = x.getData(0);
+  std::vector<std::pair<std::string, contact::RegularisationMeasures>> out;
+  for (const auto& spec : problem_.contacts)
+    if (out.empty() || out.back().first != spec.name) out.push_back({spec.name, {}});
+  for (const auto& interface : contact_.interfaces()) {
+    const auto& spec = interface->spec();
+    contact::RegularisationMeasures m = interface->committedRegularisation();
+    for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
+      if (!interface->evaluatesSlave()[k]) continue;
+      double square = 0.0;
+      for (int c = 0; c < dim; ++c) {
+        const LO lo = owned.getLocalElement(spec.slaveNodes[k] * dim + c);
+        if (lo != Teuchos::OrdinalTraits<LO>::invalid()) square += u[lo] * u[lo];
+      }
+      m.displacementScale = std::max(m.displacementScale, std::sqrt(square));
+    }
+    for (auto& [name, total] : out)
+      if (name == spec.name) total.include(m);
+  }
+  for (auto& [name, total] : out) {
+    double largest[4] = {total.penetration, total.elasticSlip, total.slip, total.displacementScale};
+    double sums[2] = {total.slippingNodes, total.slipSum};
+    double globalLargest[4], globalSums[2];
+    Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_MAX, 4, largest, globalLargest);
+    Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_SUM, 2, sums, globalSums);
+    total.penetration = globalLargest[0];
+    total.elasticSlip = globalLargest[1];
+    total.slip = globalLargest[2];
+    total.displacementScale = globalLargest[3];
+    total.slippingNodes = globalSums[0];
+    total.slipSum = globalSums[1];
+  }
+  return out;
+}
+
 namespace {
 // Every rank needs every slave node's change to sort the β^k of eq. (12): gather them all, as
 // continuation::SlaveNodeIncrement (8 numbers each), in rank order.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/ContactCounts.hpp"
+#include "contact/RegularisationMeasures.hpp"
 #include "continuation/ContactEvents.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "model/TpetraTypes.hpp"
@@ -46,6 +47,10 @@ class PostProcessing {
   /// Force the master exerts on the slave body, per interface (both passes of a two-pass interface summed
   /// under the interface name), summed over ranks: one component per space dimension.
   std::vector<std::pair<std::string, std::vector<double>>> contactForces() const;
+  /// Largest penetration, elastic slip and slip per interface (both passes of a two-pass interface under
+  /// its name) at the last commit, and the largest displacement magnitude of its slave nodes in the
+  /// owned solution `x`: maxima over ranks, the same on every rank.
+  std::vector<std::pair<std::string, contact::RegularisationMeasures>> contactRegularisation(const Vector& x) const;
 
   /// Every slave node (all ranks, all interfaces, the same order on every rank) for Contact Beta: the last
   /// commit against the latest evaluation, against the state at the overlapped displacement `u` and λ, or

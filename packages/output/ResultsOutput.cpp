@@ -76,6 +76,10 @@ std::vector<std::string> forceColumns(const deck::ProblemDefinition& problem,
       for (int c = 0; c < dim; ++c) columns.push_back("reaction_" + set + "_" + kAxes[c]);
   for (const auto& [name, force] : model.contactForces())
     for (int c = 0; c < dim; ++c) columns.push_back("contact_force_" + columnName(name) + "_" + kAxes[c]);
+  // How far the regularisation is from exact contact (contact::RegularisationMeasures), per interface.
+  for (const auto& [name, force] : model.contactForces())
+    for (const char* measure : {"max_penetration_", "max_elastic_slip_", "max_slip_", "mean_slip_"})
+      columns.push_back(measure + columnName(name));
   return columns;
 }
 
@@ -367,7 +371,8 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
   // to each rank's piece), and the history row (its sums are known everywhere).
   const FileValues values = fileValues(x);
   const auto counts = model_.contactCounts();
-  const std::vector<double> row = historyRow(x, report, counts);
+  const auto regularisation = model_.contactRegularisation(x);
+  const std::vector<double> row = historyRow(x, report, counts, regularisation);
 
   const std::string stepText = "cannot write step " + std::to_string(report.step);
   const auto describe = [this, &stepText](const std::exception& e) {
@@ -405,6 +410,9 @@ void ResultsOutput::incrementConverged(const model::Vector& x, const solvers::In
     throw std::runtime_error(error);
   }
   rows_.push_back(row);  // on every rank, so that any rank can say which steps the files keep
+  lastRegularisation_ = regularisation;
+  lastStep_ = report.step;
+  lastLambda_ = report.lambda;
   if (root_ && printTable_) {
     std::printf("%5d %12.6g %12.6g %7.3g %4d %6d %7d %11.3e %9.2f\n", report.step, report.lambda, report.dlambda,
                 report.beta, report.attempts, report.newtonIterations, counts.active, report.residualNorm,
@@ -424,7 +432,8 @@ ResultsOutput::FileValues ResultsOutput::fileValues(const model::Vector& x) cons
 }
 
 std::vector<double> ResultsOutput::historyRow(const model::Vector& x, const solvers::IncrementReport& report,
-                                              const contact::ContactCounts& counts) const {
+                                              const contact::ContactCounts& counts,
+                                              const Regularisation& regularisation) const {
   const int dim = problem_.dimension();
   std::vector<double> row = {static_cast<double>(report.step), report.lambda, report.dlambda, report.beta,
                              static_cast<double>(report.attempts), static_cast<double>(report.newtonIterations),
@@ -443,6 +452,7 @@ std::vector<double> ResultsOutput::historyRow(const model::Vector& x, const solv
       for (int c = 0; c < dim; ++c) row.push_back(r.force[c]);
   for (const auto& [name, force] : model_.contactForces())
     for (int c = 0; c < dim; ++c) row.push_back(force[c]);
+  for (const auto& [name, m] : regularisation) row.insert(row.end(), {m.penetration, m.elasticSlip, m.slip, m.meanSlip()});
   const auto histories = histories_->values(x, report.lambda, reactions, report.loadStep);
   row.insert(row.end(), histories.begin(), histories.end());
   return row;
@@ -486,6 +496,11 @@ void ResultsOutput::writeExodusStep(const FileValues& values, const solvers::Inc
   const double time =
       problem_.loadSteps.empty() ? report.lambda : model_.loadSchedule().time(report.loadStep, report.lambda);
   exodus_->writeStep(time, nodal, element, globals);
+}
+
+std::vector<std::string> ResultsOutput::regularisationWarnings() const {
+  if (rows_.empty()) return {};
+  return output::regularisationWarnings(problem_.contacts, lastRegularisation_, lastStep_, lastLambda_);
 }
 
 void ResultsOutput::attemptFailed(const solvers::IncrementReport& report) {

@@ -17,6 +17,7 @@
 #include "mesh/MeshPiece.hpp"
 #include "model/ContactMechanicsModel.hpp"
 #include "output/PointHistories.hpp"
+#include "output/RegularisationWarnings.hpp"
 #include "solvers/RunReports.hpp"
 
 namespace contessa::output {
@@ -63,6 +64,9 @@ class ResultsOutput : public solvers::IncrementObserver {
   std::string historyPath() const { return historyPath_; }
   /// Why the output failed ("" while it has not), on every rank.
   const std::string& failure() const { return failure_; }
+  /// Where the contact regularisation spoils the answer of the last converged increment, one line per
+  /// interface and kind (output::regularisationWarnings); the same on every rank; none before a step.
+  std::vector<std::string> regularisationWarnings() const;
   /// A note for the user about the output (e.g. no lock on this file system), rank 0; "" if none.
   const std::string& warning() const { return warning_; }
 
@@ -93,8 +97,9 @@ class ResultsOutput : public solvers::IncrementObserver {
   /// Collective: the increment's values imported into the file maps.
   FileValues fileValues(const model::Vector& x) const;
   /// Collective: the history row (sums over the ranks, the same on every rank).
+  using Regularisation = RegularisationByInterface;
   std::vector<double> historyRow(const model::Vector& x, const solvers::IncrementReport& report,
-                                 const contact::ContactCounts& counts) const;
+                                 const contact::ContactCounts& counts, const Regularisation& regularisation) const;
   /// This rank's Exodus step: nodal, element and global values.
   void writeExodusStep(const FileValues& values, const solvers::IncrementReport& report,
                        const contact::ContactCounts& counts, const std::vector<double>& row);
@@ -131,6 +136,9 @@ class ResultsOutput : public solvers::IncrementObserver {
   bool historyNamed_ = false;  ///< the history has its name (historyPath_), after its first row
   std::unique_ptr<PointHistories> histories_;  ///< the deck's point histories, the history's last columns
   std::vector<std::string> columns_;
+  Regularisation lastRegularisation_;  ///< of the last converged increment
+  int lastStep_ = 0;
+  double lastLambda_ = 0.0;
   std::vector<std::vector<double>> rows_;
   // What this rank's Exodus file shows (Single File: the whole mesh on rank 0, nothing elsewhere; Per
   // Rank: this rank's piece), as maps numbered in the file's order, and the imports of the owned values.

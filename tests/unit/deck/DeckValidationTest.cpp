@@ -241,6 +241,51 @@ TEST(ContactValidation, LawRegistry) {
   EXPECT_EQ(implicit->sublist("Contact").sublist("plate").get<std::string>("Law"), "Penalty Coulomb");  // the default, filled in
 }
 
+// Issue 21, point 2: without a Normal Penalty, ε_N = Penalty Factor × max E'/h of the elements under the slave
+// side (deck/AutomaticPenalty.hpp). The test deck's slave side is the top of one row of unit squares: h = 1,
+// Neo-Hookean E = 200, ν = 0.3, so E' = 200/(1 − 0.09) and ε_N = 100 E'.
+TEST(ContactValidation, AutomaticPenaltyFromTheElementsUnderTheSlaveSide) {
+  const double planeStrain = 200.0 / (1.0 - 0.3 * 0.3);  // E'/h with h = 1
+  const auto law = [](const std::function<void(ParameterList&)>& change) {
+    auto p = contactProblem();
+    p->sublist("Contact").sublist("plate").remove("Normal Penalty");
+    change(*p);
+    return contessa::deck::buildProblem(*p, "").contacts.at(0).law;
+  };
+  EXPECT_NEAR(law([](ParameterList&) {}).normalPenalty, 100.0 * planeStrain, 1e-10 * planeStrain);
+  // E'/h: twice the modulus, or half the thickness, twice the penalty; the factor scales it.
+  EXPECT_NEAR(law([](ParameterList& p) { p.sublist("Materials").sublist("steel").set("Young's Modulus", 400.0); }).normalPenalty,
+              200.0 * planeStrain, 1e-10 * planeStrain);
+  EXPECT_NEAR(law([](ParameterList& p) { p.sublist("Mesh").set("Length Y", 0.5); }).normalPenalty, 200.0 * planeStrain,
+              1e-10 * planeStrain);
+  EXPECT_NEAR(law([](ParameterList& p) { p.sublist("Contact").sublist("plate").set("Penalty Factor", 3.0); }).normalPenalty,
+              3.0 * planeStrain, 1e-10 * planeStrain);
+  // Units: lengths in m instead of mm and E in Pa instead of MPa (1e-3 and 1e6): ε_N in Pa/m is 1e9 times.
+  const double si = law([](ParameterList& p) {
+                      p.sublist("Mesh").set("Length X", 2e-3);
+                      p.sublist("Mesh").set("Length Y", 1e-3);
+                      p.sublist("Materials").sublist("steel").set("Young's Modulus", 200e6);
+                      p.sublist("Contact").sublist("plate").sublist("Rigid Surface").set(
+                          "Points", Teuchos::Array<double>(Teuchos::tuple<double>(-1e-3, 1.5e-3, 3e-3, 1.5e-3)));
+                    }).normalPenalty;
+  EXPECT_NEAR(si, 1e9 * 100.0 * planeStrain, 1e-9 * si);
+  // A constant stick penalty left out is the normal one, given or automatic; a slip tolerance leaves ε_T alone.
+  const auto stick = law([](ParameterList& p) {
+    p.sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3);
+    p.sublist("Contact").sublist("plate").set("Slip Tolerance", 0.0);
+  });
+  EXPECT_EQ(stick.tangentialPenalty, stick.normalPenalty);
+  EXPECT_EQ(law([](ParameterList& p) { p.sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3); })
+                .tangentialPenalty,
+            0.0);
+  auto given = contactProblem();
+  given->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3);
+  given->sublist("Contact").sublist("plate").set("Slip Tolerance", 0.0);
+  EXPECT_EQ(contessa::deck::buildProblem(*given, "").contacts.at(0).law.tangentialPenalty, 1e6);
+  // A given Normal Penalty is kept.
+  EXPECT_EQ(contessa::deck::buildProblem(*contactProblem(), "").contacts.at(0).law.normalPenalty, 1e6);
+}
+
 TEST(ContactValidation, BadParametersAreNamed) {
   const std::vector<std::pair<std::function<void(ParameterList&)>, std::string>> cases = {
       {[](ParameterList& c) { c.set("Slave Side Set", std::string("")); }, "Problem/Contact/plate/Slave Side Set: required"},
@@ -256,13 +301,8 @@ TEST(ContactValidation, BadParametersAreNamed) {
        "Problem/Contact/plate/Rigid Surface/Points: two consecutive points coincide"},
       {[](ParameterList& c) { c.sublist("Rigid Surface").set("Motion", Teuchos::Array<double>(3, 0.0)); },
        "Problem/Contact/plate/Rigid Surface/Motion: expected two values"},
-      {[](ParameterList& c) { c.set("Normal Penalty", 0.0); }, "Problem/Contact/plate/Normal Penalty: required; expected a value > 0"},
+      {[](ParameterList& c) { c.set("Penalty Factor", 0.0); }, "Problem/Contact/plate/Penalty Factor: expected a value"},
       {[](ParameterList& c) { c.set("Normal Penalty", -1.0); }, "Problem/Contact/plate/Normal Penalty: expected a value in [0"},
-      {[](ParameterList& c) {
-         c.set("Friction Coefficient", 0.3);
-         c.set("Slip Tolerance", 0.0);
-       },
-       "Problem/Contact/plate/Tangential Penalty: expected a value > 0 when Friction Coefficient > 0 and Slip Tolerance = 0"},
       {[](ParameterList& c) { c.set("Slip Tolerance", -0.1); }, "Problem/Contact/plate/Slip Tolerance: expected a value in [0, 1]"},
       {[](ParameterList& c) { c.set("Slip Tolerance", 2.0); }, "Problem/Contact/plate/Slip Tolerance: expected a value in [0, 1]"},
       {[](ParameterList& c) { c.set("Friction Coefficient", -0.1); }, "Problem/Contact/plate/Friction Coefficient: expected a value in [0"},

@@ -1,0 +1,31 @@
+#pragma once
+// Automatic penalties (issue 21, docs/theory-contact.md §5.3): with no Normal Penalty in an interface, the
+// normal penalty is a factor times the stiffness of the elements under its slave facets,
+//   ε_N = f · max over the slave facets of E'/h,   E' = E/(1 − ν²) (initial moduli of the element's material),
+//   h = twice the distance from the element's centroid to the centroid of its slave side
+// (the element's thickness under the side for a parallelogram or a brick), so that a deck in any unit
+// system gives the same answer without a penalty value; with Friction Coefficient > 0, Slip Tolerance = 0
+// and no Tangential Penalty, ε_T = ε_N.
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "contact/InterfaceSpec.hpp"
+#include "deck/ProblemDefinition.hpp"
+
+namespace contessa::deck {
+
+/// E' = E/(1 − ν²) of a material, from its tangent at F = I (λ = A_xxyy, μ = A_xyxy: E' = 4μ(λ + μ)/(λ + 2μ)).
+double planeStrainModulus(const mechanics::Material& material);
+
+/// Collective: the largest E'/h over the facets of side set `sideSet` (every rank's part).
+double largestStiffnessOverSize(const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks,
+                                const std::string& sideSet);
+
+/// Collective: fills the automatic penalties of an interface's passes (`list`: its deck sublist; the
+/// second pass's slave side is the Master Side Set).
+void setAutomaticPenalties(std::vector<contact::ContactInterfaceSpec>& passes, const Teuchos::ParameterList& list,
+                           const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks);
+
+}  // namespace contessa::deck
