@@ -147,7 +147,7 @@ class MumpsContext {
   // AMD's analysis and METIS' both, and the one with fewer estimated operations (RINFOG(1), the same on
   // every rank) analysed again if it was not the last: on 2D meshes and the one-layer 3D tube AMD needs
   // fewer, on 3D bulk meshes METIS 2.7 times fewer at 1.5·10^4 unknowns (bench/README.md, "Fill-reducing
-  // orderings"); an extra analysis costs a fraction of one factorisation.
+  // orderings" under issue 23); an extra analysis costs a fraction of one factorisation.
   bool analyse(const MumpsMatrixView& matrix) {
     if (ordering_ == kGivenOrdering) giveNestedDissectionOrder(matrix);
     if (ordering_ != kFewestOperations) return runAnalysis();
@@ -225,8 +225,8 @@ class MumpsContext {
   DMUMPS_STRUC_C id_{};
   GO n_ = 0;
   long analysedGeneration_ = -1;
-  int ordering_ = 0;                     // ICNTL(7) asked for
-  std::vector<MUMPS_INT> givenOrder_;    // PERM_IN of the last analysis (host), kGivenOrdering only
+  int ordering_ = 0;                   // ICNTL(7) asked for, or kFewestOperations
+  std::vector<MUMPS_INT> givenOrder_;  // PERM_IN of the last METIS order (rank 0 of comm_)
 };
 
 class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
@@ -393,8 +393,9 @@ namespace {
 // The orderings every MUMPS build has (ICNTL(7) codes), METIS' given by Contessa, and the choice between
 // AMD and METIS by MUMPS' operation estimate.
 const std::map<std::string, int>& mumpsOrderings() {
-  static const std::map<std::string, int> orderings = {{"Automatic", 7}, {"AMD", 0}, {"AMF", 2}, {"PORD", 4}, {"QAMD", 6}, {"METIS", kGivenOrdering},
-                                                                 {"Fewest Operations", kFewestOperations}};
+  static const std::map<std::string, int> orderings = {{"Automatic", 7}, {"AMD", kAmd},         {"AMF", 2},
+                                                       {"PORD", 4},      {"QAMD", 6},           {"METIS", kGivenOrdering},
+                                                       {"Fewest Operations", kFewestOperations}};
   return orderings;
 }
 }  // namespace
