@@ -99,14 +99,28 @@ void MumpsSymmetricInput::buildPattern(const MumpsMatrixView& general) {
       transposeOf_.push_back(-2);
     }
   }
-  rows_.resize(lower_.size());
-  cols_.resize(lower_.size());
+  lowerRows_.resize(lower_.size());
+  lowerColumns_.resize(lower_.size());
   for (std::size_t e = 0; e < lower_.size(); ++e) {
-    rows_[e] = std::max(rows[lower_[e]], cols[lower_[e]]);
-    cols_[e] = std::min(rows[lower_[e]], cols[lower_[e]]);
+    lowerRows_[e] = std::max(rows[lower_[e]], cols[lower_[e]]);
+    lowerColumns_[e] = std::min(rows[lower_[e]], cols[lower_[e]]);
   }
-  values_.assign(lower_.size(), 0.0);
+  lowerValues_.assign(lower_.size(), 0.0);
   generalGeneration_ = general.patternGeneration;
+  patternDecoupled_.clear();  // the kept entries are chosen again
+}
+
+void MumpsSymmetricInput::keepCoupledEntries() {
+  kept_.clear();
+  for (std::size_t e = 0; e < lower_.size(); ++e) {
+    const auto i = static_cast<std::size_t>(lowerRows_[e] - 1), j = static_cast<std::size_t>(lowerColumns_[e] - 1);
+    if (i == j || (!decoupled_[i] && !decoupled_[j])) kept_.push_back(e);
+  }
+  rows_.resize(kept_.size());
+  cols_.resize(kept_.size());
+  values_.resize(kept_.size());
+  for (std::size_t c = 0; c < kept_.size(); ++c) rows_[c] = lowerRows_[kept_[c]], cols_[c] = lowerColumns_[kept_[c]];
+  patternDecoupled_ = decoupled_;
   ++generation_;
 }
 
@@ -133,15 +147,15 @@ bool MumpsSymmetricInput::update(const MumpsMatrixView& general) {
     const std::size_t k = lower_[e];
     const long t = transposeOf_[e];
     if (t == static_cast<long>(k)) {  // diagonal
-      values_[e] = v[k];
+      lowerValues_[e] = v[k];
       continue;
     }
     // The pair (i, j), i > j: a = a_ij, b = a_ji.
     const bool upperAlone = t == -2;
-    const MUMPS_INT i = rows_[e] - 1, j = cols_[e] - 1;
+    const MUMPS_INT i = lowerRows_[e] - 1, j = lowerColumns_[e] - 1;
     const double a = upperAlone ? 0.0 : v[k];
     const double b = upperAlone ? v[k] : (t >= 0 ? v[static_cast<std::size_t>(t)] : 0.0);
-    values_[e] = 0.0;
+    lowerValues_[e] = 0.0;
     if (decoupled_[j] && !decoupled_[i]) {
       eliminated_.push_back({i, j, a});
     } else if (decoupled_[i] && !decoupled_[j]) {
@@ -149,9 +163,11 @@ bool MumpsSymmetricInput::update(const MumpsMatrixView& general) {
     } else if (!decoupled_[i] && !decoupled_[j]) {
       if (std::abs(a - b) > kSymmetryTolerance * std::max(rowNorm[static_cast<std::size_t>(i)], rowNorm[static_cast<std::size_t>(j)]))
         return false;
-      values_[e] = 0.5 * (a + b);
+      lowerValues_[e] = 0.5 * (a + b);
     }
   }
+  if (decoupled_ != patternDecoupled_) keepCoupledEntries();
+  for (std::size_t c = 0; c < kept_.size(); ++c) values_[c] = lowerValues_[kept_[c]];
   return true;
 }
 

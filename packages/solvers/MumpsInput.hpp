@@ -75,6 +75,11 @@ class MumpsHostInput {
 /// |a_ij − a_ji| ≤ kSymmetryTolerance · max(‖row i‖∞, ‖row j‖∞) for every other pair: round-off of
 /// a symmetric tangent (hyperelastic solids, frictionless penalty contact: the second derivative of a
 /// potential) passes by orders of magnitude, a Coulomb slip tangent (eq. 26) fails by orders.
+/// MUMPS is given only the diagonal of a decoupled row and column: their other entries are zero after
+/// the elimination, and left in the pattern they would be fill-in for the ordering and the symbolic
+/// factorisation (the one-layer 3D tube, all u_z prescribed: 9.9·10^7 operations per factorisation with
+/// them, bench/README.md, "Fill-reducing orderings"). The entries kept change, and MUMPS analyses anew,
+/// only when the set of decoupled rows does.
 class MumpsSymmetricInput {
  public:
   static constexpr double kSymmetryTolerance = 1e-10;
@@ -93,13 +98,18 @@ class MumpsSymmetricInput {
 
  private:
   void buildPattern(const MumpsMatrixView& general);
+  void keepCoupledEntries();  ///< kept_, rows_, cols_ for the present decoupled_; a new generation
 
   long generalGeneration_ = -1;  ///< the general input's pattern this one was built from
   long generation_ = 0;
   MUMPS_INT n_ = 0;
   std::vector<std::size_t> lower_;      ///< general entries with row ≥ column, in the order given to MUMPS
   std::vector<long> transposeOf_;       ///< per lower entry: the general entry (j, i), −1 when absent
-  std::vector<MUMPS_INT> rows_, cols_;  ///< 1-based, lower triangle
+  std::vector<MUMPS_INT> lowerRows_, lowerColumns_;  ///< 1-based, the whole lower triangle
+  std::vector<double> lowerValues_;                  ///< per lower entry, after the elimination
+  std::vector<std::size_t> kept_;                    ///< lower entries given to MUMPS
+  std::vector<char> patternDecoupled_;               ///< decoupled_ when kept_ was chosen
+  std::vector<MUMPS_INT> rows_, cols_;               ///< 1-based, the kept entries
   std::vector<double> values_;
   std::vector<double> diagonal_;        ///< a_jj of each row (0-based)
   std::vector<char> decoupled_;         ///< per row (0-based)

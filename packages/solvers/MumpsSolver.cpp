@@ -19,6 +19,7 @@
 #include "common/PhaseTimers.hpp"
 #include "model/TpetraTypes.hpp"
 #include "solvers/MumpsInput.hpp"
+#include "solvers/MumpsOrdering.hpp"
 
 namespace contessa::solvers {
 
@@ -41,6 +42,12 @@ constexpr int infog(int k) { return k - 1; }
 
 constexpr int kDescribedNullVectors = 12;
 
+// ICNTL(7) = 1: the ordering is the user's (PERM_IN); Contessa gives METIS' nested dissection.
+constexpr int kGivenOrdering = 1;
+constexpr int kAmd = 0;
+// Not an ICNTL(7) code: analyse with AMD and with METIS, keep the order MUMPS estimates cheaper.
+constexpr int kFewestOperations = -1;
+
 struct MumpsSettings {
   int memoryRelaxation = 50;
   int ordering = 0;
@@ -55,7 +62,7 @@ class MumpsContext {
  public:
   MumpsContext(MPI_Comm comm, bool symmetric, int memoryRelaxation, int ordering, double nullPivotThreshold,
                bool verbose, std::shared_ptr<MumpsFailures> failures)
-      : comm_(comm), failures_(std::move(failures)) {
+      : comm_(comm), failures_(std::move(failures)), ordering_(ordering) {
     id_.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
     id_.par = 1;  // the host takes part in the factorization
     // General unsymmetric (LU; the slip tangent of eq. (26) is non-symmetric), or symmetric indefinite
@@ -110,9 +117,7 @@ class MumpsContext {
     n_ = matrix.order;
     if (matrix.patternGeneration != analysedGeneration_) {  // the analysis (ordering, symbolic) once per pattern
       timers::Scope scope(timers::Phase::MumpsAnalysis);
-      id_.job = 1;
-      dmumps_c(&id_);
-      if (id_.infog[0] < 0) {
+      if (!analyse(matrix)) {
         analysedGeneration_ = -1;
         return false;
       }
@@ -136,6 +141,48 @@ class MumpsContext {
     f.nullPivots = nullPivots;
     f.nullSpace = nullPivots > 0 ? nullSpace(nullPivots) : std::vector<std::vector<double>>{};
     return false;
+  }
+
+  // The ordering and symbolic factorisation (JOB = 1) of the pattern set in id_. With kFewestOperations,
+  // AMD's analysis and METIS' both, and the one with fewer estimated operations (RINFOG(1), the same on
+  // every rank) analysed again if it was not the last: on 2D meshes and the one-layer 3D tube AMD needs
+  // fewer, on 3D bulk meshes METIS 2.7 times fewer at 1.5·10^4 unknowns (bench/README.md, "Fill-reducing
+  // orderings" under issue 23); an extra analysis costs a fraction of one factorisation.
+  bool analyse(const MumpsMatrixView& matrix) {
+    if (ordering_ == kGivenOrdering) giveNestedDissectionOrder(matrix);
+    if (ordering_ != kFewestOperations) return runAnalysis();
+    useOrdering(kAmd);
+    if (!runAnalysis()) return false;
+    const double amdOperations = id_.rinfog[0];
+    giveNestedDissectionOrder(matrix);
+    if (id_.icntl[icntl(7)] != kGivenOrdering) return runAnalysis();  // METIS gave none: AMD again
+    if (!runAnalysis()) return false;
+    if (id_.rinfog[0] <= amdOperations) return true;
+    useOrdering(kAmd);
+    return runAnalysis();
+  }
+
+  bool runAnalysis() {
+    id_.job = 1;
+    dmumps_c(&id_);
+    return id_.infog[0] >= 0;
+  }
+
+  void useOrdering(int code) {
+    id_.icntl[icntl(7)] = code;
+    id_.perm_in = nullptr;
+  }
+
+  // METIS' order of this pattern as PERM_IN on the host, for a sequential analysis (ICNTL(28) = 1:
+  // MUMPS reads PERM_IN only there; with distributed input it gathers the pattern on the host itself).
+  // Where METIS gives none (no off-diagonal entry), AMD.
+  void giveNestedDissectionOrder(const MumpsMatrixView& matrix) {
+    givenOrder_ = nestedDissectionOrder(matrix, comm_);
+    int given = givenOrder_.empty() ? 0 : 1;
+    MPI_Bcast(&given, 1, MPI_INT, 0, comm_);
+    id_.icntl[icntl(28)] = 1;
+    id_.icntl[icntl(7)] = given ? kGivenOrdering : 0;
+    id_.perm_in = givenOrder_.empty() ? nullptr : givenOrder_.data();
   }
 
   // Solves in place: `rhs` holds the right-hand side on the host on entry, the solution on exit.
@@ -178,6 +225,8 @@ class MumpsContext {
   DMUMPS_STRUC_C id_{};
   GO n_ = 0;
   long analysedGeneration_ = -1;
+  int ordering_ = 0;                   // ICNTL(7) asked for, or kFewestOperations
+  std::vector<MUMPS_INT> givenOrder_;  // PERM_IN of the last METIS order (rank 0 of comm_)
 };
 
 class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
@@ -341,9 +390,12 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
 }  // namespace
 
 namespace {
-// The orderings every MUMPS build has (ICNTL(7) codes).
+// The orderings every MUMPS build has (ICNTL(7) codes), METIS' given by Contessa, and the choice between
+// AMD and METIS by MUMPS' operation estimate.
 const std::map<std::string, int>& mumpsOrderings() {
-  static const std::map<std::string, int> orderings = {{"Automatic", 7}, {"AMD", 0}, {"AMF", 2}, {"PORD", 4}, {"QAMD", 6}};
+  static const std::map<std::string, int> orderings = {{"Automatic", 7}, {"AMD", kAmd},         {"AMF", 2},
+                                                       {"PORD", 4},      {"QAMD", 6},           {"METIS", kGivenOrdering},
+                                                       {"Fewest Operations", kFewestOperations}};
   return orderings;
 }
 }  // namespace
@@ -409,10 +461,12 @@ RCP<const Teuchos::ParameterList> MumpsLinearOpWithSolveFactory::getValidParamet
     Teuchos::Array<std::string> names;
     for (const auto& [name, code] : mumpsOrderings()) names.push_back(name);
     Teuchos::setStringToIntegralParameter<int>(
-        "Ordering", "AMD",
-        "Fill-reducing ordering (ICNTL(7)). AMD: fewest operations on the 2D meshes measured (bench/README.md); "
-        "Automatic: MUMPS' choice (AMF or PORD here). METIS and SCOTCH are not offered: Debian's MUMPS has "
-        "neither and would silently use PORD",
+        "Ordering", "Fewest Operations",
+        "Fill-reducing ordering (ICNTL(7)). Fewest Operations: analyse with AMD and with METIS and keep the one "
+        "MUMPS estimates cheaper to factorise (AMD on 2D meshes, METIS on 3D ones; bench/README.md, Fill-reducing "
+        "orderings). METIS: nested dissection from the METIS Contessa links (METIS_NodeND), given to MUMPS as its "
+        "ordering; AMD, AMF, PORD, QAMD: MUMPS' own; Automatic: MUMPS' choice (AMF or PORD here: Debian's MUMPS is "
+        "built without METIS and SCOTCH)",
         names(), valid.get());
     valid->set("Memory Relaxation Percent", 50, "Extra workspace over MUMPS' estimate, percent (ICNTL(14)); doubled on a shortfall");
     // Measured (docs/user-guide.md, Linear solver): the null pivot of a missing support is below 1e-15 on

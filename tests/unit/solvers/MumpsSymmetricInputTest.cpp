@@ -93,6 +93,39 @@ TEST(MumpsSymmetricInput, EliminatedPrescribedColumnsGiveTheGeneralSolution) {
   EXPECT_DOUBLE_EQ(x[2], 0.3);
 }
 
+TEST(MumpsSymmetricInput, ADecoupledRowAndColumnAreGivenAsTheirDiagonalAlone) {
+  // Left in the pattern as zeros, the prescribed row's couplings would be fill-in for MUMPS' ordering
+  // and symbolic factorisation (a third of the 3D tube's unknowns are prescribed).
+  Dense a = stiffnessWithPrescribedRow();
+  Triplets t = triplets(a);
+  MumpsSymmetricInput input;
+  ASSERT_TRUE(input.update(t.view()));
+  const MumpsMatrixView given = input.view();
+  int diagonalOfRow3 = 0;
+  for (MUMPS_INT8 k = 0; k < given.numEntries; ++k) {
+    EXPECT_FALSE((given.rows[k] == 3) != (given.columns[k] == 3)) << "an entry (" << given.rows[k] << ", " << given.columns[k] << ")";
+    diagonalOfRow3 += given.rows[k] == 3 && given.columns[k] == 3;
+  }
+  EXPECT_EQ(diagonalOfRow3, 1);
+  // 5 diagonals and the lower entries of the coupled rows 1, 2, 4, 5 in the pattern: (2,1) (4,2) (5,1)
+  // (5,4).
+  EXPECT_EQ(given.numEntries, 9);
+  // The same decoupled rows at the next call: the same pattern (MUMPS keeps its analysis); a new
+  // decoupled row: a new one.
+  const long generation = given.patternGeneration;
+  ASSERT_TRUE(input.update(t.view()));
+  EXPECT_EQ(input.view().patternGeneration, generation);
+  for (std::size_t j = 0; j < 5; ++j) a[4][j] = a[j][4] = j == 4 ? 2.0 : 0.0;
+  Triplets prescribed5 = triplets(stiffnessWithPrescribedRow());  // the old pattern, new values
+  for (std::size_t k = 0; k < prescribed5.values.size(); ++k) {
+    const auto i = static_cast<std::size_t>(prescribed5.rows[k] - 1), j = static_cast<std::size_t>(prescribed5.cols[k] - 1);
+    prescribed5.values[k] = a[i][j];
+  }
+  ASSERT_TRUE(input.update(prescribed5.view()));
+  EXPECT_NE(input.view().patternGeneration, generation);
+  EXPECT_EQ(input.view().numEntries, 7);  // 5 diagonals, (2,1), (4,2)
+}
+
 TEST(MumpsSymmetricInput, RoundOffPassesAndARealAsymmetryIsRefused) {
   Dense a = stiffnessWithPrescribedRow();
   Triplets t = triplets(a);
