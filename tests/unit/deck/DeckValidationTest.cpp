@@ -250,7 +250,7 @@ TEST(ContactValidation, AutomaticPenaltyFromTheElementsUnderTheSlaveSide) {
     auto p = contactProblem();
     p->sublist("Contact").sublist("plate").remove("Normal Penalty");
     change(*p);
-    return contessa::deck::buildProblem(*p, "").contacts.at(0).law;
+    return contessa::deck::buildProblem(*p, "", MPI_COMM_SELF).contacts.at(0).law;
   };
   EXPECT_NEAR(law([](ParameterList&) {}).normalPenalty, 100.0 * planeStrain, 1e-10 * planeStrain);
   // E'/h: twice the modulus, or half the thickness, twice the penalty; the factor scales it.
@@ -281,9 +281,9 @@ TEST(ContactValidation, AutomaticPenaltyFromTheElementsUnderTheSlaveSide) {
   auto given = contactProblem();
   given->sublist("Contact").sublist("plate").set("Friction Coefficient", 0.3);
   given->sublist("Contact").sublist("plate").set("Slip Tolerance", 0.0);
-  EXPECT_EQ(contessa::deck::buildProblem(*given, "").contacts.at(0).law.tangentialPenalty, 1e6);
+  EXPECT_EQ(contessa::deck::buildProblem(*given, "", MPI_COMM_SELF).contacts.at(0).law.tangentialPenalty, 1e6);
   // A given Normal Penalty is kept.
-  EXPECT_EQ(contessa::deck::buildProblem(*contactProblem(), "").contacts.at(0).law.normalPenalty, 1e6);
+  EXPECT_EQ(contessa::deck::buildProblem(*contactProblem(), "", MPI_COMM_SELF).contacts.at(0).law.normalPenalty, 1e6);
 }
 
 TEST(ContactValidation, BadParametersAreNamed) {
