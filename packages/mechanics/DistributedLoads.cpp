@@ -15,11 +15,34 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// What every facet point offers the load kernels, from its shape values N and gradients dN (CRTP):
+// the point Σ_a N_a x_a and the tangents ∂x/∂ξ_m = Σ_a ∂N_a/∂ξ_m x_a (g[m][i]) at positions x.
+template <class Cell, int M>
+struct FacetPoint {
+  template <int D>
+  std::array<double, D> point(const double* x) const {
+    const auto& c = static_cast<const Cell&>(*this);
+    std::array<double, D> p{};
+    for (int a = 0; a < Cell::kNodes; ++a)
+      for (int i = 0; i < D; ++i) p[i] += c.N[a] * x[D * a + i];
+    return p;
+  }
+  template <int D>
+  std::array<std::array<double, D>, M> tangents(const double* x) const {
+    const auto& c = static_cast<const Cell&>(*this);
+    std::array<std::array<double, D>, M> g{};
+    for (int a = 0; a < Cell::kNodes; ++a)
+      for (int m = 0; m < M; ++m)
+        for (int i = 0; i < D; ++i) g[m][i] += c.dN[M * a + m] * x[D * a + i];
+    return g;
+  }
+};
+
 // A multilinear cell of parametric dimension M (a 2-node edge, a 4-node quadrilateral, an 8-node
 // hexahedron) with its nodes in Exodus order: the corners of [−1, 1]^M, the first two coordinates
 // going round counter-clockwise, the third one (if any) −1 for the first four nodes and +1 after.
 template <int M>
-struct MultilinearCell {
+struct MultilinearCell : FacetPoint<MultilinearCell<M>, M> {
   static constexpr int kNodes = 1 << M;
   static double corner(int a, int i) {
     static const double kCyclic[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
@@ -49,23 +72,6 @@ struct MultilinearCell {
     }
   }
 
-  /// Σ_a N_a x_a (D components).
-  template <int D>
-  std::array<double, D> point(const double* x) const {
-    std::array<double, D> p{};
-    for (int a = 0; a < kNodes; ++a)
-      for (int i = 0; i < D; ++i) p[i] += N[a] * x[D * a + i];
-    return p;
-  }
-  /// The tangents ∂x/∂ξ_m = Σ_a ∂N_a/∂ξ_m x_a, g[m][i].
-  template <int D>
-  std::array<std::array<double, D>, M> tangents(const double* x) const {
-    std::array<std::array<double, D>, M> g{};
-    for (int a = 0; a < kNodes; ++a)
-      for (int m = 0; m < M; ++m)
-        for (int i = 0; i < D; ++i) g[m][i] += dN[M * a + m] * x[D * a + i];
-    return g;
-  }
 };
 
 // The 1D shapes of the edges of 2D cells, in Exodus order (corners, then the mid-edge node).
@@ -99,7 +105,7 @@ std::array<QuadraturePoint<2>, 6> triangleRuleDegree4() {
 /// A facet of any shape of the solid kernels (or the segments above) at one point: the interface of
 /// MultilinearCell (N, dN, point, tangents), the shape's values and gradients, and its load rule.
 template <int M, class Shape, class Rule>
-struct ShapeCell {
+struct ShapeCell : FacetPoint<ShapeCell<M, Shape, Rule>, M> {
   static constexpr int kNodes = Shape::kNodes;
   std::array<double, kNodes> N{};
   std::array<double, kNodes * M> dN{};
@@ -108,21 +114,6 @@ struct ShapeCell {
   explicit ShapeCell(const std::array<double, M>& xi) {
     Shape::shapeValues(xi.data(), N.data());
     Shape::shapeGradients(xi.data(), dN.data());
-  }
-  template <int D>
-  std::array<double, D> point(const double* x) const {
-    std::array<double, D> p{};
-    for (int a = 0; a < kNodes; ++a)
-      for (int i = 0; i < D; ++i) p[i] += N[a] * x[D * a + i];
-    return p;
-  }
-  template <int D>
-  std::array<std::array<double, D>, M> tangents(const double* x) const {
-    std::array<std::array<double, D>, M> g{};
-    for (int a = 0; a < kNodes; ++a)
-      for (int m = 0; m < M; ++m)
-        for (int i = 0; i < D; ++i) g[m][i] += dN[M * a + m] * x[D * a + i];
-    return g;
   }
 };
 
