@@ -125,8 +125,9 @@ TEST(CellFamilies, SidesFollowTheExodusOrderAndPointOutwards) {
         const Point a = reference(t, nodes[i]), b = reference(t, nodes[(i + 1) % k]), m = reference(t, nodes[k + i]);
         for (int j = 0; j < 3; ++j) EXPECT_DOUBLE_EQ(m[j], (a[j] + b[j]) / 2) << name << " side " << s << " node " << k + i;
       }
-      if (t == CellType::Hex27)
+      if (t == CellType::Hex27) {
         for (int j = 0; j < 3; ++j) EXPECT_DOUBLE_EQ(reference(t, nodes[8])[j], sideCentre[j]) << "HEX27 side " << s;
+      }
       // Outward: the normal from the corner order points from the cell's centroid to the side's.
       const Point p0 = reference(t, nodes[0]), p1 = reference(t, nodes[1]), p2 = reference(t, nodes[k - 1]);
       double outward = 0;

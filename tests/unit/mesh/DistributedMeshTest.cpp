@@ -177,7 +177,9 @@ TEST(GridPartition, BoxesWithTheFewestCutFacesCoverTheGrid) {
               ++inside;
             }
       EXPECT_GT(inside, 0) << "rank " << r << " of " << ranks << " has no cell";
-      if (partition.boxes()) EXPECT_EQ(inside, (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]));
+      if (partition.boxes()) {
+        EXPECT_EQ(inside, (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]));
+      }
     }
     EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(seen.size())) << "a cell outside its rank's bounds";
     EXPECT_EQ(partition.owners().size(), seen.size());
