@@ -52,7 +52,7 @@ double largestStiffnessOverSize(const mesh::DistributedMesh& part, const std::ve
     const double h = 2.0 * std::sqrt(distance);
     if (h > 0.0) largest = std::max(largest, planeStrainModulus(*physics->material) / h);
   }
-  return part.numRanks > 1 ? mesh::overRanks(largest).max : largest;  // one rank: MPI may not be running
+  return part.numRanks > 1 ? mesh::overRanks(part.comm, largest).max : largest;  // one rank: MPI may not be running
 }
 
 void setAutomaticPenalties(std::vector<contact::ContactInterfaceSpec>& passes, const Teuchos::ParameterList& list,
