@@ -330,8 +330,9 @@ void addProjectionCurvature(typename Operators<Facet>::Square& K, const FacetKin
   }
 }
 
-/// The weight of the fade past a free edge (ContactPoint) and its derivative ∂w/∂u, or nullopt on the
-/// facet (ξ̄ inside its parent domain) or without a reach.
+/// The weight of the fade past a free edge, w = 1 − 3s² + 2s³ with s = d/reach (ContactPoint), and its
+/// derivative ∂w/∂u (NodeToFacetContact.hpp; docs/theory-contact.md §3.2); nullopt on the facet (ξ̄ inside
+/// its parent domain) or without a reach.
 template <class Facet>
 struct FreeEdgeFade {
   double weight = 1.0;
@@ -350,9 +351,9 @@ std::optional<FreeEdgeFade<Facet>> freeEdgeFade(const NodeToFacetGeometry<Facet>
   const auto c = Projection<Facet>::evaluateAt(x.slave, x.master, clamped);
   const typename Facet::Point v = subtract(p.position, c.position);
   const double d = norm(v);
+  if (!(d > 0.0)) return std::nullopt;
   FreeEdgeFade<Facet> fade;
   const double s = d / reach;
-  if (!(d > 0.0)) return std::nullopt;
   if (s >= 1.0) {
     fade.weight = 0.0;
     return fade;
