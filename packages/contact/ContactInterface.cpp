@@ -129,8 +129,9 @@ class ContactInterface final : public ContactInterfaceBase {
     NodeToFacetGeometry<Facet> geometry;
     geometry.slave = xs;
     geometry.master = facet.x;
+    const double freeEdgeReach = selector_.options().freeEdgeTolerance * spec_.slaveFacetLengths[k];
     return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent,
-                             contactPointOf(selection, facet), approachOf(k, facet.id, committed));
+                             contactPointOf(selection, facet, freeEdgeReach), approachOf(k, facet.id, committed));
   }
   /// Where slave node k, open at the commit, was relative to master `facet` then: its gap at the commit and
   /// its committed position projected on the facet's committed position (CommittedApproach: the element
@@ -166,8 +167,10 @@ class ContactInterface final : public ContactInterfaceBase {
     for (int h : hits) candidates.push_back(facets[h]);
     return selector_.select(xs, candidates, spec_.slaveFacetLengths[k]);
   }
-  /// The selection's contact point in the facet's local node numbers.
-  static ContactPoint contactPointOf(const FacetSelection<Facet>& selection, const MasterFacetNodes<Facet>& facet) {
+  /// The selection's contact point in the facet's local node numbers; on the facet, the force fades over
+  /// `freeEdgeReach` past a free boundary (ContactPoint).
+  static ContactPoint contactPointOf(const FacetSelection<Facet>& selection, const MasterFacetNodes<Facet>& facet,
+                                     double freeEdgeReach) {
     const auto local = [&](int node) {
       for (int a = 0; a < Facet::kNodes; ++a)
         if (facet.nodes[a] == node) return a;
@@ -177,7 +180,7 @@ class ContactInterface final : public ContactInterfaceBase {
     switch (selection.kind) {
       case SelectionKind::AtVertex: return ContactPoint::vertex(local(selection.vertexNode), side);
       case SelectionKind::AtEdge: return ContactPoint::edge(local(selection.edgeNodes[0]), local(selection.edgeNodes[1]), side);
-      default: return ContactPoint::projection();
+      default: return ContactPoint::projection(freeEdgeReach);
     }
   }
   /// Scales the element by the tributary area of slave node k and hands it to the sink; returns the

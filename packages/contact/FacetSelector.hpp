@@ -40,16 +40,21 @@ struct FacetSelectorOptions {
   /// as the node crossed the band, and a node on a line of master nodes stalled the run (issue 22).
   double insideTolerance = 0.0;
   /// A PENETRATING node past a free boundary of the master surface stays on the boundary facet while its
-  /// distance beyond that boundary, measured on the facet's extension (‖x̄(ξ̄) − x̄(clamped ξ̄)‖), is at most
+  /// distance beyond that boundary, measured on the facet's extension (‖x̄(ξ̄) − x̄(clamped ξ̄)‖), is below
   /// freeEdgeTolerance × L_k, L_k being the size of the slave facets at the node (the `slaveSize` given to
-  /// select). So a slave node on a flush edge (the 2D patch test's free ends: both bodies expand alike and
-  /// the node drifts past the end by round-off, or by |g_N| tan θ when the end facet tilts by θ) keeps its
-  /// contact, while a free-surface node beside a punch is not in contact however large the punch's facet
-  /// is: the rule is a length of the slave mesh, not a fraction of the master facet (issue 22; the former
-  /// 0.1 in ξ kept a row 1.11 mm past a 70 mm punch face). It does not depend on the penetration either:
-  /// a rule that did (past by less than |g_N|) let a node 0.11 mm past the edge switch between open and
-  /// closed from one Newton iterate to the next as its penetration changed, and the run stalled.
-  double freeEdgeTolerance = 1e-3;
+  /// select); its force fades to zero over that reach (ContactPoint::freeEdgeReach, w = 1 − 3s² + 2s³), so
+  /// a node carried across the edge loses its force continuously. So a slave node on a flush edge (the 2D
+  /// patch test's free ends: both bodies expand alike and the node drifts past the end by round-off, or by
+  /// |g_N| tan θ when the end facet tilts by θ) keeps its contact, while a free-surface node beside a punch
+  /// is not in contact however large the punch's facet is: the rule is a length of the slave mesh, not a
+  /// fraction of the master facet (issue 22; the former 0.1 in ξ kept a row 1.11 mm past a 70 mm punch
+  /// face). It does not depend on the penetration either: a rule that did (past by less than |g_N|) let a
+  /// node 0.11 mm past the edge switch between open and closed from one Newton iterate to the next. The
+  /// value: with 1e-3 (a cut-off, then a fade) a node row exactly on a punch's edge, spreading outwards
+  /// under the pressure, stalled Newton; with 1e-2 it converges slowly (9–11 iterations in an increment);
+  /// from 3e-2 on in 2–4, with the punch force within 1e-5 of that at 1e-1 (docs/verification-contact.md
+  /// §6). Nodes 0.2 L_k or more past an edge (the punch at n = 18, 32, 48) stay out.
+  double freeEdgeTolerance = 3e-2;
   /// 3D: a projection on a face whose area Jacobian ‖ā_1 × ā_2‖ at ξ̄ is below this fraction of its value
   /// at the face centre (near the apex of a collapsed face) does not count as inside: the node is handed to
   /// a neighbour, or to the apex vertex.
@@ -71,8 +76,8 @@ struct FacetSelectorOptions {
 ///    wins over an inside projection only when strictly closer. The element is then evaluated on one facet
 ///    sharing the point (2D: the one whose projection overshoots least; 3D: the one whose normal best
 ///    matches x^k − x_p), i.e. on that facet extended;
-///  - a PENETRATING node just past a free boundary (by at most freeEdgeTolerance × L_k) stays on the
-///    boundary facet, extended;
+///  - a PENETRATING node just past a free boundary (by less than freeEdgeTolerance × L_k) stays on the
+///    boundary facet, extended, its force faded (ContactPoint::freeEdgeReach);
 ///  - otherwise the node has left the master surface: kind None, not in contact.
 /// The 3D rules for edges and vertices (which are interior, collapsed faces) are in FacetSelector.cpp.
 template <class Facet>

@@ -330,6 +330,51 @@ void addProjectionCurvature(typename Operators<Facet>::Square& K, const FacetKin
   }
 }
 
+/// The weight of the fade past a free edge, w = 1 − 3s² + 2s³ with s = d/reach (ContactPoint), and its
+/// derivative ∂w/∂u (NodeToFacetContact.hpp; docs/theory-contact.md §3.2); nullopt on the facet (ξ̄ inside
+/// its parent domain) or without a reach.
+template <class Facet>
+struct FreeEdgeFade {
+  double weight = 1.0;
+  typename Operators<Facet>::Column derivative{};  // ∂w/∂u
+};
+
+template <class Facet>
+std::optional<FreeEdgeFade<Facet>> freeEdgeFade(const NodeToFacetGeometry<Facet>& x,
+                                                const ProjectionResult<Facet>& p, double reach) {
+  using Op = Operators<Facet>;
+  constexpr int M = Facet::kSurfaceDim;
+  if (!(reach > 0.0)) return std::nullopt;
+  typename Facet::SurfaceCoords clamped = p.xi;
+  for (auto& xi : clamped) xi = std::clamp(xi, -1.0, 1.0);
+  if (clamped == p.xi) return std::nullopt;
+  const auto c = Projection<Facet>::evaluateAt(x.slave, x.master, clamped);
+  const typename Facet::Point v = subtract(p.position, c.position);
+  const double d = norm(v);
+  if (!(d > 0.0)) return std::nullopt;
+  FreeEdgeFade<Facet> fade;
+  const double s = d / reach;
+  if (s >= 1.0) {
+    fade.weight = 0.0;
+    return fade;
+  }
+  fade.weight = 1.0 - s * s * (3.0 - 2.0 * s);
+  const double dwdd = 6.0 * s * (s - 1.0) / reach;
+  FacetKinematics<Facet> k;
+  if (!k.build(p, x.master)) return fade;  // not reached: the element built it already
+  const typename Facet::Point unit = scaled(1.0 / d, v);
+  typename Op::Weights shapeDifference{};
+  for (int i = 0; i < Facet::kNodes; ++i) shapeDifference[1 + i] = p.shape[i] - c.shape[i];
+  typename Op::Column dd = Op::kron(shapeDifference, unit);
+  for (int al = 0; al < M; ++al) {
+    double along = dot(unit, p.covariantBasis[al]);
+    if (clamped[al] == p.xi[al]) along -= dot(unit, c.covariantBasis[al]);
+    addScaled(dd, along, k.Xi[al]);
+  }
+  fade.derivative = scaled(dwdd, dd);
+  return fade;
+}
+
 }  // namespace
 
 template <class Facet>
@@ -343,6 +388,36 @@ NodeToFacetContact<Facet>::NodeToFacetContact(const ContactLawParameters& parame
 
 template <class Facet>
 typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
+    const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed, double facetLength,
+    SlipTangent slipTangent, const ContactPoint& point, const CommittedApproach<kSurfaceDim>& approach) const {
+  Result out = evaluateUnfaded(x, facet, committed, facetLength, slipTangent, point, approach);
+  if (out.status == ContactStatus::Open || point.kind != ContactPoint::Kind::Projection) return out;
+  const auto fade = freeEdgeFade<Facet>(x, out.projection, point.freeEdgeReach);
+  if (!fade) return out;
+  const double w = fade->weight;
+  out.freeEdgeWeight = w;
+  if (w == 0.0) {  // past the reach: open
+    Result open;
+    open.projection = out.projection;
+    open.gap = out.gap;
+    open.freeEdgeWeight = 0.0;
+    open.trial = out.trial;
+    open.trial.tangentialTraction = {};
+    open.trial.status = ContactStatus::Open;
+    open.trial.accumulatedSlip = committed.accumulatedSlip;
+    return open;
+  }
+  // K = w K_c + r_c (∂w/∂u)ᵀ, r = w r_c
+  for (int i = 0; i < kDofs; ++i)
+    for (int j = 0; j < kDofs; ++j) out.tangent(i, j) = w * out.tangent(i, j) + out.residual[i] * fade->derivative[j];
+  out.residual = scaled(w, out.residual);
+  out.normalTraction *= w;
+  out.tangentialTraction = scaled(w, out.tangentialTraction);
+  return out;
+}
+
+template <class Facet>
+typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUnfaded(
     const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed, double facetLength,
     SlipTangent slipTangent, const ContactPoint& point, const CommittedApproach<kSurfaceDim>& approach) const {
   constexpr int M = kSurfaceDim;

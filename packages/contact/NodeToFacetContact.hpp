@@ -50,13 +50,21 @@ struct SlipTangent {
 /// join the neighbouring facets' gaps and normals continuously; evaluated on one facet extended instead,
 /// the force turned between the two facets' normals where the choice of facet flipped, and Newton cycled
 /// on a node at rest exactly on the line (issue 22).
+///
+/// Past a free boundary (a projection outside the facet's parent domain that the selector kept on the
+/// facet, FacetSelectorOptions::freeEdgeTolerance), the whole contact force fades to zero over
+/// `freeEdgeReach` (0: no fade): r = w(d) r_c with the C1 weight
+///   w = 1 − 3s² + 2s³,   s = min(d / freeEdgeReach, 1),   d = ‖x̄(ξ̄) − x̄(clamp(ξ̄))‖,
+/// so a node carried past the edge by the deformation loses its force continuously instead of being cut
+/// off (a node row on a punch's edge stalled Newton, issue 22); docs/theory-contact.md §3.1.
 struct ContactPoint {
   enum class Kind { Projection, Vertex, Edge };
   Kind kind = Kind::Projection;
   std::array<int, 2> nodes{-1, -1};  ///< Vertex: nodes[0]; Edge: its two nodes (local indices in the facet)
   double side = 1.0;                 ///< sign of g_N: +1 in front of the master surface, −1 behind it
+  double freeEdgeReach = 0.0;        ///< Projection: the length over which the force fades past the facet
 
-  static ContactPoint projection() { return {}; }
+  static ContactPoint projection(double freeEdgeReach = 0.0) { return {Kind::Projection, {-1, -1}, 1.0, freeEdgeReach}; }
   static ContactPoint vertex(int node, double side) { return {Kind::Vertex, {node, -1}, side}; }
   static ContactPoint edge(int a, int b, double side) { return {Kind::Edge, {a, b}, side}; }
 };
@@ -88,8 +96,9 @@ struct NodeToFacetResult {
   ProjectionResult<Facet> projection{};        ///< ξ̄, ā_α, ā_αβ, n̄, g_N on the facet (unclamped)
   double gap = 0.0;                            ///< g_N of the contact law: the projection's, or at the vertex/edge
   ContactStatus status = ContactStatus::Open;  ///< Open, Stick or Slip at this iterate
-  double normalTraction = 0.0;                 ///< t_N = ε_N g_N, eq. (16)
-  Vector<kSurfaceDim> tangentialTraction{};    ///< t_Tα, covariant, eq. (22)
+  double normalTraction = 0.0;                 ///< t_N = ε_N g_N, eq. (16), times freeEdgeWeight
+  Vector<kSurfaceDim> tangentialTraction{};    ///< t_Tα, covariant, eq. (22), times freeEdgeWeight
+  double freeEdgeWeight = 1.0;                 ///< w of the fade past a free edge (ContactPoint); 1 on the facet
   ReturnMappingResult<kSurfaceDim> friction{}; ///< trial state of eq. (20)–(23), when evaluated
   Vector<kDofs> residual{};                    ///< r_c = t_N ∂g_N/∂u + t_Tα ∂ξ̄^α/∂u
   Matrix<kDofs, kDofs> tangent{};              ///< K_c = ∂r_c/∂u
@@ -138,6 +147,12 @@ struct NodeToFacetResult {
 /// Δξ = (1 − τ)(ξ̄ − ξ_0) with τ(g_N) of eq. (10), whose variation adds to ∂Δξ/∂u = Ξ the terms
 ///   ∂Δξ^β/∂u = (1 − τ) Ξ^β − (ξ̄^β − ξ_0^β) g_N,0/(g_N,0 − g_N)² N
 /// (N the contact law's ∂g_N/∂u). Without an approach the reference is the current ξ̄ (no traction).
+///
+/// Past a free edge (ContactPoint::freeEdgeReach > 0 and ξ̄ outside the parent domain) the result is faded:
+///   r = w r_c,   K = w K_c + r_c (∂w/∂u)ᵀ,   ∂w/∂u = w'(s)/reach · v̂·∂v/∂u,   v = x̄(ξ̄) − x̄(ξ_c),
+///   ∂v/∂u = ā_α(ξ̄) Ξ^α − Σ_{α free} ā_α(ξ_c) Ξ^α + [0, H_i(ξ̄) − H_i(ξ_c)] ⊗ I
+/// (ξ_c = clamp(ξ̄): its clamped components are constant, its free ones follow ξ̄). w = 0: open. The trial
+/// history keeps the law's unweighted traction (the state of the return mapping).
 template <class Facet>
 class NodeToFacetContact {
  public:
@@ -161,6 +176,11 @@ class NodeToFacetContact {
   const ContactLawParameters& parameters() const { return parameters_; }
 
  private:
+  /// evaluate without the fade past a free edge.
+  Result evaluateUnfaded(const Geometry& x, int facet, const ContactHistory<kSurfaceDim>& committed,
+                         double facetLength, SlipTangent slipTangent, const ContactPoint& point,
+                         const CommittedApproach<kSurfaceDim>& approach) const;
+
   ContactLawParameters parameters_;
   TangentTerms terms_;
   PenaltyNormalLaw normalLaw_;

@@ -4,6 +4,11 @@ of the block's nodes. The contact set must be exactly the block's top nodes unde
 punch's facets: one face, or split into faces (the block's top then starts flush with interior edges and
 vertices), rigid (inputs/punch_3d.xml) or deformable (punch_deformable.xml, a stiff block of its own).
 
+With the edge exactly on a node row (--elements 10 or 20 and --edge 60: a row at x = 60 and one at y = 60) the
+nodes of that row are carried past the edge as the block's top spreads under the punch, within the reach
+over which the force of a node past a free edge fades (docs/theory-contact.md §3, rule 3): they are under
+the punch and must be in contact; the row is reported.
+
 Usage: punch_edge.py OUT --edge E [--split S] [--deformable] [--elements N] [--layers NZ] -- LAUNCH...
 LAUNCH is the command that starts contessa (with mpiexec for several ranks). Exit 0 when the run finished
 and the set is right; prints the set, the force and the Newton iterations either way.
@@ -82,6 +87,10 @@ def main():
     print('edge %g, %d face(s)%s: %d contact nodes, %d under the punch; force %s; Newton %s' %
           (a.edge, a.split * a.split, ' (deformable punch)' if a.deformable else '', closed.sum(), under.sum(),
            ', '.join('%.9g' % f for f in force), iterations))
+    on_row = top & (x <= a.edge + 1e-9) & (y <= a.edge + 1e-9) & (
+        (np.abs(x - a.edge) < 1e-9) | (np.abs(y - a.edge) < 1e-9))
+    if on_row.any():
+        print('%d nodes on the edge row, %d of them in contact' % (on_row.sum(), (closed & on_row).sum()))
     wrong = np.flatnonzero(closed != under)
     if len(wrong):
         for k in wrong[:5]:

@@ -121,19 +121,19 @@ TEST(FacetSelectorQuad4, FreeBoundaryIsNotAnEdgeToContact) {
   const cc::FacetSelector<cc::Quad4Facet> selector;
   EXPECT_EQ(selector.select({1.0, -0.2, 0.05}, faces).kind, cc::SelectionKind::None);
   EXPECT_EQ(selector.select({1.0, -0.2, -0.05}, faces).kind, cc::SelectionKind::None);
-  // Past the boundary by 0.0008, within 1e-3 of the slave facet size L_k = 1 (FacetSelectorOptions::
+  // Past the boundary by 0.024, within 3e-2 of the slave facet size L_k = 1 (FacetSelectorOptions::
   // freeEdgeTolerance): still on, however little it penetrates.
-  const auto flush = selector.select({0.5, -0.0008, -0.01}, faces, 1.0);
+  const auto flush = selector.select({0.5, -0.024, -0.01}, faces, 1.0);
   EXPECT_EQ(flush.kind, cc::SelectionKind::OnFacet);
   EXPECT_EQ(flush.facet, 0);
   EXPECT_NEAR(flush.gap, -0.01, 1e-12);
-  EXPECT_EQ(selector.select({0.5, -0.0008, -1e-7}, faces, 1.0).kind, cc::SelectionKind::OnFacet);
-  // Past it by 0.0012: off, however deep it penetrates.
-  EXPECT_EQ(selector.select({0.5, -0.0012, -0.01}, faces, 1.0).kind, cc::SelectionKind::None);
-  EXPECT_EQ(selector.select({0.5, -0.0012, -0.5}, faces, 1.0).kind, cc::SelectionKind::None);
-  // Past a corner of the surface: the distance to the corner counts (0.0006·√2 on, 0.0008·√2 off).
-  EXPECT_EQ(selector.select({-0.0006, -0.0006, -0.01}, faces, 1.0).kind, cc::SelectionKind::OnFacet);
-  EXPECT_EQ(selector.select({-0.0008, -0.0008, -0.01}, faces, 1.0).kind, cc::SelectionKind::None);
+  EXPECT_EQ(selector.select({0.5, -0.024, -1e-7}, faces, 1.0).kind, cc::SelectionKind::OnFacet);
+  // Past it by 0.036: off, however deep it penetrates.
+  EXPECT_EQ(selector.select({0.5, -0.036, -0.01}, faces, 1.0).kind, cc::SelectionKind::None);
+  EXPECT_EQ(selector.select({0.5, -0.036, -0.5}, faces, 1.0).kind, cc::SelectionKind::None);
+  // Past a corner of the surface: the distance to the corner counts (0.018·√2 on, 0.024·√2 off).
+  EXPECT_EQ(selector.select({-0.018, -0.018, -0.01}, faces, 1.0).kind, cc::SelectionKind::OnFacet);
+  EXPECT_EQ(selector.select({-0.024, -0.024, -0.01}, faces, 1.0).kind, cc::SelectionKind::None);
 }
 
 // The free-edge rule is a length of the slave mesh, not a fraction of the master facet: a node 1.11 past
