@@ -69,6 +69,21 @@ RegularisationMeasures ContactInterfaceBase::committedRegularisation() const {
   return m;
 }
 
+void ContactInterfaceBase::readSlaveRows(const StateRecord& table, StateTableReader& rows,
+                                         const std::function<void(std::size_t)>& read) const {
+  const std::size_t n = spec_.slaveNodes.size();
+  for (std::size_t row = 0; row < rows.rows(); ++row) {
+    const std::int64_t id = rows.idAt(row);
+    if (id < 0 || static_cast<std::size_t>(id) >= n)
+      table.fail("id", "slave node " + std::to_string(id) + ", the interface has " + std::to_string(n));
+    rows.seekRow(row);
+    read(static_cast<std::size_t>(id));
+  }
+  for (std::size_t k = 0; k < n; ++k)
+    if (evaluatesSlave()[k] && !rows.hasRow(static_cast<std::int64_t>(k)))
+      table.fail("id", "no row for slave node " + std::to_string(k) + " of interface '" + spec_.label() + "'");
+}
+
 std::vector<SlaveNodeChange> ContactInterfaceBase::owned(const std::vector<SlaveNodeChange>& all) const {
   std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
@@ -488,18 +503,13 @@ template <class Facet>
 void ContactInterface<Facet>::restoreSlaves(const StateRecord& table) {
   StateTableReader rows(table);
   const std::size_t n = spec_.slaveNodes.size();
-  for (std::size_t row = 0; row < rows.rows(); ++row) {
-    const std::int64_t id = rows.idAt(row);
-    if (id < 0 || static_cast<std::size_t>(id) >= n)
-      table.fail("id", "slave node " + std::to_string(id) + ", the interface has " + std::to_string(n));
-    rows.seekRow(row);
+  readSlaveRows(table, rows, [&](std::size_t k) {
     ContactHistory<kXi> h;
     SlaveNodeChange c;
     SlaveNodeState o;
     Point x{};
     slaveNodeFields(h, c, o, x, rows);
-    const auto k = static_cast<std::size_t>(id);
-    if (!evaluatesSlave()[k]) continue;
+    if (!evaluatesSlave()[k]) return;
     history_.restore(k, h);
     committedIncrement_[k] = c;
     committedOutput_[k] = o;
@@ -508,10 +518,7 @@ void ContactInterface<Facet>::restoreSlaves(const StateRecord& table) {
     lastSlave_[k] = x;
     trialOutput_[k] = o;
     trialChanges_[k] = unchanged(k);
-  }
-  for (std::size_t k = 0; k < n; ++k)
-    if (evaluatesSlave()[k] && !rows.hasRow(static_cast<std::int64_t>(k)))
-      table.fail("id", "no row for slave node " + std::to_string(k) + " of interface '" + spec_.label() + "'");
+  });
 }
 
 template <class Facet>

@@ -130,6 +130,12 @@ class ContactInterfaceBase {
   RegularisationMeasures committedRegularisation() const;
 
  protected:
+  /// Reads a restart table of slave-node rows (saveCommittedSlaves): for each row checks its id against
+  /// the interface, positions `rows` at it and calls read(k); then fails naming the first slave node
+  /// this rank evaluates that has no row. read(k) reads the row's fields and keeps them if
+  /// evaluatesSlave()[k].
+  void readSlaveRows(const StateRecord& table, StateTableReader& rows,
+                     const std::function<void(std::size_t)>& read) const;
   /// `evaluatesSlave[i]`: this rank evaluates slave node i (its owner does, so each contribution is
   /// assembled once).
   ContactInterfaceBase(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);

@@ -317,24 +317,15 @@ void MortarInterface::saveCommittedSlaves(StateRecord& table) const {
 
 void MortarInterface::restoreSlaves(const StateRecord& table) {
   StateTableReader rows(table);
-  const std::size_t n = spec_.slaveNodes.size();
-  for (std::size_t row = 0; row < rows.rows(); ++row) {
-    const std::int64_t id = rows.idAt(row);
-    if (id < 0 || static_cast<std::size_t>(id) >= n)
-      table.fail("id", "slave node " + std::to_string(id) + ", the interface has " + std::to_string(n));
-    rows.seekRow(row);
+  readSlaveRows(table, rows, [&](std::size_t k) {
     SlaveNodeChange c;
     SlaveNodeState o;
     mortarSlaveFields(c, o, rows);
-    const auto k = static_cast<std::size_t>(id);
-    if (!evaluatesSlave()[k]) continue;
+    if (!evaluatesSlave()[k]) return;
     committedIncrement_[k] = c;
     committedOutput_[k] = trialOutput_[k] = o;
     trialChanges_[k] = unchanged(k);
-  }
-  for (std::size_t k = 0; k < n; ++k)
-    if (evaluatesSlave()[k] && !rows.hasRow(static_cast<std::int64_t>(k)))
-      table.fail("id", "no row for slave node " + std::to_string(k) + " of interface '" + spec_.label() + "'");
+  });
 }
 
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
