@@ -1,15 +1,19 @@
 #!/bin/sh
-# element_kernel_callgrind.sh [BENCH]: instructions per element evaluation of the solid element kernels,
+# element_kernel_callgrind.sh [BENCH] [ELEMENT...]: instructions per element evaluation of the solid element kernels,
 # counted by valgrind's callgrind on one run of element_kernel_bench's workload (--once): unlike wall
 # time, the count does not depend on the load of the machine. Prints one line per element and material:
 # instructions per residual evaluation and per Jacobian (force + tangent) evaluation.
-# Needs valgrind (Debian package valgrind); takes about a minute.
+# Needs valgrind (Debian package valgrind); takes about a minute for the default four elements (Q4, Q4
+# Enhanced, Hex8, Hex8 Enhanced); name others after BENCH (e.g. Tet10 Hex20: the quadratic hexahedra take
+# several minutes each).
 set -eu
 BENCH=${1:-build/bin/element_kernel_bench}
+[ $# -gt 0 ] && shift
+[ $# -eq 0 ] && set -- "Q4" "Q4 Enhanced" "Hex8" "Hex8 Enhanced"
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 printf '%-14s %-24s %16s %16s\n' element material "residual Ir/el" "jacobian Ir/el"
-for element in "Q4" "Q4 Enhanced" "Hex8" "Hex8 Enhanced"; do
+for element in "$@"; do
   for material in "Saint Venant-Kirchhoff" "Neo-Hookean"; do
     out=""
     for pass in residualPass jacobianPass; do
