@@ -12,30 +12,21 @@
 #include <utility>
 #include <vector>
 
-#include "mechanics/Element.hpp"
 #include "mechanics/Kinematics.hpp"
+#include "mechanics/ShapeKernel.hpp"
 #include "mechanics/SolidOperators.hpp"
 
 namespace contessa::mechanics {
 
 template <class Shape, class Kinematics = PlanarKinematics<Shape::kDimension>>
-class DisplacementElement final : public ElementKernel {
+class DisplacementElement final : public ShapeKernel<Shape, Kinematics::kHoop> {
  public:
   static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints, ND = D * N;
   static constexpr int MD = Kinematics::kMaterialDimension;  ///< the law's F is MD × MD
   using Geometry = ReferenceGeometry<Shape, Kinematics::kHoop>;
   using GeometrySet = ElementGeometrySet<Geometry>;
 
-  explicit DisplacementElement(std::string name) : name_(std::move(name)) {}
-  std::string name() const override { return name_; }
-  int dimension() const override { return D; }
-  int numNodes() const override { return N; }
-  bool axisymmetric() const override { return Kinematics::kHoop; }
-  std::vector<double> parentNodeCoordinates() const override {
-    std::vector<double> xi;
-    for (const auto& node : Shape::parentNodes()) xi.insert(xi.end(), node.begin(), node.end());
-    return xi;
-  }
+  explicit DisplacementElement(std::string name) : ShapeKernel<Shape, Kinematics::kHoop>(std::move(name)) {}
 
   std::unique_ptr<ElementGeometry> referenceGeometry(int count, const double* X) const override {
     auto set = std::make_unique<GeometrySet>(count);
@@ -96,8 +87,6 @@ class DisplacementElement final : public ElementKernel {
     for (int i = 0; i < MD; ++i) H[MD * i + i] += 1.0;
     return H;
   }
-
-  std::string name_;
 };
 
 }  // namespace contessa::mechanics

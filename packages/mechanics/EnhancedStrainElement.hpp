@@ -21,15 +21,15 @@
 #include <vector>
 
 #include "mechanics/DenseSolve.hpp"
-#include "mechanics/Element.hpp"
 #include "mechanics/EnhancedStrain.hpp"
 #include "mechanics/Kinematics.hpp"
+#include "mechanics/ShapeKernel.hpp"
 #include "mechanics/SolidOperators.hpp"
 
 namespace contessa::mechanics {
 
 template <class Shape, class Modes, class Kinematics = PlanarKinematics<Shape::kDimension>>
-class EnhancedStrainElement final : public ElementKernel {
+class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop> {
  public:
   static constexpr int D = Shape::kDimension, N = Shape::kNodes, Q = Shape::kPoints;
   static constexpr int MD = Kinematics::kMaterialDimension;  ///< the law's F is MD × MD
@@ -51,16 +51,7 @@ class EnhancedStrainElement final : public ElementKernel {
   };
   using GeometrySet = ElementGeometrySet<Geometry>;
 
-  explicit EnhancedStrainElement(std::string name) : name_(std::move(name)) {}
-  std::string name() const override { return name_; }
-  int dimension() const override { return D; }
-  int numNodes() const override { return N; }
-  bool axisymmetric() const override { return Kinematics::kHoop; }
-  std::vector<double> parentNodeCoordinates() const override {
-    std::vector<double> xi;
-    for (const auto& node : Shape::parentNodes()) xi.insert(xi.end(), node.begin(), node.end());
-    return xi;
-  }
+  explicit EnhancedStrainElement(std::string name) : ShapeKernel<Shape, Kinematics::kHoop>(std::move(name)) {}
   int numInternalVariables() const override { return NA; }
   int numStateValues() const override { return kStateSize; }
 
@@ -293,8 +284,6 @@ class EnhancedStrainElement final : public ElementKernel {
     }
     return ElementStatus::InternalSolveFailed;
   }
-
-  std::string name_;
 };
 
 }  // namespace contessa::mechanics

@@ -289,17 +289,8 @@ class MshLayoutCheck {
   }
 
   void checkNodes(const Section& s) {
-    if (major_ == 2) {
-      const long long n = count(numbers(s, 1, "the number of nodes")[0], s);
-      for (long long k = 0; k < n; ++k)
-        numbers(s, 4, [&] { return "node " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag x y z)"; });
-      return requireEnd(s);
-    }
-    const auto header = numbers(s, minor_ == 0 ? 2 : 4, "the node section's counts");
-    const long long blocks = count(header[0], s), total = count(header[1], s);
-    long long seen = 0;
-    for (long long b = 0; b < blocks; ++b) {
-      const auto block = [&] { return "node block " + std::to_string(b + 1) + " of " + std::to_string(blocks); };
+    if (major_ == 2) return checkCountedRecords(s, "node", "(tag x y z)");
+    checkBlocks(s, "node", [&](const auto& block) {
       const auto h = numbers(s, 4, [&] { return "the header of " + block(); });
       const bool parametric = h[2] != 0;
       const long long n = count(h[3], s);
@@ -310,33 +301,40 @@ class MshLayoutCheck {
         for (long long k = 0; k < n; ++k)
           numbers(s, parametric ? 4 : 3, [&] { return "the coordinates of node " + std::to_string(k + 1) + " of " + block(); });
       }
-      seen += n;
-    }
-    requireEnd(s);
-    if (seen != total)
-      fail(where(s) + " announces " + std::to_string(total) + " nodes, its blocks hold " + std::to_string(seen));
+      return n;
+    });
   }
 
   void checkElements(const Section& s) {
-    if (major_ == 2) {
-      const long long n = count(numbers(s, 1, "the number of elements")[0], s);
-      for (long long k = 0; k < n; ++k)
-        numbers(s, 4, [&] { return "element " + std::to_string(k + 1) + " of " + std::to_string(n) + " (tag type tags nodes)"; });
-      return requireEnd(s);
-    }
-    const auto header = numbers(s, minor_ == 0 ? 2 : 4, "the element section's counts");
-    const long long blocks = count(header[0], s), total = count(header[1], s);
-    long long seen = 0;
-    for (long long b = 0; b < blocks; ++b) {
-      const auto block = [&] { return "element block " + std::to_string(b + 1) + " of " + std::to_string(blocks); };
+    if (major_ == 2) return checkCountedRecords(s, "element", "(tag type tags nodes)");
+    checkBlocks(s, "element", [&](const auto& block) {
       const long long n = count(numbers(s, 4, [&] { return "the header of " + block(); })[3], s);
       for (long long k = 0; k < n; ++k)
         numbers(s, 2, [&] { return "element " + std::to_string(k + 1) + " of " + block() + " (tag nodes)"; });
-      seen += n;
-    }
+      return n;
+    });
+  }
+
+  // MSH 2: the number of records ("node", "element"), then one line each of at least 4 numbers (`layout`).
+  void checkCountedRecords(const Section& s, const std::string& record, const char* layout) {
+    const long long n = count(numbers(s, 1, [&] { return "the number of " + record + "s"; })[0], s);
+    for (long long k = 0; k < n; ++k)
+      numbers(s, 4, [&] { return record + " " + std::to_string(k + 1) + " of " + std::to_string(n) + " " + layout; });
+    requireEnd(s);
+  }
+
+  // MSH 4: the section's counts (blocks, total records), then its blocks: `checkBlock(block)` reads one,
+  // `block()` naming it ("node block 2 of 3"), and returns how many records it held; they must add up.
+  template <class CheckBlock>
+  void checkBlocks(const Section& s, const std::string& record, const CheckBlock& checkBlock) {
+    const auto header = numbers(s, minor_ == 0 ? 2 : 4, [&] { return "the " + record + " section's counts"; });
+    const long long blocks = count(header[0], s), total = count(header[1], s);
+    long long seen = 0;
+    for (long long b = 0; b < blocks; ++b)
+      seen += checkBlock([&] { return record + " block " + std::to_string(b + 1) + " of " + std::to_string(blocks); });
     requireEnd(s);
     if (seen != total)
-      fail(where(s) + " announces " + std::to_string(total) + " elements, its blocks hold " + std::to_string(seen));
+      fail(where(s) + " announces " + std::to_string(total) + " " + record + "s, its blocks hold " + std::to_string(seen));
   }
 };
 

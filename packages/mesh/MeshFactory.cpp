@@ -15,6 +15,7 @@
 #include "mesh/Generators.hpp"
 #include "mesh/MeshConversion.hpp"
 #include "mesh/MeshDistribution.hpp"
+#include "mesh/MeshFactoryParameters.hpp"
 
 namespace contessa::mesh {
 namespace {
@@ -33,54 +34,85 @@ auto generate(const std::string& where, F&& make) {
   }
 }
 
-// A generator's row builds, from the spec its deck list gives, the whole mesh or this rank's part.
-template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&)>
-Mesh createGenerated(const ParameterList& list, const std::string& where, const std::string&, MPI_Comm) {
-  const Spec spec = read(list);
-  return generate(where, [&] { return whole(spec); });
+// A generator's parameter table (MeshFactoryParameters.hpp), built once.
+template <class Spec>
+using Table = const ParameterTable<Spec>& (*)();
+
+template <class Spec, Table<Spec> table>
+RCP<ParameterList> generatorParameters() {
+  return table().publish();
 }
 
-template <class Spec, Spec (*read)(const ParameterList&), DistributedMesh (*part)(const Spec&, int, int)>
-DistributedMesh createGeneratedPart(const ParameterList& list, const std::string& where, const std::string&,
-                                    MPI_Comm comm) {
-  const Spec spec = read(list);
+// This rank's part of a generated mesh, built alone.
+template <class Spec>
+DistributedMesh generatedPart(DistributedMesh (*part)(const Spec&, int, int), const Spec& spec,
+                              const std::string& where, MPI_Comm comm) {
   const Ranks ranks = ranksOf(comm);
   DistributedMesh mine = generate(where, [&] { return part(spec, ranks.rank, ranks.size); });
   mine.comm = comm;
   return mine;
 }
 
+// A generator's row builds, from the spec its deck list gives, the whole mesh or this rank's part.
+template <class Spec, Table<Spec> table, Mesh (*whole)(const Spec&)>
+Mesh createGenerated(const ParameterList& list, const std::string& where, const std::string&, MPI_Comm) {
+  const Spec spec = table().read(list);
+  return generate(where, [&] { return whole(spec); });
+}
+
+template <class Spec, Table<Spec> table, DistributedMesh (*part)(const Spec&, int, int)>
+DistributedMesh createGeneratedPart(const ParameterList& list, const std::string& where, const std::string&,
+                                    MPI_Comm comm) {
+  return generatedPart(part, table().read(list), where, comm);
+}
+
 // ---- Cell variants of the Rectangle and the Box: triangles or tetrahedra, quadratic cells ----
 
 // `Cell Type` (the grid's cells, or simplices made from them) and `Element Order` (1, or 2: a node at
 // the middle of each edge) of a structured generator.
-void addCellVariant(ParameterList& p, const std::string& cells, const std::string& simplices) {
-  setChoice(p, "Cell Type", cells, {cells, simplices},
-            cells + (simplices == "Triangles" ? " (QUAD4)" : " (HEX8)") + ", or " + simplices + ": each cell split into " +
-                (simplices == "Triangles" ? "2 TRI3 along its diagonal from node 1 to node 3"
-                                          : "the 6 TETRA4 around its diagonal from node 1 to node 7 (faces matching)"));
-  setPositiveInt(p, "Element Order", 1,
-                 "1 or 2: 1 linear cells; 2 a node at the middle of every edge (QUAD8, HEX20, TRI6, TETRA10; "
-                 "mid-edge nodes on the straight chord)");
-}
-
 struct CellVariant {
-  bool simplices = false;
+  std::string cellType;
   int order = 1;
-  bool isDefault() const { return !simplices && order == 1; }
 };
 
-CellVariant cellVariant(const ParameterList& list, const std::string& cells) {
-  CellVariant v;
-  v.simplices = list.get<std::string>("Cell Type") != cells;
-  v.order = list.get<int>("Element Order");
-  requireInput(v.order <= 2, "Element Order: " + std::to_string(v.order) + " is not an element order (expected 1 or 2)");
-  return v;
+ParameterTable<CellVariant> cellVariantTable(const std::string& cells, const std::string& simplices) {
+  return ParameterTable<CellVariant>()
+      .choice("Cell Type", &CellVariant::cellType, cells, {cells, simplices},
+              cells + (simplices == "Triangles" ? " (QUAD4)" : " (HEX8)") + ", or " + simplices +
+                  ": each cell split into " +
+                  (simplices == "Triangles" ? "2 TRI3 along its diagonal from node 1 to node 3"
+                                            : "the 6 TETRA4 around its diagonal from node 1 to node 7 (faces matching)"))
+      .count("Element Order", &CellVariant::order, 1,
+             "1 or 2: 1 linear cells; 2 a node at the middle of every edge (QUAD8, HEX20, TRI6, TETRA10; "
+             "mid-edge nodes on the straight chord)");
 }
 
-Mesh converted(Mesh mesh, const CellVariant& v, const std::string& where) {
-  if (v.isDefault()) return mesh;
-  if (v.simplices) mesh = splitIntoSimplices(mesh);
+// A structured grid's spec and the cells made of it.
+template <class Spec>
+struct WithCells {
+  Spec grid;
+  CellVariant cells;
+};
+
+// The grid's table, then the cell variant's rows.
+template <class Spec>
+ParameterTable<WithCells<Spec>> withCellVariant(const std::string& listName, const ParameterTable<Spec>& grid,
+                                                 const std::string& cells, const std::string& simplices) {
+  return ParameterTable<WithCells<Spec>>(listName)
+      .include(grid, &WithCells<Spec>::grid)
+      .include(cellVariantTable(cells, simplices), &WithCells<Spec>::cells);
+}
+
+void requireElementOrder(const CellVariant& v) {
+  requireInput(v.order <= 2, "Element Order: " + std::to_string(v.order) + " is not an element order (expected 1 or 2)");
+}
+
+// The grid's own cells (`cells`), linear: what each rank can make alone.
+bool isGridItself(const CellVariant& v, const char* cells) { return v.cellType == cells && v.order == 1; }
+
+Mesh converted(Mesh mesh, const CellVariant& v, const char* cells, const std::string& where) {
+  if (isGridItself(v, cells)) return mesh;
+  if (v.cellType != cells) mesh = splitIntoSimplices(mesh);
   if (v.order == 2) mesh = withMidEdgeNodes(mesh);
   mesh.validate(where);
   return mesh;
@@ -88,193 +120,148 @@ Mesh converted(Mesh mesh, const CellVariant& v, const std::string& where) {
 
 // A generator row with the cell variants: the grid made, then converted (the whole mesh; its parts are
 // sent out from rank 0 unless the variant is the grid's own cells, which each rank makes alone).
-template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&), const char* cells>
+template <class Spec, Table<WithCells<Spec>> table, Mesh (*whole)(const Spec&), const char* cells>
 Mesh createVariant(const ParameterList& list, const std::string& where, const std::string&, MPI_Comm) {
-  const Spec spec = read(list);
-  return generate(where, [&] { return converted(whole(spec), cellVariant(list, cells), where); });
+  const WithCells<Spec> spec = table().read(list);
+  return generate(where, [&] {
+    requireElementOrder(spec.cells);
+    return converted(whole(spec.grid), spec.cells, cells, where);
+  });
 }
 
-template <class Spec, Spec (*read)(const ParameterList&), Mesh (*whole)(const Spec&),
+template <class Spec, Table<WithCells<Spec>> table, Mesh (*whole)(const Spec&),
           DistributedMesh (*part)(const Spec&, int, int), const char* cells>
 DistributedMesh createVariantPart(const ParameterList& list, const std::string& where, const std::string& directory,
                                   MPI_Comm comm) {
-  const CellVariant v = generate(where, [&] { return cellVariant(list, cells); });
-  if (v.isDefault()) return createGeneratedPart<Spec, read, part>(list, where, directory, comm);
-  return distributeMesh(comm, [&] { return createVariant<Spec, read, whole, cells>(list, where, directory, comm); });
+  const WithCells<Spec> spec = table().read(list);
+  generate(where, [&] { return requireElementOrder(spec.cells); });
+  if (isGridItself(spec.cells, cells)) return generatedPart(part, spec.grid, where, comm);
+  return distributeMesh(comm, [&] { return createVariant<Spec, table, whole, cells>(list, where, directory, comm); });
 }
 
 constexpr char kQuadrilaterals[] = "Quadrilaterals";
 constexpr char kHexahedra[] = "Hexahedra";
 
-// ---- Rectangle (Quad4) ----
-
-RCP<ParameterList> rectangleParameters() {
-  auto p = rcp(new ParameterList("Rectangle"));
-  p->set("X Origin", 0.0, "x of the lower-left corner");
-  p->set("Y Origin", 0.0, "y of the lower-left corner");
-  setPositive(*p, "Length X", 1.0, "Width");
-  setPositive(*p, "Length Y", 1.0, "Height");
-  setPositiveInt(*p, "Elements X", 1, "Elements along x");
-  setPositiveInt(*p, "Elements Y", 1, "Elements along y");
-  setPositive(*p, "Bias X", 1.0, "Last over first element width along x (geometric grading; 1 = uniform)");
-  setPositive(*p, "Bias Y", 1.0, "Last over first element height along y (geometric grading; 1 = uniform)");
-  p->set("Block Name", std::string("block_1"), "Element block name; node/side sets: left, right, bottom, top (node set 'all' too)");
-  addCellVariant(*p, kQuadrilaterals, "Triangles");
-  return p;
+// "Block Name", with the sets the generator defines.
+std::string blockNameDoc(const std::string& setNames) {
+  return "Element block name; node/side sets: " + setNames + " (node set 'all' too)";
 }
 
-RectangleSpec rectangleSpec(const ParameterList& list) {
-  RectangleSpec s;
-  s.x0 = list.get<double>("X Origin");
-  s.y0 = list.get<double>("Y Origin");
-  s.lx = list.get<double>("Length X");
-  s.ly = list.get<double>("Length Y");
-  s.nx = list.get<int>("Elements X");
-  s.ny = list.get<int>("Elements Y");
-  s.biasX = list.get<double>("Bias X");
-  s.biasY = list.get<double>("Bias Y");
-  s.blockName = list.get<std::string>("Block Name");
-  return s;
+// ---- Rectangle (Quad4) ----
+
+const ParameterTable<WithCells<RectangleSpec>>& rectangleTable() {
+  using S = RectangleSpec;
+  static const auto table = withCellVariant(
+      "Rectangle",
+      ParameterTable<S>()
+          .real("X Origin", &S::x0, 0.0, "x of the lower-left corner")
+          .real("Y Origin", &S::y0, 0.0, "y of the lower-left corner")
+          .positive("Length X", &S::lx, 1.0, "Width")
+          .positive("Length Y", &S::ly, 1.0, "Height")
+          .count("Elements X", &S::nx, 1, "Elements along x")
+          .count("Elements Y", &S::ny, 1, "Elements along y")
+          .positive("Bias X", &S::biasX, 1.0, "Last over first element width along x (geometric grading; 1 = uniform)")
+          .positive("Bias Y", &S::biasY, 1.0, "Last over first element height along y (geometric grading; 1 = uniform)")
+          .text("Block Name", &S::blockName, "block_1", blockNameDoc("left, right, bottom, top")),
+      kQuadrilaterals, "Triangles");
+  return table;
 }
 
 // ---- Annulus Sector (Quad4) and its extrusion, Hollow Cylinder Sector (Hex8) ----
 
-void addAnnulusSectorParameters(ParameterList& p) {
-  setPositive(p, "Inner Radius", 100.0, "Inner radius, centre at the origin");
-  setPositive(p, "Thickness", 20.0, "Wall thickness (outer radius = inner radius + thickness)");
-  p.set("Start Angle", 0.0, "Start angle in degrees, counter-clockwise from +x");
-  p.set("End Angle", 90.0, "End angle in degrees (> Start Angle)");
-  setPositiveInt(p, "Elements Through Thickness", 13, "Elements across the wall");
-  setPositiveInt(p, "Elements Around Arc", 101, "Elements along the arc");
-  setPositive(p, "Radial Bias", 1.0, "Outermost over innermost element thickness (geometric grading; 1 = uniform)");
-  setPositive(p, "Arc Bias", 1.0, "Last over first element angle along the arc (geometric grading; 1 = uniform)");
+// The ring segment's parameters, which both generators take.
+const ParameterTable<AnnulusSectorSpec>& annulusWall() {
+  using S = AnnulusSectorSpec;
+  static const auto table =
+      ParameterTable<S>()
+          .positive("Inner Radius", &S::innerRadius, 100.0, "Inner radius, centre at the origin")
+          .positive("Thickness", &S::thickness, 20.0, "Wall thickness (outer radius = inner radius + thickness)")
+          .real("Start Angle", &S::startAngleDeg, 0.0, "Start angle in degrees, counter-clockwise from +x")
+          .real("End Angle", &S::endAngleDeg, 90.0, "End angle in degrees (> Start Angle)")
+          .count("Elements Through Thickness", &S::elementsThroughThickness, 13, "Elements across the wall")
+          .count("Elements Around Arc", &S::elementsAroundArc, 101, "Elements along the arc")
+          .positive("Radial Bias", &S::radialBias, 1.0,
+                    "Outermost over innermost element thickness (geometric grading; 1 = uniform)")
+          .positive("Arc Bias", &S::arcBias, 1.0,
+                    "Last over first element angle along the arc (geometric grading; 1 = uniform)");
+  return table;
 }
 
-void addBlockName(ParameterList& p, const std::string& setNames) {
-  p.set("Block Name", std::string("block_1"), "Element block name; node/side sets: " + setNames + " (node set 'all' too)");
+const ParameterTable<AnnulusSectorSpec>& annulusSectorTable() {
+  static const auto table = ParameterTable<AnnulusSectorSpec>("Annulus Sector")
+                                .include(annulusWall())
+                                .text("Block Name", &AnnulusSectorSpec::blockName, "block_1",
+                                      blockNameDoc("inner, outer, start, end"));
+  return table;
 }
 
-AnnulusSectorSpec annulusSectorSpec(const ParameterList& list) {
-  AnnulusSectorSpec s;
-  s.innerRadius = list.get<double>("Inner Radius");
-  s.thickness = list.get<double>("Thickness");
-  s.startAngleDeg = list.get<double>("Start Angle");
-  s.endAngleDeg = list.get<double>("End Angle");
-  s.elementsThroughThickness = list.get<int>("Elements Through Thickness");
-  s.elementsAroundArc = list.get<int>("Elements Around Arc");
-  s.radialBias = list.get<double>("Radial Bias");
-  s.arcBias = list.get<double>("Arc Bias");
-  s.blockName = list.get<std::string>("Block Name");
-  return s;
-}
-
-RCP<ParameterList> annulusSectorParameters() {
-  auto p = rcp(new ParameterList("Annulus Sector"));
-  addAnnulusSectorParameters(*p);
-  addBlockName(*p, "inner, outer, start, end");
-  return p;
-}
-
-RCP<ParameterList> hollowCylinderSectorParameters() {
-  auto p = rcp(new ParameterList("Hollow Cylinder Sector"));
-  addAnnulusSectorParameters(*p);
-  p->set("Z Origin", 0.0, "z of the back face");
-  setPositive(*p, "Length Z", 10.0, "Length along the axis (z)");
-  setPositiveInt(*p, "Elements Z", 1, "Layers of elements along the axis");
-  setPositive(*p, "Bias Z", 1.0, "Last over first layer thickness along z (geometric grading; 1 = uniform)");
-  addBlockName(*p, "inner, outer, start, end, back (z = Z Origin), front (z = Z Origin + Length Z)");
-  return p;
-}
-
-HollowCylinderSectorSpec hollowCylinderSectorSpec(const ParameterList& list) {
-  HollowCylinderSectorSpec s;
-  s.section = annulusSectorSpec(list);
-  s.z0 = list.get<double>("Z Origin");
-  s.length = list.get<double>("Length Z");
-  s.layers = list.get<int>("Elements Z");
-  s.axialBias = list.get<double>("Bias Z");
-  return s;
+const ParameterTable<HollowCylinderSectorSpec>& hollowCylinderSectorTable() {
+  using S = HollowCylinderSectorSpec;
+  static const auto table =
+      ParameterTable<S>("Hollow Cylinder Sector")
+          .include(annulusWall(), &S::section)
+          .real("Z Origin", &S::z0, 0.0, "z of the back face")
+          .positive("Length Z", &S::length, 10.0, "Length along the axis (z)")
+          .count("Elements Z", &S::layers, 1, "Layers of elements along the axis")
+          .positive("Bias Z", &S::axialBias, 1.0,
+                    "Last over first layer thickness along z (geometric grading; 1 = uniform)")
+          .text("Block Name", [](S& s) -> std::string& { return s.section.blockName; }, "block_1",
+                blockNameDoc("inner, outer, start, end, back (z = Z Origin), front (z = Z Origin + Length Z)"));
+  return table;
 }
 
 // ---- Box (Hex8) ----
 
-RCP<ParameterList> boxParameters() {
-  auto p = rcp(new ParameterList("Box"));
-  p->set("X Origin", 0.0, "x of the corner with the smallest coordinates");
-  p->set("Y Origin", 0.0, "y of that corner");
-  p->set("Z Origin", 0.0, "z of that corner");
-  setPositive(*p, "Length X", 1.0, "Size along x");
-  setPositive(*p, "Length Y", 1.0, "Size along y");
-  setPositive(*p, "Length Z", 1.0, "Size along z");
-  setPositiveInt(*p, "Elements X", 1, "Elements along x");
-  setPositiveInt(*p, "Elements Y", 1, "Elements along y");
-  setPositiveInt(*p, "Elements Z", 1, "Elements along z");
-  setPositive(*p, "Bias X", 1.0, "Last over first element size along x (geometric grading; 1 = uniform)");
-  setPositive(*p, "Bias Y", 1.0, "Last over first element size along y (geometric grading; 1 = uniform)");
-  setPositive(*p, "Bias Z", 1.0, "Last over first element size along z (geometric grading; 1 = uniform)");
-  p->set("Block Name", std::string("block_1"),
-         "Element block name; node/side sets: left, right (x), bottom, top (y), back, front (z) (node set 'all' too)");
-  addCellVariant(*p, kHexahedra, "Tetrahedra");
-  return p;
-}
-
-BoxSpec boxSpec(const ParameterList& list) {
-  BoxSpec s;
-  s.x0 = list.get<double>("X Origin");
-  s.y0 = list.get<double>("Y Origin");
-  s.z0 = list.get<double>("Z Origin");
-  s.lx = list.get<double>("Length X");
-  s.ly = list.get<double>("Length Y");
-  s.lz = list.get<double>("Length Z");
-  s.nx = list.get<int>("Elements X");
-  s.ny = list.get<int>("Elements Y");
-  s.nz = list.get<int>("Elements Z");
-  s.biasX = list.get<double>("Bias X");
-  s.biasY = list.get<double>("Bias Y");
-  s.biasZ = list.get<double>("Bias Z");
-  s.blockName = list.get<std::string>("Block Name");
-  return s;
+const ParameterTable<WithCells<BoxSpec>>& boxTable() {
+  using S = BoxSpec;
+  static const auto table = withCellVariant(
+      "Box",
+      ParameterTable<S>()
+          .real("X Origin", &S::x0, 0.0, "x of the corner with the smallest coordinates")
+          .real("Y Origin", &S::y0, 0.0, "y of that corner")
+          .real("Z Origin", &S::z0, 0.0, "z of that corner")
+          .positive("Length X", &S::lx, 1.0, "Size along x")
+          .positive("Length Y", &S::ly, 1.0, "Size along y")
+          .positive("Length Z", &S::lz, 1.0, "Size along z")
+          .count("Elements X", &S::nx, 1, "Elements along x")
+          .count("Elements Y", &S::ny, 1, "Elements along y")
+          .count("Elements Z", &S::nz, 1, "Elements along z")
+          .positive("Bias X", &S::biasX, 1.0, "Last over first element size along x (geometric grading; 1 = uniform)")
+          .positive("Bias Y", &S::biasY, 1.0, "Last over first element size along y (geometric grading; 1 = uniform)")
+          .positive("Bias Z", &S::biasZ, 1.0, "Last over first element size along z (geometric grading; 1 = uniform)")
+          .text("Block Name", &S::blockName, "block_1",
+                blockNameDoc("left, right (x), bottom, top (y), back, front (z)")),
+      kHexahedra, "Tetrahedra");
+  return table;
 }
 
 // ---- Sphere Octant (Hex8) ----
 
-RCP<ParameterList> sphereOctantParameters() {
-  auto p = rcp(new ParameterList("Sphere Octant"));
-  setPositive(*p, "Radius", 50.0, "Sphere radius");
-  p->set("X Center", 0.0, "x of the sphere's centre");
-  p->set("Y Center", 0.0, "y of the sphere's centre");
-  p->set("Z Center", 0.0, "z of the sphere's centre");
-  setChoice(*p, "Pole Direction", "-z", {"-z", "+z", "-x", "+x", "-y", "+y"},
-            "Direction from the centre to the pole (the contact point): the octant lies on that side of the "
-            "equator plane and on the + side of the two symmetry planes");
-  setPositiveInt(*p, "Elements Along Edge", 4, "Elements along each edge of the inner cube and of each surface patch");
-  setPositiveInt(*p, "Elements Through Shell", 4, "Element layers between the inner cube and the sphere");
-  setPositive(*p, "Inner Cube Fraction", 0.5, "Edge of the inner cube over the radius (< 1/sqrt(3))");
-  setPositive(*p, "Pole Bias", 1.0,
-              "Element size far from the pole over that at the pole, along the pole patch's edges (> 1 refines "
-              "near the pole; 1 = equiangular)");
-  setPositive(*p, "Radial Bias", 1.0,
-              "Outermost over innermost shell layer thickness (< 1 refines towards the surface; 1 = uniform)");
-  p->set("Block Name", std::string("block_1"),
-         "Element block name; node/side sets: surface, equator, symmetry_<axis> for the two other axes (node "
-         "sets 'pole' and 'all' too)");
-  return p;
-}
-
-SphereOctantSpec sphereOctantSpec(const ParameterList& list) {
-  SphereOctantSpec s;
-  s.radius = list.get<double>("Radius");
-  s.center[0] = list.get<double>("X Center");
-  s.center[1] = list.get<double>("Y Center");
-  s.center[2] = list.get<double>("Z Center");
-  s.poleDirection = list.get<std::string>("Pole Direction");
-  s.elementsAlongEdge = list.get<int>("Elements Along Edge");
-  s.elementsThroughShell = list.get<int>("Elements Through Shell");
-  s.innerCubeFraction = list.get<double>("Inner Cube Fraction");
-  s.poleBias = list.get<double>("Pole Bias");
-  s.radialBias = list.get<double>("Radial Bias");
-  s.blockName = list.get<std::string>("Block Name");
-  return s;
+const ParameterTable<SphereOctantSpec>& sphereOctantTable() {
+  using S = SphereOctantSpec;
+  static const auto table =
+      ParameterTable<S>("Sphere Octant")
+          .positive("Radius", &S::radius, 50.0, "Sphere radius")
+          .real("X Center", [](S& s) -> double& { return s.center[0]; }, 0.0, "x of the sphere's centre")
+          .real("Y Center", [](S& s) -> double& { return s.center[1]; }, 0.0, "y of the sphere's centre")
+          .real("Z Center", [](S& s) -> double& { return s.center[2]; }, 0.0, "z of the sphere's centre")
+          .choice("Pole Direction", &S::poleDirection, "-z", {"-z", "+z", "-x", "+x", "-y", "+y"},
+                  "Direction from the centre to the pole (the contact point): the octant lies on that side of the "
+                  "equator plane and on the + side of the two symmetry planes")
+          .count("Elements Along Edge", &S::elementsAlongEdge, 4,
+                 "Elements along each edge of the inner cube and of each surface patch")
+          .count("Elements Through Shell", &S::elementsThroughShell, 4,
+                 "Element layers between the inner cube and the sphere")
+          .positive("Inner Cube Fraction", &S::innerCubeFraction, 0.5, "Edge of the inner cube over the radius (< 1/sqrt(3))")
+          .positive("Pole Bias", &S::poleBias, 1.0,
+                    "Element size far from the pole over that at the pole, along the pole patch's edges (> 1 refines "
+                    "near the pole; 1 = equiangular)")
+          .positive("Radial Bias", &S::radialBias, 1.0,
+                    "Outermost over innermost shell layer thickness (< 1 refines towards the surface; 1 = uniform)")
+          .text("Block Name", &S::blockName, "block_1",
+                "Element block name; node/side sets: surface, equator, symmetry_<axis> for the two other axes (node "
+                "sets 'pole' and 'all' too)");
+  return table;
 }
 
 // ---- Mesh files ----
@@ -413,27 +400,30 @@ struct MeshSource {
 
 const Registry<RegistryRow<MeshSource>>& registry() {
   static const Registry<RegistryRow<MeshSource>> rows("mesh type", {
-    {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y", &rectangleParameters,
-     &createVariant<RectangleSpec, &rectangleSpec, &generateRectangle, kQuadrilaterals>,
-     &createVariantPart<RectangleSpec, &rectangleSpec, &generateRectangle, &generateRectanglePart, kQuadrilaterals>},
+    {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y",
+     &generatorParameters<WithCells<RectangleSpec>, &rectangleTable>,
+     &createVariant<RectangleSpec, &rectangleTable, &generateRectangle, kQuadrilaterals>,
+     &createVariantPart<RectangleSpec, &rectangleTable, &generateRectangle, &generateRectanglePart, kQuadrilaterals>},
     {"Annulus Sector",
      "A ring segment of QUAD4 (2D) centred at the origin, graded through the wall and along the arc",
-     &annulusSectorParameters, &createGenerated<AnnulusSectorSpec, &annulusSectorSpec, &generateAnnulusSector>,
-     &createGeneratedPart<AnnulusSectorSpec, &annulusSectorSpec, &generateAnnulusSectorPart>},
-    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &boxParameters,
-     &createVariant<BoxSpec, &boxSpec, &generateBox, kHexahedra>,
-     &createVariantPart<BoxSpec, &boxSpec, &generateBox, &generateBoxPart, kHexahedra>},
+     &generatorParameters<AnnulusSectorSpec, &annulusSectorTable>,
+     &createGenerated<AnnulusSectorSpec, &annulusSectorTable, &generateAnnulusSector>,
+     &createGeneratedPart<AnnulusSectorSpec, &annulusSectorTable, &generateAnnulusSectorPart>},
+    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &generatorParameters<WithCells<BoxSpec>, &boxTable>,
+     &createVariant<BoxSpec, &boxTable, &generateBox, kHexahedra>,
+     &createVariantPart<BoxSpec, &boxTable, &generateBox, &generateBoxPart, kHexahedra>},
     {"Hollow Cylinder Sector",
      "The Annulus Sector extruded along z into layers of HEX8 (3D); its first layer of nodes is the Annulus "
      "Sector's (same numbers, same x and y), so one layer with u_z = 0 reproduces a plane-strain 2D run",
-     &hollowCylinderSectorParameters,
-     &createGenerated<HollowCylinderSectorSpec, &hollowCylinderSectorSpec, &generateHollowCylinderSector>,
-     &createGeneratedPart<HollowCylinderSectorSpec, &hollowCylinderSectorSpec, &generateHollowCylinderSectorPart>},
+     &generatorParameters<HollowCylinderSectorSpec, &hollowCylinderSectorTable>,
+     &createGenerated<HollowCylinderSectorSpec, &hollowCylinderSectorTable, &generateHollowCylinderSector>,
+     &createGeneratedPart<HollowCylinderSectorSpec, &hollowCylinderSectorTable, &generateHollowCylinderSectorPart>},
     {"Sphere Octant",
      "One eighth of a ball on HEX8 (3D) without degenerate elements (an inner cube and three shells reaching "
      "the sphere, as a cube-sphere), for Hertz contact at its pole",
-     &sphereOctantParameters, &createGenerated<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctant>,
-     &createGeneratedPart<SphereOctantSpec, &sphereOctantSpec, &generateSphereOctantPart>},
+     &generatorParameters<SphereOctantSpec, &sphereOctantTable>,
+     &createGenerated<SphereOctantSpec, &sphereOctantTable, &generateSphereOctant>,
+     &createGeneratedPart<SphereOctantSpec, &sphereOctantTable, &generateSphereOctantPart>},
     {"Exodus File",
      "An Exodus II mesh: element blocks of TRI3, TRI6, QUAD4, QUAD8, QUAD9 (2D) or TETRA4, TETRA10, HEX8, "
      "HEX20, HEX27, WEDGE6, WEDGE15 (3D), node sets and side sets with their names",

@@ -2,8 +2,9 @@
 // Mesh sources by name ("Problem/Mesh/Type"): the inline generators and the mesh file readers, one
 // registry row each (MeshFactory.cpp) with the deck parameters it takes, their docs and defaults,
 // and the function that builds the mesh. The deck validates a Mesh list against validParameters
-// before create; the deck reference is generated from the same lists. Adding a mesh source = one
-// function that builds a Mesh + one row.
+// before create; the deck reference is generated from the same lists. A generator's parameters are one
+// table (MeshFactoryParameters.hpp) that both publishes them and reads them into its spec. Adding a mesh
+// source = one function that builds a Mesh + its parameter table + one row.
 #include <string>
 #include <vector>
 

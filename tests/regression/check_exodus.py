@@ -31,22 +31,23 @@ if len(times) != args.steps:
     problems.append(f"{len(times)} time steps, expected {args.steps}")
 if np.any(np.diff(times) <= 0):
     problems.append("times are not increasing")
-nodal = names(ds, "name_nod_var") if args.nodal else []
-for n in args.nodal:
-    if n not in nodal:
-        problems.append(f"nodal variable {n} missing (have {nodal})")
-    elif not np.all(np.isfinite(ds.variables[f"vals_nod_var{nodal.index(n) + 1}"][:])):
-        problems.append(f"nodal variable {n} has non-finite values")
-element = names(ds, "name_elem_var") if args.element else []
-for n in args.element:
-    if n not in element:
-        problems.append(f"element variable {n} missing (have {element})")
-    elif not np.all(np.isfinite(ds.variables[f"vals_elem_var{element.index(n) + 1}eb1"][:])):
-        problems.append(f"element variable {n} has non-finite values")
-globals_ = names(ds, "name_glo_var") if args.globals else []
-for n in args.globals:
-    if n not in globals_:
-        problems.append(f"global variable {n} missing (have {globals_})")
+
+
+def present_and_finite(kind, wanted, name_var, values_var=None):
+    """The file's `kind` variable names (from `name_var`), with a problem for each of `wanted` that is
+    missing or, where `values_var(k)` names the k-th one's values (1-based), has a non-finite value."""
+    have = names(ds, name_var) if wanted else []
+    for n in wanted:
+        if n not in have:
+            problems.append(f"{kind} variable {n} missing (have {have})")
+        elif values_var and not np.all(np.isfinite(ds.variables[values_var(have.index(n) + 1)][:])):
+            problems.append(f"{kind} variable {n} has non-finite values")
+    return have
+
+
+nodal = present_and_finite("nodal", args.nodal, "name_nod_var", lambda k: f"vals_nod_var{k}")
+element = present_and_finite("element", args.element, "name_elem_var", lambda k: f"vals_elem_var{k}eb1")
+globals_ = present_and_finite("global", args.globals, "name_glo_var")
 for p in problems:
     print("FAIL:", p)
 print(f"{args.file}: {len(times)} steps, nodal {nodal}, element {element}, global {globals_}")

@@ -13,12 +13,6 @@ const std::vector<std::vector<int>> kQuadSides = {{0, 1}, {1, 2}, {2, 3}, {3, 0}
 const std::vector<std::vector<int>> kHexSides = {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
                                                  {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
 
-std::vector<double> sideCoordinates(const std::vector<double>& X, const std::vector<int>& side, int D) {
-  std::vector<double> x;
-  for (int a : side) x.insert(x.end(), X.begin() + D * a, X.begin() + D * (a + 1));
-  return x;
-}
-
 std::vector<double> pressureForce(int D, const std::vector<double>& x, double p, const LoadMeasure& m,
                                   std::vector<double>* K = nullptr) {
   std::vector<double> f(x.size());
@@ -30,19 +24,8 @@ std::vector<double> pressureForce(int D, const std::vector<double>& x, double p,
 
 // The largest difference between K and central differences of f over the largest entry of K.
 double stiffnessError(int D, const std::vector<double>& x, double p, const LoadMeasure& m) {
-  std::vector<double> K;
-  pressureForce(D, x, p, m, &K);
-  const std::size_t n = x.size();
-  const double h = 1e-6;
-  double worst = 0.0;
-  for (std::size_t b = 0; b < n; ++b) {
-    auto plus = x, minus = x;
-    plus[b] += h;
-    minus[b] -= h;
-    const auto fp = pressureForce(D, plus, p, m), fm = pressureForce(D, minus, p, m);
-    for (std::size_t a = 0; a < n; ++a) worst = std::max(worst, std::abs(K[a * n + b] - (fp[a] - fm[a]) / (2 * h)));
-  }
-  return worst / maxAbs(K);
+  return checkStiffness([&](const std::vector<double>& y, std::vector<double>* K) { return pressureForce(D, y, p, m, K); },
+                        x).error;
 }
 
 TEST(FollowerPressure, StiffnessMatchesCentralDifferencesOnEverySideIn2D) {

@@ -48,12 +48,6 @@ std::vector<double> curvedCell() {
   return X;
 }
 
-std::vector<double> sideCoordinates(const std::vector<double>& X, const std::vector<int>& side, int D) {
-  std::vector<double> x;
-  for (int a : side) x.insert(x.end(), X.begin() + D * a, X.begin() + D * (a + 1));
-  return x;
-}
-
 std::vector<double> pressureForce(int D, const std::vector<double>& x, double p, const LoadMeasure& m,
                                   std::vector<double>* K = nullptr) {
   const int nodes = static_cast<int>(x.size()) / D;
@@ -66,22 +60,9 @@ std::vector<double> pressureForce(int D, const std::vector<double>& x, double p,
 
 /// max |K − K_FD| / max |K| (central differences of the force), and K's largest asymmetry relative to it.
 std::pair<double, double> stiffnessError(int D, const std::vector<double>& x, double p, const LoadMeasure& m) {
-  std::vector<double> K;
-  pressureForce(D, x, p, m, &K);
-  const std::size_t n = x.size();
-  const double h = 1e-6;
-  double worst = 0.0, asymmetry = 0.0;
-  for (std::size_t b = 0; b < n; ++b) {
-    auto plus = x, minus = x;
-    plus[b] += h;
-    minus[b] -= h;
-    const auto fp = pressureForce(D, plus, p, m), fm = pressureForce(D, minus, p, m);
-    for (std::size_t a = 0; a < n; ++a) {
-      worst = std::max(worst, std::abs(K[a * n + b] - (fp[a] - fm[a]) / (2 * h)));
-      asymmetry = std::max(asymmetry, std::abs(K[a * n + b] - K[b * n + a]));
-    }
-  }
-  return {worst / maxAbs(K), asymmetry / maxAbs(K)};
+  const StiffnessCheck check = checkStiffness(
+      [&](const std::vector<double>& y, std::vector<double>* K) { return pressureForce(D, y, p, m, K); }, x);
+  return {check.error, check.asymmetry};
 }
 
 struct Family {

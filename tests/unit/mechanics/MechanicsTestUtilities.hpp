@@ -261,6 +261,42 @@ inline std::vector<double> centralDifferenceTangent(const ElementKernel& kernel,
   return Kfd;
 }
 
+/// The coordinates of the nodes `side` lists (cell-local numbers) of a cell's X, D per node, in that order.
+inline std::vector<double> sideCoordinates(const std::vector<double>& X, const std::vector<int>& side, int D) {
+  std::vector<double> x;
+  for (int a : side) x.insert(x.end(), X.begin() + D * a, X.begin() + D * (a + 1));
+  return x;
+}
+
+/// A force f(x), and its stiffness K = ∂f/∂x (n × n, row-major) into *K when K is not null.
+using ForceAndStiffness = std::function<std::vector<double>(const std::vector<double>& x, std::vector<double>* K)>;
+
+/// How a stiffness K matches central differences (step 1e-6) of its force: max |K − K_FD| / max |K|, and
+/// K's largest asymmetry max |K_ab − K_ba| / max |K|.
+struct StiffnessCheck {
+  double error;
+  double asymmetry;
+};
+
+inline StiffnessCheck checkStiffness(const ForceAndStiffness& force, const std::vector<double>& x) {
+  std::vector<double> K;
+  force(x, &K);
+  const std::size_t n = x.size();
+  const double h = 1e-6;
+  double worst = 0.0, asymmetry = 0.0;
+  for (std::size_t b = 0; b < n; ++b) {
+    auto plus = x, minus = x;
+    plus[b] += h;
+    minus[b] -= h;
+    const auto fp = force(plus, nullptr), fm = force(minus, nullptr);
+    for (std::size_t a = 0; a < n; ++a) {
+      worst = std::max(worst, std::abs(K[a * n + b] - (fp[a] - fm[a]) / (2 * h)));
+      asymmetry = std::max(asymmetry, std::abs(K[a * n + b] - K[b * n + a]));
+    }
+  }
+  return {worst / maxAbs(K), asymmetry / maxAbs(K)};
+}
+
 /// Number of zero pivots (below 1e-10 of the largest) of a symmetric n × n matrix by Gaussian
 /// elimination with full pivoting: the dimension of its null space.
 inline int nullity(std::vector<double> K, int n) {

@@ -19,7 +19,7 @@
 
 using namespace contessa;
 using namespace contessa::mesh;
-using test_support::messageOf;
+using test_support::refusalOf;
 
 namespace {
 
@@ -177,11 +177,7 @@ TEST(BoxGenerator, GradedInEachDirection) {
 }
 
 TEST(BoxGenerator, RejectsBadSpecs) {
-  auto message = [](auto change) {
-    BoxSpec s;
-    change(s);
-    return messageOf([&] { generateBox(s); });
-  };
+  auto message = [](auto change) { return refusalOf(&generateBox, change); };
   EXPECT_EQ(message([](BoxSpec& s) { s.lz = 0; }), "Length Z: expected a positive number, got 0");
   EXPECT_EQ(message([](BoxSpec& s) { s.nz = 0; }), "Elements Z: expected a positive integer, got 0");
   EXPECT_EQ(message([](BoxSpec& s) { s.biasZ = -1; }), "Bias Z: expected a value > 0, got -1");
@@ -271,11 +267,7 @@ TEST(HollowCylinderSectorGenerator, LayersVolumeAndOutwardSides) {
 }
 
 TEST(HollowCylinderSectorGenerator, RejectsBadSpecs) {
-  auto message = [](auto change) {
-    HollowCylinderSectorSpec s;
-    change(s);
-    return messageOf([&] { generateHollowCylinderSector(s); });
-  };
+  auto message = [](auto change) { return refusalOf(&generateHollowCylinderSector, change); };
   EXPECT_EQ(message([](HollowCylinderSectorSpec& s) { s.length = -2; }), "Length Z: expected a positive number, got -2");
   EXPECT_EQ(message([](HollowCylinderSectorSpec& s) { s.layers = 0; }), "Elements Z: expected a positive integer, got 0");
   EXPECT_EQ(message([](HollowCylinderSectorSpec& s) { s.section.thickness = 0; }),
@@ -419,11 +411,7 @@ TEST(SphereOctantGenerator, GradingRefinesAtThePoleAndTheSurface) {
 }
 
 TEST(SphereOctantGenerator, RejectsBadSpecs) {
-  auto message = [](auto change) {
-    SphereOctantSpec s;
-    change(s);
-    return messageOf([&] { generateSphereOctant(s); });
-  };
+  auto message = [](auto change) { return refusalOf(&generateSphereOctant, change); };
   EXPECT_EQ(message([](SphereOctantSpec& s) { s.radius = 0; }), "Radius: expected a positive number, got 0");
   EXPECT_EQ(message([](SphereOctantSpec& s) { s.poleDirection = "z"; }),
             "Pole Direction: expected one of -x, +x, -y, +y, -z, +z, got 'z'");

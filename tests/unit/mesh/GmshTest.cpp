@@ -377,8 +377,9 @@ void expectExodusOrder(const Mesh& m, const ElementBlock& b) {
             << name << " element " << e << " node " << edge.middle;
     std::vector<int> corners(static_cast<std::size_t>(numCorners(b.cellType)));
     for (int a = 0; a < numCorners(b.cellType); ++a) corners[a] = a;
-    if (b.cellType == CellType::Quad9)
+    if (b.cellType == CellType::Quad9) {
       for (int j = 0; j < 3; ++j) ASSERT_NEAR(node(e, 8)[j], centre(e, corners, 4)[j], kPlaced) << "QUAD9 centre";
+    }
     if (b.cellType == CellType::Hex27) {
       for (int j = 0; j < 3; ++j) ASSERT_NEAR(node(e, 20)[j], centre(e, corners, 8)[j], kPlaced) << "HEX27 centre";
       for (int s = 0; s < 6; ++s) {

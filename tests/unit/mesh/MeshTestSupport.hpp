@@ -1,6 +1,6 @@
 #pragma once
 // What the mesh tests share: the structured generators' specs in one line, the message of the
-// InputError an action throws, and two meshes compared field by field (coordinates, blocks, node sets,
+// InputError an action throws (or a generator given a changed spec), and two meshes compared field by field (coordinates, blocks, node sets,
 // side sets).
 #include <functional>
 #include <string>
@@ -67,6 +67,15 @@ inline std::string messageOf(const std::function<void()>& action) {
   return "<no InputError>";
 }
 
+/// The message with which `generate` refuses its default spec changed by `change` (a callable taking
+/// Spec&), "<no InputError>" when it builds the mesh.
+template <class Spec, class Change>
+std::string refusalOf(Mesh (*generate)(const Spec&), Change change) {
+  Spec spec;
+  change(spec);
+  return messageOf([&] { generate(spec); });
+}
+
 /// How coordinates must agree: bit for bit (a mesh read two ways), or within 4 ulps (EXPECT_DOUBLE_EQ:
 /// a mesh written to a file and read back).
 enum class Coordinates { Exact, WithinFourUlps };
@@ -83,8 +92,8 @@ inline void expectSameMesh(const Mesh& a, const Mesh& b, Coordinates match = Coo
   for (size_t k = 0; k < a.blocks.size(); ++k) {
     EXPECT_EQ(a.blocks[k].name, b.blocks[k].name);
     EXPECT_EQ(a.blocks[k].cellType, b.blocks[k].cellType);
-    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements);
-    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity);
+    EXPECT_EQ(a.blocks[k].elements, b.blocks[k].elements) << a.blocks[k].name;
+    EXPECT_EQ(a.blocks[k].connectivity, b.blocks[k].connectivity) << a.blocks[k].name;
   }
   ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
   for (size_t k = 0; k < a.nodeSets.size(); ++k) {
