@@ -545,12 +545,26 @@ void ContactInterface<Facet>::restoreMaster(const StateRecord& table) {
 
 template class ContactInterface<Line2Facet>;
 template class ContactInterface<Quad4Facet>;
+template class ContactInterface<Line3Facet>;
+template class ContactInterface<Tri3Facet>;
+template class ContactInterface<Tri6Facet>;
+template class ContactInterface<Quad8Facet>;
+template class ContactInterface<Quad9Facet>;
 
 std::unique_ptr<ContactInterfaceBase> makeContactInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
-  if (spec.dimension == 2) return std::make_unique<ContactInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
-  if (spec.dimension == 3) return std::make_unique<ContactInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
-  throw std::logic_error("makeContactInterface: interface '" + spec.label() + "' has dimension " +
-                         std::to_string(spec.dimension) + " (2 or 3 expected)");
+  // The master facets' type (MasterFacet.hpp), from the space dimension and their node count.
+  switch (spec.dimension * 100 + spec.nodesPerFacet()) {
+    case 202: return std::make_unique<ContactInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 203: return std::make_unique<ContactInterface<Line3Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 303: return std::make_unique<ContactInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 304: return std::make_unique<ContactInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 306: return std::make_unique<ContactInterface<Tri6Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 308: return std::make_unique<ContactInterface<Quad8Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 309: return std::make_unique<ContactInterface<Quad9Facet>>(std::move(spec), std::move(evaluatesSlave));
+    default: break;
+  }
+  throw std::logic_error("makeContactInterface: interface '" + spec.label() + "' has no facet type of " +
+                         std::to_string(spec.nodesPerFacet()) + " nodes in " + std::to_string(spec.dimension) + "D");
 }
 
 }  // namespace contessa::contact

@@ -205,10 +205,11 @@ void validateRigidSurface(const RigidSurface& surface, int dimension, const std:
 
 namespace {
 
-template <class Facet>
+/// Facet: the rigid surface's (Line2Facet, Quad4Facet); SlaveFacet: the slave side set's.
+template <class Facet, class SlaveFacet>
 void checkFacing(const RigidSurface& surface, const mesh::ReplicatedSurface& slave, const std::string& where) {
   using Point = typename Facet::Point;
-  constexpr int n = Facet::kNodes, dim = Facet::kSpaceDim;
+  constexpr int n = Facet::kNodes, dim = Facet::kSpaceDim, ns = SlaveFacet::kNodes;
   constexpr double kCos60 = 0.5;
   // The rigid facets at λ = 0, each with a box enlarged by its size: the slave faces near it.
   const std::size_t numFacets = surface.facets.size() / n;
@@ -228,14 +229,14 @@ void checkFacing(const RigidSurface& surface, const mesh::ReplicatedSurface& sla
   std::vector<int> facing(numFacets, 0), backwards(numFacets, 0), hits;
   const Projection<Facet> projection;
   for (std::size_t i = 0; i < slave.elements.size(); ++i) {
-    std::array<Point, n> x{};
-    for (int a = 0; a < n; ++a) {
+    std::array<Point, ns> x{};
+    for (int a = 0; a < ns; ++a) {
       const auto at = static_cast<std::size_t>(
-          std::lower_bound(slave.nodes.begin(), slave.nodes.end(), slave.facetNodes[i * n + a]) - slave.nodes.begin());
+          std::lower_bound(slave.nodes.begin(), slave.nodes.end(), slave.facetNodes[i * ns + a]) - slave.nodes.begin());
       for (int c = 0; c < dim; ++c) x[a][c] = slave.coordinates[at * dim + c];
     }
     // The slave face's centre and outward normal (the side orderings make the facet normal outward).
-    const auto centre = Projection<Facet>::evaluateAt(Point{}, x, Facet::center());
+    const auto centre = Projection<SlaveFacet>::evaluateAt(Point{}, x, SlaveFacet::center());
     if (!(determinant(centre.metric) > 0.0)) continue;
     hits.clear();
     tree.query(centre.position, hits);
@@ -262,10 +263,16 @@ void checkFacing(const RigidSurface& surface, const mesh::ReplicatedSurface& sla
 
 void checkRigidSurfaceFacesSlave(const RigidSurface& surface, const mesh::ReplicatedSurface& slave,
                                  const std::string& where) {
-  if (slave.dimension == 2)
-    checkFacing<Line2Facet>(surface, slave, where);
-  else
-    checkFacing<Quad4Facet>(surface, slave, where);
+  switch (slave.dimension * 100 + slave.nodesPerFacet) {
+    case 202: checkFacing<Line2Facet, Line2Facet>(surface, slave, where); break;
+    case 203: checkFacing<Line2Facet, Line3Facet>(surface, slave, where); break;
+    case 303: checkFacing<Quad4Facet, Tri3Facet>(surface, slave, where); break;
+    case 304: checkFacing<Quad4Facet, Quad4Facet>(surface, slave, where); break;
+    case 306: checkFacing<Quad4Facet, Tri6Facet>(surface, slave, where); break;
+    case 308: checkFacing<Quad4Facet, Quad8Facet>(surface, slave, where); break;
+    case 309: checkFacing<Quad4Facet, Quad9Facet>(surface, slave, where); break;
+    default: throw std::logic_error("checkRigidSurfaceFacesSlave: no facet type of " + std::to_string(slave.nodesPerFacet) + " nodes");
+  }
 }
 
 template std::array<double, Line2Facet::kNodes> tributaryAreas<Line2Facet>(

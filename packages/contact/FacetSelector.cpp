@@ -8,7 +8,7 @@ namespace contessa::contact {
 
 namespace {
 
-/// How far ξ̄ lies beyond the parent domain [−1, 1] (0 inside).
+/// How far ξ̄ lies beyond the parent domain [−1, 1] of a segment (0 inside).
 double overshoot(double xi) { return std::max(0.0, std::abs(xi) - 1.0); }
 
 /// The node is on candidate c's facet if its projection is closer than the best so far.
@@ -30,8 +30,7 @@ void considerOnFacet(const ProjectionResult<Facet>& p, int facet, FacetSelection
 /// the parent domain (0 inside).
 template <class Facet>
 double distanceBeyond(const ProjectionResult<Facet>& p, const std::array<typename Facet::Point, Facet::kNodes>& x) {
-  typename Facet::SurfaceCoords clamped = p.xi;
-  for (auto& xi : clamped) xi = std::clamp(xi, -1.0, 1.0);
+  const typename Facet::SurfaceCoords clamped = Facet::clampToDomain(p.xi).xi;
   if (clamped == p.xi) return 0.0;
   return norm(subtract(p.position, Projection<Facet>::evaluateAt(typename Facet::Point{}, x, clamped).position));
 }
@@ -44,20 +43,20 @@ bool withinFreeEdgeReach(const ProjectionResult<Facet>& p, const std::array<type
   return p.converged && p.isPenetrating() && distanceBeyond(p, x) <= reach;
 }
 
-}  // namespace
 
-// ---- Line2Facet: 2D node-to-segment ---------------------------------------------------------------------
+// ---- 2D node-to-segment (Line2Facet, Line3Facet) ----------------------------------------------------------
+//
+// A segment's ends are its nodes 0 and 1 (ξ = −1, +1), straight or quadratic: neighbours share an end.
 
-template <>
-FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
-    const Line2Facet::Point& slave, const std::vector<MasterFacetNodes<Line2Facet>>& candidates,
-    double slaveSize) const {
-  const Projection<Line2Facet> projection(options_.projection);
-  std::vector<ProjectionResult<Line2Facet>> projected;
+template <class Facet>
+FacetSelection<Facet> selectOnSegments(const FacetSelectorOptions& options_, const typename Facet::Point& slave,
+                                       const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize) {
+  const Projection<Facet> projection(options_.projection);
+  std::vector<ProjectionResult<Facet>> projected;
   projected.reserve(candidates.size());
   for (const auto& segment : candidates) projected.push_back(projection.project(slave, segment.x));
 
-  FacetSelection<Line2Facet> best;
+  FacetSelection<Facet> best;
   double bestDistance = std::numeric_limits<double>::infinity();
 
   // 1. Projections inside their segment: the smaller |g_N| wins (concave corners, eq. 4).
@@ -120,10 +119,13 @@ FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
   return best;
 }
 
-// ---- Quad4Facet: 3D node-to-face ------------------------------------------------------------------------
+// ---- 3D node-to-face (Tri3, Quad4, Tri6, Quad8, Quad9 facets) ----------------------------------------------
 //
-// The faces' edges are straight (a bilinear face is linear along each edge), so the closest point of a face's
-// boundary is found edge by edge, in closed form. Rules beyond the common ones of FacetSelector.hpp:
+// A face's boundary is walked along its boundarySegments() (MasterFacet.hpp): the edges of a linear face, which
+// are straight (a bilinear face is linear along each edge), and the halves, corner – mid-edge node, of a
+// quadratic face's edges, straight on a face with straight edges; a curved edge is measured on these two
+// chords, where the boundary-point element (NodeToFacetContact.cpp) evaluates it too. The closest point of a
+// face's boundary is found segment by segment, in closed form. Rules beyond the common ones of FacetSelector.hpp:
 //  - an EDGE (two node ids) is interior when two candidate faces hold it as an edge (a ridge or a valley);
 //    a free edge belongs to one face only;
 //  - a VERTEX is interior when the candidate faces holding it close a fan around it: every edge leaving it
@@ -136,34 +138,32 @@ FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(
 //  - a projection where the face's area Jacobian has nearly vanished (the apex of a collapsed face, with
 //    a node id twice) is not inside: the neighbours, or the apex as a vertex, take the node.
 
-namespace {
-
-using QuadNodes = MasterFacetNodes<Quad4Facet>;
 
 /// Local index of global node `id` in face f, or −1.
-int localIndex(const QuadNodes& f, int id) {
-  for (int i = 0; i < Quad4Facet::kNodes; ++i)
+template <class Facet>
+int localIndex(const MasterFacetNodes<Facet>& f, int id) {
+  for (int i = 0; i < Facet::kNodes; ++i)
     if (f.nodes[i] == id) return i;
   return -1;
 }
 
-/// Face f holds the edge a–b (adjacent nodes of its cycle).
-bool holdsEdge(const QuadNodes& f, int a, int b) {
-  for (int i = 0; i < Quad4Facet::kNodes; ++i) {
-    const int j = (i + 1) % Quad4Facet::kNodes;
+/// Face f holds the edge a–b (the two ends of one of its boundary segments).
+template <class Facet>
+bool holdsEdge(const MasterFacetNodes<Facet>& f, int a, int b) {
+  for (const auto& [i, j] : Facet::boundarySegments())
     if ((f.nodes[i] == a && f.nodes[j] == b) || (f.nodes[i] == b && f.nodes[j] == a)) return true;
-  }
   return false;
 }
 
-/// The candidate faces around vertex v close a fan (see above).
-bool interiorVertex(const std::vector<QuadNodes>& candidates, int v) {
+/// The candidate faces around vertex v close a fan (see above): every boundary segment leaving v is held by
+/// exactly two of them.
+template <class Facet>
+bool interiorVertex(const std::vector<MasterFacetNodes<Facet>>& candidates, int v) {
   std::vector<int> neighbours;
   for (const auto& f : candidates)
-    for (int i = 0; i < Quad4Facet::kNodes; ++i) {
-      if (f.nodes[i] != v) continue;
-      for (int j : {(i + 1) % Quad4Facet::kNodes, (i + Quad4Facet::kNodes - 1) % Quad4Facet::kNodes})
-        if (f.nodes[j] != v) neighbours.push_back(f.nodes[j]);
+    for (const auto& [i, j] : Facet::boundarySegments()) {
+      if (f.nodes[i] == v && f.nodes[j] != v) neighbours.push_back(f.nodes[j]);
+      if (f.nodes[j] == v && f.nodes[i] != v) neighbours.push_back(f.nodes[i]);
     }
   if (neighbours.empty()) return false;
   std::sort(neighbours.begin(), neighbours.end());
@@ -179,28 +179,30 @@ bool interiorVertex(const std::vector<QuadNodes>& candidates, int v) {
 /// The candidate faces holding a point of a face's boundary (with `atVertex` the vertex `vertex`, else the
 /// point at t on the edge a–b; rigid points have negative ids), with their unit normals there (eq. 5) and
 /// the normals' sum; the apex of a collapsed face does not hold it.
+template <class Facet>
 struct PointHolders {
   std::vector<std::size_t> faces;
-  std::vector<Quad4Facet::Point> normals;
-  Quad4Facet::Point averaged{};
+  std::vector<typename Facet::Point> normals;
+  typename Facet::Point averaged{};
 };
 
-PointHolders holdersOf(const std::vector<QuadNodes>& candidates, const Quad4Facet::Point& slave, bool atVertex,
-                       int vertex, int a, int b, double t) {
-  PointHolders held;
+template <class Facet>
+PointHolders<Facet> holdersOf(const std::vector<MasterFacetNodes<Facet>>& candidates, const typename Facet::Point& slave,
+                              bool atVertex, int vertex, int a, int b, double t) {
+  PointHolders<Facet> held;
   for (std::size_t f = 0; f < candidates.size(); ++f) {
-    Quad4Facet::SurfaceCoords xi{};
+    typename Facet::SurfaceCoords xi{};
     if (atVertex) {
       const int l = localIndex(candidates[f], vertex);
       if (l < 0) continue;
-      xi = Quad4Facet::nodeCoords(l);
+      xi = Facet::nodeCoords(l);
     } else {
       if (!holdsEdge(candidates[f], a, b)) continue;
       const int la = localIndex(candidates[f], a), lb = localIndex(candidates[f], b);
-      xi = add(scaled(1.0 - t, Quad4Facet::nodeCoords(la)), scaled(t, Quad4Facet::nodeCoords(lb)));
+      xi = add(scaled(1.0 - t, Facet::nodeCoords(la)), scaled(t, Facet::nodeCoords(lb)));
     }
-    const auto at = Projection<Quad4Facet>::evaluateAt(slave, candidates[f].x, xi);
-    if (!(norm(Quad4Facet::areaNormal(at.covariantBasis)) > 0.0)) continue;  // the apex of a collapsed face
+    const auto at = Projection<Facet>::evaluateAt(slave, candidates[f].x, xi);
+    if (!(norm(Facet::areaNormal(at.covariantBasis)) > 0.0)) continue;  // the apex of a collapsed face
     held.faces.push_back(f);
     held.normals.push_back(at.normal);
     held.averaged = add(held.averaged, at.normal);
@@ -209,31 +211,28 @@ PointHolders holdersOf(const std::vector<QuadNodes>& candidates, const Quad4Face
 }
 
 /// Area Jacobian ‖ā_1 × ā_2‖ of face x at ξ.
-double areaJacobian(const std::array<Quad4Facet::Point, 4>& x, const Quad4Facet::SurfaceCoords& xi) {
-  return norm(Quad4Facet::areaNormal(Projection<Quad4Facet>::evaluateAt(Quad4Facet::Point{}, x, xi).covariantBasis));
+template <class Facet>
+double areaJacobian(const std::array<typename Facet::Point, Facet::kNodes>& x, const typename Facet::SurfaceCoords& xi) {
+  return norm(Facet::areaNormal(Projection<Facet>::evaluateAt(typename Facet::Point{}, x, xi).covariantBasis));
 }
 
-}  // namespace
-
-template <>
-FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::Point& slave,
-                                                             const std::vector<QuadNodes>& candidates,
-                                                             double slaveSize) const {
-  using Point = Quad4Facet::Point;
-  constexpr int kNodes = Quad4Facet::kNodes;
-  const Projection<Quad4Facet> projection(options_.projection);
+template <class Facet>
+FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const typename Facet::Point& slave,
+                                    const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize) {
+  using Point = typename Facet::Point;
+  const Projection<Facet> projection(options_.projection);
   const std::size_t n = candidates.size();
-  std::vector<ProjectionResult<Quad4Facet>> projected(n);
+  std::vector<ProjectionResult<Facet>> projected(n);
   std::vector<char> regular(n), inside(n);  // regular: converged and not at a collapsed apex
   for (std::size_t c = 0; c < n; ++c) {
     projected[c] = projection.project(slave, candidates[c].x);
     const auto& p = projected[c];
-    regular[c] = p.converged && areaJacobian(candidates[c].x, p.xi) >=
-                                    options_.collapsedJacobianRatio * areaJacobian(candidates[c].x, Quad4Facet::center());
+    regular[c] = p.converged && areaJacobian<Facet>(candidates[c].x, p.xi) >=
+                                    options_.collapsedJacobianRatio * areaJacobian<Facet>(candidates[c].x, Facet::center());
     inside[c] = regular[c] && p.isInside(options_.insideTolerance);
   }
 
-  FacetSelection<Quad4Facet> best;
+  FacetSelection<Facet> best;
   double bestDistance = std::numeric_limits<double>::infinity();
 
   // 1. Projections inside their face: the smaller |g_N| wins (valleys, concave corners).
@@ -247,9 +246,8 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
   double freeBoundaryDistance = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < n; ++c) {
     if (inside[c]) continue;
-    const QuadNodes& face = candidates[c];
-    for (int i = 0; i < kNodes; ++i) {
-      const int j = (i + 1) % kNodes;
+    const MasterFacetNodes<Facet>& face = candidates[c];
+    for (const auto& [i, j] : Facet::boundarySegments()) {
       if (face.nodes[i] == face.nodes[j]) continue;  // a collapsed edge
       const Point edge = subtract(face.x[j], face.x[i]);
       const double length2 = dot(edge, edge);
@@ -266,7 +264,7 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
         continue;
       }
       // The faces holding the point, and their unit normals there (eq. 5).
-      const PointHolders held = holdersOf(candidates, slave, atVertex, vertex, face.nodes[i], face.nodes[j], t);
+      const PointHolders<Facet> held = holdersOf(candidates, slave, atVertex, vertex, face.nodes[i], face.nodes[j], t);
       const std::vector<std::size_t>& holders = held.faces;
       const std::vector<Point>& normals = held.normals;
       const Point& averaged = held.averaged;
@@ -301,7 +299,7 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
 
   if ((best.kind == SelectionKind::AtEdge || best.kind == SelectionKind::AtVertex) &&
       freeBoundaryDistance < bestDistance) {
-    best = FacetSelection<Quad4Facet>{};
+    best = FacetSelection<Facet>{};
     bestDistance = std::numeric_limits<double>::infinity();
   }
 
@@ -315,5 +313,25 @@ FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::P
   if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
   return best;
 }
+
+}  // namespace
+
+template <class Facet>
+FacetSelection<Facet> FacetSelector<Facet>::select(const typename Facet::Point& slave,
+                                                   const std::vector<MasterFacetNodes<Facet>>& candidates,
+                                                   double slaveSize) const {
+  if constexpr (Facet::kSurfaceDim == 1)
+    return selectOnSegments<Facet>(options_, slave, candidates, slaveSize);
+  else
+    return selectOnFaces<Facet>(options_, slave, candidates, slaveSize);
+}
+
+template class FacetSelector<Line2Facet>;
+template class FacetSelector<Line3Facet>;
+template class FacetSelector<Tri3Facet>;
+template class FacetSelector<Quad4Facet>;
+template class FacetSelector<Tri6Facet>;
+template class FacetSelector<Quad8Facet>;
+template class FacetSelector<Quad9Facet>;
 
 }  // namespace contessa::contact

@@ -95,13 +95,12 @@ class FacetSelector {
   FacetSelectorOptions options_;
 };
 
-template <>
-FacetSelection<Line2Facet> FacetSelector<Line2Facet>::select(const Line2Facet::Point&,
-                                                             const std::vector<MasterFacetNodes<Line2Facet>>&,
-                                                             double) const;
-template <>
-FacetSelection<Quad4Facet> FacetSelector<Quad4Facet>::select(const Quad4Facet::Point&,
-                                                             const std::vector<MasterFacetNodes<Quad4Facet>>&,
-                                                             double) const;
+extern template class FacetSelector<Line2Facet>;
+extern template class FacetSelector<Line3Facet>;
+extern template class FacetSelector<Tri3Facet>;
+extern template class FacetSelector<Quad4Facet>;
+extern template class FacetSelector<Tri6Facet>;
+extern template class FacetSelector<Quad8Facet>;
+extern template class FacetSelector<Quad9Facet>;
 
 }  // namespace contessa::contact

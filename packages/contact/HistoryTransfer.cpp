@@ -36,6 +36,36 @@ ContactHistory<1> transferHistory<Line2Facet>(const ContactHistory<1>& committed
   return moved;
 }
 
+/// Quadratic segments (Line3Facet): as straight ones, with ā_1 taken where the contact point is (at the shared
+/// vertex when the node slides across it), so the arc length slid past the vertex is kept to first order.
+template <>
+ContactHistory<1> transferHistory<Line3Facet>(const ContactHistory<1>& committed, const MasterFacetNodes<Line3Facet>& from,
+                                              const MasterFacetNodes<Line3Facet>& to) {
+  ContactHistory<1> moved = committed;
+  moved.segment = to.id;
+  if (!committed.isInContact() || from.id == to.id) return moved;
+  const auto tangentAt = [](const MasterFacetNodes<Line3Facet>& f, double xi) {
+    return Projection<Line3Facet>::evaluateAt(Line3Facet::Point{}, f.x, {xi}).covariantBasis[0];
+  };
+  const double xiFrom = committed.xi[0];
+  double orientation = 1.0;
+  double lengthRatio = 1.0;
+  if (from.nodes[1] == to.nodes[0] || from.nodes[0] == to.nodes[1]) {
+    // The shared vertex: ξ = +1 of `from` and −1 of `to`, or the reverse.
+    const double end = from.nodes[1] == to.nodes[0] ? 1.0 : -1.0;
+    lengthRatio = norm(tangentAt(from, end)) / norm(tangentAt(to, -end));
+    moved.xi[0] = -end - (end - xiFrom) * lengthRatio;
+  } else {
+    const Line3Facet::Point oldPoint = Projection<Line3Facet>::evaluateAt(Line3Facet::Point{}, from.x, committed.xi).position;
+    moved.xi = Projection<Line3Facet>().project(oldPoint, to.x).xi;
+    const auto aFrom = tangentAt(from, xiFrom), aTo = tangentAt(to, moved.xi[0]);
+    lengthRatio = norm(aFrom) / norm(aTo);
+    orientation = dot(aFrom, aTo) >= 0.0 ? 1.0 : -1.0;
+  }
+  moved.tangentialTraction[0] = orientation * committed.tangentialTraction[0] / lengthRatio;
+  return moved;
+}
+
 template <class Facet>
 ContactHistory<Facet::kSurfaceDim> transferHistory(const ContactHistory<Facet::kSurfaceDim>& committed,
                                                    const MasterFacetNodes<Facet>& from,
@@ -99,5 +129,14 @@ ContactHistory<Facet::kSurfaceDim> transferHistory(const ContactHistory<Facet::k
 
 template ContactHistory<2> transferHistory<Quad4Facet>(const ContactHistory<2>&, const MasterFacetNodes<Quad4Facet>&,
                                                        const MasterFacetNodes<Quad4Facet>&);
+
+template ContactHistory<2> transferHistory<Tri3Facet>(const ContactHistory<2>&, const MasterFacetNodes<Tri3Facet>&,
+                                                      const MasterFacetNodes<Tri3Facet>&);
+template ContactHistory<2> transferHistory<Tri6Facet>(const ContactHistory<2>&, const MasterFacetNodes<Tri6Facet>&,
+                                                      const MasterFacetNodes<Tri6Facet>&);
+template ContactHistory<2> transferHistory<Quad8Facet>(const ContactHistory<2>&, const MasterFacetNodes<Quad8Facet>&,
+                                                      const MasterFacetNodes<Quad8Facet>&);
+template ContactHistory<2> transferHistory<Quad9Facet>(const ContactHistory<2>&, const MasterFacetNodes<Quad9Facet>&,
+                                                      const MasterFacetNodes<Quad9Facet>&);
 
 }  // namespace contessa::contact

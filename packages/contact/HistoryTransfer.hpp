@@ -34,6 +34,17 @@ template <>
 ContactHistory<1> transferHistory<Line2Facet>(const ContactHistory<1>& committed, const MasterFacetNodes<Line2Facet>& from,
                                               const MasterFacetNodes<Line2Facet>& to);
 
+template <>
+ContactHistory<1> transferHistory<Line3Facet>(const ContactHistory<1>& committed, const MasterFacetNodes<Line3Facet>& from,
+                                              const MasterFacetNodes<Line3Facet>& to);
+extern template ContactHistory<2> transferHistory<Tri3Facet>(const ContactHistory<2>&, const MasterFacetNodes<Tri3Facet>&,
+                                                             const MasterFacetNodes<Tri3Facet>&);
+extern template ContactHistory<2> transferHistory<Tri6Facet>(const ContactHistory<2>&, const MasterFacetNodes<Tri6Facet>&,
+                                                             const MasterFacetNodes<Tri6Facet>&);
+extern template ContactHistory<2> transferHistory<Quad8Facet>(const ContactHistory<2>&, const MasterFacetNodes<Quad8Facet>&,
+                                                             const MasterFacetNodes<Quad8Facet>&);
+extern template ContactHistory<2> transferHistory<Quad9Facet>(const ContactHistory<2>&, const MasterFacetNodes<Quad9Facet>&,
+                                                             const MasterFacetNodes<Quad9Facet>&);
 extern template ContactHistory<2> transferHistory<Quad4Facet>(const ContactHistory<2>&, const MasterFacetNodes<Quad4Facet>&,
                                                               const MasterFacetNodes<Quad4Facet>&);
 

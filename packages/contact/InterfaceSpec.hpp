@@ -53,7 +53,17 @@ struct ContactInterfaceSpec {
   /// The interface in messages: its name, "(second pass)" added for the second pass.
   std::string label() const { return secondPass ? name + " (second pass)" : name; }
 
-  int nodesPerFacet() const { return dimension == 2 ? 2 : 4; }
+  /// Nodes per facet of a deformable master's side set and of the slave side set (MasterFacet.hpp: 2, 3 in 2D;
+  /// 3, 4, 6, 8, 9 in 3D), set from their side sets (ContactSurface::nodesPerFacet); 0: the linear facet of
+  /// the dimension (a rigid master's segments and quadrilaterals).
+  int masterFacetNodes = 0;
+  int slaveFacetNodes = 0;
+
+  /// Nodes per master facet: the interface's facet type (makeContactInterface).
+  int nodesPerFacet() const { return masterFacetNodes > 0 ? masterFacetNodes : linearFacetNodes(); }
+  /// Nodes per facet of slaveFacets.
+  int slaveNodesPerFacet() const { return slaveFacetNodes > 0 ? slaveFacetNodes : linearFacetNodes(); }
+  int linearFacetNodes() const { return dimension == 2 ? 2 : 4; }
   std::size_t numMasterFacets() const {
     return (rigidMaster ? rigidSurface.facets.size() : masterFacets.size()) / static_cast<std::size_t>(nodesPerFacet());
   }

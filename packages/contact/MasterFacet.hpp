@@ -13,6 +13,11 @@
 //   areaNormal(ā_1[, ā_2])     -> the normal of eq. (5) before normalisation (its length is the Jacobian)
 //   unitNormal(ā_1[, ā_2])     -> n̄, eq. (5), oriented out of the master body (see each facet)
 //   contains(ξ, tol)           -> ξ inside the parent domain, enlarged by tol
+//   clampToDomain(ξ)           -> the point of the parent domain closest to ξ (in parent coordinates) and
+//                                 its derivative ∂ξ_c/∂ξ (the free-edge fade, NodeToFacetContact.cpp)
+//   boundarySegments()         -> the facet's boundary as node pairs, in order round it: the edges of a
+//                                 linear facet, the halves (corner – mid-edge node) of a quadratic one's edges.
+//                                 The facet selector finds edges and vertices shared by neighbours on them.
 //   flatPieces()               -> the facet as kSpaceDim-node simplices (node indices, oriented like n̄):
 //                                 the segment itself, two triangles of a 4-node face. Geometry that needs
 //                                 a flat facet (the swept crossing test, SweptCrossing.hpp) works on these.
@@ -38,7 +43,9 @@
 //       Quad8Facet (Hex20, Wedge15 faces), Quad9Facet (Hex27 faces).
 #include "contact/SmallMatrix.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace contessa::contact {
 
@@ -72,6 +79,51 @@ std::array<SurfaceRulePoint<M>, (M == 1 ? n : n * n)> gaussRuleOnSquare() {
 inline std::array<SurfaceRulePoint<2>, 3> triangleRule3() {
   constexpr double w = 1.0 / 6.0;
   return {{{{1.0 / 6.0, 1.0 / 6.0}, w}, {{2.0 / 3.0, 1.0 / 6.0}, w}, {{1.0 / 6.0, 2.0 / 3.0}, w}}};
+}
+
+/// A point of a facet's parent domain closest to ξ (in parent coordinates) and ∂ξ_c/∂ξ there.
+template <int M>
+struct ClampedCoords {
+  Vector<M> xi{};
+  Matrix<M, M> derivative{};  ///< ∂ξ_c^β/∂ξ^α (row β): the identity inside, 0 across a clamped direction
+};
+
+/// The square [−1, 1]^M: each coordinate clamped on its own (the Euclidean closest point of a box).
+template <int M>
+ClampedCoords<M> clampToSquare(const Vector<M>& xi) {
+  ClampedCoords<M> c;
+  for (int al = 0; al < M; ++al) {
+    c.xi[al] = std::clamp(xi[al], -1.0, 1.0);
+    c.derivative(al, al) = c.xi[al] == xi[al] ? 1.0 : 0.0;
+  }
+  return c;
+}
+
+/// The unit triangle ξ^1, ξ^2 ≥ 0, ξ^1 + ξ^2 ≤ 1: outside it, the closest point of its three edges; along an
+/// edge of direction d the derivative is the projector d dᵀ/‖d‖², at a corner 0.
+inline ClampedCoords<2> clampToTriangle(const Vector<2>& xi) {
+  ClampedCoords<2> c;
+  if (xi[0] >= 0.0 && xi[1] >= 0.0 && xi[0] + xi[1] <= 1.0) {
+    c.xi = xi;
+    c.derivative(0, 0) = c.derivative(1, 1) = 1.0;
+    return c;
+  }
+  constexpr std::array<std::array<double, 4>, 3> kEdges{{{0.0, 0.0, 1.0, 0.0}, {1.0, 0.0, -1.0, 1.0}, {0.0, 1.0, 0.0, -1.0}}};
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& e : kEdges) {
+    const Vector<2> d{e[2], e[3]};
+    const double d2 = dot(d, d);
+    const double t = std::clamp(((xi[0] - e[0]) * d[0] + (xi[1] - e[1]) * d[1]) / d2, 0.0, 1.0);
+    const Vector<2> at{e[0] + t * d[0], e[1] + t * d[1]};
+    const double distance2 = dot(subtract(xi, at), subtract(xi, at));
+    if (!(distance2 < best)) continue;
+    best = distance2;
+    c.xi = at;
+    const double interior = t > 0.0 && t < 1.0 ? 1.0 / d2 : 0.0;
+    for (int b = 0; b < 2; ++b)
+      for (int a = 0; a < 2; ++a) c.derivative(b, a) = interior * d[b] * d[a];
+  }
+  return c;
 }
 
 /// 2-node straight master segment in 2D (plane strain): ξ ∈ [−1, 1], H_1 = (1 − ξ)/2, H_2 = (1 + ξ)/2.
@@ -111,6 +163,8 @@ struct Line2Facet {
   }
 
   static bool contains(const SurfaceCoords& xi, double tolerance) { return std::abs(xi[0]) <= 1.0 + tolerance; }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
+  static constexpr std::array<std::array<int, 2>, 1> boundarySegments() { return {{{0, 1}}}; }
 
   static constexpr int kPieces = 1;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1}}}; }
@@ -174,6 +228,8 @@ struct Quad4Facet {
   static bool contains(const SurfaceCoords& xi, double tolerance) {
     return std::abs(xi[0]) <= 1.0 + tolerance && std::abs(xi[1]) <= 1.0 + tolerance;
   }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
+  static constexpr std::array<std::array<int, 2>, 4> boundarySegments() { return {{{0, 1}, {1, 2}, {2, 3}, {3, 0}}}; }
 
   static SurfaceCoords center() { return {0.0, 0.0}; }
   static SurfaceCoords nodeCoords(int i) { return {kNodeXi[i], kNodeEta[i]}; }
@@ -238,6 +294,8 @@ struct Line3Facet {
   static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::areaNormal(a); }
   static Point unitNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::unitNormal(a); }
   static bool contains(const SurfaceCoords& xi, double tolerance) { return Line2Facet::contains(xi, tolerance); }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
+  static constexpr std::array<std::array<int, 2>, 2> boundarySegments() { return {{{0, 2}, {2, 1}}}; }
 
   /// The two halves, corner → mid-edge node → corner.
   static constexpr int kPieces = 2;
@@ -280,6 +338,8 @@ struct Tri3Facet : FaceNormal {
   static bool contains(const SurfaceCoords& xi, double tolerance) {
     return xi[0] >= -tolerance && xi[1] >= -tolerance && xi[0] + xi[1] <= 1.0 + tolerance;
   }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToTriangle(xi); }
+  static constexpr std::array<std::array<int, 2>, 3> boundarySegments() { return {{{0, 1}, {1, 2}, {2, 0}}}; }
 
   static constexpr int kPieces = 1;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1, 2}}}; }
@@ -344,6 +404,8 @@ struct Tri6Facet : FaceNormal {
   }
 
   static bool contains(const SurfaceCoords& xi, double tolerance) { return Tri3Facet::contains(xi, tolerance); }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToTriangle(xi); }
+  static constexpr std::array<std::array<int, 2>, 6> boundarySegments() { return {{{0, 3}, {3, 1}, {1, 4}, {4, 2}, {2, 5}, {5, 0}}}; }
 
   /// Four triangles: one at each corner and the middle one of the mid-edge nodes, counter-clockwise.
   static constexpr int kPieces = 4;
@@ -430,6 +492,8 @@ struct Quad9Facet : FaceNormal {
   }
 
   static bool contains(const SurfaceCoords& xi, double tolerance) { return Quad4Facet::contains(xi, tolerance); }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
+  static constexpr std::array<std::array<int, 2>, 8> boundarySegments() { return {{{0, 4}, {4, 1}, {1, 5}, {5, 2}, {2, 6}, {6, 3}, {3, 7}, {7, 0}}}; }
 
   /// Four bilinear quarters, each as two triangles, counter-clockwise seen from outside.
   static constexpr int kPieces = 8;
@@ -503,6 +567,8 @@ struct Quad8Facet : FaceNormal {
   }
 
   static bool contains(const SurfaceCoords& xi, double tolerance) { return Quad4Facet::contains(xi, tolerance); }
+  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
+  static constexpr std::array<std::array<int, 2>, 8> boundarySegments() { return {{{0, 4}, {4, 1}, {1, 5}, {5, 2}, {2, 6}, {6, 3}, {3, 7}, {7, 0}}}; }
 
   /// A triangle at each corner (corner and its two mid-edge nodes) and the middle quadrilateral of the
   /// mid-edge nodes as two triangles, counter-clockwise seen from outside.

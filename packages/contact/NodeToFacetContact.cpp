@@ -345,8 +345,8 @@ std::optional<FreeEdgeFade<Facet>> freeEdgeFade(const NodeToFacetGeometry<Facet>
   using Op = Operators<Facet>;
   constexpr int M = Facet::kSurfaceDim;
   if (!(reach > 0.0)) return std::nullopt;
-  typename Facet::SurfaceCoords clamped = p.xi;
-  for (auto& xi : clamped) xi = std::clamp(xi, -1.0, 1.0);
+  const auto toDomain = Facet::clampToDomain(p.xi);  // the closest point of the parent domain, ∂ξ_c/∂ξ̄
+  const typename Facet::SurfaceCoords& clamped = toDomain.xi;
   if (clamped == p.xi) return std::nullopt;
   const auto c = Projection<Facet>::evaluateAt(x.slave, x.master, clamped);
   const typename Facet::Point v = subtract(p.position, c.position);
@@ -368,7 +368,8 @@ std::optional<FreeEdgeFade<Facet>> freeEdgeFade(const NodeToFacetGeometry<Facet>
   typename Op::Column dd = Op::kron(shapeDifference, unit);
   for (int al = 0; al < M; ++al) {
     double along = dot(unit, p.covariantBasis[al]);
-    if (clamped[al] == p.xi[al]) along -= dot(unit, c.covariantBasis[al]);
+    for (int be = 0; be < M; ++be)
+      if (toDomain.derivative(be, al) != 0.0) along -= toDomain.derivative(be, al) * dot(unit, c.covariantBasis[be]);
     addScaled(dd, along, k.Xi[al]);
   }
   fade.derivative = scaled(dwdd, dd);

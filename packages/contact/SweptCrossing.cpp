@@ -200,4 +200,15 @@ template SweptCrossing sweptCrossing<Quad4Facet>(const Quad4Facet::Point&, const
                                                  const std::array<Quad4Facet::Point, 4>&,
                                                  const std::array<Quad4Facet::Point, 4>&, double);
 
+template SweptCrossing sweptCrossing<Line3Facet>(const Line3Facet::Point&, const Line3Facet::Point&,
+    const std::array<Line3Facet::Point, Line3Facet::kNodes>&, const std::array<Line3Facet::Point, Line3Facet::kNodes>&, double);
+template SweptCrossing sweptCrossing<Tri3Facet>(const Tri3Facet::Point&, const Tri3Facet::Point&,
+    const std::array<Tri3Facet::Point, Tri3Facet::kNodes>&, const std::array<Tri3Facet::Point, Tri3Facet::kNodes>&, double);
+template SweptCrossing sweptCrossing<Tri6Facet>(const Tri6Facet::Point&, const Tri6Facet::Point&,
+    const std::array<Tri6Facet::Point, Tri6Facet::kNodes>&, const std::array<Tri6Facet::Point, Tri6Facet::kNodes>&, double);
+template SweptCrossing sweptCrossing<Quad8Facet>(const Quad8Facet::Point&, const Quad8Facet::Point&,
+    const std::array<Quad8Facet::Point, Quad8Facet::kNodes>&, const std::array<Quad8Facet::Point, Quad8Facet::kNodes>&, double);
+template SweptCrossing sweptCrossing<Quad9Facet>(const Quad9Facet::Point&, const Quad9Facet::Point&,
+    const std::array<Quad9Facet::Point, Quad9Facet::kNodes>&, const std::array<Quad9Facet::Point, Quad9Facet::kNodes>&, double);
+
 }  // namespace contessa::contact

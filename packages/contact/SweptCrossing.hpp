@@ -48,5 +48,15 @@ extern template SweptCrossing sweptCrossing<Line2Facet>(const Line2Facet::Point&
 extern template SweptCrossing sweptCrossing<Quad4Facet>(const Quad4Facet::Point&, const Quad4Facet::Point&,
                                                         const std::array<Quad4Facet::Point, 4>&,
                                                         const std::array<Quad4Facet::Point, 4>&, double);
+extern template SweptCrossing sweptCrossing<Line3Facet>(const Line3Facet::Point&, const Line3Facet::Point&,
+    const std::array<Line3Facet::Point, Line3Facet::kNodes>&, const std::array<Line3Facet::Point, Line3Facet::kNodes>&, double);
+extern template SweptCrossing sweptCrossing<Tri3Facet>(const Tri3Facet::Point&, const Tri3Facet::Point&,
+    const std::array<Tri3Facet::Point, Tri3Facet::kNodes>&, const std::array<Tri3Facet::Point, Tri3Facet::kNodes>&, double);
+extern template SweptCrossing sweptCrossing<Tri6Facet>(const Tri6Facet::Point&, const Tri6Facet::Point&,
+    const std::array<Tri6Facet::Point, Tri6Facet::kNodes>&, const std::array<Tri6Facet::Point, Tri6Facet::kNodes>&, double);
+extern template SweptCrossing sweptCrossing<Quad8Facet>(const Quad8Facet::Point&, const Quad8Facet::Point&,
+    const std::array<Quad8Facet::Point, Quad8Facet::kNodes>&, const std::array<Quad8Facet::Point, Quad8Facet::kNodes>&, double);
+extern template SweptCrossing sweptCrossing<Quad9Facet>(const Quad9Facet::Point&, const Quad9Facet::Point&,
+    const std::array<Quad9Facet::Point, Quad9Facet::kNodes>&, const std::array<Quad9Facet::Point, Quad9Facet::kNodes>&, double);
 
 }  // namespace contessa::contact

@@ -181,7 +181,11 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   mesh::ReplicatedSurface slaveFacets;
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveFacets = slave.facets;
-  if (spec.dimension == 2)
+  spec.slaveFacetNodes = slave.nodesPerFacet;
+  requireInput(!spec.mortar || slave.nodesPerFacet == 2,
+               where + "/Discretization: Mortar takes 2-node segments; side set '" + slaveSet + "' has " +
+                   std::to_string(slave.nodesPerFacet) + "-node sides (use Node To Segment)");
+  if (spec.dimension == 2 && slave.nodesPerFacet == 2)
     for (std::size_t f = 0; f + 1 < slave.facets.size(); f += 2) {
       const auto& a = coordinates.at(slave.facets[f]);
       const auto& b = coordinates.at(slave.facets[f + 1]);
@@ -210,6 +214,10 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   requireInput(masterSet != slaveSet, where + "/Master Side Set: must differ from the Slave Side Set");
   const auto master = gatheredSurface(part, masterSet, where + "/Master Side Set", coordinates, revolved);
   spec.masterFacets = master.facets;
+  spec.masterFacetNodes = master.nodesPerFacet;
+  requireInput(!spec.mortar || master.nodesPerFacet == 2,
+               where + "/Discretization: Mortar takes 2-node segments; side set '" + masterSet + "' has " +
+                   std::to_string(master.nodesPerFacet) + "-node sides (use Node To Segment)");
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
   contact::ContactInterfaceSpec swapped = spec;
@@ -218,6 +226,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   swapped.slaveAreas = master.areas;
   swapped.slaveFacetLengths = master.facetLengths;
   swapped.masterFacets = slave.facets;
+  swapped.masterFacetNodes = slave.nodesPerFacet;
   return {spec, swapped};
 }
 

@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -301,11 +302,13 @@ struct FacetRecords {
   std::vector<double> coordinates;
 };
 
+// nodesPerFacet: the surface's facet node count (facetNodeCount); a triangle of a surface of triangles and
+// quadrilaterals is written as a quadrilateral with its last node twice.
 template <class GlobalNode, class GlobalElement, class Position>
-FacetRecords facetRecords(const Mesh& mesh, const SideSet& set, GlobalNode&& globalNode,
+FacetRecords facetRecords(const Mesh& mesh, const SideSet& set, int nodesPerFacet, GlobalNode&& globalNode,
                           GlobalElement&& globalElement, Position&& position) {
   FacetRecords records;
-  records.nodesPerFacet = mesh.dimension == 2 ? 2 : 4;
+  records.nodesPerFacet = nodesPerFacet;
   const int dim = mesh.dimension;
   for (std::size_t k = 0; k < set.elements.size(); ++k) {
     const auto where = mesh.locate(set.elements[k]);
@@ -314,7 +317,9 @@ FacetRecords facetRecords(const Mesh& mesh, const SideSet& set, GlobalNode&& glo
     records.integers.push_back(position(k));
     records.integers.push_back(globalElement(set.elements[k]));
     records.integers.push_back(set.sides[k]);
-    for (int a : sideNodes(block.cellType, set.sides[k])) {
+    std::vector<int> side = sideNodes(block.cellType, set.sides[k]);
+    while (static_cast<int>(side.size()) < nodesPerFacet) side.push_back(side.back());  // a collapsed quadrilateral
+    for (int a : side) {
       const GlobalIndex node = block.connectivity[where.local * npe + a];
       records.integers.push_back(globalNode(node));
       for (int d = 0; d < dim; ++d) records.coordinates.push_back(mesh.coordinates[node * dim + d]);
@@ -386,32 +391,37 @@ std::vector<T> allGatherOf(MPI_Comm comm, const std::vector<T>& mine, MPI_Dataty
   return all;
 }
 
-// The first cell type (as an int) of a side of `set` that is no Quad4 edge or Hex8 face, −1 if none:
-// contact surfaces are made of those (2 or 4 nodes per facet); the faces of the other families are
-// issue 20's point 2.
-int unsupportedFacetType(const Mesh& mesh, const SideSet& set) {
-  for (GlobalIndex e : set.elements) {
-    const CellType type = mesh.blocks[mesh.locate(e).block].cellType;
-    if (type != CellType::Quad4 && type != CellType::Hex8) return static_cast<int>(type);
+// The fewest and the most nodes of a side of `set` (mesh::sideNodes): a facet type of contact each
+// (MasterFacet.hpp); {INT_MAX, 0} for a set without sides (on this rank).
+std::array<int, 2> sideNodeCounts(const Mesh& mesh, const SideSet& set) {
+  std::array<int, 2> counts{std::numeric_limits<int>::max(), 0};
+  for (std::size_t k = 0; k < set.elements.size(); ++k) {
+    const CellType type = mesh.blocks[mesh.locate(set.elements[k]).block].cellType;
+    const int n = static_cast<int>(sideNodes(type, set.sides[k]).size());
+    counts = {std::min(counts[0], n), std::max(counts[1], n)};
   }
-  return -1;
+  return counts;
 }
 
-void requireContactFacets(const std::string& name, int type) {
-  if (type < 0) return;
-  throw InputError("side set '" + name + "' lies on " + exodusCellName(static_cast<CellType>(type)) +
-                   " elements: a contact surface is made of QUAD4 edges or HEX8 faces (contact on the sides of "
-                   "the other cell types is not supported yet)");
+// The contact facet's node count of a side set whose sides have counts[0] to counts[1] nodes: theirs when all
+// agree; 4 for the triangles and quadrilaterals of hexahedra with prisms (Quad4Facet, a triangle collapsed);
+// an InputError naming the side set for other mixtures (a Wedge15's TRI6 and QUAD8 faces).
+int facetNodeCount(const std::string& name, const std::array<int, 2>& counts) {
+  if (counts[0] == counts[1] || counts[1] == 0) return counts[1];
+  if (counts[0] == 3 && counts[1] == 4) return 4;
+  throw InputError("side set '" + name + "' mixes sides of " + std::to_string(counts[0]) + " and " +
+                   std::to_string(counts[1]) + " nodes: a contact surface takes one facet type (or linear "
+                   "triangles with quadrilaterals)");
 }
 
 }  // namespace
 
 ReplicatedSurface surfaceOfSideSet(const Mesh& mesh, const std::string& name) {
   const SideSet& set = mesh.sideSets[setIndex(mesh, name)];
-  requireContactFacets(name, unsupportedFacetType(mesh, set));
+  const int nodesPerFacet = facetNodeCount(name, sideNodeCounts(mesh, set));
   const auto same = [](GlobalIndex id) { return id; };
   const FacetRecords records =
-      facetRecords(mesh, set, same, same, [](std::size_t k) { return static_cast<GlobalIndex>(k); });
+      facetRecords(mesh, set, nodesPerFacet, same, same, [](std::size_t k) { return static_cast<GlobalIndex>(k); });
   return assemble(name, mesh.dimension, records, set.elements.size());
 }
 
@@ -419,12 +429,15 @@ ReplicatedSurface gatherSurface(const DistributedMesh& part, const std::string& 
   const Mesh& local = part.local();
   const std::size_t s = setIndex(local, name);
   const auto& positions = part.sideSetPositions[s];
-  // Decided together: a rank without such a side must throw too, not wait in the gather below.
-  int unsupported = unsupportedFacetType(local, local.sideSets[s]);
-  if (ranksOf(part.comm).size > 1) MPI_Allreduce(MPI_IN_PLACE, &unsupported, 1, MPI_INT, MPI_MAX, part.comm);
-  requireContactFacets(name, unsupported);
+  // Decided together: every rank takes the same facet type, and a rank without a mixed side must throw
+  // too, not wait in the gather below.
+  std::array<int, 2> counts = sideNodeCounts(local, local.sideSets[s]);
+  if (ranksOf(part.comm).size > 1) {
+    MPI_Allreduce(MPI_IN_PLACE, &counts[0], 1, MPI_INT, MPI_MIN, part.comm);
+    MPI_Allreduce(MPI_IN_PLACE, &counts[1], 1, MPI_INT, MPI_MAX, part.comm);
+  }
   FacetRecords records = facetRecords(
-      local, local.sideSets[s], [&](GlobalIndex n) { return part.part.globalNodes[n]; },
+      local, local.sideSets[s], facetNodeCount(name, counts), [&](GlobalIndex n) { return part.part.globalNodes[n]; },
       [&](GlobalIndex e) { return part.part.globalElements[e]; }, [&](std::size_t k) { return positions[k]; });
   records.integers = allGather(part.comm, records.integers);
   records.coordinates = allGatherOf(part.comm, records.coordinates, MPI_DOUBLE);

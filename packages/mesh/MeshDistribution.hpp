@@ -50,7 +50,9 @@ void throwIfAnyRankFailed(MPI_Comm comm, std::exception_ptr failure);
 struct ReplicatedSurface {
   std::string name;
   int dimension = 2;
-  int nodesPerFacet = 2;                  ///< 2 (Quad4 edges), 4 (Hex8 faces)
+  /// 2, 3 (2D edges); 3, 4, 6, 8, 9 (3D faces); 4 also for triangles among quadrilaterals, each written with
+  /// its last node twice (a collapsed quadrilateral)
+  int nodesPerFacet = 2;
   std::vector<GlobalIndex> elements;      ///< global element of each facet
   std::vector<int> sides;                 ///< its local side (0-based)
   std::vector<GlobalIndex> facetNodes;    ///< global node ids, nodesPerFacet per facet

@@ -286,15 +286,39 @@ TEST(CellFamilies, SideSetsOnSharedFacesAreInterior) {
   EXPECT_EQ(messageOf([&] { good.validate("mixed"); }), "<no InputError>");
 }
 
-// Contact surfaces are made of QUAD4 edges and HEX8 faces; a side set on the faces of another type
-// is refused in one line until contact on them exists (issue 20, point 2), not read as 4-node facets.
-TEST(CellFamilies, ContactSurfacesOnOtherCellTypesAreRefused) {
+// A contact surface takes the sides of every family, as facets of their node count (MasterFacet.hpp): TRI3
+// faces of tetrahedra, TRI6 of quadratic ones, QUAD8 of Hex20; a surface of hexahedra and prisms holds the
+// prisms' triangles as quadrilaterals with their last node twice; other mixtures are refused in one line.
+TEST(CellFamilies, ContactSurfacesTakeTheSidesOfEveryFamily) {
   BoxSpec spec;
   const Mesh tets = splitIntoSimplices(generateBox(spec));
-  EXPECT_EQ(messageOf([&] { surfaceOfSideSet(tets, "top"); }),
-            "side set 'top' lies on TETRA4 elements: a contact surface is made of QUAD4 edges or HEX8 faces (contact "
-            "on the sides of the other cell types is not supported yet)");
+  const ReplicatedSurface tri3 = surfaceOfSideSet(tets, "top");
+  EXPECT_EQ(tri3.nodesPerFacet, 3);
+  EXPECT_EQ(tri3.elements.size(), 2u);
+  EXPECT_EQ(surfaceOfSideSet(withMidEdgeNodes(tets), "top").nodesPerFacet, 6);
+  EXPECT_EQ(surfaceOfSideSet(withMidEdgeNodes(generateBox(spec)), "top").nodesPerFacet, 8);
+  EXPECT_EQ(surfaceOfSideSet(withMidEdgeNodes(generateBox(spec), true), "top").nodesPerFacet, 9);
   EXPECT_EQ(surfaceOfSideSet(generateBox(spec), "top").elements.size(), 1u);
+
+  // Hex8 on [0,1]³ and a Wedge6 beyond x = 1 (as in SideSetsOnSharedFacesAreInterior): the hex's side 4
+  // (y = 0) and the wedge's triangle side 3 (y = 0).
+  Mesh m;
+  m.dimension = 3;
+  m.coordinates = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, 2, 0, 0, 2, 1, 0};
+  m.blocks.push_back(ElementBlock{"hex", CellType::Hex8, {0}, {0, 1, 2, 3, 4, 5, 6, 7}});
+  m.blocks.push_back(ElementBlock{"wedge", CellType::Wedge6, {1}, {1, 5, 8, 2, 6, 9}});
+  m.sideSets.push_back(SideSet{"front", {0, 1}, {0, 3}});
+  const ReplicatedSurface mixed = surfaceOfSideSet(m, "front");
+  ASSERT_EQ(mixed.nodesPerFacet, 4);
+  const auto triangle = sideNodes(CellType::Wedge6, 3);
+  ASSERT_EQ(triangle.size(), 3u);
+  const std::vector<GlobalIndex> wedge{1, 5, 8, 2, 6, 9};
+  EXPECT_EQ(std::vector<GlobalIndex>(mixed.facetNodes.begin() + 4, mixed.facetNodes.end()),
+            (std::vector<GlobalIndex>{wedge[triangle[0]], wedge[triangle[1]], wedge[triangle[2]], wedge[triangle[2]]}));
+  const Mesh quadratic = withMidEdgeNodes(m);
+  EXPECT_EQ(messageOf([&] { surfaceOfSideSet(quadratic, "front"); }),
+            "side set 'front' mixes sides of 6 and 8 nodes: a contact surface takes one facet type (or linear "
+            "triangles with quadrilaterals)");
 }
 
 // A flat simplex has zero Jacobian everywhere: degenerate, named so.
