@@ -23,7 +23,7 @@
 // Where: the selected facet's edges that another candidate facet holds (2D: a shared vertex; 3D: a shared
 // edge), where the two facets form a valley (the partner's centre in front of the facet's tangent plane at
 // the edge, normals θ > minAngle apart) and |z| < b; the nearest such edge. Flat and convex edges are left
-// alone, so coplanar masters and convex ridges give the answers they gave before, bit for bit.
+// alone: coplanar masters and convex ridges are evaluated as before.
 #include <cstddef>
 #include <optional>
 #include <utility>
