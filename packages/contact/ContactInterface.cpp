@@ -12,6 +12,7 @@
 #include "contact/NodeToFacetContact.hpp"
 #include "contact/SlipReversalDamping.hpp"
 #include "contact/SweptCrossing.hpp"
+#include "contact/ValleyBlend.hpp"
 
 namespace contessa::contact {
 
@@ -201,6 +202,39 @@ class ContactInterface final : public ContactInterfaceBase {
   /// Scales the element by the tributary area of slave node k and hands it to the sink; returns the
   /// scaled residual (its first kDim entries are minus the force on the slave node).
   Vector<kDofs> scatter(std::size_t k, int facet, const NodeToFacetResult<Facet>& r, const Sink& sink) const;
+  /// A frictionless slave node within the band around a valley edge: the element blended over the two
+  /// facets sharing it (ValleyBlend.hpp), which replaces the selection's normal contact; nullopt elsewhere.
+  struct Blend {
+    ValleyEdge edge;
+    ValleyBlendResult<Facet> result;
+  };
+  std::optional<Blend> valleyBlend(std::size_t k, const Point& xs, const FacetSelection<Facet>& selection,
+                                   const Facets& candidates) const {
+    if (!blendable_ || !spec_.law.isFrictionless() || selection.kind == SelectionKind::None) return std::nullopt;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      if (candidates[c].id != selection.facet) continue;
+      const auto edge = findValleyEdge<Facet>(xs, c, candidates, committedMaster_, spec_.slaveFacetLengths[k]);
+      if (!edge) return std::nullopt;
+      Blend blend{*edge, evaluateValleyBlend<Facet>(PenaltyNormalLaw(spec_.law.normalPenalty), xs,
+                                                    candidates[edge->a], candidates[edge->b], *edge)};
+      if (blend.result.numBlocks == 0) return std::nullopt;
+      // The facets' positions in the surface, for their DOF ids.
+      blend.edge.a = static_cast<std::size_t>(candidates[edge->a].id);
+      blend.edge.b = static_cast<std::size_t>(candidates[edge->b].id);
+      return blend;
+    }
+    return std::nullopt;
+  }
+  /// The node's state from the blend: its gap, status and normal traction (frictionless: no tangential part).
+  static void applyBlend(const Blend& blend, double& gap, NodeToFacetResult<Facet>& r) {
+    gap = blend.result.gap;
+    r.gap = blend.result.gap;
+    r.status = blend.result.isActive() ? ContactStatus::Slip : ContactStatus::Open;
+    r.normalTraction = blend.result.isActive() ? blend.result.normalTraction : 0.0;
+    r.trial.status = r.status;
+  }
+  /// scatter for a blended element (its DOFs: the slave node's, then the two facets' distinct nodes').
+  std::vector<double> scatterBlend(std::size_t k, const Blend& blend, const Sink& sink) const;
   /// Slave node k against its commit: `result` is its contact evaluation with `committed` (its committed
   /// history on the evaluated facet), or null when it was not evaluated (no master, or frozen).
   SlaveNodeChange changeOf(std::size_t k, double gap, const NodeToFacetResult<Facet>* result,
@@ -220,6 +254,9 @@ class ContactInterface final : public ContactInterfaceBase {
   Facets lastFacets_;            ///< master positions of the latest trial evaluation
   std::vector<Point> committedSlave_;  ///< slave positions of the committed configuration
   std::vector<Point> lastSlave_;       ///< slave positions of the latest trial evaluation
+  /// Frictionless at set-up: the matrix graph then holds the couplings across master edges that a valley
+  /// blend needs (model::ContactAssembly), so only such an interface blends.
+  const bool blendable_ = spec_.law.isFrictionless();
 };
 
 template <class Facet>
@@ -258,14 +295,21 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
         const SlipTangent tangent = damping_.tangent(k);
         if (tangent.secant) r = evaluateElement(k, xs, facet, selection, committed, tangent);
       }
+      const std::optional<Blend> blend = valleyBlend(k, xs, selection, candidates);
+      if (blend) applyBlend(*blend, out.gap, r);
       trial = r.trial;
       change = changeOf(k, out.gap, &r, committed);
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
       out.elasticSlip = elasticSlipOf(r);
       if (r.status != ContactStatus::Open) {
-        const Vector<kDofs> residual = scatter(k, selection.facet, r, sink);
-        for (int c = 0; c < kDim; ++c) force[c] -= residual[c];
+        if (blend) {
+          const std::vector<double> residual = scatterBlend(k, *blend, sink);
+          for (int c = 0; c < kDim; ++c) force[c] -= residual[c];
+        } else {
+          const Vector<kDofs> residual = scatter(k, selection.facet, r, sink);
+          for (int c = 0; c < kDim; ++c) force[c] -= residual[c];
+        }
       }
     } else {
       trial.status = ContactStatus::Open;
@@ -307,6 +351,34 @@ auto ContactInterface<Facet>::scatter(std::size_t k, int facet,
   for (int i = 0; i < kDofs; ++i)
     for (int j = 0; j < MasterSurface<Facet>::kFacetDofs; ++j) dLambda[i] += tangent[i * kDofs + kDim + j] * dx[j];
   sink(dofs.data(), kDofs, residual.data(), tangent.data(), dLambda.data());
+  return residual;
+}
+
+template <class Facet>
+std::vector<double> ContactInterface<Facet>::scatterBlend(std::size_t k, const Blend& blend, const Sink& sink) const {
+  const auto& r = blend.result;
+  const int n = r.numDofs();
+  const double area = spec_.slaveAreas[k];
+  std::vector<double> residual(n), tangent(static_cast<std::size_t>(n) * n), dLambda(n, 0.0), dx(n, 0.0);
+  std::vector<GlobalIndex> dofs(n);
+  const GlobalIndex node = spec_.slaveNodes[k];
+  for (int c = 0; c < kDim; ++c) dofs[c] = kDim * node + c;
+  const int facets[2] = {static_cast<int>(blend.edge.a), static_cast<int>(blend.edge.b)};
+  for (int u = 1; u < r.numBlocks; ++u) {
+    const auto [f, i] = r.source[u];
+    const auto masterDofs = master_.dofs(facets[f]);
+    const auto motion = master_.dPositiondLambda(facets[f]);
+    for (int c = 0; c < kDim; ++c) {
+      dofs[u * kDim + c] = masterDofs[i * kDim + c];
+      dx[u * kDim + c] = motion[i * kDim + c];
+    }
+  }
+  for (int i = 0; i < n; ++i) residual[i] = area * r.residual[i];
+  for (std::size_t i = 0; i < tangent.size(); ++i) tangent[i] = area * r.tangent[i];
+  // x_master = X + λ · motion for a rigid master: ∂r_c/∂λ = Σ_master K[:, master] · ∂x_master/∂λ.
+  for (int i = 0; i < n; ++i)
+    for (int j = kDim; j < n; ++j) dLambda[i] += tangent[static_cast<std::size_t>(i) * n + j] * dx[j];
+  sink(dofs.data(), n, residual.data(), tangent.data(), dLambda.data());
   return residual;
 }
 
@@ -413,8 +485,10 @@ std::vector<SlaveNodeChange> ContactInterface<Facet>::changesAt(const NodePositi
       continue;
     }
     const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
-    const NodeToFacetResult<Facet> r = evaluateElement(k, xs, facets[selection.facet], selection, committed);
-    out.push_back(changeOf(k, selection.gap, &r, committed));
+    NodeToFacetResult<Facet> r = evaluateElement(k, xs, facets[selection.facet], selection, committed);
+    double gap = selection.gap;
+    if (const auto blend = valleyBlend(k, xs, selection, candidates)) applyBlend(*blend, gap, r);
+    out.push_back(changeOf(k, gap, &r, committed));
   }
   return out;
 }

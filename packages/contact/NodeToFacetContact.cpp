@@ -493,6 +493,26 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUn
   return out;
 }
 
+template <class Facet>
+FacetGapVariation<Facet> facetGapVariation(const NodeToFacetGeometry<Facet>& x) {
+  constexpr int M = Facet::kSurfaceDim;
+  FacetGapVariation<Facet> out;
+  out.projection = Projection<Facet>().project(x.slave, x.master);
+  if (!out.projection.converged) return out;
+  FacetKinematics<Facet> k;
+  if (!k.build(out.projection, x.master)) return out;
+  out.valid = true;
+  out.gapFirst = k.N;
+  k.addGapCurvature(out.gapSecond, 1.0);  // term (a) per unit t_N
+  for (int al = 0; al < M; ++al) {
+    out.xiFirst[al] = k.Xi[al];
+    Vector<M> unit{};
+    unit[al] = 1.0;
+    addProjectionCurvature<Facet>(out.xiSecond[al], k, unit);  // term (c) with t_T = e_α
+  }
+  return out;
+}
+
 template class NodeToFacetContact<Line2Facet>;
 template class NodeToFacetContact<Quad4Facet>;
 template class NodeToFacetContact<Line3Facet>;
@@ -500,5 +520,13 @@ template class NodeToFacetContact<Tri3Facet>;
 template class NodeToFacetContact<Tri6Facet>;
 template class NodeToFacetContact<Quad8Facet>;
 template class NodeToFacetContact<Quad9Facet>;
+
+template FacetGapVariation<Line2Facet> facetGapVariation<Line2Facet>(const NodeToFacetGeometry<Line2Facet>&);
+template FacetGapVariation<Quad4Facet> facetGapVariation<Quad4Facet>(const NodeToFacetGeometry<Quad4Facet>&);
+template FacetGapVariation<Line3Facet> facetGapVariation<Line3Facet>(const NodeToFacetGeometry<Line3Facet>&);
+template FacetGapVariation<Tri3Facet> facetGapVariation<Tri3Facet>(const NodeToFacetGeometry<Tri3Facet>&);
+template FacetGapVariation<Tri6Facet> facetGapVariation<Tri6Facet>(const NodeToFacetGeometry<Tri6Facet>&);
+template FacetGapVariation<Quad8Facet> facetGapVariation<Quad8Facet>(const NodeToFacetGeometry<Quad8Facet>&);
+template FacetGapVariation<Quad9Facet> facetGapVariation<Quad9Facet>(const NodeToFacetGeometry<Quad9Facet>&);
 
 }  // namespace contessa::contact

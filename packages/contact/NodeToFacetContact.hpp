@@ -187,6 +187,26 @@ class NodeToFacetContact {
   CoulombReturnMapping<kSurfaceDim> returnMapping_;
 };
 
+/// A slave node's gap on one facet (its projection ξ̄ of eq. 1–4, on the facet or its extension) with the
+/// exact first and second derivatives of g_N and ξ̄ in the element dofs [x^k, x_1, …, x_n] (§6.1 of
+/// docs/theory-contact.md: ∂g_N/∂u = N, ∂ξ̄^α/∂u = Ξ^α, ∂²g_N/∂u² of term (a), ∂²ξ̄^α/∂u² of term (c)):
+/// what an element built on two facets at once (ValleyBlend) is made of. `valid` is false when the
+/// projection did not converge or the node sits at a focal point of the facet.
+template <class Facet>
+struct FacetGapVariation {
+  static constexpr int kSurfaceDim = Facet::kSurfaceDim;
+  static constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
+  bool valid = false;
+  ProjectionResult<Facet> projection{};
+  Vector<kDofs> gapFirst{};                               ///< ∂g_N/∂u
+  Matrix<kDofs, kDofs> gapSecond{};                       ///< ∂²g_N/∂u²
+  std::array<Vector<kDofs>, kSurfaceDim> xiFirst{};       ///< ∂ξ̄^α/∂u
+  std::array<Matrix<kDofs, kDofs>, kSurfaceDim> xiSecond{};  ///< ∂²ξ̄^α/∂u²
+};
+
+template <class Facet>
+FacetGapVariation<Facet> facetGapVariation(const NodeToFacetGeometry<Facet>& x);
+
 extern template class NodeToFacetContact<Line2Facet>;
 extern template class NodeToFacetContact<Quad4Facet>;
 extern template class NodeToFacetContact<Line3Facet>;

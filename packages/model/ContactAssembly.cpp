@@ -102,6 +102,7 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
           for (int c = 0; c < dim; ++c)
             for (int d = 0; d < dim; ++d) rows[a[c]].push_back(b[d]);
         }
+    if (!spec.mortar && spec.law.isFrictionless()) addAcrossEdgeCouplings(spec, rows);
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
       if (!evaluates[k] || spec.mortar) continue;
       dofsOf(spec.slaveNodes[k], a);
@@ -114,6 +115,45 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
           }
       }
     }
+  }
+}
+
+void ContactAssembly::addAcrossEdgeCouplings(const contact::ContactInterfaceSpec& spec,
+                                             std::vector<std::vector<LO>>& rows) const {
+  // A frictionless node-to-facet element near a valley edge is blended over the two facets sharing it
+  // (contact/ValleyBlend.hpp): it couples the nodes of both. Facets sharing an edge (2D: a vertex; 3D: at
+  // least two nodes) reserve each other's nodes.
+  const int dim = layout_.dimension();
+  const std::size_t perFacet = spec.nodesPerFacet();
+  const std::size_t numFacets = spec.masterFacets.size() / perFacet;
+  const std::size_t sharedNeeded = dim == 2 ? 1 : 2;
+  std::vector<std::pair<GlobalIndex, std::size_t>> byNode;  // (node, facet), sorted by node
+  for (std::size_t f = 0; f < numFacets; ++f)
+    for (std::size_t a = 0; a < perFacet; ++a) byNode.emplace_back(spec.masterFacets[f * perFacet + a], f);
+  std::sort(byNode.begin(), byNode.end());
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (f, g), one per shared node
+  for (std::size_t i = 0; i < byNode.size();) {
+    std::size_t j = i;
+    while (j < byNode.size() && byNode[j].first == byNode[i].first) ++j;
+    for (std::size_t x = i; x < j; ++x)
+      for (std::size_t y = i; y < j; ++y)
+        if (byNode[x].second != byNode[y].second) pairs.emplace_back(byNode[x].second, byNode[y].second);
+    i = j;
+  }
+  std::sort(pairs.begin(), pairs.end());
+  for (std::size_t i = 0; i < pairs.size();) {
+    std::size_t j = i;
+    while (j < pairs.size() && pairs[j] == pairs[i]) ++j;
+    if (j - i >= sharedNeeded) {
+      const std::size_t f = pairs[i].first, g = pairs[i].second;
+      for (std::size_t ia = 0; ia < perFacet; ++ia)
+        for (std::size_t ib = 0; ib < perFacet; ++ib)
+          for (int c = 0; c < dim; ++c)
+            for (int d = 0; d < dim; ++d)
+              rows[layout_.overlapDof(spec.masterFacets[f * perFacet + ia], c)].push_back(
+                  layout_.overlapDof(spec.masterFacets[g * perFacet + ib], d));
+    }
+    i = j;
   }
 }
 
