@@ -126,6 +126,8 @@ std::string summaryJson(const RunReport& r) {
       << "  \"newton_iterations\": " << s.newtonIterations << ",\n"
       << "  \"linear_solves\": " << s.linearSolves << ",\n"
       << "  \"linear_iterations\": " << s.linearIterations << ",\n"
+      << "  \"linear_solver\": " << jsonString(r.linearSolver) << ",\n"
+      << "  \"linear_solver_automatic\": " << (r.linearSolverAutomatic ? "true" : "false") << ",\n"
       << "  \"direct_factorizations\": " << r.directFactorizations << ",\n"
       << "  \"symmetric_factorizations\": " << r.symmetricFactorizations << ",\n"
       << "  \"graph_rebuilds\": " << r.graphRebuilds << ",\n"

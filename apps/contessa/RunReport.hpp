@@ -34,6 +34,8 @@ struct RunReport {
   solvers::RunSummary summary;
   int exitStatus = 0;
   double wallSeconds = 0;
+  std::string linearSolver;          ///< the linear solver and why (solvers::LinearSolverChoice)
+  bool linearSolverAutomatic = false;  ///< chosen by the problem's size, not named by the deck
   long directFactorizations = 0;     ///< MUMPS factorisations of the run
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)
