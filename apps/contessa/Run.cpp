@@ -31,6 +31,7 @@
 #include "solvers/JacobianCheckObserver.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/PreconditionerReuse.hpp"
 #include "solvers/SolverParameters.hpp"
 #include "solvers/StaticSolveDriver.hpp"
 
@@ -255,6 +256,8 @@ void writeRunReport(const CommandLine& cl, const std::string& name, const solver
   report.exitStatus = exitStatus;
   report.linearSolver = linearSolver.solver;
   report.linearSolverAutomatic = linearSolver.automatic;
+  report.preconditionerRebuildsOnNewGraph = solvers::GraphKeyedPreconditionerFactory::freshSetUps();
+  report.preconditionerRefusedReuses = solvers::GraphKeyedPreconditionerFactory::refusedReuses();
   report.directFactorizations = solvers::mumpsCounters().factorizations;
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
   report.graphRebuilds = model.graphRebuilds();

@@ -128,6 +128,8 @@ std::string summaryJson(const RunReport& r) {
       << "  \"linear_iterations\": " << s.linearIterations << ",\n"
       << "  \"linear_solver\": " << jsonString(r.linearSolver) << ",\n"
       << "  \"linear_solver_automatic\": " << (r.linearSolverAutomatic ? "true" : "false") << ",\n"
+      << "  \"preconditioner_new_graph_setups\": " << r.preconditionerRebuildsOnNewGraph << ",\n"
+      << "  \"preconditioner_refused_reuses\": " << r.preconditionerRefusedReuses << ",\n"
       << "  \"direct_factorizations\": " << r.directFactorizations << ",\n"
       << "  \"symmetric_factorizations\": " << r.symmetricFactorizations << ",\n"
       << "  \"graph_rebuilds\": " << r.graphRebuilds << ",\n"
