@@ -31,6 +31,7 @@
 #include "solvers/JacobianCheckObserver.hpp"
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/PreconditionerReuse.hpp"
 #include "solvers/SolverParameters.hpp"
 #include "solvers/StaticSolveDriver.hpp"
 
@@ -112,6 +113,7 @@ struct ValidatedInput {
   Teuchos::RCP<Teuchos::ParameterList> deck;
   std::shared_ptr<const deck::ProblemDefinition> problem;  ///< shared with the model
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> linearSolver;
+  solvers::LinearSolverChoice linearSolverChoice;  ///< what the linear solver is and why, for the log
   output::RunDescription description;
   std::vector<Teuchos::ParameterList> stepSizes;  ///< per load step (none without Problem/Load Steps)
 };
@@ -137,7 +139,10 @@ ValidatedInput readInput(const CommandLine& cl, const Teuchos::RCP<const Teuchos
     const std::string deckDirectory = fs::path(cl.deck).parent_path().string();
     input.problem = std::make_shared<const deck::ProblemDefinition>(
         deck::buildProblem(input.deck->sublist("Problem"), deckDirectory, mpiCommOf(*comm)));
-    solvers::validatePiro(input.deck->sublist("Piro"), comm->getSize());
+    // The linear solver is chosen once the mesh is read: by its size and dimension unless the deck names one.
+    const solvers::ProblemSize size{input.problem->dimension(),
+                                    static_cast<long long>(input.problem->mesh.numGlobalNodes) * input.problem->dimension()};
+    input.linearSolverChoice = solvers::validatePiro(input.deck->sublist("Piro"), comm->getSize(), size);
     input.stepSizes = solvers::loadStepSizes(*input.problem, input.deck->sublist("Piro"));
     input.linearSolver = solvers::createLinearSolverFactory(input.deck->sublist("Piro").sublist("Stratimikos"), comm);
 
@@ -240,7 +245,7 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
 // The summary for batch logs and scripts, beside the history (a failure to write it is a warning: the
 // results are complete). Collective (peak memory and mesh parts are gathered).
 void writeRunReport(const CommandLine& cl, const std::string& name, const solvers::RunSummary& summary, int exitStatus,
-                    const model::ContactMechanicsModel& model, const mesh::DistributedMesh& mesh,
+                    const solvers::LinearSolverChoice& linearSolver, const model::ContactMechanicsModel& model, const mesh::DistributedMesh& mesh,
                     std::chrono::steady_clock::time_point start, const std::optional<EarlierJobs>& earlier,
                     const Teuchos::Comm<int>& comm) {
   RunReport report;
@@ -249,6 +254,10 @@ void writeRunReport(const CommandLine& cl, const std::string& name, const solver
   report.ranks = comm.getSize();
   report.summary = summary;
   report.exitStatus = exitStatus;
+  report.linearSolver = linearSolver.solver;
+  report.linearSolverAutomatic = linearSolver.automatic;
+  report.preconditionerRebuildsOnNewGraph = solvers::GraphKeyedPreconditionerFactory::freshSetUps();
+  report.preconditionerRefusedReuses = solvers::GraphKeyedPreconditionerFactory::refusedReuses();
   report.directFactorizations = solvers::mumpsCounters().factorizations;
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
   report.graphRebuilds = model.graphRebuilds();
@@ -314,6 +323,9 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
                 comm->getSize(), static_cast<long long>(problem.mesh.numGlobalNodes),
                 static_cast<long long>(problem.mesh.numGlobalElements),
                 static_cast<long long>(model->ownedDofMap()->getGlobalNumElements()));
+  if (root && !cl.quiet)
+    std::printf("contessa: linear solver %s (%s)\n", input.linearSolverChoice.solver.c_str(),
+                input.linearSolverChoice.reason.c_str());
 
   // 3. The solve, its outcome and the run's summary.
   RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,
@@ -325,7 +337,7 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   const int exitStatus = reportOutcome(summary, problem, results, restartPath, commandLineText(continued), *comm);
   std::optional<EarlierJobs> earlier;
   if (!cl.restart.empty()) earlier = earlierJobs(results.historyColumns(), restart.historyRows);
-  writeRunReport(cl, name, summary, exitStatus, *model, problem.mesh, start, earlier, *comm);
+  writeRunReport(cl, name, summary, exitStatus, input.linearSolverChoice, *model, problem.mesh, start, earlier, *comm);
   return exitStatus;
 }
 

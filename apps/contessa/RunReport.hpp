@@ -34,6 +34,10 @@ struct RunReport {
   solvers::RunSummary summary;
   int exitStatus = 0;
   double wallSeconds = 0;
+  std::string linearSolver;          ///< the linear solver and why (solvers::LinearSolverChoice)
+  bool linearSolverAutomatic = false;  ///< chosen by the problem's size, not named by the deck
+  long preconditionerRebuildsOnNewGraph = 0;  ///< MueLu hierarchies started over on a rebuilt graph
+  long preconditionerRefusedReuses = 0;       ///< MueLu re-set-ups refused, then started over
   long directFactorizations = 0;     ///< MUMPS factorisations of the run
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)

@@ -19,6 +19,7 @@
 #include "mesh/DistributedMesh.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
+#include "solvers/PreconditionerReuse.hpp"
 #include "solvers/RigidBodyModes.hpp"
 
 namespace contessa::solvers {
@@ -249,6 +250,10 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
     if (own->isType<std::string>("Preconditioner Type") && own->get<std::string>("Preconditioner Type") == "MueLu") {
       auto& muelu = own->sublist("Preconditioner Types").sublist("MueLu");
       if (!muelu.isParameter("verbosity")) muelu.set("verbosity", std::string("none"));
+      // The aggregation once per matrix graph, not once per Newton iteration (PreconditionerReuse.hpp); on
+      // one rank only: on two, MueLu 13.2 refused a re-set-up on one rank and not the other (the sliding
+      // block of tests/regression/contact_graph ended in MPI_ERR_TRUNCATE), which no rank can recover alone.
+      if (!muelu.isParameter("reuse: type") && comm->getSize() == 1) muelu.set("reuse: type", std::string(kMueLuReuseType));
       typeMueLuParameters(muelu, "Piro/Stratimikos/Preconditioner Types/MueLu");
     }
     completeBelosSolverList(*own);
@@ -264,6 +269,9 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
     auto factory = Thyra::createLinearSolveStrategy(builder);
     if (!stratimikos.isType<std::string>("Linear Solver Type") || stratimikos.get<std::string>("Linear Solver Type") != "Belos")
       return factory;
+    // MueLu's hierarchy kept while the matrix graph is (the deck's "reuse: type" says how much of it).
+    if (auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(factory->getPreconditionerFactory()); !muelu.is_null())
+      factory->setPreconditionerFactory(Teuchos::rcp(new GraphKeyedPreconditionerFactory(muelu)), "MueLu");
     try {
       probeIterativeSolver(*factory, comm);
     } catch (const std::exception& e) {
@@ -281,7 +289,10 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
 
 void provideNearNullSpace(Thyra::LinearOpWithSolveFactoryBase<double>& factory, const model::Map& ownedDofMap,
                           const mesh::DistributedMesh& part) {
-  auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(unmonitored(factory.getPreconditionerFactory()));
+  auto precFactory = unmonitored(factory.getPreconditionerFactory());
+  if (auto keyed = Teuchos::rcp_dynamic_cast<GraphKeyedPreconditionerFactory>(precFactory); !keyed.is_null())
+    precFactory = keyed->inner();
+  auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(precFactory);
   if (muelu.is_null()) return;
   const mesh::Mesh& local = part.local();
   const int dim = local.dimension;

@@ -74,7 +74,7 @@ void validateBelosTolerances(ParameterList& strat) {
 
 }  // namespace
 
-std::vector<std::string> linearSolverTypes() { return {"MUMPS", "Amesos2", "Belos"}; }
+std::vector<std::string> linearSolverTypes() { return {"Automatic", "MUMPS", "Amesos2", "Belos"}; }
 
 std::vector<std::string> preconditionerTypes() { return {"None", "Ifpack2", "MueLu"}; }
 
@@ -112,11 +112,38 @@ RCP<const ParameterList> piroValidParameters() {
   auto& step = loca.sublist("Step Size", false, "Increment control");
   addStepSizeParameters(step);
 
-  piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' added by Contessa; see below)");
+  piro->sublist("Stratimikos", false, "Linear solver (Stratimikos parameter names; 'MUMPS' and 'Automatic', the default, added by Contessa; see below)");
   return piro;
 }
 
-void validatePiro(ParameterList& piro, int numRanks) {
+LinearSolverChoice chooseLinearSolver(ParameterList& stratimikos, const ProblemSize& size) {
+  const std::string key = "Linear Solver Type";
+  const bool automatic = !stratimikos.isParameter(key) ||
+                         (stratimikos.isType<std::string>(key) && stratimikos.get<std::string>(key) == "Automatic");
+  LinearSolverChoice choice;
+  choice.automatic = automatic;
+  if (automatic) {
+    const long long limit = size.dimension == 3 ? kDirectSolverLimit3D : kDirectSolverLimit2D;
+    const bool direct = size.unknowns <= limit;
+    stratimikos.set(key, std::string(direct ? "MUMPS" : "Belos"));
+    if (!direct && !stratimikos.isParameter("Preconditioner Type")) stratimikos.set("Preconditioner Type", std::string("MueLu"));
+    choice.reason = "automatic: " + std::to_string(size.dimension) + "D, " + std::to_string(size.unknowns) +
+                    " unknowns " + (direct ? "<= " : "> ") + std::to_string(limit) +
+                    "; Piro/Stratimikos/Linear Solver Type = MUMPS or Belos forces one";
+  } else {
+    choice.reason = "given by Piro/Stratimikos/Linear Solver Type";
+  }
+  if (!stratimikos.isType<std::string>(key)) return choice;  // validatePiro reports it
+  choice.solver = stratimikos.get<std::string>(key);
+  if (choice.solver == "Belos") {
+    const std::string prec = stratimikos.isType<std::string>("Preconditioner Type")
+                                 ? stratimikos.get<std::string>("Preconditioner Type") : std::string("None");
+    choice.solver += prec == "None" ? " without preconditioner" : " with " + prec;
+  }
+  return choice;
+}
+
+LinearSolverChoice validatePiro(ParameterList& piro, int numRanks, const ProblemSize& size) {
   deck::validateAndSetDefaults(piro, *piroValidParameters(), "Piro", {"Stratimikos"});
   const auto& step = piro.sublist("LOCA").sublist("Step Size");
   requireInput(step.get<double>("Min Step Size") <= step.get<double>("Initial Step Size") &&
@@ -131,7 +158,7 @@ void validatePiro(ParameterList& piro, int numRanks) {
   // first solve: the two choices are checked here. Stratimikos' default preconditioner is Ifpack, so
   // Contessa's default is None. Two solvers of this Trilinos build are refused as well.
   auto& strat = piro.sublist("Stratimikos");
-  if (!strat.isParameter("Linear Solver Type")) strat.set("Linear Solver Type", std::string("MUMPS"));
+  const LinearSolverChoice choice = chooseLinearSolver(strat, size);
   if (!strat.isParameter("Preconditioner Type")) strat.set("Preconditioner Type", std::string("None"));
   for (const auto& [name, allowed] : {std::make_pair("Linear Solver Type", linearSolverTypes()),
                                       std::make_pair("Preconditioner Type", preconditionerTypes())}) {
@@ -152,6 +179,7 @@ void validatePiro(ParameterList& piro, int numRanks) {
                  "Piro/Stratimikos/Linear Solver Type: Amesos2 (" + solver + ") gives wrong solutions on more than one MPI "
                  "rank in this Trilinos build; use MUMPS or Belos");
   }
+  return choice;
 }
 
 std::vector<ParameterList> loadStepSizes(const deck::ProblemDefinition& problem, const ParameterList& piro) {

@@ -15,16 +15,45 @@
 namespace contessa::solvers {
 
 /// Stratimikos' linear solvers and preconditioners that work on Contessa's Tpetra matrices (MUMPS is
-/// registered by Contessa; Stratimikos' Epetra solvers are left out).
+/// registered by Contessa; Stratimikos' Epetra solvers are left out), and "Automatic": one of MUMPS and
+/// Belos + MueLu chosen by the problem's size and dimension (chooseLinearSolver).
 std::vector<std::string> linearSolverTypes();
 std::vector<std::string> preconditionerTypes();
 
 /// The valid "Piro" list without the Stratimikos part (Stratimikos validates its own sublist).
 Teuchos::RCP<const Teuchos::ParameterList> piroValidParameters();
 
-/// Validates the deck's "Piro" list in place (defaults filled in); `numRanks` rejects solvers that
-/// are wrong in parallel in this Trilinos build. Throws InputError naming the deck path.
-void validatePiro(Teuchos::ParameterList& piro, int numRanks);
+/// The problem as the automatic linear solver choice sees it: the whole mesh's dimension and unknowns
+/// (nodes × dimension, the same on every rank).
+struct ProblemSize {
+  int dimension = 0;
+  long long unknowns = 0;
+};
+
+/// The largest problems the automatic choice gives to the direct solver (MUMPS); larger ones get Belos
+/// GMRES + MueLu. 3D: the crossover measured on the 3D punch, where MUMPS with METIS' ordering and MueLu
+/// cost the same per Newton iteration at 1.5·10^4 unknowns (bench/README.md, "Issue 23"). 2D: the 2D
+/// factor grows as N^1.2 in entries and N^1.66 in operations (the tube refined, bench/README.md), so MUMPS
+/// stays the cheaper and the more robust for penalty contact far longer (docs/user-guide.md, "Linear solver").
+inline constexpr long long kDirectSolverLimit2D = 500000;
+inline constexpr long long kDirectSolverLimit3D = 15000;
+
+/// The linear solver of a run and why: printed once in the log and kept in the run's summary.
+struct LinearSolverChoice {
+  std::string solver;  ///< "MUMPS", "Belos with MueLu", ... (Linear Solver Type with its preconditioner)
+  bool automatic = false;
+  std::string reason;
+};
+
+/// Where Piro/Stratimikos/Linear Solver Type is absent or "Automatic", sets it (and, for Belos, the
+/// Preconditioner Type MueLu unless the deck gives one) from `size`; otherwise leaves the deck's choice.
+/// Returns what was chosen and why.
+LinearSolverChoice chooseLinearSolver(Teuchos::ParameterList& stratimikos, const ProblemSize& size);
+
+/// Validates the deck's "Piro" list in place (defaults filled in, the linear solver chosen by
+/// chooseLinearSolver); `numRanks` rejects solvers that are wrong in parallel in this Trilinos build.
+/// Throws InputError naming the deck path.
+LinearSolverChoice validatePiro(Teuchos::ParameterList& piro, int numRanks, const ProblemSize& size);
 
 /// Each load step's Step Size list (Problem/Load Steps): the step's own, validated as Piro/LOCA/Step Size
 /// (defaults filled in), or the validated `piro`'s; none without load steps. InputError naming the step.

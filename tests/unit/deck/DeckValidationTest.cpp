@@ -328,21 +328,62 @@ TEST(ContactValidation, BadParametersAreNamed) {
   expectProblemError(*q, "Problem/Contact/self/Master Side Set: side set 'nowhere' does not exist");
 }
 
+// A small 3D problem: the automatic linear solver choice gives it to MUMPS.
+const contessa::solvers::ProblemSize kSmall3D{3, 3000};
+
 void expectPiroError(ParameterList& piro, int ranks, const std::string& expected) {
   try {
-    contessa::solvers::validatePiro(piro, ranks);
+    contessa::solvers::validatePiro(piro, ranks, kSmall3D);
     FAIL() << "no error; expected: " << expected;
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << "message: " << e.what();
   }
 }
 
-TEST(PiroValidation, DefaultsAndMumpsByDefault) {
+TEST(PiroValidation, DefaultsAndMumpsForASmallProblem) {
   ParameterList piro("Piro");
-  contessa::solvers::validatePiro(piro, 2);
+  const auto choice = contessa::solvers::validatePiro(piro, 2, kSmall3D);
   EXPECT_EQ(piro.sublist("Stratimikos").get<std::string>("Linear Solver Type"), "MUMPS");
+  EXPECT_TRUE(choice.automatic);
+  EXPECT_EQ(choice.solver, "MUMPS");
   EXPECT_EQ(piro.sublist("LOCA").sublist("Step Size").get<std::string>("Method"), "Constant");
   EXPECT_EQ(piro.sublist("NOX").sublist("Status Tests").get<int>("Maximum Iterations"), 25);
+}
+
+// The automatic linear solver choice (issue 23): MUMPS up to the limit of the dimension, Belos + MueLu
+// above it; "Automatic" given or the parameter absent alike; a deck's solver or preconditioner kept.
+TEST(PiroValidation, LinearSolverChosenBySizeAndDimension) {
+  using contessa::solvers::chooseLinearSolver;
+  using contessa::solvers::kDirectSolverLimit2D;
+  using contessa::solvers::kDirectSolverLimit3D;
+  const auto solverFor = [](ParameterList strat, int dim, long long unknowns) {
+    const auto choice = chooseLinearSolver(strat, {dim, unknowns});
+    EXPECT_EQ(strat.get<std::string>("Linear Solver Type"), choice.solver.substr(0, choice.solver.find(' ')));
+    return choice;
+  };
+  ParameterList absent("Stratimikos");
+  ParameterList automatic("Stratimikos");
+  automatic.set("Linear Solver Type", std::string("Automatic"));
+  for (const auto& strat : {absent, automatic}) {
+    EXPECT_EQ(solverFor(strat, 3, kDirectSolverLimit3D).solver, "MUMPS");
+    EXPECT_EQ(solverFor(strat, 3, kDirectSolverLimit3D + 1).solver, "Belos with MueLu");
+    EXPECT_EQ(solverFor(strat, 2, kDirectSolverLimit3D + 1).solver, "MUMPS");
+    EXPECT_EQ(solverFor(strat, 2, kDirectSolverLimit2D + 1).solver, "Belos with MueLu");
+    EXPECT_TRUE(solverFor(strat, 3, 10).automatic);
+  }
+  const auto large = solverFor(absent, 3, 20000);
+  EXPECT_NE(large.reason.find("3D, 20000 unknowns > 15000"), std::string::npos) << large.reason;
+  ParameterList ifpack(automatic);
+  ifpack.set("Preconditioner Type", std::string("Ifpack2"));
+  EXPECT_EQ(solverFor(ifpack, 3, 20000).solver, "Belos with Ifpack2");
+  ParameterList forcedBelos("Stratimikos");
+  forcedBelos.set("Linear Solver Type", std::string("Belos"));
+  const auto belos = solverFor(forcedBelos, 3, 10);
+  EXPECT_EQ(belos.solver, "Belos without preconditioner");
+  EXPECT_FALSE(belos.automatic);
+  ParameterList forcedMumps("Stratimikos");
+  forcedMumps.set("Linear Solver Type", std::string("MUMPS"));
+  EXPECT_EQ(solverFor(forcedMumps, 3, 1000000).solver, "MUMPS");
 }
 
 TEST(PiroValidation, UnknownStepSizeMethod) {
@@ -378,15 +419,15 @@ TEST(PiroValidation, StepSizesMustBeOrdered) {
 TEST(PiroValidation, Klu2IsRefusedOnSeveralRanks) {
   ParameterList piro("Piro");
   piro.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
-  EXPECT_NO_THROW(contessa::solvers::validatePiro(piro, 1));
+  EXPECT_NO_THROW(contessa::solvers::validatePiro(piro, 1, kSmall3D));
   expectPiroError(piro, 2, "gives wrong solutions on more than one MPI rank");
 }
 
 TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
   // Stratimikos' Epetra solvers would fail at the first solve: they are refused with the allowed list.
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-      {{"Linear Solver Type", "Pardiso"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'Pardiso'"},
-      {{"Linear Solver Type", "AztecOO"}, "Piro/Stratimikos/Linear Solver Type: expected one of MUMPS, Amesos2, Belos; got 'AztecOO'"},
+      {{"Linear Solver Type", "Pardiso"}, "Piro/Stratimikos/Linear Solver Type: expected one of Automatic, MUMPS, Amesos2, Belos; got 'Pardiso'"},
+      {{"Linear Solver Type", "AztecOO"}, "Piro/Stratimikos/Linear Solver Type: expected one of Automatic, MUMPS, Amesos2, Belos; got 'AztecOO'"},
       {{"Preconditioner Type", "ML"}, "Piro/Stratimikos/Preconditioner Type: expected one of None, Ifpack2, MueLu; got 'ML'"},
   };
   for (const auto& [setting, expected] : cases) {
@@ -396,7 +437,7 @@ TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
   }
   ParameterList piro("Piro");
   piro.sublist("Stratimikos").set("Linear Solver Type", 3);
-  expectPiroError(piro, 1, "Piro/Stratimikos/Linear Solver Type: expected a string, one of MUMPS, Amesos2, Belos");
+  expectPiroError(piro, 1, "Piro/Stratimikos/Linear Solver Type: expected a string, one of Automatic, MUMPS, Amesos2, Belos");
   ParameterList amesos2("Piro");
   amesos2.sublist("Stratimikos").set("Linear Solver Type", std::string("Amesos2"));
   amesos2.sublist("Stratimikos").sublist("Linear Solver Types").sublist("Amesos2").set("Solver Type", std::string("SuperLU"));
@@ -404,7 +445,7 @@ TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
   // Stratimikos' default preconditioner (Ifpack) is an Epetra one: Contessa's default is None.
   ParameterList belos("Piro");
   belos.sublist("Stratimikos").set("Linear Solver Type", std::string("Belos"));
-  contessa::solvers::validatePiro(belos, 2);
+  contessa::solvers::validatePiro(belos, 2, kSmall3D);
   EXPECT_EQ(belos.sublist("Stratimikos").get<std::string>("Preconditioner Type"), "None");
 }
 
