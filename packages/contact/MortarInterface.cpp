@@ -92,8 +92,16 @@ class MortarInterface final : public ContactInterfaceBase {
   BoundingBoxTree<kDim> searchTree(const Facets& facets) const;
   NodeWeightedGap weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
                               const BoundingBoxTree<kDim>& tree, bool derivatives) const;
-  void addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x, double referenceLength,
-               const std::array<GlobalIndex, 4>& nodes, int facet, bool derivatives) const;
+  /// The nodes of a slave segment's pairs: its two slave nodes, two master nodes (set per master facet),
+  /// and the slave nodes beyond its ends (which enter the averaged nodal normals).
+  struct PairNodes {
+    std::array<GlobalIndex, kMortarPairCoordinates / kDim> nodes{};
+    MortarSlaveNeighbours neighbours;
+    double referenceLength = 0;
+  };
+  PairNodes pairNodes(std::size_t segment) const;
+  void addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x, const PairNodes& pair,
+               int facet, bool derivatives) const;
   /// Node k's term: residual −p ∇g̃, tangent (ε/A) ∇g̃ ⊗ ∇g̃ − p ∇²g̃ (eq. M7–M8); adds the force on the
   /// slave nodes to `force`.
   void assemble(std::size_t k, const NodeWeightedGap& w, double pressure, const Sink& sink,
@@ -111,6 +119,22 @@ class MortarInterface final : public ContactInterfaceBase {
   std::vector<std::vector<SegmentEnd>> segmentsAt_;  ///< per slave node: its slave segments
 };
 
+MortarInterface::PairNodes MortarInterface::pairNodes(std::size_t segment) const {
+  PairNodes pair;
+  pair.referenceLength = spec_.slaveSegmentLengths[segment];
+  for (int a = 0; a < 2; ++a) pair.nodes[a] = spec_.slaveFacets[2 * segment + a];
+  // The neighbour segment at end a (a 2D slave surface has at most one): its other node, and whether it
+  // runs into the pair's segment (σ = +1 at end 0: stored y → s_0; at end 1: s_1 → y) or against it.
+  for (int a = 0; a < 2; ++a)
+    for (const SegmentEnd& other : segmentsAt_[slaveIndex(pair.nodes[a])]) {
+      if (other.segment == segment) continue;
+      pair.nodes[4 + a] = spec_.slaveFacets[2 * other.segment + 1 - other.end];
+      pair.neighbours.orientation[a] = (other.end == 1 - a) ? 1 : -1;
+      break;
+    }
+  return pair;
+}
+
 BoundingBoxTree<kDim> MortarInterface::searchTree(const Facets& facets) const {
   // Master boxes enlarged by the largest master and slave segments: a slave segment's box then meets every
   // master segment the mortar integral can pair it with.
@@ -126,26 +150,31 @@ BoundingBoxTree<kDim> MortarInterface::searchTree(const Facets& facets) const {
 }
 
 void MortarInterface::addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x,
-                              double referenceLength, const std::array<GlobalIndex, 4>& nodes, int facet,
-                              bool derivatives) const {
+                              const PairNodes& pair, int facet, bool derivatives) const {
   if (!derivatives) {
-    const MortarPairGaps<double> g = segmentPairGaps(x, referenceLength);
+    const MortarPairGaps<double> g = segmentPairGaps(x, pair.referenceLength, pair.neighbours);
     w.overlaps = w.overlaps || g.overlaps;
     if (g.overlaps) w.value += g.weightedGap[end];
     return;
   }
-  const MortarPairDerivatives g = segmentPairDerivatives(x, referenceLength);
+  const MortarPairDerivatives g = segmentPairDerivatives(x, pair.referenceLength, pair.neighbours);
   if (!g.overlaps) return;
   w.overlaps = true;
   w.value += g.weightedGap[end];
   const auto masterDofs = master_.dofs(facet);
   const auto masterMotion = master_.dPositiondLambda(facet);
-  std::array<int, 4> at{};
-  for (int a = 0; a < 4; ++a) {
-    const GlobalIndex slaveDofs[kDim] = {kDim * nodes[a], kDim * nodes[a] + 1};
+  constexpr int kPairNodes = kMortarPairCoordinates / kDim;
+  std::array<int, kPairNodes> at{};
+  for (int a = 0; a < kPairNodes; ++a) {
+    const bool master = a == 2 || a == 3;
+    if (!master && a >= 4 && pair.neighbours.orientation[a - 4] == 0) {
+      at[a] = -1;  // no slave node beyond this end: its coordinates are unused
+      continue;
+    }
+    const GlobalIndex slaveDofs[kDim] = {kDim * pair.nodes[a], kDim * pair.nodes[a] + 1};
     const double still[kDim] = {0.0, 0.0};
-    at[a] = a < 2 ? w.indexOf(nodes[a], slaveDofs, still)
-                  : w.indexOf(nodes[a], &masterDofs[kDim * (a - 2)], &masterMotion[kDim * (a - 2)]);
+    at[a] = master ? w.indexOf(pair.nodes[a], &masterDofs[kDim * (a - 2)], &masterMotion[kDim * (a - 2)])
+                   : w.indexOf(pair.nodes[a], slaveDofs, still);
   }
   const int n = w.size();
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
@@ -155,10 +184,13 @@ void MortarInterface::addPair(NodeWeightedGap& w, int end, const SegmentPairCoor
   for (int i = 0; i < old; ++i)
     for (int j = 0; j < old; ++j) grown[i * n + j] = w.hessian[i * old + j];
   w.hessian.swap(grown);
-  for (int i = 0; i < 8; ++i) {
+  constexpr int m = kMortarPairCoordinates;
+  for (int i = 0; i < m; ++i) {
+    if (at[i / kDim] < 0) continue;
     const int gi = kDim * at[i / kDim] + i % kDim;
     w.gradient[gi] += g.gradient[end][i];
-    for (int j = 0; j < 8; ++j) w.hessian[gi * n + kDim * at[j / kDim] + j % kDim] += g.hessian[end][i * 8 + j];
+    for (int j = 0; j < m; ++j)
+      if (at[j / kDim] >= 0) w.hessian[gi * n + kDim * at[j / kDim] + j % kDim] += g.hessian[end][i * m + j];
   }
 }
 
@@ -175,10 +207,12 @@ NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& 
   }
   std::vector<int> hits;
   for (const SegmentEnd& se : segmentsAt_[k]) {
-    std::array<GlobalIndex, 4> nodes{spec_.slaveFacets[2 * se.segment], spec_.slaveFacets[2 * se.segment + 1], 0, 0};
+    PairNodes pair = pairNodes(se.segment);
     SegmentPairCoordinates<double> x{};
-    position(nodes[0], &x[0]);
-    position(nodes[1], &x[2]);
+    position(pair.nodes[0], &x[0]);
+    position(pair.nodes[1], &x[2]);
+    for (int a = 0; a < 2; ++a)
+      if (pair.neighbours.orientation[a] != 0) position(pair.nodes[4 + a], &x[8 + 2 * a]);
     BoundingBox<kDim> box;
     box.include({x[0], x[1]});
     box.include({x[2], x[3]});
@@ -187,11 +221,11 @@ NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& 
     std::sort(hits.begin(), hits.end());  // the same summation order on every rank and every call
     for (int f : hits) {
       for (int a = 0; a < 2; ++a) {
-        nodes[2 + a] = facets[f].nodes[a];
+        pair.nodes[2 + a] = facets[f].nodes[a];
         x[4 + 2 * a] = facets[f].x[a][0];
         x[5 + 2 * a] = facets[f].x[a][1];
       }
-      addPair(w, se.end, x, spec_.slaveSegmentLengths[se.segment], nodes, f, derivatives);
+      addPair(w, se.end, x, pair, f, derivatives);
     }
   }
   return w;
@@ -343,12 +377,21 @@ ContactInterfaceSpec mortarReservationSpec(const ContactInterfaceSpec& spec) {
 }
 
 std::vector<std::size_t> mortarSlaveNeighbours(const ContactInterfaceSpec& spec, std::size_t k) {
-  std::vector<std::size_t> out{k};
   const auto& s = spec.slaveNodes;
   const auto index = [&](GlobalIndex node) { return static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), node) - s.begin()); };
-  for (std::size_t f = 0; f + 1 < spec.slaveFacets.size(); f += 2)
-    for (int a = 0; a < 2; ++a)
-      if (spec.slaveFacets[f + a] == s[k]) out.push_back(index(spec.slaveFacets[f + 1 - a]));
+  const auto adjacent = [&](std::size_t j, std::vector<std::size_t>& out) {
+    for (std::size_t f = 0; f + 1 < spec.slaveFacets.size(); f += 2)
+      for (int a = 0; a < 2; ++a)
+        if (spec.slaveFacets[f + a] == s[j]) out.push_back(index(spec.slaveFacets[f + 1 - a]));
+  };
+  // Two segments away: the nodal normals at node k's neighbours depend on their own neighbours.
+  std::vector<std::size_t> near{k};
+  adjacent(k, near);
+  std::vector<std::size_t> out = near;
+  for (std::size_t i = 1; i < near.size(); ++i) adjacent(near[i], out);
+  std::sort(out.begin() + 1, out.end());
+  out.erase(std::unique(out.begin() + 1, out.end()), out.end());
+  out.erase(std::remove(out.begin() + 1, out.end(), k), out.end());
   return out;
 }
 

@@ -53,34 +53,41 @@ TEST(MortarSegment, AMasterEndFlushWithASlaveEndWithinRoundOffClipsAtTheSlaveEnd
   EXPECT_NEAR(flush.mortarLength[1], 0.5, 1e-15);
 }
 
-// A tilted, curved-looking pair clipped at one slave end and one master end.
+// A tilted, curved-looking pair clipped at one slave end and one master end, with a slave node beyond each
+// end (a curved slave surface: the averaged nodal normals differ from the segment's).
 // Its slave segment's reference length (here other than its current one: a stretched segment).
 constexpr double kTiltedLength = 1.2;
-SegmentPairCoordinates<double> tiltedPair() { return {1.1, 0.05, -0.02, -0.07, 0.35, -0.03, 1.6, 0.12}; }
+SegmentPairCoordinates<double> tiltedPair() {
+  return {1.1, 0.05, -0.02, -0.07, 0.35, -0.03, 1.6, 0.12, 2.0, 0.3, -1.0, -0.35};
+}
+// The neighbour segments continue the slave surface: stored as (y_0, s_0) and (s_1, y_1).
+MortarSlaveNeighbours tiltedNeighbours() { return {{1, 1}}; }
 
-TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps) {
+void expectDerivativesAreCentralDifferences(const MortarSlaveNeighbours& neighbours) {
+  constexpr int m = kMortarPairCoordinates;
   const auto x = tiltedPair();
-  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength);
+  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength, neighbours);
   ASSERT_TRUE(d.overlaps);
-  const MortarPairGaps<double> plain = segmentPairGaps(x, kTiltedLength);
+  const MortarPairGaps<double> plain = segmentPairGaps(x, kTiltedLength, neighbours);
   const double h = 1e-6;
   for (int a = 0; a < 2; ++a) {
     EXPECT_DOUBLE_EQ(d.weightedGap[a], plain.weightedGap[a]);
     double scale = 0, gradientError = 0, hessianScale = 0, hessianError = 0;
-    for (int j = 0; j < 8; ++j) {
+    for (int j = 0; j < m; ++j) {
       auto plus = x, minus = x;
       plus[j] += h;
       minus[j] -= h;
-      const double fd = (segmentPairGaps(plus, kTiltedLength).weightedGap[a] - segmentPairGaps(minus, kTiltedLength).weightedGap[a]) / (2 * h);
+      const double fd = (segmentPairGaps(plus, kTiltedLength, neighbours).weightedGap[a] -
+                         segmentPairGaps(minus, kTiltedLength, neighbours).weightedGap[a]) / (2 * h);
       scale = std::max(scale, std::abs(d.gradient[a][j]));
       gradientError = std::max(gradientError, std::abs(fd - d.gradient[a][j]));
-      const MortarPairDerivatives dp = segmentPairDerivatives(plus, kTiltedLength),
-                                  dm = segmentPairDerivatives(minus, kTiltedLength);
-      for (int i = 0; i < 8; ++i) {
+      const MortarPairDerivatives dp = segmentPairDerivatives(plus, kTiltedLength, neighbours),
+                                  dm = segmentPairDerivatives(minus, kTiltedLength, neighbours);
+      for (int i = 0; i < m; ++i) {
         const double fdHessian = (dp.gradient[a][i] - dm.gradient[a][i]) / (2 * h);
-        hessianScale = std::max(hessianScale, std::abs(d.hessian[a][i * 8 + j]));
-        hessianError = std::max(hessianError, std::abs(fdHessian - d.hessian[a][i * 8 + j]));
-        EXPECT_NEAR(d.hessian[a][i * 8 + j], d.hessian[a][j * 8 + i], 1e-12) << "a Hessian is symmetric";
+        hessianScale = std::max(hessianScale, std::abs(d.hessian[a][i * m + j]));
+        hessianError = std::max(hessianError, std::abs(fdHessian - d.hessian[a][i * m + j]));
+        EXPECT_NEAR(d.hessian[a][i * m + j], d.hessian[a][j * m + i], 1e-12) << "a Hessian is symmetric";
       }
     }
     EXPECT_GT(scale, 0.1);
@@ -88,6 +95,50 @@ TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps)
     EXPECT_LT(gradientError, 1e-8 * scale) << "slave node " << a;
     EXPECT_LT(hessianError, 1e-7 * hessianScale) << "slave node " << a;
   }
+}
+
+TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps) {
+  expectDerivativesAreCentralDifferences({});
+}
+
+TEST(MortarSegment, WithAveragedNodalNormalsTheNeighbourSlaveNodesAreDifferentiatedToo) {
+  expectDerivativesAreCentralDifferences(tiltedNeighbours());
+  // The neighbours turn the nodal normals, hence move the clip point at the master's end, and the weighted
+  // gaps owe them g(ξ_clip) N_a(ξ_clip) ∂ξ_clip/∂y: not zero with a gap of 0.2 at the clip point.
+  auto x = tiltedPair();
+  x[5] += 0.2;
+  x[7] += 0.2;
+  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength, tiltedNeighbours());
+  ASSERT_TRUE(d.overlaps);
+  double neighbourScale = 0;
+  for (int i = 8; i < kMortarPairCoordinates; ++i) neighbourScale = std::max(neighbourScale, std::abs(d.gradient[0][i]));
+  EXPECT_GT(neighbourScale, 1e-3) << "zero without the neighbours";
+}
+
+TEST(MortarSegment, AMasterNodeOnTheInterpolatedNormalAtXiClipsTheSlaveSegmentAtXi) {
+  // Slave segment (0, 0) → (−1, 0) (normal up) between a neighbour (1, −0.3) beyond node 0 (stored
+  // (y_0, s_0)) and (−2, −0.2) beyond node 1 (stored (s_1, y_1)): the nodal normals tilt right and left.
+  // A master node on the interpolated normal n(0.3) = 0.7 n_0 + 0.3 n_1 through the slave point ξ = 0.3
+  // is seen at ξ = 0.3: the master segment from it to the right covers ξ ∈ [0, 0.3].
+  const auto unit = [](double x, double y) { const double l = std::hypot(x, y); return std::array<double, 2>{x / l, y / l}; };
+  const auto n0u = unit(0.3, 1.0), n1u = unit(-0.2, 1.0);
+  const auto n0 = unit(n0u[0], 1.0 + n0u[1]), n1 = unit(n1u[0], 1.0 + n1u[1]);
+  const double xi = 0.3, t = 0.05;
+  const double mx = -xi + t * (0.7 * n0[0] + 0.3 * n1[0]), my = t * (0.7 * n0[1] + 0.3 * n1[1]);
+  const SegmentPairCoordinates<double> x{0, 0, -1, 0, mx, my, 2.0, 0.06, 1.0, -0.3, -2.0, -0.2};
+  const MortarPairGaps<double> g = segmentPairGaps(x, 1.0, {{1, 1}});
+  ASSERT_TRUE(g.overlaps);
+  EXPECT_NEAR(g.mortarLength[0] + g.mortarLength[1], xi, 1e-13);
+  // With the segment's own normal (0, 1) the same node is seen straight below it, at ξ = −m_x ≠ 0.3.
+  const MortarPairGaps<double> plain = segmentPairGaps(x, 1.0);
+  EXPECT_NEAR(plain.mortarLength[0] + plain.mortarLength[1], -mx, 1e-13);
+  EXPECT_GT(std::abs(mx + xi), 1e-3);
+  // The gap is measured along the master's normal: the master line y = my + (x − mx)(0.06 − my)/(2 − mx)
+  // above the slave line y = 0, whatever the normals; g̃_0 + g̃_1 = ∫_0^0.3 g dξ.
+  const double slope = (0.06 - my) / (2.0 - mx), cosine = 1.0 / std::hypot(1.0, slope);
+  const auto gapAtX = [&](double px) { return (my + (px - mx) * slope) * cosine; };  // below the line: open
+  const double exact = 0.5 * xi * (gapAtX(0.0) + gapAtX(-xi));  // affine in ξ: the trapezoid is exact
+  EXPECT_NEAR(g.weightedGap[0] + g.weightedGap[1], exact, 1e-14);
 }
 
 // A non-matching interface: 3 slave segments on y = 0 (x ∈ [0, 3]) under 2 master segments (x ∈ [−0.2, 3.2]).
