@@ -86,7 +86,7 @@ bool projectOntoSlave(const Point2<T>& s0, const Point2<T>& a, const Point2<T>& 
 
 template <class T>
 MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& c, double referenceLength,
-                                       const MortarSlaveNeighbours& neighbours) {
+                                       const MortarSlaveNeighbours& neighbours, const SegmentPairCommitted* committed) {
   MortarPairGaps<T> out;
   const Point2<T> s0 = at(c, 0), s1 = at(c, 1), m0 = at(c, 2), m1 = at(c, 3);
   // eq. M1: slave segment x_s(ξ) = s0 + ξ a, ξ ∈ [0, 1], segment normal n_s (right of a), measure L_0 dξ;
@@ -121,6 +121,19 @@ MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& c, doubl
   // (Fischer & Wriggers 2005 measure the mortar gap along the master normal too).
   const Point2<T> masterNormal = rightNormal(b);
   const auto gapAt = [&](const T& xi) { return dot(minus(along(s0, a, xi), m0), masterNormal); };
+  // eq. M9: the relative motion over the increment of the slave point ξ and the master point η(ξ) it sees
+  // (along n(ξ), as the segmentation), both material points moved from their committed positions,
+  // measured along the master's unit tangent t_m (the gap's frame).
+  const Point2<T> masterTangent = unit(b);
+  const auto slipAt = [&](const T& xi) {
+    const SegmentPairCommitted& n = *committed;
+    const Point2<T> xs = along(s0, a, xi), normalAt = along(n0, dn, xi);
+    const T eta = cross(minus(xs, m0), normalAt) / cross(b, normalAt);
+    const Point2<T> slaveThen{n[0] + xi * (n[2] - n[0]), n[1] + xi * (n[3] - n[1])};
+    const Point2<T> masterThen{n[4] + eta * (n[6] - n[4]), n[5] + eta * (n[7] - n[5])};
+    const Point2<T> slaveMotion = minus(xs, slaveThen), masterMotion = minus(along(m0, b, eta), masterThen);
+    return dot(minus(slaveMotion, masterMotion), masterTangent);
+  };
   const double size = std::max(std::sqrt(valueOf(dot(a, a))), masterLength);
   const double gapBegin = valueOf(gapAt(begin)), gapEnd = valueOf(gapAt(end));
   if (std::max(gapBegin, gapEnd) < -size || std::min(gapBegin, gapEnd) > size) return out;
@@ -139,29 +152,40 @@ MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& c, doubl
     out.weightedGap[1] = out.weightedGap[1] + weight * xi * g;
     out.mortarLength[0] = out.mortarLength[0] + weight * shape0;
     out.mortarLength[1] = out.mortarLength[1] + weight * xi;
+    if (committed != nullptr) {
+      const T u = slipAt(xi);
+      out.weightedSlip[0] = out.weightedSlip[0] + weight * shape0 * u;
+      out.weightedSlip[1] = out.weightedSlip[1] + weight * xi * u;
+    }
   }
   return out;
 }
 
 MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, double referenceLength,
-                                       const MortarSlaveNeighbours& neighbours) {
-  return integrateSegmentPair(x, referenceLength, neighbours);
+                                       const MortarSlaveNeighbours& neighbours, const SegmentPairCommitted* committed) {
+  return integrateSegmentPair(x, referenceLength, neighbours, committed);
 }
 
 MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength,
-                                             const MortarSlaveNeighbours& neighbours) {
+                                             const MortarSlaveNeighbours& neighbours,
+                                             const SegmentPairCommitted* committed) {
   constexpr int n = kMortarPairCoordinates;
   SegmentPairCoordinates<SecondOrder> seeded;
   for (int i = 0; i < n; ++i) seeded[i] = secondOrderVariable<n>(x[i], i);
-  const MortarPairGaps<SecondOrder> g = integrateSegmentPair(seeded, referenceLength, neighbours);
+  const MortarPairGaps<SecondOrder> g = integrateSegmentPair(seeded, referenceLength, neighbours, committed);
   MortarPairDerivatives out;
   out.overlaps = g.overlaps;
   for (int a = 0; a < 2; ++a) {
     out.weightedGap[a] = g.weightedGap[a].v.v;
     out.mortarLength[a] = g.mortarLength[a].v.v;
+    out.weightedSlip[a] = g.weightedSlip[a].v.v;
     for (int i = 0; i < n; ++i) {
       out.gradient[a][i] = g.weightedGap[a].d[i].v;
-      for (int j = 0; j < n; ++j) out.hessian[a][i * n + j] = g.weightedGap[a].d[i].d[j];
+      out.slipGradient[a][i] = g.weightedSlip[a].d[i].v;
+      for (int j = 0; j < n; ++j) {
+        out.hessian[a][i * n + j] = g.weightedGap[a].d[i].d[j];
+        out.slipHessian[a][i * n + j] = g.weightedSlip[a].d[i].d[j];
+      }
     }
   }
   return out;

@@ -36,7 +36,14 @@ struct MortarPairGaps {
   bool overlaps = false;
   std::array<T, 2> weightedGap{};
   std::array<T, 2> mortarLength{};
+  /// Weighted slip increments Δũ_a = ∫ N_a t_m · (Δx_s(ξ) − Δx_m(η(ξ))) dΓ_0 (eq. M9), when the committed
+  /// positions are given (friction), else 0.
+  std::array<T, 2> weightedSlip{};
 };
+
+/// The committed positions of the pair's slave and master nodes (entries 0–7 of SegmentPairCoordinates):
+/// where the material points were at the last converged state, for the slip increments.
+using SegmentPairCommitted = std::array<double, 8>;
 
 /// The number of coordinates a segment pair depends on: six nodes, two coordinates each.
 constexpr int kMortarPairCoordinates = 12;
@@ -62,7 +69,8 @@ struct MortarSlaveNeighbours {
 /// length, and a uniform gap g gives g̃_a = g A_a exactly (the patch test).
 template <class T>
 MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& x, double referenceLength,
-                                       const MortarSlaveNeighbours& neighbours);
+                                       const MortarSlaveNeighbours& neighbours,
+                                       const SegmentPairCommitted* committed = nullptr);
 
 /// Weighted gaps with their gradient and Hessian with respect to the twelve coordinates.
 struct MortarPairDerivatives {
@@ -71,13 +79,18 @@ struct MortarPairDerivatives {
   std::array<double, 2> mortarLength{};
   std::array<std::array<double, kMortarPairCoordinates>, 2> gradient{};  ///< ∂g̃_a/∂x_i
   std::array<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>, 2> hessian{};  ///< ∂²g̃_a/∂x_i∂x_j, row-major
+  std::array<double, 2> weightedSlip{};  ///< Δũ_a (with committed positions)
+  std::array<std::array<double, kMortarPairCoordinates>, 2> slipGradient{};  ///< ∂Δũ_a/∂x_i
+  std::array<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>, 2> slipHessian{};
 };
 
 /// The pair's weighted gaps (values only: open nodes, predicted states).
 MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, double referenceLength,
-                                       const MortarSlaveNeighbours& neighbours = {});
+                                       const MortarSlaveNeighbours& neighbours = {},
+                                       const SegmentPairCommitted* committed = nullptr);
 /// The pair's weighted gaps differentiated twice (closed nodes: residual and tangent).
 MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength,
-                                             const MortarSlaveNeighbours& neighbours = {});
+                                             const MortarSlaveNeighbours& neighbours = {},
+                                             const SegmentPairCommitted* committed = nullptr);
 
 }  // namespace contessa::contact
