@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 #include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
@@ -110,6 +112,7 @@ class MortarInterface final : public ContactInterfaceBase {
     std::array<GlobalIndex, kMortarPairCoordinates / kDim> nodes{};
     MortarSlaveNeighbours neighbours;
     double referenceLength = 0;
+    std::size_t segment = 0;
   };
   BoundingBoxTree<kDim> searchTree(const Facets& facets) const;
   bool frictional() const { return !spec_.law.isFrictionless(); }
@@ -148,10 +151,13 @@ class MortarInterface final : public ContactInterfaceBase {
   // slave nodes (kept ones), and the master facets as MasterSurface gives them (a rigid one moved).
   std::vector<Vector<kDim>> trialSlave_, committedSlave_;
   Facets trialMaster_, committedMaster_;
+  /// The segment pairs' derivatives of the evaluation under way, by (slave segment, master facet).
+  mutable std::map<std::pair<std::size_t, int>, MortarPairDerivatives> pairDerivatives_;
 };
 
 MortarInterface::PairNodes MortarInterface::pairNodes(std::size_t segment) const {
   PairNodes pair;
+  pair.segment = segment;
   pair.referenceLength = spec_.slaveSegmentLengths[segment];
   for (int a = 0; a < 2; ++a) pair.nodes[a] = spec_.slaveFacets[2 * segment + a];
   // The neighbour segment at end a (a 2D slave surface has at most one): its other node, and whether it
@@ -193,7 +199,12 @@ void MortarInterface::addPair(NodeWeightedGap& w, int end, const SegmentPairCoor
     }
     return;
   }
-  const MortarPairDerivatives g = segmentPairDerivatives(x, pair.referenceLength, pair.neighbours, committed);
+  // Both slave nodes of a segment pair need its derivatives: differentiated once per evaluation.
+  const auto key = std::make_pair(pair.segment, facet);
+  auto cached = pairDerivatives_.find(key);
+  if (cached == pairDerivatives_.end())
+    cached = pairDerivatives_.emplace(key, segmentPairDerivatives(x, pair.referenceLength, pair.neighbours, committed)).first;
+  const MortarPairDerivatives& g = cached->second;
   if (!g.overlaps) return;
   w.overlaps = true;
   w.value += g.weightedGap[end];
@@ -391,6 +402,7 @@ void MortarInterface::evaluate(const NodePosition& position, double loadFactor, 
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
   if (frictional()) recordPositions(position, facets);
+  pairDerivatives_.clear();
   std::vector<double> force(kDim, 0.0);
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
