@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 #include <stdexcept>
 
 #include "contact/BoundingBoxTree.hpp"
+#include "contact/CoulombReturnMapping.hpp"
 #include "contact/MasterSurface.hpp"
 #include "contact/MortarSegment.hpp"
 
@@ -28,6 +31,9 @@ struct NodeWeightedGap {
   std::vector<double> dPositiondLambda;  ///< kDim per support node: a rigid point's motion, else 0
   std::vector<double> gradient;          ///< ∂g̃_k/∂x over the support's coordinates
   std::vector<double> hessian;           ///< ∂²g̃_k/∂x², row-major
+  double slip = 0;                       ///< Δũ_k, eq. (M9) (friction only)
+  std::vector<double> slipGradient;      ///< ∂Δũ_k/∂x
+  std::vector<double> slipHessian;       ///< ∂²Δũ_k/∂x², row-major
 
   /// The support index of `node`, added (with its DOF ids and ∂x/∂λ) when new.
   int indexOf(GlobalIndex node, const GlobalIndex* nodeDofs, const double* motion) {
@@ -49,21 +55,32 @@ struct NodeWeightedGap {
 class MortarInterface final : public ContactInterfaceBase {
  public:
   MortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave)
-      : ContactInterfaceBase(std::move(spec), std::move(evaluatesSlave)), master_(spec_) {
+      : ContactInterfaceBase(std::move(spec), std::move(evaluatesSlave)),
+        master_(spec_),
+        friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
+        trialTraction_(spec_.slaveNodes.size(), 0.0),
+        committedTraction_(spec_.slaveNodes.size(), 0.0) {
     if (spec_.dimension != 2 || spec_.slaveFacets.size() != 2 * spec_.slaveSegmentLengths.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': 2D slave segments with their lengths expected");
     segmentsAt_.resize(spec_.slaveNodes.size());
     for (std::size_t s = 0; s < spec_.slaveFacets.size() / 2; ++s)
       for (int a = 0; a < 2; ++a) segmentsAt_[slaveIndex(spec_.slaveFacets[2 * s + a])].push_back({s, a});
+    // The slave nodes whose committed positions this rank keeps: those of an evaluated node's segments.
+    keepsSlave_.assign(spec_.slaveNodes.size(), 0);
+    for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
+      if (evaluatesSlave_[k])
+        for (const SegmentEnd& se : segmentsAt_[k])
+          for (int a = 0; a < 2; ++a) keepsSlave_[slaveIndex(spec_.slaveFacets[2 * se.segment + a])] = 1;
   }
 
   std::unique_ptr<ContactInterfaceBase> clone() const override { return std::make_unique<MortarInterface>(*this); }
   void setRigidMotion(const std::vector<double>& offset, const std::vector<double>& motion) override {
     master_.setMotion(offset, motion);
   }
-  /// Frictionless for now: the deck refuses a load step's μ > 0 on a mortar interface (LoadStepDefinitions).
   void setFrictionCoefficient(double mu) override {
-    if (mu != 0.0) throw std::logic_error("MortarInterface '" + spec_.label() + "': friction is not implemented");
+    spec_.law.frictionCoefficient = mu;
+    spec_.law.validate();
+    friction_ = CoulombReturnMapping<1>(spec_.law.tangentialPenalty, mu, spec_.law.slipTolerance);
   }
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) override;
   std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const override;
@@ -75,8 +92,8 @@ class MortarInterface final : public ContactInterfaceBase {
   void rollback() override;
   void saveCommittedSlaves(StateRecord& table) const override;
   void restoreSlaves(const StateRecord& table) override;
-  void saveCommittedMaster(StateRecord& table) const override { StateTableWriter(table).finish(); }
-  void restoreMaster(const StateRecord& /*table*/) override {}
+  void saveCommittedMaster(StateRecord& table) const override;
+  void restoreMaster(const StateRecord& table) override;
 
  private:
   struct SegmentEnd {
@@ -89,17 +106,35 @@ class MortarInterface final : public ContactInterfaceBase {
     if (it == s.end() || *it != node) throw std::logic_error("MortarInterface: a slave facet's node is not a slave node");
     return static_cast<std::size_t>(it - s.begin());
   }
+  /// The nodes of a slave segment's pairs: its two slave nodes, two master nodes (set per master facet),
+  /// and the slave nodes beyond its ends (which enter the averaged nodal normals).
+  struct PairNodes {
+    std::array<GlobalIndex, kMortarPairCoordinates / kDim> nodes{};
+    MortarSlaveNeighbours neighbours;
+    double referenceLength = 0;
+    std::size_t segment = 0;
+  };
   BoundingBoxTree<kDim> searchTree(const Facets& facets) const;
+  bool frictional() const { return !spec_.law.isFrictionless(); }
   NodeWeightedGap weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
                               const BoundingBoxTree<kDim>& tree, bool derivatives) const;
-  void addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x, double referenceLength,
-               const std::array<GlobalIndex, 4>& nodes, int facet, bool derivatives) const;
-  /// Node k's term: residual −p ∇g̃, tangent (ε/A) ∇g̃ ⊗ ∇g̃ − p ∇²g̃ (eq. M7–M8); adds the force on the
-  /// slave nodes to `force`.
-  void assemble(std::size_t k, const NodeWeightedGap& w, double pressure, const Sink& sink,
-                std::vector<double>& force) const;
-  SlaveNodeState stateOf(std::size_t k, const NodeWeightedGap& w, bool frozenOpen) const;
-  SlaveNodeChange changeOf(std::size_t k, const SlaveNodeState& trial) const;
+  /// The committed positions of a pair's slave and master nodes (friction); false before any commit.
+  bool committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const;
+  /// Coulomb's return mapping (CoulombReturnMapping, eq. 17–23) on slave node k's weighted slip increment
+  /// per tributary length Δũ_k / A_k, with its pressure p_k (eq. M10).
+  ReturnMappingResult<1> tangentialTraction(std::size_t k, const NodeWeightedGap& w, double pressure) const;
+  void recordPositions(const NodePosition& position, const Facets& facets);
+  PairNodes pairNodes(std::size_t segment) const;
+  void addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x, const PairNodes& pair,
+               int facet, bool derivatives) const;
+  /// Node k's term: residual −p ∇g̃, tangent (ε/A) ∇g̃ ⊗ ∇g̃ − p ∇²g̃ (eq. M7–M8), and with friction
+  /// t_T ∇Δũ and its derivative (eq. M11–M12); adds the force on the slave nodes to `force`.
+  void assemble(std::size_t k, const NodeWeightedGap& w, double pressure, const ReturnMappingResult<1>* tangential,
+                const Sink& sink, std::vector<double>& force) const;
+  /// Node k's state; with friction and a closed node, `tangential` receives the return mapping's result.
+  SlaveNodeState stateOf(std::size_t k, const NodeWeightedGap& w, bool frozenOpen,
+                         ReturnMappingResult<1>* tangential = nullptr) const;
+  SlaveNodeChange changeOf(std::size_t k, const SlaveNodeState& trial, const ReturnMappingResult<1>* tangential) const;
   SlaveNodeChange unchanged(std::size_t k) const {
     SlaveNodeChange c;
     c.committedGap = c.trialGap = committedOutput_[k].gap;
@@ -109,7 +144,33 @@ class MortarInterface final : public ContactInterfaceBase {
 
   MasterSurface<Line2Facet> master_;
   std::vector<std::vector<SegmentEnd>> segmentsAt_;  ///< per slave node: its slave segments
+  CoulombReturnMapping<1> friction_;
+  std::vector<double> trialTraction_, committedTraction_;  ///< t_T per slave node (eq. 22), along t_m
+  std::vector<char> keepsSlave_;
+  // The positions at the last evaluation and at the last commit (friction: the slip increments' start):
+  // slave nodes (kept ones), and the master facets as MasterSurface gives them (a rigid one moved).
+  std::vector<Vector<kDim>> trialSlave_, committedSlave_;
+  Facets trialMaster_, committedMaster_;
+  /// The segment pairs' derivatives of the evaluation under way, by (slave segment, master facet).
+  mutable std::map<std::pair<std::size_t, int>, MortarPairDerivatives> pairDerivatives_;
 };
+
+MortarInterface::PairNodes MortarInterface::pairNodes(std::size_t segment) const {
+  PairNodes pair;
+  pair.segment = segment;
+  pair.referenceLength = spec_.slaveSegmentLengths[segment];
+  for (int a = 0; a < 2; ++a) pair.nodes[a] = spec_.slaveFacets[2 * segment + a];
+  // The neighbour segment at end a (a 2D slave surface has at most one): its other node, and whether it
+  // runs into the pair's segment (σ = +1 at end 0: stored y → s_0; at end 1: s_1 → y) or against it.
+  for (int a = 0; a < 2; ++a)
+    for (const SegmentEnd& other : segmentsAt_[slaveIndex(pair.nodes[a])]) {
+      if (other.segment == segment) continue;
+      pair.nodes[4 + a] = spec_.slaveFacets[2 * other.segment + 1 - other.end];
+      pair.neighbours.orientation[a] = (other.end == 1 - a) ? 1 : -1;
+      break;
+    }
+  return pair;
+}
 
 BoundingBoxTree<kDim> MortarInterface::searchTree(const Facets& facets) const {
   // Master boxes enlarged by the largest master and slave segments: a slave segment's box then meets every
@@ -126,40 +187,103 @@ BoundingBoxTree<kDim> MortarInterface::searchTree(const Facets& facets) const {
 }
 
 void MortarInterface::addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x,
-                              double referenceLength, const std::array<GlobalIndex, 4>& nodes, int facet,
-                              bool derivatives) const {
+                              const PairNodes& pair, int facet, bool derivatives) const {
+  SegmentPairCommitted then{};
+  const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
   if (!derivatives) {
-    const MortarPairGaps<double> g = segmentPairGaps(x, referenceLength);
+    const MortarPairGaps<double> g = segmentPairGaps(x, pair.referenceLength, pair.neighbours, committed);
     w.overlaps = w.overlaps || g.overlaps;
-    if (g.overlaps) w.value += g.weightedGap[end];
+    if (g.overlaps) {
+      w.value += g.weightedGap[end];
+      w.slip += g.weightedSlip[end];
+    }
     return;
   }
-  const MortarPairDerivatives g = segmentPairDerivatives(x, referenceLength);
+  // Both slave nodes of a segment pair need its derivatives: differentiated once per evaluation.
+  const auto key = std::make_pair(pair.segment, facet);
+  auto cached = pairDerivatives_.find(key);
+  if (cached == pairDerivatives_.end())
+    cached = pairDerivatives_.emplace(key, segmentPairDerivatives(x, pair.referenceLength, pair.neighbours, committed)).first;
+  const MortarPairDerivatives& g = cached->second;
   if (!g.overlaps) return;
   w.overlaps = true;
   w.value += g.weightedGap[end];
+  w.slip += g.weightedSlip[end];
   const auto masterDofs = master_.dofs(facet);
   const auto masterMotion = master_.dPositiondLambda(facet);
-  std::array<int, 4> at{};
-  for (int a = 0; a < 4; ++a) {
-    const GlobalIndex slaveDofs[kDim] = {kDim * nodes[a], kDim * nodes[a] + 1};
+  constexpr int kPairNodes = kMortarPairCoordinates / kDim;
+  std::array<int, kPairNodes> at{};
+  for (int a = 0; a < kPairNodes; ++a) {
+    const bool master = a == 2 || a == 3;
+    if (!master && a >= 4 && pair.neighbours.orientation[a - 4] == 0) {
+      at[a] = -1;  // no slave node beyond this end: its coordinates are unused
+      continue;
+    }
+    const GlobalIndex slaveDofs[kDim] = {kDim * pair.nodes[a], kDim * pair.nodes[a] + 1};
     const double still[kDim] = {0.0, 0.0};
-    at[a] = a < 2 ? w.indexOf(nodes[a], slaveDofs, still)
-                  : w.indexOf(nodes[a], &masterDofs[kDim * (a - 2)], &masterMotion[kDim * (a - 2)]);
+    at[a] = master ? w.indexOf(pair.nodes[a], &masterDofs[kDim * (a - 2)], &masterMotion[kDim * (a - 2)])
+                   : w.indexOf(pair.nodes[a], slaveDofs, still);
   }
   const int n = w.size();
+  // Grow the gradients and Hessians to the support's size, keeping the entries summed so far.
+  const int old = static_cast<int>(w.gradient.size());
+  const auto grow = [&](std::vector<double>& hessian) {
+    std::vector<double> grown(static_cast<std::size_t>(n) * n, 0.0);
+    for (int i = 0; i < old; ++i)
+      for (int j = 0; j < old; ++j) grown[i * n + j] = hessian[i * old + j];
+    hessian.swap(grown);
+  };
+  grow(w.hessian);
+  grow(w.slipHessian);
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
-  // Grow the Hessian to the support's size, keeping the entries summed so far.
-  std::vector<double> grown(static_cast<std::size_t>(n) * n, 0.0);
-  const int old = static_cast<int>(std::lround(std::sqrt(static_cast<double>(w.hessian.size()))));
-  for (int i = 0; i < old; ++i)
-    for (int j = 0; j < old; ++j) grown[i * n + j] = w.hessian[i * old + j];
-  w.hessian.swap(grown);
-  for (int i = 0; i < 8; ++i) {
+  w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
+  constexpr int m = kMortarPairCoordinates;
+  for (int i = 0; i < m; ++i) {
+    if (at[i / kDim] < 0) continue;
     const int gi = kDim * at[i / kDim] + i % kDim;
     w.gradient[gi] += g.gradient[end][i];
-    for (int j = 0; j < 8; ++j) w.hessian[gi * n + kDim * at[j / kDim] + j % kDim] += g.hessian[end][i * 8 + j];
+    w.slipGradient[gi] += g.slipGradient[end][i];
+    for (int j = 0; j < m; ++j) {
+      if (at[j / kDim] < 0) continue;
+      const int gj = kDim * at[j / kDim] + j % kDim;
+      w.hessian[gi * n + gj] += g.hessian[end][i * m + j];
+      w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+    }
   }
+}
+
+bool MortarInterface::committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const {
+  if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
+  for (int a = 0; a < 2; ++a) {
+    const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
+    const Vector<kDim>& xm = committedMaster_[facet].x[a];
+    for (int c = 0; c < kDim; ++c) {
+      out[kDim * a + c] = xs[c];
+      out[4 + kDim * a + c] = xm[c];
+    }
+  }
+  return true;
+}
+
+void MortarInterface::recordPositions(const NodePosition& position, const Facets& facets) {
+  trialSlave_.resize(spec_.slaveNodes.size());
+  for (std::size_t j = 0; j < spec_.slaveNodes.size(); ++j)
+    if (keepsSlave_[j]) position(spec_.slaveNodes[j], trialSlave_[j].data());
+  trialMaster_ = facets;
+  // Before the first commit the reference is the first state evaluated (the initial one).
+  if (committedSlave_.empty()) committedSlave_ = trialSlave_;
+  if (committedMaster_.empty()) committedMaster_ = trialMaster_;
+}
+
+ReturnMappingResult<1> MortarInterface::tangentialTraction(std::size_t k, const NodeWeightedGap& w,
+                                                           double pressure) const {
+  ReturnMappingInput<1> in;
+  in.committedTraction[0] = committedTraction_[k];
+  in.slipIncrement[0] = w.slip / spec_.slaveAreas[k];  // a length: Δũ_k is a slip times a length
+  in.metric(0, 0) = 1.0;                               // along the unit tangent t_m
+  in.normalTraction = -pressure;
+  in.facetLength = spec_.slaveFacetLengths[k];
+  return friction_.map(in);
 }
 
 NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
@@ -172,13 +296,17 @@ NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& 
     w.indexOf(node, dofs, still);
     w.gradient.assign(kDim, 0.0);
     w.hessian.assign(kDim * kDim, 0.0);
+    w.slipGradient.assign(kDim, 0.0);
+    w.slipHessian.assign(kDim * kDim, 0.0);
   }
   std::vector<int> hits;
   for (const SegmentEnd& se : segmentsAt_[k]) {
-    std::array<GlobalIndex, 4> nodes{spec_.slaveFacets[2 * se.segment], spec_.slaveFacets[2 * se.segment + 1], 0, 0};
+    PairNodes pair = pairNodes(se.segment);
     SegmentPairCoordinates<double> x{};
-    position(nodes[0], &x[0]);
-    position(nodes[1], &x[2]);
+    position(pair.nodes[0], &x[0]);
+    position(pair.nodes[1], &x[2]);
+    for (int a = 0; a < 2; ++a)
+      if (pair.neighbours.orientation[a] != 0) position(pair.nodes[4 + a], &x[8 + 2 * a]);
     BoundingBox<kDim> box;
     box.include({x[0], x[1]});
     box.include({x[2], x[3]});
@@ -187,44 +315,78 @@ NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& 
     std::sort(hits.begin(), hits.end());  // the same summation order on every rank and every call
     for (int f : hits) {
       for (int a = 0; a < 2; ++a) {
-        nodes[2 + a] = facets[f].nodes[a];
+        pair.nodes[2 + a] = facets[f].nodes[a];
         x[4 + 2 * a] = facets[f].x[a][0];
         x[5 + 2 * a] = facets[f].x[a][1];
       }
-      addPair(w, se.end, x, spec_.slaveSegmentLengths[se.segment], nodes, f, derivatives);
+      addPair(w, se.end, x, pair, f, derivatives);
     }
   }
   return w;
 }
 
-SlaveNodeState MortarInterface::stateOf(std::size_t k, const NodeWeightedGap& w, bool frozenOpen) const {
+SlaveNodeState MortarInterface::stateOf(std::size_t k, const NodeWeightedGap& w, bool frozenOpen,
+                                        ReturnMappingResult<1>* tangential) const {
   SlaveNodeState out;
   // The gap shown and counted: g̃_k / A_k, so that the pressure is −ε_N times it, as t_N = ε_N g_N (eq. 16).
   out.gap = w.overlaps ? w.value / spec_.slaveAreas[k] : std::numeric_limits<double>::infinity();
+  out.slip = committedOutput_[k].slip;
   if (w.overlaps && w.value < 0.0 && !frozenOpen) {
     out.status = ContactStatus::Slip;  // frictionless: free sliding, as node-to-segment reports it
     out.pressure = -spec_.law.normalPenalty * out.gap;
+    if (frictional()) {
+      const ReturnMappingResult<1> t = tangentialTraction(k, w, out.pressure);
+      out.status = t.status;
+      out.slip += std::abs(w.slip / spec_.slaveAreas[k]);
+      out.elasticSlip = t.tangentialPenalty > 0.0 ? std::abs(t.traction[0]) / t.tangentialPenalty : 0.0;
+      if (tangential != nullptr) *tangential = t;
+    }
   }
   return out;
 }
 
-SlaveNodeChange MortarInterface::changeOf(std::size_t k, const SlaveNodeState& trial) const {
+SlaveNodeChange MortarInterface::changeOf(std::size_t k, const SlaveNodeState& trial,
+                                          const ReturnMappingResult<1>* tangential) const {
   SlaveNodeChange c = unchanged(k);
   c.trialGap = trial.gap;
   c.trialStatus = trial.status;
+  c.trialFacet = trial.status == ContactStatus::Open ? -1 : 0;
+  if (tangential == nullptr || committedOutput_[k].status == ContactStatus::Open) return c;
+  // Coulomb indicators (eq. 19, 21) along t_m: the committed traction is "driven the other way" when its
+  // sign is the opposite of the trial traction's.
+  const double mu = spec_.law.frictionCoefficient;
+  const bool opposite = committedTraction_[k] * tangential->trialTraction[0] < 0.0;
+  const double committedNorm = std::abs(committedTraction_[k]);
+  c.committedIndicator = (opposite ? -committedNorm : committedNorm) - mu * committedOutput_[k].pressure;
+  c.trialIndicator = tangential->trialIndicator;
+  c.slipReversed = opposite && committedOutput_[k].status == ContactStatus::Slip && trial.status == ContactStatus::Slip;
   return c;
 }
 
-void MortarInterface::assemble(std::size_t k, const NodeWeightedGap& w, double pressure, const Sink& sink,
+void MortarInterface::assemble(std::size_t k, const NodeWeightedGap& w, double pressure,
+                               const ReturnMappingResult<1>* tangential, const Sink& sink,
                                std::vector<double>& force) const {
   const int n = w.size();
-  const double stiffness = spec_.law.normalPenalty / spec_.slaveAreas[k];
+  const double area = spec_.slaveAreas[k];
+  const double stiffness = spec_.law.normalPenalty / area;
   std::vector<double> residual(static_cast<std::size_t>(n)), tangent(static_cast<std::size_t>(n) * n),
       dLambda(static_cast<std::size_t>(n), 0.0);
   for (int i = 0; i < n; ++i) {
     residual[i] = -pressure * w.gradient[i];
     for (int j = 0; j < n; ++j)
       tangent[i * n + j] = stiffness * w.gradient[i] * w.gradient[j] - pressure * w.hessian[i * n + j];
+  }
+  if (tangential != nullptr) {
+    // eq. M11–M12: r_T = t_T ∇Δũ_k; t_T depends on Δũ_k / A_k and on t_N = ε_N g̃_k / A_k.
+    const double t = tangential->traction[0];
+    const double dSlip = tangential->dTraction_dSlipIncrement(0, 0) / area;
+    const double dNormal = tangential->dTraction_dNormalTraction[0] * stiffness;
+    for (int i = 0; i < n; ++i) {
+      residual[i] += t * w.slipGradient[i];
+      for (int j = 0; j < n; ++j)
+        tangent[i * n + j] += w.slipGradient[i] * (dSlip * w.slipGradient[j] + dNormal * w.gradient[j]) +
+                              t * w.slipHessian[i * n + j];
+    }
   }
   // A rigid master moves as X + λ · motion: ∂r/∂λ = K[:, rigid] · motion.
   for (int i = 0; i < n; ++i)
@@ -239,6 +401,8 @@ void MortarInterface::assemble(std::size_t k, const NodeWeightedGap& w, double p
 void MortarInterface::evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) {
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
+  if (frictional()) recordPositions(position, facets);
+  pairDerivatives_.clear();
   std::vector<double> force(kDim, 0.0);
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
@@ -246,14 +410,18 @@ void MortarInterface::evaluate(const NodePosition& position, double loadFactor, 
     const bool frozenOpen = frozen_ && committedOutput_[k].status == ContactStatus::Open &&
                             !(committedOutput_[k].gap <= kTouchingGap);
     NodeWeightedGap w = weightedGap(k, position, facets, tree, false);
-    const SlaveNodeState out = stateOf(k, w, frozenOpen);
-    if (out.status != ContactStatus::Open) {
+    ReturnMappingResult<1> tangential;
+    SlaveNodeState out = stateOf(k, w, frozenOpen, &tangential);
+    const bool closed = out.status != ContactStatus::Open;
+    if (closed) {
       w = weightedGap(k, position, facets, tree, true);
-      assemble(k, w, out.pressure, sink, force);
+      if (frictional()) out = stateOf(k, w, frozenOpen, &tangential);  // the same values, summed in one order
+      assemble(k, w, out.pressure, frictional() ? &tangential : nullptr, sink, force);
     }
     if (updateTrial) {
       trialOutput_[k] = out;
-      trialChanges_[k] = changeOf(k, out);
+      trialTraction_[k] = closed && frictional() ? tangential.traction[0] : 0.0;
+      trialChanges_[k] = changeOf(k, out, closed && frictional() ? &tangential : nullptr);
     }
   }
   if (updateTrial) trialForce_ = force;
@@ -263,8 +431,13 @@ std::vector<SlaveNodeChange> MortarInterface::changesAt(const NodePosition& posi
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
   std::vector<SlaveNodeChange> out;
-  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
-    if (evaluatesSlave_[k]) out.push_back(changeOf(k, stateOf(k, weightedGap(k, position, facets, tree, false), false)));
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    ReturnMappingResult<1> tangential;
+    const SlaveNodeState state = stateOf(k, weightedGap(k, position, facets, tree, false), false, &tangential);
+    const bool frictionalClosed = frictional() && state.status != ContactStatus::Open;
+    out.push_back(changeOf(k, state, frictionalClosed ? &tangential : nullptr));
+  }
   return out;
 }
 
@@ -281,27 +454,40 @@ void MortarInterface::commit() {
   committedOutput_ = trialOutput_;
   committedForce_ = trialForce_;
   committedCounts_ = counts;
+  committedTraction_ = trialTraction_;
+  if (!trialSlave_.empty()) committedSlave_ = trialSlave_;
+  if (!trialMaster_.empty()) committedMaster_ = trialMaster_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
 }
 
 void MortarInterface::rollback() {
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
+  trialTraction_ = committedTraction_;
+  trialSlave_ = committedSlave_;
+  trialMaster_ = committedMaster_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
 }
 
 namespace {
-// A mortar slave node's fields in the restart file: its change over the last increment and its output
-// (the frictionless mortar keeps no other history).
+// A mortar slave node's fields in the restart file: its change over the last increment, its output, its
+// tangential traction and its committed position (NaN when no friction kept it: the slip increments'
+// start, eq. M9).
 template <class Change, class Output, class Fields>
-void mortarSlaveFields(Change& c, Output& o, Fields& field) {
+void mortarSlaveFields(Change& c, Output& o, double& traction, Vector<2>& position, Fields& field) {
   field("committed_gap", c.committedGap, StateValues::AnyDouble);  // +inf: no master segment met
   field("trial_gap", c.trialGap, StateValues::AnyDouble);
   field("committed_status", c.committedStatus);
   field("trial_status", c.trialStatus);
+  field("committed_indicator", c.committedIndicator, StateValues::AnyDouble);  // NaN unless in frictional contact
+  field("trial_indicator", c.trialIndicator, StateValues::AnyDouble);
+  field("slip_reversed", c.slipReversed);
   field("pressure", o.pressure);
   field("gap", o.gap, StateValues::AnyDouble);
   field("output_status", o.status);
+  field("output_slip", o.slip);
+  field("tangential_traction", traction);
+  field("position", position, StateValues::AnyDouble);
 }
 }  // namespace
 
@@ -310,22 +496,68 @@ void MortarInterface::saveCommittedSlaves(StateRecord& table) const {
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave()[k]) continue;
     rows.beginRow(static_cast<std::int64_t>(k));
-    mortarSlaveFields(committedIncrement_[k], committedOutput_[k], rows);
+    SlaveNodeChange c = committedIncrement_[k];
+    SlaveNodeState o = committedOutput_[k];
+    double traction = committedTraction_[k];
+    Vector<2> x{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    if (!committedSlave_.empty()) x = committedSlave_[k];
+    mortarSlaveFields(c, o, traction, x, rows);
   }
   rows.finish();
 }
 
 void MortarInterface::restoreSlaves(const StateRecord& table) {
   StateTableReader rows(table);
+  std::vector<Vector<kDim>> positions(spec_.slaveNodes.size());
+  std::vector<char> known(spec_.slaveNodes.size(), 0);
   readSlaveRows(table, rows, [&](std::size_t k) {
     SlaveNodeChange c;
     SlaveNodeState o;
-    mortarSlaveFields(c, o, rows);
+    double traction = 0;
+    Vector<2> x{};
+    mortarSlaveFields(c, o, traction, x, rows);
+    // Every row's position: a node's neighbour may be owned by another rank.
+    known[k] = std::isfinite(x[0]) && std::isfinite(x[1]);
+    positions[k] = x;
     if (!evaluatesSlave()[k]) return;
     committedIncrement_[k] = c;
     committedOutput_[k] = trialOutput_[k] = o;
+    committedTraction_[k] = trialTraction_[k] = traction;
     trialChanges_[k] = unchanged(k);
   });
+  // Without every kept node's position (a frictionless run's file) the first evaluation is the reference.
+  bool complete = true;
+  for (std::size_t j = 0; j < known.size(); ++j) complete = complete && (known[j] || !keepsSlave_[j]);
+  if (complete) committedSlave_ = trialSlave_ = positions;
+}
+
+namespace {
+template <class Facet, class Fields>
+void mortarMasterFields(Facet& m, Fields& field) {
+  field("facet", m.id);
+  field("nodes", m.nodes);
+  field("x", m.x);
+}
+}  // namespace
+
+void MortarInterface::saveCommittedMaster(StateRecord& table) const {
+  StateTableWriter rows(table);
+  for (std::size_t i = 0; i < committedMaster_.size(); ++i) {
+    rows.beginRow(static_cast<std::int64_t>(i));
+    auto m = committedMaster_[i];
+    mortarMasterFields(m, rows);
+  }
+  rows.finish();
+}
+
+void MortarInterface::restoreMaster(const StateRecord& table) {
+  StateTableReader rows(table);
+  Facets facets(rows.rows());
+  for (std::size_t i = 0; i < facets.size(); ++i) {
+    rows.seek(static_cast<std::int64_t>(i), "master segment " + std::to_string(i));
+    mortarMasterFields(facets[i], rows);
+  }
+  committedMaster_ = trialMaster_ = std::move(facets);
 }
 
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
@@ -343,12 +575,21 @@ ContactInterfaceSpec mortarReservationSpec(const ContactInterfaceSpec& spec) {
 }
 
 std::vector<std::size_t> mortarSlaveNeighbours(const ContactInterfaceSpec& spec, std::size_t k) {
-  std::vector<std::size_t> out{k};
   const auto& s = spec.slaveNodes;
   const auto index = [&](GlobalIndex node) { return static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), node) - s.begin()); };
-  for (std::size_t f = 0; f + 1 < spec.slaveFacets.size(); f += 2)
-    for (int a = 0; a < 2; ++a)
-      if (spec.slaveFacets[f + a] == s[k]) out.push_back(index(spec.slaveFacets[f + 1 - a]));
+  const auto adjacent = [&](std::size_t j, std::vector<std::size_t>& out) {
+    for (std::size_t f = 0; f + 1 < spec.slaveFacets.size(); f += 2)
+      for (int a = 0; a < 2; ++a)
+        if (spec.slaveFacets[f + a] == s[j]) out.push_back(index(spec.slaveFacets[f + 1 - a]));
+  };
+  // Two segments away: the nodal normals at node k's neighbours depend on their own neighbours.
+  std::vector<std::size_t> near{k};
+  adjacent(k, near);
+  std::vector<std::size_t> out = near;
+  for (std::size_t i = 1; i < near.size(); ++i) adjacent(near[i], out);
+  std::sort(out.begin() + 1, out.end());
+  out.erase(std::unique(out.begin() + 1, out.end()), out.end());
+  out.erase(std::remove(out.begin() + 1, out.end(), k), out.end());
   return out;
 }
 

@@ -3,14 +3,19 @@
 // weighted gaps g̃_a = ∫ N_a g dΓ of its two slave nodes over the part of the slave segment the master
 // segment covers (theory-contact.md, "Mortar", eq. M1–M4). Written once as a template on the number type
 // and evaluated with nested dual numbers (MortarDual.hpp) for the exact gradient and Hessian with respect
-// to the eight nodal coordinates: the clip points and the slave normal depend on the nodes, and that
+// to the twelve nodal coordinates: the clip points and the slave normal depend on the nodes, and that
 // dependence is differentiated too, with no hand-derived formula.
 //
-// Segmentation along the slave segment's own normal (piecewise constant over the slave surface): every
-// point of the slave segment is projected along n_s onto the master line, so the master segment's nodes
-// map to slave coordinates ξ by orthogonal projection on the slave line (an affine map between the
-// lines), and the segment pair is clipped in ξ ∈ [0, 1] (Puso & Laursen 2004 §3; Yang, Laursen & Meng
-// 2005 use the averaged nodal normals instead, which coincide with it on a flat interface).
+// Normals (theory-contact §13, M1′): each slave node k has the averaged unit normal n_k, the normalised sum
+// of the unit normals of its (one or two) slave segments, and a slave point ξ the interpolated normal
+// n(ξ) = N_0 n_0 + N_1 n_1 (Yang, Laursen & Meng 2005; Popp, Gee & Wall 2009). A master node maps to the
+// slave point whose normal passes through it (a quadratic in ξ): that is the segmentation. On a flat slave
+// surface every n_k is the segment normal and this is the projection along n_s (Puso & Laursen 2004 §3);
+// on a curved one the neighbouring slave segments see the master without gap or overlap (with the
+// segment normals, the master near a slave node is seen twice or not at all). The gap itself is measured
+// along the master segment's normal (M3′, MortarSegment.cpp says why). The nodal normals depend on the
+// neighbouring slave nodes, so a segment pair depends on six nodes: its two slave nodes, its two master
+// nodes, and the slave nodes beyond each end.
 #include <array>
 
 #include "contact/SmallMatrix.hpp"
@@ -31,33 +36,61 @@ struct MortarPairGaps {
   bool overlaps = false;
   std::array<T, 2> weightedGap{};
   std::array<T, 2> mortarLength{};
+  /// Weighted slip increments Δũ_a = ∫ N_a t_m · (Δx_s(ξ) − Δx_m(η(ξ))) dΓ_0 (eq. M9), when the committed
+  /// positions are given (friction), else 0.
+  std::array<T, 2> weightedSlip{};
 };
+
+/// The committed positions of the pair's slave and master nodes (entries 0–7 of SegmentPairCoordinates):
+/// where the material points were at the last converged state, for the slip increments.
+using SegmentPairCommitted = std::array<double, 8>;
+
+/// The number of coordinates a segment pair depends on: six nodes, two coordinates each.
+constexpr int kMortarPairCoordinates = 12;
 
 /// The coordinates of a segment pair, in the order of the derivatives: slave node 0, slave node 1
 /// (the slave side's orientation: its normal, the right of the direction 0 → 1, points out of the slave
-/// body), master node 0, master node 1 (likewise out of the master body).
+/// body), master node 0, master node 1 (likewise out of the master body), then the slave node beyond
+/// slave node 0 and the one beyond slave node 1 (zero and unused where MortarSlaveNeighbours says none).
 template <class T>
-using SegmentPairCoordinates = std::array<T, 8>;
+using SegmentPairCoordinates = std::array<T, kMortarPairCoordinates>;
+
+/// The slave segments beyond the pair's slave segment, which enter the nodal normals: per end a, 0 when
+/// slave node a ends the slave surface (its normal is the segment's), else ±1, the sign that makes
+/// σ_0 (s_0 − y_0), resp. σ_1 (y_1 − s_1), the neighbour segment's direction 0 → 1 as stored (y_a the
+/// neighbour node's coordinates, entries 8–9 and 10–11).
+struct MortarSlaveNeighbours {
+  std::array<int, 2> orientation{0, 0};
+};
 
 /// The integral over the overlap (eq. M1–M4), exact for the linear gap and shape functions (2-point Gauss).
 /// The measure is the slave segment's reference length L_0 (dΓ_0 = L_0 dξ): the weighted gaps are then
 /// per reference length, as the node-to-segment force is the traction times the reference tributary
 /// length, and a uniform gap g gives g̃_a = g A_a exactly (the patch test).
 template <class T>
-MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& x, double referenceLength);
+MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& x, double referenceLength,
+                                       const MortarSlaveNeighbours& neighbours,
+                                       const SegmentPairCommitted* committed = nullptr);
 
-/// Weighted gaps with their gradient and Hessian with respect to the eight coordinates.
+/// Weighted gaps with their gradient and Hessian with respect to the twelve coordinates.
 struct MortarPairDerivatives {
   bool overlaps = false;
   std::array<double, 2> weightedGap{};
   std::array<double, 2> mortarLength{};
-  std::array<std::array<double, 8>, 2> gradient{};       ///< ∂g̃_a/∂x_i
-  std::array<std::array<double, 64>, 2> hessian{};       ///< ∂²g̃_a/∂x_i∂x_j, row-major
+  std::array<std::array<double, kMortarPairCoordinates>, 2> gradient{};  ///< ∂g̃_a/∂x_i
+  std::array<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>, 2> hessian{};  ///< ∂²g̃_a/∂x_i∂x_j, row-major
+  std::array<double, 2> weightedSlip{};  ///< Δũ_a (with committed positions)
+  std::array<std::array<double, kMortarPairCoordinates>, 2> slipGradient{};  ///< ∂Δũ_a/∂x_i
+  std::array<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>, 2> slipHessian{};
 };
 
 /// The pair's weighted gaps (values only: open nodes, predicted states).
-MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, double referenceLength);
+MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, double referenceLength,
+                                       const MortarSlaveNeighbours& neighbours = {},
+                                       const SegmentPairCommitted* committed = nullptr);
 /// The pair's weighted gaps differentiated twice (closed nodes: residual and tangent).
-MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength);
+MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength,
+                                             const MortarSlaveNeighbours& neighbours = {},
+                                             const SegmentPairCommitted* committed = nullptr);
 
 }  // namespace contessa::contact

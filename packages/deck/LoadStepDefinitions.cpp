@@ -151,8 +151,6 @@ void readContact(const ParameterList& list, const ProblemDefinition& problem, co
       requireInput(!v.array, f + ": expected a double, got " + shapeText(v.values.size(), false));
       const double mu = v.values[0];
       requireInput(std::isfinite(mu) && mu >= 0.0, f + ": expected a value >= 0, got " + numberText(mu));
-      requireInput(!spec.mortar || mu == 0.0, f + ": interface '" + name +
-                                                  "' is Discretization = Mortar, which is frictionless for now (expected 0)");
       // The interface's law must take μ > 0 (a tangential penalty or a slip tolerance).
       contact::ContactLawParameters law = spec.law;
       law.frictionCoefficient = mu;

@@ -53,34 +53,53 @@ TEST(MortarSegment, AMasterEndFlushWithASlaveEndWithinRoundOffClipsAtTheSlaveEnd
   EXPECT_NEAR(flush.mortarLength[1], 0.5, 1e-15);
 }
 
-// A tilted, curved-looking pair clipped at one slave end and one master end.
+// A tilted, curved-looking pair clipped at one slave end and one master end, with a slave node beyond each
+// end (a curved slave surface: the averaged nodal normals differ from the segment's).
 // Its slave segment's reference length (here other than its current one: a stretched segment).
 constexpr double kTiltedLength = 1.2;
-SegmentPairCoordinates<double> tiltedPair() { return {1.1, 0.05, -0.02, -0.07, 0.35, -0.03, 1.6, 0.12}; }
+SegmentPairCoordinates<double> tiltedPair() {
+  return {1.1, 0.05, -0.02, -0.07, 0.35, -0.03, 1.6, 0.12, 2.0, 0.3, -1.0, -0.35};
+}
+// The neighbour segments continue the slave surface: stored as (y_0, s_0) and (s_1, y_1).
+MortarSlaveNeighbours tiltedNeighbours() { return {{1, 1}}; }
 
-TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps) {
+// Committed positions of the tilted pair's four nodes: the slave moved right and up, the master left.
+SegmentPairCommitted tiltedCommitted() { return {1.05, 0.04, -0.08, -0.075, 0.38, -0.03, 1.63, 0.115}; }
+
+// Which weighted quantity a derivative test reads: the gap or (friction) the slip increment.
+double quantity(const MortarPairGaps<double>& g, int a, bool slip) { return slip ? g.weightedSlip[a] : g.weightedGap[a]; }
+
+void expectDerivativesAreCentralDifferences(const MortarSlaveNeighbours& neighbours, bool slip = false) {
+  constexpr int m = kMortarPairCoordinates;
   const auto x = tiltedPair();
-  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength);
+  const SegmentPairCommitted then = tiltedCommitted();
+  const SegmentPairCommitted* committed = slip ? &then : nullptr;
+  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength, neighbours, committed);
   ASSERT_TRUE(d.overlaps);
-  const MortarPairGaps<double> plain = segmentPairGaps(x, kTiltedLength);
+  const MortarPairGaps<double> plain = segmentPairGaps(x, kTiltedLength, neighbours, committed);
+  const auto& gradient = slip ? d.slipGradient : d.gradient;
+  const auto& hessian = slip ? d.slipHessian : d.hessian;
   const double h = 1e-6;
   for (int a = 0; a < 2; ++a) {
-    EXPECT_DOUBLE_EQ(d.weightedGap[a], plain.weightedGap[a]);
+    EXPECT_DOUBLE_EQ(slip ? d.weightedSlip[a] : d.weightedGap[a], quantity(plain, a, slip));
     double scale = 0, gradientError = 0, hessianScale = 0, hessianError = 0;
-    for (int j = 0; j < 8; ++j) {
+    for (int j = 0; j < m; ++j) {
       auto plus = x, minus = x;
       plus[j] += h;
       minus[j] -= h;
-      const double fd = (segmentPairGaps(plus, kTiltedLength).weightedGap[a] - segmentPairGaps(minus, kTiltedLength).weightedGap[a]) / (2 * h);
-      scale = std::max(scale, std::abs(d.gradient[a][j]));
-      gradientError = std::max(gradientError, std::abs(fd - d.gradient[a][j]));
-      const MortarPairDerivatives dp = segmentPairDerivatives(plus, kTiltedLength),
-                                  dm = segmentPairDerivatives(minus, kTiltedLength);
-      for (int i = 0; i < 8; ++i) {
-        const double fdHessian = (dp.gradient[a][i] - dm.gradient[a][i]) / (2 * h);
-        hessianScale = std::max(hessianScale, std::abs(d.hessian[a][i * 8 + j]));
-        hessianError = std::max(hessianError, std::abs(fdHessian - d.hessian[a][i * 8 + j]));
-        EXPECT_NEAR(d.hessian[a][i * 8 + j], d.hessian[a][j * 8 + i], 1e-12) << "a Hessian is symmetric";
+      const double fd = (quantity(segmentPairGaps(plus, kTiltedLength, neighbours, committed), a, slip) -
+                         quantity(segmentPairGaps(minus, kTiltedLength, neighbours, committed), a, slip)) / (2 * h);
+      scale = std::max(scale, std::abs(gradient[a][j]));
+      gradientError = std::max(gradientError, std::abs(fd - gradient[a][j]));
+      const MortarPairDerivatives dp = segmentPairDerivatives(plus, kTiltedLength, neighbours, committed),
+                                  dm = segmentPairDerivatives(minus, kTiltedLength, neighbours, committed);
+      for (int i = 0; i < m; ++i) {
+        const auto& gp = slip ? dp.slipGradient : dp.gradient;
+        const auto& gm = slip ? dm.slipGradient : dm.gradient;
+        const double fdHessian = (gp[a][i] - gm[a][i]) / (2 * h);
+        hessianScale = std::max(hessianScale, std::abs(hessian[a][i * m + j]));
+        hessianError = std::max(hessianError, std::abs(fdHessian - hessian[a][i * m + j]));
+        EXPECT_NEAR(hessian[a][i * m + j], hessian[a][j * m + i], 1e-12) << "a Hessian is symmetric";
       }
     }
     EXPECT_GT(scale, 0.1);
@@ -88,6 +107,69 @@ TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps)
     EXPECT_LT(gradientError, 1e-8 * scale) << "slave node " << a;
     EXPECT_LT(hessianError, 1e-7 * hessianScale) << "slave node " << a;
   }
+}
+
+TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps) {
+  expectDerivativesAreCentralDifferences({});
+}
+
+TEST(MortarSegment, WeightedSlipIncrementsAreDifferentiatedTwiceExactly) {
+  expectDerivativesAreCentralDifferences(tiltedNeighbours(), true);
+}
+
+TEST(MortarSegment, ARigidSlideGivesTheSlipTimesTheMortarLengths) {
+  // The slave slid by 0.02 along +x under a fixed master (whose tangent t_m is +x): Δũ_a = 0.02 ∫ N_a.
+  const double gap = -0.01, slide = 0.02;
+  const SegmentPairCommitted then{1.0 - slide, 0.0, -slide, 0.0, 0.3, gap, 2.0, gap};
+  const MortarPairGaps<double> g = segmentPairGaps(flatPair(0.3, 2.0, gap), 1.0, {}, &then);
+  ASSERT_TRUE(g.overlaps);
+  EXPECT_NEAR(g.weightedSlip[0], slide * 0.455, 1e-15);
+  EXPECT_NEAR(g.weightedSlip[1], slide * 0.245, 1e-15);
+  // The master moving with the slave: no relative slip.
+  const SegmentPairCommitted together{1.0 - slide, 0.0, -slide, 0.0, 0.3 - slide, gap, 2.0 - slide, gap};
+  const MortarPairGaps<double> none = segmentPairGaps(flatPair(0.3, 2.0, gap), 1.0, {}, &together);
+  EXPECT_NEAR(none.weightedSlip[0], 0.0, 1e-16);
+  EXPECT_NEAR(none.weightedSlip[1], 0.0, 1e-16);
+}
+
+TEST(MortarSegment, WithAveragedNodalNormalsTheNeighbourSlaveNodesAreDifferentiatedToo) {
+  expectDerivativesAreCentralDifferences(tiltedNeighbours());
+  // The neighbours turn the nodal normals, hence move the clip point at the master's end, and the weighted
+  // gaps owe them g(ξ_clip) N_a(ξ_clip) ∂ξ_clip/∂y: not zero with a gap of 0.2 at the clip point.
+  auto x = tiltedPair();
+  x[5] += 0.2;
+  x[7] += 0.2;
+  const MortarPairDerivatives d = segmentPairDerivatives(x, kTiltedLength, tiltedNeighbours());
+  ASSERT_TRUE(d.overlaps);
+  double neighbourScale = 0;
+  for (int i = 8; i < kMortarPairCoordinates; ++i) neighbourScale = std::max(neighbourScale, std::abs(d.gradient[0][i]));
+  EXPECT_GT(neighbourScale, 1e-3) << "zero without the neighbours";
+}
+
+TEST(MortarSegment, AMasterNodeOnTheInterpolatedNormalAtXiClipsTheSlaveSegmentAtXi) {
+  // Slave segment (0, 0) → (−1, 0) (normal up) between a neighbour (1, −0.3) beyond node 0 (stored
+  // (y_0, s_0)) and (−2, −0.2) beyond node 1 (stored (s_1, y_1)): the nodal normals tilt right and left.
+  // A master node on the interpolated normal n(0.3) = 0.7 n_0 + 0.3 n_1 through the slave point ξ = 0.3
+  // is seen at ξ = 0.3: the master segment from it to the right covers ξ ∈ [0, 0.3].
+  const auto unit = [](double x, double y) { const double l = std::hypot(x, y); return std::array<double, 2>{x / l, y / l}; };
+  const auto n0u = unit(0.3, 1.0), n1u = unit(-0.2, 1.0);
+  const auto n0 = unit(n0u[0], 1.0 + n0u[1]), n1 = unit(n1u[0], 1.0 + n1u[1]);
+  const double xi = 0.3, t = 0.05;
+  const double mx = -xi + t * (0.7 * n0[0] + 0.3 * n1[0]), my = t * (0.7 * n0[1] + 0.3 * n1[1]);
+  const SegmentPairCoordinates<double> x{0, 0, -1, 0, mx, my, 2.0, 0.06, 1.0, -0.3, -2.0, -0.2};
+  const MortarPairGaps<double> g = segmentPairGaps(x, 1.0, {{1, 1}});
+  ASSERT_TRUE(g.overlaps);
+  EXPECT_NEAR(g.mortarLength[0] + g.mortarLength[1], xi, 1e-13);
+  // With the segment's own normal (0, 1) the same node is seen straight below it, at ξ = −m_x ≠ 0.3.
+  const MortarPairGaps<double> plain = segmentPairGaps(x, 1.0);
+  EXPECT_NEAR(plain.mortarLength[0] + plain.mortarLength[1], -mx, 1e-13);
+  EXPECT_GT(std::abs(mx + xi), 1e-3);
+  // The gap is measured along the master's normal: the master line y = my + (x − mx)(0.06 − my)/(2 − mx)
+  // above the slave line y = 0, whatever the normals; g̃_0 + g̃_1 = ∫_0^0.3 g dξ.
+  const double slope = (0.06 - my) / (2.0 - mx), cosine = 1.0 / std::hypot(1.0, slope);
+  const auto gapAtX = [&](double px) { return (my + (px - mx) * slope) * cosine; };  // below the line: open
+  const double exact = 0.5 * xi * (gapAtX(0.0) + gapAtX(-xi));  // affine in ξ: the trapezoid is exact
+  EXPECT_NEAR(g.weightedGap[0] + g.weightedGap[1], exact, 1e-14);
 }
 
 // A non-matching interface: 3 slave segments on y = 0 (x ∈ [0, 3]) under 2 master segments (x ∈ [−0.2, 3.2]).
@@ -239,6 +321,117 @@ TEST(MortarInterface, OpenNodesCarryNoForceAndCountAsOpenEvents) {
     EXPECT_NEAR(c.committedGap, 0.01, 1e-14);
     EXPECT_NEAR(c.trialGap, -1e-3, 1e-14);
   }
+}
+
+// Friction (eq. M9–M12): μ = 0.3, ε_T = 10³. The committed state is the uneven configuration; the trial one
+// slides the slave nodes along x by `slide` (small: stick; large: slip), and the master a little.
+constexpr double kFriction = 0.3;
+
+std::unique_ptr<ContactInterfaceBase> frictionalInterface(bool rigidMaster) {
+  ContactInterfaceSpec spec = patchSpec(rigidMaster);
+  spec.law.frictionCoefficient = kFriction;
+  spec.law.tangentialPenalty = kPenalty;
+  return makeMortarInterface(spec, std::vector<char>(4, 1));
+}
+
+std::vector<double> slid(double slide) {
+  auto x = unevenCoordinates();
+  for (int node = 0; node < 4; ++node) x[2 * node] += slide * (1.0 + 0.1 * node);
+  for (int node = 4; node < 7; ++node) x[2 * node] -= 0.2 * slide;
+  return x;
+}
+
+/// The trial evaluation at x after committing the uneven configuration at λ = 0.3, and then, when
+/// `stuck` > 0, the configuration slid by `stuck` (a stick state: a nonzero committed traction).
+Assembled frictionalTrial(bool rigidMaster, const std::vector<double>& x, double lambda, double stuck = 0.0) {
+  auto interface = frictionalInterface(rigidMaster);
+  assemble(*interface, unevenCoordinates(), 0.3);  // evaluates and commits
+  if (stuck > 0.0) assemble(*interface, slid(stuck), 0.3 + 0.5 * stuck);
+  const int n = static_cast<int>(x.size());
+  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}};
+  interface->evaluate([&](GlobalIndex node, double* p) { p[0] = x[2 * node], p[1] = x[2 * node + 1]; }, lambda, true,
+                      [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
+                        for (int a = 0; a < m; ++a) {
+                          if (dofs[a] < 0) continue;
+                          out.residual[dofs[a]] += r[a];
+                          out.dLambda[dofs[a]] += drdl[a];
+                          for (int b = 0; b < m; ++b)
+                            if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
+                        }
+                      });
+  interface->commit();
+  out.states = interface->committedStates();
+  return out;
+}
+
+void expectFrictionalTangentIsTheCentralDifference(bool rigidMaster, double slide, ContactStatus expected,
+                                                   double stuck = 0.0) {
+  const auto x = slid(slide);
+  const double lambda = 0.3 + 0.5 * slide;
+  const Assembled a = frictionalTrial(rigidMaster, x, lambda, stuck);
+  for (const auto& s : a.states) EXPECT_EQ(s.status, expected);
+  const int n = static_cast<int>(x.size());
+  const double h = 1e-7;
+  double scale = 0, error = 0, frictionScale = 0;
+  for (int j = 0; j < n; ++j) {
+    auto plus = x, minus = x;
+    plus[j] += h;
+    minus[j] -= h;
+    const auto rp = frictionalTrial(rigidMaster, plus, lambda, stuck).residual;
+    const auto rm = frictionalTrial(rigidMaster, minus, lambda, stuck).residual;
+    for (int i = 0; i < n; ++i) {
+      scale = std::max(scale, std::abs(a.tangent[i * n + j]));
+      error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
+    }
+  }
+  for (int node = 0; node < 4; ++node) frictionScale = std::max(frictionScale, std::abs(a.residual[2 * node]));
+  EXPECT_GT(frictionScale, 1e-3) << "a tangential force";
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+  if (rigidMaster) {
+    const auto rp = frictionalTrial(true, x, lambda + h, stuck).residual;
+    const auto rm = frictionalTrial(true, x, lambda - h, stuck).residual;
+    double dError = 0, dScale = 0;
+    for (int i = 0; i < n; ++i) {
+      dScale = std::max(dScale, std::abs(a.dLambda[i]));
+      dError = std::max(dError, std::abs((rp[i] - rm[i]) / (2 * h) - a.dLambda[i]));
+    }
+    EXPECT_GT(dScale, 1.0);
+    EXPECT_LT(dError, 1e-6 * dScale);
+  }
+}
+
+TEST(MortarInterface, FrictionalTangentInStickIsTheCentralDifferenceOfTheResidual) {
+  expectFrictionalTangentIsTheCentralDifference(false, 1e-3, ContactStatus::Stick);
+  expectFrictionalTangentIsTheCentralDifference(true, 1e-3, ContactStatus::Stick);
+}
+
+TEST(MortarInterface, FrictionalTangentInSlipIsTheCentralDifferenceOfTheResidual) {
+  expectFrictionalTangentIsTheCentralDifference(false, 0.05, ContactStatus::Slip);
+  expectFrictionalTangentIsTheCentralDifference(true, 0.05, ContactStatus::Slip);
+}
+
+TEST(MortarInterface, FrictionalTangentFromAStuckStateIsTheCentralDifferenceOfTheResidual) {
+  // Committed in stick with a nonzero traction (slid by 1e-3), then a trial in stick and one in slip.
+  expectFrictionalTangentIsTheCentralDifference(false, 2e-3, ContactStatus::Stick, 1e-3);
+  expectFrictionalTangentIsTheCentralDifference(true, 2e-3, ContactStatus::Stick, 1e-3);
+  expectFrictionalTangentIsTheCentralDifference(false, 0.05, ContactStatus::Slip, 1e-3);
+  expectFrictionalTangentIsTheCentralDifference(true, 0.05, ContactStatus::Slip, 1e-3);
+}
+
+TEST(MortarInterface, SlidingNodesCarryTheCoulombForceAgainstTheSlip) {
+  // A flat patch slid by 0.05 along +x under a fixed master: every node slips, and the tangential force on
+  // the slave is −μ times the normal force, against the motion.
+  auto interface = frictionalInterface(false);
+  const double d = 1e-3;
+  assemble(*interface, patchCoordinates(d), 0.0);
+  auto x = patchCoordinates(d);
+  for (int node = 0; node < 4; ++node) x[2 * node] += 0.05;
+  const Assembled a = assemble(*interface, x, 0.0);
+  for (const auto& s : a.states) EXPECT_EQ(s.status, ContactStatus::Slip);
+  const auto& force = interface->committedSlaveForce();
+  EXPECT_NEAR(force[1], -kPenalty * d * 3.0, 1e-9);
+  EXPECT_NEAR(force[0], -kFriction * kPenalty * d * 3.0, 1e-9);
 }
 
 }  // namespace
