@@ -210,20 +210,24 @@ class ContactInterface final : public ContactInterfaceBase {
   };
   std::optional<Blend> valleyBlend(std::size_t k, const Point& xs, const FacetSelection<Facet>& selection,
                                    const Facets& candidates) const {
-    if (!blendable_ || !spec_.law.isFrictionless() || selection.kind == SelectionKind::None) return std::nullopt;
-    for (std::size_t c = 0; c < candidates.size(); ++c) {
-      if (candidates[c].id != selection.facet) continue;
-      const auto edge = findValleyEdge<Facet>(xs, c, candidates, committedMaster_, spec_.slaveFacetLengths[k]);
-      if (!edge) return std::nullopt;
-      Blend blend{*edge, evaluateValleyBlend<Facet>(PenaltyNormalLaw(spec_.law.normalPenalty), xs,
-                                                    candidates[edge->a], candidates[edge->b], *edge)};
-      if (blend.result.numBlocks == 0) return std::nullopt;
-      // The facets' positions in the surface, for their DOF ids.
-      blend.edge.a = static_cast<std::size_t>(candidates[edge->a].id);
-      blend.edge.b = static_cast<std::size_t>(candidates[edge->b].id);
-      return blend;
+    if constexpr (!kValleyBlendable<Facet>) {
+      return std::nullopt;
+    } else {
+      if (!blendable_ || !spec_.law.isFrictionless() || selection.kind == SelectionKind::None) return std::nullopt;
+      for (std::size_t c = 0; c < candidates.size(); ++c) {
+        if (candidates[c].id != selection.facet) continue;
+        const auto edge = findValleyEdge<Facet>(xs, c, candidates, committedMaster_, spec_.slaveFacetLengths[k]);
+        if (!edge) return std::nullopt;
+        Blend blend{*edge, evaluateValleyBlend<Facet>(PenaltyNormalLaw(spec_.law.normalPenalty), xs,
+                                                      candidates[edge->a], candidates[edge->b], *edge)};
+        if (blend.result.numBlocks == 0) return std::nullopt;
+        // The facets' positions in the surface, for their DOF ids.
+        blend.edge.a = static_cast<std::size_t>(candidates[edge->a].id);
+        blend.edge.b = static_cast<std::size_t>(candidates[edge->b].id);
+        return blend;
+      }
+      return std::nullopt;
     }
-    return std::nullopt;
   }
   /// The node's state from the blend: its gap, status and normal traction (frictionless: no tangential part).
   static void applyBlend(const Blend& blend, double& gap, NodeToFacetResult<Facet>& r) {

@@ -26,12 +26,19 @@
 // alone: coplanar masters and convex ridges are evaluated as before.
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "contact/NodeToFacetContact.hpp"
 
 namespace contessa::contact {
+
+/// The facets the blend is written and verified for: linear segments and quadrilaterals, whose edges are
+/// the sides ξ^α = ±1 of the parent square. Triangles (edges ξ^α = 0 and ξ^1 + ξ^2 = 1) and the
+/// quadratic facets (curved edges) are not blended: their valley nodes keep the facet selection's contact.
+template <class Facet>
+inline constexpr bool kValleyBlendable = std::is_same_v<Facet, Line2Facet> || std::is_same_v<Facet, Quad4Facet>;
 
 struct ValleyBlendOptions {
   /// b = bandWidth × L_k (L_k: the slave facets' size at the node, as the free-edge reach), capped by

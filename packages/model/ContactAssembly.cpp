@@ -102,7 +102,9 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
           for (int c = 0; c < dim; ++c)
             for (int d = 0; d < dim; ++d) rows[a[c]].push_back(b[d]);
         }
-    if (!spec.mortar && spec.law.isFrictionless()) addAcrossEdgeCouplings(spec, rows);
+    // Only the facets contact::kValleyBlendable names (2-node segments, 4-node faces) are blended.
+    const bool blended = spec.nodesPerFacet() == 2 || spec.nodesPerFacet() == 4;
+    if (!spec.mortar && spec.law.isFrictionless() && blended) addAcrossEdgeCouplings(spec, rows);
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
       if (!evaluates[k] || spec.mortar) continue;
       dofsOf(spec.slaveNodes[k], a);
