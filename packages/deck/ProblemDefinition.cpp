@@ -147,6 +147,8 @@ void requireMortarSupported(const ParameterList& list, int dimension, bool revol
   const std::string what = where + "/Discretization: Mortar is implemented ";
   requireInput(dimension == 2, what + "in 2D only, this mesh is 3D; use Node To Segment");
   requireInput(law.isFrictionless(), what + "frictionless only, Friction Coefficient must be 0; use Node To Segment");
+  requireInput(!law.isAugmented(), where + "/Enforcement: Augmented Lagrangian is implemented for Node To Segment only, not "
+                                          "with Discretization = Mortar; use Enforcement = Penalty");
   requireInput(!revolved, what + "for plane strain only, not for an axisymmetric problem; use Node To Segment");
   requireInput(!list.get<bool>("Two Pass"), what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
