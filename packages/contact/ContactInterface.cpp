@@ -19,11 +19,14 @@ namespace contessa::contact {
 namespace {
 constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
 
-/// ‖t_T‖/ε_T of an element result (RegularisationMeasures), ‖t_T‖ = √(t_α ā^αβ t_β) of eq. (19).
+/// ‖t_T‖/ε_T of an element result (RegularisationMeasures), ‖t_T‖ = √(t_α ā^αβ t_β) of eq. (19). With the
+/// augmented Lagrangian the stick spring is stretched by t_T − λ_T only (eq. 15.2), and only while sticking.
 template <class Facet>
-double elasticSlipOf(const NodeToFacetResult<Facet>& r) {
+double elasticSlipOf(const NodeToFacetResult<Facet>& r, const ContactHistory<Facet::kSurfaceDim>& committed,
+                     bool augmented) {
   if (r.status == ContactStatus::Open) return 0.0;
-  const auto& t = r.tangentialTraction;
+  if (augmented && r.status != ContactStatus::Stick) return 0.0;
+  const auto t = augmented ? subtract(r.trial.tangentialTraction, committed.tangentialMultiplier) : r.tangentialTraction;
   return contact::elasticSlipOf(std::sqrt(dot(t, multiply(r.projection.inverseMetric, t))), r.friction.tangentialPenalty);
 }
 
@@ -85,6 +88,18 @@ void ContactInterfaceBase::readSlaveRows(const StateRecord& table, StateTableRea
       table.fail("id", "no row for slave node " + std::to_string(k) + " of interface '" + spec_.label() + "'");
 }
 
+AugmentationViolation ContactInterfaceBase::trialViolation() const {
+  AugmentationViolation v;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    const SlaveNodeState& s = trialOutput_[k];
+    if (!evaluatesSlave_[k] || s.status == ContactStatus::Open) continue;
+    const double length = spec_.slaveFacetLengths[k];
+    if (std::isfinite(s.gap)) v.penetration = std::max(v.penetration, -s.gap / length);
+    v.elasticSlip = std::max(v.elasticSlip, s.elasticSlip / length);
+  }
+  return v;
+}
+
 std::vector<SlaveNodeChange> ContactInterfaceBase::owned(const std::vector<SlaveNodeChange>& all) const {
   std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
@@ -125,6 +140,7 @@ class ContactInterface final : public ContactInterfaceBase {
   std::vector<TunnellingNode> tunnellingNodes() const override;
   void commit() override;
   void rollback() override;
+  void augment() override { history_.augment(); }
   void saveCommittedSlaves(StateRecord& table) const override;
   void restoreSlaves(const StateRecord& table) override;
   void saveCommittedMaster(StateRecord& table) const override;
@@ -305,7 +321,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       change = changeOf(k, out.gap, &r, committed);
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
-      out.elasticSlip = elasticSlipOf(r);
+      out.elasticSlip = elasticSlipOf(r, committed, spec_.law.isAugmented());
       if (r.status != ContactStatus::Open) {
         if (blend) {
           const std::vector<double> residual = scatterBlend(k, *blend, sink);
@@ -317,6 +333,8 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       }
     } else {
       trial.status = ContactStatus::Open;
+      trial.normalMultiplier = 0.0;  // no master or frozen: no traction for the next multiplier update
+      trial.tangentialMultiplier = {};
     }
     out.slip = trial.accumulatedSlip;
     if (updateTrial) {
@@ -461,7 +479,16 @@ template <class Facet>
 auto ContactInterface<Facet>::committedHistoryOn(std::size_t k, int facet) const -> ContactHistory<kXi> {
   const ContactHistory<kXi>& committed = history_.committed(k);
   if (!committed.isInContact() || committed.segment == facet || committed.segment < 0) return committed;
-  return transferHistory<Facet>(committed, committedMaster_[committed.segment], committedMaster_[facet]);
+  ContactHistory<kXi> moved = transferHistory<Facet>(committed, committedMaster_[committed.segment], committedMaster_[facet]);
+  if (spec_.law.isAugmented()) {
+    // λ_T is a covariant traction on the committed facet like t_T,n: carried over the same way.
+    ContactHistory<kXi> multiplier = committed;
+    multiplier.tangentialTraction = committed.tangentialMultiplier;
+    moved.tangentialMultiplier =
+        transferHistory<Facet>(multiplier, committedMaster_[committed.segment], committedMaster_[facet]).tangentialTraction;
+    moved.normalMultiplier = committed.normalMultiplier;
+  }
+  return moved;
 }
 
 template <class Facet>
@@ -543,6 +570,8 @@ void slaveNodeFields(History& h, Change& c, Output& o, Position& x, Fields& fiel
   field("tangential_traction", h.tangentialTraction);
   field("status", h.status);
   field("slip", h.accumulatedSlip);
+  field("normal_multiplier", h.normalMultiplier);  // augmented Lagrangian (0 with the penalty law)
+  field("tangential_multiplier", h.tangentialMultiplier);
   field("committed_gap", c.committedGap, StateValues::AnyDouble);  // +inf: no master facet in reach
   field("trial_gap", c.trialGap, StateValues::AnyDouble);
   field("committed_status", c.committedStatus);

@@ -46,6 +46,13 @@ struct SlaveNodeChange {
   int trialFacet = -1;        ///< the master facet the trial state was evaluated on (−1: none)
 };
 
+/// Augmented Lagrangian: the owned slave nodes' largest violations at the latest trial evaluation, each
+/// over the slave facet length L_k of its node (the tolerances' unit, ContactLawParameters).
+struct AugmentationViolation {
+  double penetration = 0;  ///< max −g_N/L_k over the nodes in contact
+  double elasticSlip = 0;  ///< max ‖t_T − λ_T‖/(ε_T L_k) over the sticking nodes
+};
+
 /// A slave node that passed through the master surface in the current increment (tunnelling).
 struct TunnellingNode {
   std::size_t slave = 0;  ///< index into ContactInterfaceSpec::slaveNodes
@@ -90,8 +97,14 @@ class ContactInterfaceBase {
   virtual void setFrictionCoefficient(double mu) = 0;
   /// The increment converged: trial → committed (and the master positions the history refers to).
   virtual void commit() = 0;
-  /// The increment is abandoned: back to the committed state.
+  /// The increment is abandoned: back to the committed state (the multipliers too).
   virtual void rollback() = 0;
+  /// Augmented Lagrangian (spec().law.isAugmented()): the multipliers take the tractions of the latest
+  /// trial evaluation (the Uzawa update, docs/theory-contact.md eq. 15.3), within the increment. Nothing for
+  /// an interface without multipliers.
+  virtual void augment() {}
+  /// The owned slave nodes' violations at the latest trial evaluation (for the augmentation test).
+  AugmentationViolation trialViolation() const;
 
   // The restart file's state of the committed configuration, by name (docs/architecture.md, "Checkpoint
   // and restart"; common/StateRecord.hpp).

@@ -238,7 +238,10 @@ TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters&
     out.status = ContactStatus::Stick;
   } else {
     ReturnMappingInput<M> in;
-    in.committedTraction = committed.isInContact() ? committed.tangentialTraction : Vector<M>{};
+    // The augmented Lagrangian's trial starts from the multiplier λ_Tα instead of t_Tα,n (eq. 15.2).
+    in.committedTraction = parameters.isAugmented()     ? committed.tangentialMultiplier
+                           : committed.isInContact() ? committed.tangentialTraction
+                                                     : Vector<M>{};
     in.slipIncrement = slipIncrement(p.xi, out.gap, committed, approach, law);  // Δξ_{n+1}, eq. (20)
     in.metric = p.metric;
     in.normalTraction = tN;
@@ -263,6 +266,7 @@ TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters&
   }
   out.tangentialTraction = law.traction;
   out.trial.tangentialTraction = law.traction;
+  if (parameters.isAugmented()) out.trial.tangentialMultiplier = law.traction;  // the next λ_T (eq. 15.3)
   out.trial.status = out.status;
   return law;
 }
@@ -405,6 +409,8 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
     open.trial = out.trial;
     open.trial.tangentialTraction = {};
     open.trial.status = ContactStatus::Open;
+    open.trial.normalMultiplier = 0.0;
+    open.trial.tangentialMultiplier = {};
     open.trial.accumulatedSlip = committed.accumulatedSlip;
     return open;
   }
@@ -438,6 +444,8 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUn
   out.trial.xi = p.xi;
   out.trial.tangentialTraction = {};
   out.trial.status = ContactStatus::Open;
+  out.trial.normalMultiplier = 0.0;  // an open node's next multipliers (augmented Lagrangian)
+  out.trial.tangentialMultiplier = {};
   out.gap = p.gap;
   if (!p.converged) return out;
   // The normal part: at the projection, or at a vertex or edge point of the facet (ContactPoint).
@@ -446,7 +454,8 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUn
     boundary.emplace(point, x.slave, x.master, p.normal);
     out.gap = boundary->gap;
   }
-  if (!normalLaw_.isActive(out.gap)) return out;  // eq. (6): open, no force, no stiffness
+  const double lambdaN = parameters_.isAugmented() ? committed.normalMultiplier : 0.0;  // eq. (15.1)
+  if (!normalLaw_.isActive(out.gap, lambdaN)) return out;  // eq. (6): open, no force, no stiffness
 
   FacetKinematics<Facet> facetKinematics;
   if (!facetKinematics.build(p, x.master)) return out;  // the node sits at a focal point of the facet
@@ -454,9 +463,10 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUn
   const Column& N = boundary ? boundary->N : k.N;  // ∂g_N/∂u of the contact law's gap
 
   // ---- Contact law: eq. (16), then the return mapping of eq. (20)–(23) ------------------------------
-  const double tN = normalLaw_.traction(out.gap);  // eq. (16), < 0
-  const double epsN = normalLaw_.tractionDerivative(out.gap);
+  const double tN = normalLaw_.traction(out.gap, lambdaN);  // eq. (16) or (15.1), < 0
+  const double epsN = normalLaw_.tractionDerivative(out.gap, lambdaN);
   out.normalTraction = tN;
+  if (parameters_.isAugmented()) out.trial.normalMultiplier = tN;  // the next λ_N (eq. 15.3)
   const auto tangential =
       applyTangentialLaw<Facet>(parameters_, returnMapping_, p, committed, approach, tN, facetLength, slipTangent, out);
 

@@ -18,11 +18,19 @@ class PenaltyNormalLaw {
                  "contact: the normal penalty epsilon_N must be > 0, got " + std::to_string(normalPenalty));
   }
 
-  bool isActive(double gap) const { return gap < 0.0; }
-  /// t_N, eq. (16); 0 for an open node.
-  double traction(double gap) const { return isActive(gap) ? penalty_ * gap : 0.0; }
+  /// `multiplier` λ_N ≤ 0 is the augmented Lagrangian's (0: the penalty law). The augmented traction is
+  /// that of Simo & Laursen (1992), eq. (4.5) in the sign convention here (compression < 0):
+  ///   t_N = min(0, λ_N + ε_N g_N),
+  /// which is eq. (16) for λ_N = 0. A node with λ_N < 0 is active while g_N < −λ_N/ε_N (possibly > 0).
+  bool isActive(double gap, double multiplier = 0.0) const { return multiplier + penalty_ * gap < 0.0; }
+  /// t_N, eq. (16) (or its augmented form); 0 for an open node.
+  double traction(double gap, double multiplier = 0.0) const {
+    return isActive(gap, multiplier) ? multiplier + penalty_ * gap : 0.0;
+  }
   /// dt_N/dg_N: ε_N when active, 0 otherwise.
-  double tractionDerivative(double gap) const { return isActive(gap) ? penalty_ : 0.0; }
+  double tractionDerivative(double gap, double multiplier = 0.0) const {
+    return isActive(gap, multiplier) ? penalty_ : 0.0;
+  }
 
   double penalty() const { return penalty_; }
 

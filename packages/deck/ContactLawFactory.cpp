@@ -3,6 +3,8 @@
 
 #include <functional>
 
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
 #include "common/Error.hpp"
 #include "common/Registry.hpp"
 #include "deck/ParameterValidation.hpp"
@@ -15,6 +17,12 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 
 // ---- Penalty Coulomb: penalty normal law (eq. 16) and Coulomb friction by return mapping (eq. 17–23).
+
+// The values of "Enforcement", in the order of ContactLawParameters::Enforcement.
+const std::vector<std::string>& enforcementNames() {
+  static const std::vector<std::string> names = {"Penalty", "Augmented Lagrangian"};
+  return names;
+}
 
 RCP<ParameterList> penaltyCoulombParameters() {
   auto p = rcp(new ParameterList("Penalty Coulomb"));
@@ -34,6 +42,22 @@ RCP<ParameterList> penaltyCoulombParameters() {
              "slave sides at the node): "
              "the stick penalty is ε_T = μ|t_N|/(Slip Tolerance × L), so nearly unloaded nodes keep a finite stick "
              "range (as Abaqus' SLIP TOLERANCE); 0 = the paper's constant Tangential Penalty");
+  setChoice(*p, "Enforcement", "Penalty", enforcementNames(),
+            "Penalty: the penetration |t_N|/ε_N and the elastic slip of eq. (16)–(17) stay in the answer. Augmented "
+            "Lagrangian: multipliers λ_N, λ_T added to the penalty tractions, t_N = min(0, λ_N + ε_N g_N), t_T "
+            "return-mapped from λ_T + ε_T Δg_T, and updated to the converged tractions at the end of the increment "
+            "(Uzawa) until Penetration Tolerance and Elastic Slip Tolerance hold, the increment solved again each "
+            "time (docs/theory-contact.md §15)");
+  setBounded(*p, "Penetration Tolerance", 1e-3, 0.0, 1.0,
+             "Augmented Lagrangian: the largest penetration −g_N an increment may end with, as a fraction of the "
+             "slave facet length L (0 = update until Max Augmentations)");
+  setBounded(*p, "Elastic Slip Tolerance", 1e-4, 0.0, 1.0,
+             "Augmented Lagrangian: the largest elastic slip ‖t_T − λ_T‖/ε_T of a sticking node in an increment, as "
+             "a fraction of the slave facet length L (0 = update until Max Augmentations)");
+  p->set("Max Augmentations", 10,
+         "Augmented Lagrangian: the most multiplier updates per increment ([0, 1000]); an increment that still "
+         "misses a tolerance then is accepted and the run says so once per interface",
+         rcp(new Teuchos::EnhancedNumberValidator<int>(0, 1000)));
   return p;
 }
 
@@ -43,6 +67,12 @@ contact::ContactLawParameters createPenaltyCoulomb(const ParameterList& list, co
   law.tangentialPenalty = list.get<double>("Tangential Penalty");
   law.frictionCoefficient = list.get<double>("Friction Coefficient");
   law.slipTolerance = list.get<double>("Slip Tolerance");
+  law.enforcement = list.get<std::string>("Enforcement") == enforcementNames().back()
+                        ? contact::ContactLawParameters::Enforcement::AugmentedLagrangian
+                        : contact::ContactLawParameters::Enforcement::Penalty;
+  law.penetrationTolerance = list.get<double>("Penetration Tolerance");
+  law.elasticSlipTolerance = list.get<double>("Elastic Slip Tolerance");
+  law.maxAugmentations = list.get<int>("Max Augmentations");
   // Normal Penalty 0: automatic, set from the elements under the slave side (deck/AutomaticPenalty.hpp);
   // a constant stick penalty left out is the normal one (set there too when that is automatic).
   if (!law.isFrictionless() && !law.hasSlipTolerance() && law.tangentialPenalty == 0)

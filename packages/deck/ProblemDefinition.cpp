@@ -142,9 +142,12 @@ contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const
 }
 
 // What Discretization = Mortar does not do yet (docs/theory-contact.md, "Mortar"): one-line InputErrors.
-void requireMortarSupported(const ParameterList& list, int dimension, bool revolved, const std::string& where) {
+void requireMortarSupported(const ParameterList& list, int dimension, bool revolved, const contact::ContactLawParameters& law,
+                            const std::string& where) {
   const std::string what = where + "/Discretization: Mortar is implemented ";
   requireInput(dimension == 2, what + "in 2D only, this mesh is 3D; use Node To Segment");
+  requireInput(!law.isAugmented(), where + "/Enforcement: Augmented Lagrangian is implemented for Node To Segment only, not "
+                                          "with Discretization = Mortar; use Enforcement = Penalty");
   requireInput(!revolved, what + "for plane strain only, not for an axisymmetric problem; use Node To Segment");
   requireInput(!list.get<bool>("Two Pass"), what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
@@ -175,7 +178,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
   spec.mortar = list.get<std::string>("Discretization") == "Mortar";
-  if (spec.mortar) requireMortarSupported(list, mesh.dimension, revolved, where);
+  if (spec.mortar) requireMortarSupported(list, mesh.dimension, revolved, spec.law, where);
   mesh::ReplicatedSurface slaveFacets;
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveFacets = slave.facets;

@@ -3,6 +3,7 @@
 #include "contact/MortarInterface.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -313,10 +314,57 @@ std::vector<contact::SlaveNodeChange> ContactAssembly::committedIncrement() cons
 
 void ContactAssembly::commit() {
   for (auto& c : interfaces_) c->commit();
+  augmentations_.assign(interfaces_.size(), 0);
 }
 
 void ContactAssembly::rollback() {
   for (auto& c : interfaces_) c->rollback();
+  augmentations_.assign(interfaces_.size(), 0);
+}
+
+namespace {
+std::string shortText(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+}  // namespace
+
+bool ContactAssembly::augment(double lambda) {
+  const Comm& comm = *layout_.comm();
+  augmentations_.resize(interfaces_.size(), 0);
+  augmentationWarned_.resize(interfaces_.size(), 0);
+  bool updated = false;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    const auto& law = interfaces_[i]->spec().law;
+    if (!law.isAugmented()) continue;
+    const contact::AugmentationViolation local = interfaces_[i]->trialViolation();
+    double mine[2] = {local.penetration, local.elasticSlip}, all[2] = {0, 0};
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, mine, all);
+    const bool penetrates = all[0] > law.penetrationTolerance;
+    const bool slips = all[1] > law.elasticSlipTolerance;
+    if (!penetrates && !slips) continue;
+    if (augmentations_[i] < law.maxAugmentations) {
+      interfaces_[i]->augment();
+      ++augmentations_[i];
+      updated = true;
+      continue;
+    }
+    if (augmentationWarned_[i] || law.maxAugmentations == 0) continue;
+    augmentationWarned_[i] = 1;
+    if (comm.getRank() == 0) {
+      const std::string path = "Problem/Contact/" + interfaces_[i]->spec().name + "/";
+      const std::string missed =
+          penetrates ? "penetration " + shortText(all[0]) + " L > " + path + "Penetration Tolerance " + shortText(law.penetrationTolerance)
+                     : "elastic slip " + shortText(all[1]) + " L > " + path + "Elastic Slip Tolerance " + shortText(law.elasticSlipTolerance);
+      std::fprintf(stderr,
+                   "contessa: warning: contact interface '%s': %s after Max Augmentations = %d at load factor %s "
+                   "(increment accepted; said once: raise Max Augmentations or the Normal Penalty)\n",
+                   interfaces_[i]->spec().label().c_str(), missed.c_str(), law.maxAugmentations, shortText(lambda).c_str());
+      std::fflush(stderr);
+    }
+  }
+  return updated;
 }
 
 void ContactAssembly::saveState(StateRecord& contact, bool writer) const {

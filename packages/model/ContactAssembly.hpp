@@ -68,6 +68,11 @@ class ContactAssembly {
 
   void commit();
   void rollback();
+  /// Collective, at a converged iterate: the Uzawa update of every augmented-Lagrangian interface that misses
+  /// a tolerance (the largest violation over all ranks) and has updates left in the increment; true when
+  /// one was updated. An interface out of updates and still outside a tolerance is accepted, and rank 0
+  /// says so once per interface (`lambda`: the load factor, for that line).
+  bool augment(double lambda);
   /// This rank's part of the committed contact state, a group "interface_<i>" per interface: its slave
   /// nodes (table "slaves"; rank `writer` also the table "master").
   void saveState(StateRecord& contact, bool writer) const;
@@ -108,6 +113,8 @@ class ContactAssembly {
   std::vector<int> outsideByInterface_;  ///< per interface: the last stiffness pass met a pairing outside (all ranks)
   std::string outside_;                  ///< the first of them, in words
   bool frozen_ = false;
+  std::vector<int> augmentations_;  ///< per interface: multiplier updates in the current increment
+  std::vector<char> augmentationWarned_;  ///< per interface: the run has said it stopped short of a tolerance
   std::vector<double> frictionStart_, frictionChange_;  ///< per interface, of the current load step
   /// Sets each interface's friction coefficient at amplitude a where the load step changes it.
   void frictionAt(double a) const;

@@ -323,6 +323,20 @@ void ContactMechanicsModel::commitState() {
   passServesEvaluations_ = false;
 }
 
+bool ContactMechanicsModel::augmentContact() {
+  if (!contact_->augment(lastLoadFactor_)) return false;
+  // The multipliers changed: the next request evaluates the contact again.
+  passServesEvaluations_ = false;
+  passServesReactions_ = false;
+  return true;
+}
+
+bool ContactMechanicsModel::hasAugmentedContact() const {
+  for (const auto& spec : problem_.contacts)
+    if (spec.law.isAugmented()) return true;
+  return false;
+}
+
 void ContactMechanicsModel::rollbackState() {
   solids_->rollback();
   contact_->rollback();

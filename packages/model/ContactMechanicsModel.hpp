@@ -26,6 +26,7 @@
 #include "continuation/ContactEventSource.hpp"
 #include "deck/ProblemDefinition.hpp"
 #include "io/RestartFile.hpp"
+#include "model/ContactAugmentation.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/LoadStepping.hpp"
 #include "model/PostProcessing.hpp"
@@ -52,7 +53,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public IncrementalState,
                               public LoadStepping,
                               public continuation::ContactEventSource,
-                              public SolveDiagnostics {
+                              public SolveDiagnostics,
+                              public ContactAugmentation {
  public:
   /// The model of this rank's part of `problem`'s mesh (problem->mesh, made for `comm`'s rank and size;
   /// std::logic_error otherwise). The model shares the problem: the caller need not keep it alive.
@@ -74,6 +76,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   // increment, rolled back when an increment is abandoned.
   void commitState() override;
   void rollbackState() override;
+  // ContactAugmentation: the Uzawa update of the augmented-Lagrangian interfaces at a converged iterate.
+  bool augmentContact() override;
+  bool hasAugmentedContact() const override;
   /// This rank's part of the committed state for a restart file: the states of its elements (group
   /// "elements", a table per state size), its contact slave nodes (group "contact"; rank 0 also the master
   /// positions). Rows keyed by global ids: any rank count reads them.

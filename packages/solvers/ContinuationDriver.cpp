@@ -189,6 +189,8 @@ ContinuationDriver::StepOutcome ContinuationDriver::runStep(const StepStart& sta
     ResumableStepper stepper(globalData, group, tests->test(), params);
     bookkeeper->setStepper(&stepper);
     relay->setStepper(&stepper);
+    tests->enableAugmentation(model_.augmentation,
+                              [&stepper]() -> NOX::Abstract::Group& { return stepper.solverGroup(); });
     LocaResumePoint locaPoint;
     if (resume != nullptr) {
       locaPoint = locaResumePoint(*resume, loca.sublist("Predictor").get<std::string>("Method") == "Secant");

@@ -1,6 +1,7 @@
 #include "solvers/NewtonStatusTests.hpp"
 
 #include <NOX_Abstract_Group.H>
+#include <NOX_Abstract_Vector.H>
 #include <NOX_Solver_Generic.H>
 
 #include "solvers/IterativeSolveMonitor.hpp"
@@ -47,7 +48,10 @@ NOX::StatusTest::StatusType AcceptedConvergenceTest::checkStatus(const NOX::Solv
   status_ = converged_->checkStatus(solver, type);
   if (status_ != NOX::StatusTest::Converged) return status_;
   rejection_ = reject_();
-  if (!rejection_.empty()) status_ = NOX::StatusTest::Failed;
+  if (!rejection_.empty())
+    status_ = NOX::StatusTest::Failed;
+  else if (solveAgain_ && solveAgain_(solver.getNumIterations()))
+    status_ = NOX::StatusTest::Unconverged;
   return status_;
 }
 
@@ -57,6 +61,19 @@ std::ostream& AcceptedConvergenceTest::print(std::ostream& os, int indent) const
     for (int i = 0; i < indent; ++i) os << ' ';
     os << status_ << "converged state rejected: " << rejection_ << "\n";
   }
+  return os;
+}
+
+NOX::StatusTest::StatusType IterationLimit::checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) {
+  if (solver.getNumIterations() == 0) start_ = 0;  // a new solve
+  counted_ = solver.getNumIterations() - start_;
+  status_ = counted_ >= max_ ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
+  return status_;
+}
+
+std::ostream& IterationLimit::print(std::ostream& os, int indent) const {
+  for (int i = 0; i < indent; ++i) os << ' ';
+  os << status_ << "Newton iterations = " << counted_ << " < " << max_ << " (since the start or the last multiplier update)\n";
   return os;
 }
 
@@ -80,13 +97,28 @@ NewtonStatusTests::NewtonStatusTests(const model::SolveDiagnostics& diagnostics,
                                                        redoRequested_ = !why.empty();
                                                      }
                                                      return why;
-                                                   }))),
-      maxIters_(rcp(new NOX::StatusTest::MaxIters(maxIterations))),
+                                                   },
+                                                   [this](int iteration) { return augment(iteration); }))),
+      maxIters_(rcp(new IterationLimit(maxIterations))),
       combo_(rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR))) {
   combo_->addStatusTest(finite_);
   if (!before_.is_null()) combo_->addStatusTest(before_);
   combo_->addStatusTest(convergence_);
   combo_->addStatusTest(maxIters_);
+}
+
+bool NewtonStatusTests::augment(int iteration) {
+  if (augmentation_ == nullptr || !augmentation_->augmentContact()) return false;
+  ++augmentations_;
+  maxIters_->restartAt(iteration);
+  // The one status test that changes the group: the converged iterate is the start of a new problem at the
+  // same load factor (new multipliers), so its f is computed again before the next Newton direction. The
+  // group's f and Jacobian are invalidated as ContactBetaStepControl::iterateSet does it.
+  NOX::Abstract::Group& group = group_();
+  const auto x = group.getX().clone(NOX::DeepCopy);
+  group.setX(*x);
+  group.computeF();
+  return true;
 }
 
 void NewtonStatusTests::startSolve() {
@@ -111,7 +143,7 @@ SolveFailure NewtonStatusTests::diagnose(const NOX::Solver::Generic& solver, con
   if (!before_.is_null() && before_->getStatus() == NOX::StatusTest::Failed)
     return {Kind::StepCorrection, "stopped for " + stepControl_->correctionName()};
   if (maxIters_->getStatus() == NOX::StatusTest::Failed) {
-    const int n = solver.getNumIterations();
+    const int n = maxIters_->counted();
     return {Kind::NewtonIterations, "Newton did not converge in " + std::to_string(n) + (n == 1 ? " iteration" : " iterations") +
                                         " (last ||f|| = " + shortNumber(solver.getSolutionGroup().getNormF()) + ")"};
   }

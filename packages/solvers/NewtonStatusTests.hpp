@@ -7,7 +7,8 @@
 //      (StepControl::correctionTest: Contact Beta's Restart test);
 //   3. the convergence test, whose converged state must also be acceptable: a state in which a slave
 //      node passed through its master surface (contact tunnelling) fails the solve instead;
-//   4. MaxIters.
+//   4. the iteration limit (IterationLimit: Maximum Iterations per solve, counted again after each
+//      multiplier update of the augmented Lagrangian).
 // When a solve fails, diagnose() names the reason for the one-line stop message: the test that failed,
 // the element that made the residual NaN, the linear solver's failure (a singular stiffness and its free
 // direction), the tunnelling node.
@@ -20,9 +21,14 @@
 #include <NOX_StatusTest_MaxIters.H>
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 
+#include "model/ContactAugmentation.hpp"
 #include "model/SolveDiagnostics.hpp"
 #include "solvers/MessageText.hpp"
 #include "solvers/StepControl.hpp"
+
+namespace NOX::Abstract {
+class Group;
+}
 
 namespace contessa::solvers {
 
@@ -46,8 +52,11 @@ struct SolveFailure {
 /// state fails the solve, so the continuation cuts the step back.
 class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
  public:
-  AcceptedConvergenceTest(Teuchos::RCP<NOX::StatusTest::Generic> converged, std::function<std::string()> reject)
-      : converged_(std::move(converged)), reject_(std::move(reject)) {}
+  /// `solveAgain(iteration)` (may be empty), asked at an accepted state: true keeps the solve going at this
+  /// load factor (the augmented Lagrangian's multipliers were updated and f computed again with them).
+  AcceptedConvergenceTest(Teuchos::RCP<NOX::StatusTest::Generic> converged, std::function<std::string()> reject,
+                          std::function<bool(int)> solveAgain = {})
+      : converged_(std::move(converged)), reject_(std::move(reject)), solveAgain_(std::move(solveAgain)) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType type) override;
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& os, int indent) const override;
@@ -57,7 +66,27 @@ class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
  private:
   Teuchos::RCP<NOX::StatusTest::Generic> converged_;
   std::function<std::string()> reject_;
+  std::function<bool(int)> solveAgain_;
   std::string rejection_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+/// Maximum Iterations of one Newton solve, counted from its start or from the last multiplier update of the
+/// augmented Lagrangian (each update starts a new problem at the same load factor; NOX's MaxIters would
+/// count the iterations of every update together).
+class IterationLimit : public NOX::StatusTest::Generic {
+ public:
+  explicit IterationLimit(int maxIterations) : max_(maxIterations) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType type) override;
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& os, int indent) const override;
+  /// The solve starts again from iteration `iteration` (a multiplier update there).
+  void restartAt(int iteration) { start_ = iteration; }
+  /// The iterations counted at the last check.
+  int counted() const { return counted_; }
+
+ private:
+  int max_, start_ = 0, counted_ = 0;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -78,6 +107,16 @@ class NewtonStatusTests {
   NewtonStatusTests& operator=(const NewtonStatusTests&) = delete;
 
   Teuchos::RCP<NOX::StatusTest::Generic> test() const { return combo_; }
+  /// The augmented Lagrangian (docs/theory-contact.md §15): at an accepted state, `augmentation` may update
+  /// the contact multipliers; the solve then goes on at the same load factor from `group()` (the group the
+  /// solver iterates on, whose f is computed again with the new multipliers), so an increment's Newton
+  /// iterations include its augmentations and Contact Beta judges its final state. Both outlive the tests.
+  void enableAugmentation(model::ContactAugmentation* augmentation, std::function<NOX::Abstract::Group&()> group) {
+    augmentation_ = augmentation;
+    group_ = std::move(group);
+  }
+  /// Multiplier updates in the solves so far.
+  int augmentations() const { return augmentations_; }
 
   /// Call when a solve starts (remembers the linear solver's failure count).
   void startSolve();
@@ -95,11 +134,16 @@ class NewtonStatusTests {
   Teuchos::RCP<NOX::StatusTest::FiniteValue> finite_;
   Teuchos::RCP<NOX::StatusTest::Generic> before_;
   Teuchos::RCP<AcceptedConvergenceTest> convergence_;
-  Teuchos::RCP<NOX::StatusTest::MaxIters> maxIters_;
+  Teuchos::RCP<IterationLimit> maxIters_;
   Teuchos::RCP<NOX::StatusTest::Combo> combo_;
   long linearFailuresAtStart_ = 0;
   long iterativeFailuresAtStart_ = 0;  ///< iterativeSolveLog().failures at startSolve()
   bool redoRequested_ = false;  ///< the last rejection was the step control's
+  model::ContactAugmentation* augmentation_ = nullptr;
+  std::function<NOX::Abstract::Group&()> group_;
+  int augmentations_ = 0;
+  /// At an accepted state: updates the multipliers and recomputes f when the augmentation asks for it.
+  bool augment(int iteration);
 };
 
 }  // namespace contessa::solvers

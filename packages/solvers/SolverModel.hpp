@@ -7,6 +7,7 @@
 #include <Thyra_ModelEvaluator.hpp>
 
 #include "continuation/ContactEventSource.hpp"
+#include "model/ContactAugmentation.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/LoadStepping.hpp"
 #include "model/SolveDiagnostics.hpp"
@@ -20,10 +21,11 @@ struct SolverModel {
   const model::SolveDiagnostics* diagnostics = nullptr;
   model::LoadStepping* loadStepping = nullptr;  ///< the load steps (continuation::LoadSchedule)
   int dimension = 0;  ///< displacement components per node (the restart file's node table)
+  model::ContactAugmentation* augmentation = nullptr;  ///< the augmented Lagrangian's multiplier updates
 
   template <class Model>
   static SolverModel of(const Teuchos::RCP<Model>& model) {
-    return {model, model.get(), model.get(), model.get(), model.get(), model->dimension()};
+    return {model, model.get(), model.get(), model.get(), model.get(), model->dimension(), model.get()};
   }
 };
 

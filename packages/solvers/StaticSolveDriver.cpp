@@ -10,6 +10,7 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
+#include "common/Error.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/NewtonCounter.hpp"
@@ -59,6 +60,10 @@ std::string failureReason(SolveFailure failure, NewtonStatusTests& tests, const 
 RunSummary solveStatic(const SolverModel& model, const Teuchos::ParameterList& piro,
                        IncrementObserver& observer, const RCP<NOX::Observer>& iterationObserver) {
   const auto start = std::chrono::steady_clock::now();
+  // The single solve has no place to update multipliers and solve again (docs/theory-contact.md §15).
+  requireInput(model.augmentation == nullptr || !model.augmentation->hasAugmentedContact(),
+               "Piro/Solver Type: NOX (one solve from load factor 0 to 1) does not update the multipliers of "
+               "Enforcement = Augmented Lagrangian; use LOCA");
   const auto& deckNox = piro.sublist("NOX");
   const auto& deckTests = deckNox.sublist("Status Tests");
   // The convergence test of a single solve is the absolute residual tolerance (a relative one has no

@@ -1,0 +1,179 @@
+// The augmented Lagrangian of the node-to-facet element (docs/theory-contact.md §15): the normal traction
+// min(0, λ_N + ε_N g_N), the Coulomb trial from λ_T, the multipliers handed back in the trial history, and
+// the consistent tangent against central differences with nonzero multipliers (2D segment, 3D face), in
+// normal contact, stick, slip and with the slip tolerance, at a penetration and at a positive gap still
+// held by λ_N. Also the history store: a Uzawa update changes the committed multipliers only, a cut-back
+// rolls them back, a commit keeps the converged tractions as the next increment's multipliers.
+#include "ElementTestTools.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace cc = contessa::contact;
+namespace ct = contessa::contact::testing;
+using cc::ContactStatus;
+using cc::Vector;
+
+namespace {
+
+using Law = cc::ContactLawParameters;
+
+Law augmented(double normalPenalty, double tangentialPenalty, double mu, double slipTolerance = 0.0) {
+  Law law{};
+  law.normalPenalty = normalPenalty;
+  law.tangentialPenalty = tangentialPenalty;
+  law.frictionCoefficient = mu;
+  law.slipTolerance = slipTolerance;
+  law.enforcement = Law::Enforcement::AugmentedLagrangian;
+  law.penetrationTolerance = 1e-3;
+  law.elasticSlipTolerance = 1e-3;
+  law.maxAugmentations = 10;
+  return law;
+}
+
+struct Case {
+  const char* name;
+  Law law;
+  ContactStatus expected;
+};
+
+// ε_N = 1e3, ε_T = 5e2 (or μ|t_N|/(s L) with s = 1 or 0.005, L = 4); λ_N = −40: active up to g_N = 0.04.
+const Case kCases[] = {
+    {"normal_only", augmented(1e3, 0.0, 0.0), ContactStatus::Slip},
+    {"stick", augmented(1e3, 5e2, 100.0), ContactStatus::Stick},
+    {"slip", augmented(1e3, 5e2, 0.2), ContactStatus::Slip},
+    {"stick_slip_tolerance", augmented(1e3, 0.0, 100.0, 1.0), ContactStatus::Stick},
+    {"slip_slip_tolerance", augmented(1e3, 0.0, 0.2, 0.005), ContactStatus::Slip},
+};
+constexpr double kNormalMultiplier = -40.0;
+constexpr double kFacetLength = 4.0;
+
+template <int S>
+cc::ContactHistory<S> withMultipliers(int facet, Vector<S> xi, Vector<S> traction, Vector<S> multiplier) {
+  auto h = ct::committedHistory<S>(facet, xi, traction, ContactStatus::Stick);
+  h.normalMultiplier = kNormalMultiplier;
+  h.tangentialMultiplier = multiplier;
+  return h;
+}
+
+// Slave node on the straight segment (0,0) → (2,0.4) at parameter ξ, at signed distance g along n̄.
+cc::NodeToFacetGeometry<cc::Line2Facet> segmentSlave(double xi, double gap) {
+  const Vector<2> a{0.0, 0.0}, b{2.0, 0.4};
+  const auto p = cc::SegmentProjection2D::evaluateAt({0.0, 0.0}, {{a, b}}, {xi});
+  return {cc::add(p.position, cc::scaled(gap, p.normal)), {{a, b}}};
+}
+
+// Slave node over the warped 4-node face at surface point ξ, at signed distance g along n̄.
+using Face = std::array<Vector<3>, 4>;
+const Face kWarped{{{0.0, 0.0, 0.0}, {2.0, 0.1, 0.4}, {2.2, 2.0, -0.1}, {-0.1, 1.9, 0.3}}};
+cc::NodeToFacetGeometry<cc::Quad4Facet> faceSlave(Vector<2> xi, double gap) {
+  const auto p = cc::FaceProjection3D::evaluateAt({0.0, 0.0, 0.0}, kWarped, xi);
+  return {cc::add(p.position, cc::scaled(gap, p.normal)), kWarped};
+}
+
+template <class Facet, class Geometry, class Committed>
+void checkCase(const Case& c, const Geometry& g, const Committed& committed, double gap, ct::TangentCheck& check,
+               const std::string& label) {
+  const cc::NodeToFacetContact<Facet> element(c.law);
+  const auto r = element.evaluate(g, committed.segment, committed, kFacetLength);
+  ASSERT_EQ(r.status, c.expected) << label;
+  // eq. (15.1): t_N = λ_N + ε_N g_N, and the trial history hands the tractions to the next update.
+  EXPECT_NEAR(r.normalTraction, kNormalMultiplier + 1e3 * gap, 1e-9) << label;
+  EXPECT_EQ(r.trial.normalMultiplier, r.normalTraction) << label;
+  EXPECT_EQ(r.trial.tangentialMultiplier, r.tangentialTraction) << label;
+  const double h = 1e-7;
+  check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, committed.segment, committed, h, kFacetLength),
+                    label);
+}
+
+}  // namespace
+
+TEST(AugmentedNormalLaw, TractionIsTheMultiplierPlusThePenaltyGapWhileCompressive) {
+  const cc::PenaltyNormalLaw law(1e3);
+  EXPECT_EQ(law.traction(-0.01), -10.0);  // λ_N = 0: the penalty law, eq. (16)
+  EXPECT_FALSE(law.isActive(0.01));
+  EXPECT_TRUE(law.isActive(0.01, -40.0));  // held at a positive gap by its multiplier
+  EXPECT_NEAR(law.traction(0.01, -40.0), -30.0, 1e-12);
+  EXPECT_EQ(law.tractionDerivative(0.01, -40.0), 1e3);
+  EXPECT_FALSE(law.isActive(0.05, -40.0));  // λ_N + ε_N g_N > 0: open
+  EXPECT_EQ(law.traction(0.05, -40.0), 0.0);
+}
+
+TEST(AugmentedLagrangianElement, TrialTractionStartsFromTheMultiplierNotTheCommittedTraction) {
+  // Stick on the segment: t^trial = λ_T + ε_T ā_11 Δξ (eq. 15.2), whatever t_T,n says.
+  const cc::NodeToFacetContact<cc::Line2Facet> element(augmented(1e3, 5e2, 100.0));
+  const double gap = -0.01, xi = 0.1, xiN = 0.05;
+  const auto committed = withMultipliers<1>(3, {xiN}, {7.0}, {2.5});
+  const auto r = element.evaluate(segmentSlave(xi, gap), 3, committed, kFacetLength);
+  ASSERT_EQ(r.status, ContactStatus::Stick);
+  const double metric = r.projection.metric(0, 0);
+  EXPECT_NEAR(r.tangentialTraction[0], 2.5 + 5e2 * metric * (xi - xiN), 1e-9);
+  // The penalty law of the same parameters starts from t_T,n and ignores the multipliers.
+  Law penalty = augmented(1e3, 5e2, 100.0);
+  penalty.enforcement = Law::Enforcement::Penalty;
+  const auto p = cc::NodeToFacetContact<cc::Line2Facet>(penalty).evaluate(segmentSlave(xi, gap), 3, committed, kFacetLength);
+  EXPECT_NEAR(p.tangentialTraction[0], 7.0 + 5e2 * metric * (xi - xiN), 1e-9);
+  EXPECT_NEAR(p.normalTraction, 1e3 * gap, 1e-12);
+  EXPECT_EQ(p.trial.normalMultiplier, 0.0);  // the penalty law keeps no multipliers
+  EXPECT_EQ(p.trial.tangentialMultiplier[0], 0.0);
+}
+
+TEST(AugmentedLagrangianElement, SegmentTangentMatchesCentralDifferencesWithMultipliers) {
+  ct::TangentCheck check{ct::kFdTolerance};
+  for (const Case& c : kCases)
+    for (const double gap : {-0.02, 0.015}) {  // penetrating, and open but held by λ_N
+      const auto committed = withMultipliers<1>(3, {0.02}, {9.0}, {1.5});
+      checkCase<cc::Line2Facet>(c, segmentSlave(0.3, gap), committed, gap, check,
+                                std::string("Line2 ") + c.name + " g_N = " + std::to_string(gap));
+    }
+  check.printWorst("Line2 augmented Lagrangian");
+}
+
+TEST(AugmentedLagrangianElement, FaceTangentMatchesCentralDifferencesWithMultipliers) {
+  ct::TangentCheck check{ct::kFdTolerance};
+  for (const Case& c : kCases)
+    for (const double gap : {-0.02, 0.015}) {
+      const auto committed = withMultipliers<2>(7, {-0.38, 0.31}, {4.0, -2.0}, {1.5, -0.8});
+      checkCase<cc::Quad4Facet>(c, faceSlave({-0.3, 0.4}, gap), committed, gap, check,
+                                std::string("Quad4 ") + c.name + " g_N = " + std::to_string(gap));
+    }
+  check.printWorst("Quad4 augmented Lagrangian");
+}
+
+TEST(AugmentedLagrangianHistory, UzawaUpdateIsRolledBackByACutBackAndCarriedByACommit) {
+  cc::ContactHistoryStore<1> store(2);
+  cc::ContactHistory<1> trial;
+  trial.status = ContactStatus::Stick;
+  trial.segment = 0;
+  trial.normalMultiplier = -5.0;  // the element's t_N and t_T: the next update's multipliers
+  trial.tangentialMultiplier = {1.0};
+  trial.tangentialTraction = {1.0};
+  store.setTrial(0, trial);
+  store.augment();
+  EXPECT_EQ(store.committed(0).normalMultiplier, -5.0);
+  EXPECT_EQ(store.committed(0).tangentialMultiplier[0], 1.0);
+  EXPECT_EQ(store.committed(0).status, ContactStatus::Open);  // only the multipliers move within the increment
+  store.rollback();
+  EXPECT_EQ(store.committed(0).normalMultiplier, 0.0);
+  EXPECT_EQ(store.trial(0).normalMultiplier, 0.0);
+  // Update, converge (t_N = −6 with λ_N = −5), commit: λ_N stays the one used, λ_T becomes t_T.
+  store.setTrial(0, trial);
+  store.augment();
+  trial.normalMultiplier = -6.0;
+  trial.tangentialMultiplier = {1.5};
+  store.setTrial(0, trial);
+  store.commit();
+  EXPECT_EQ(store.committed(0).normalMultiplier, -5.0);
+  EXPECT_EQ(store.committed(0).tangentialMultiplier[0], 1.5);
+  store.setTrial(0, trial);
+  store.augment();
+  EXPECT_EQ(store.committed(0).normalMultiplier, -6.0);
+  store.rollback();  // back to the commit's multipliers, not to zero
+  EXPECT_EQ(store.committed(0).normalMultiplier, -5.0);
+  // A node that opened carries no multiplier into the next increment.
+  cc::ContactHistory<1> open;
+  store.setTrial(0, open);
+  store.commit();
+  EXPECT_EQ(store.committed(0).normalMultiplier, 0.0);
+}
