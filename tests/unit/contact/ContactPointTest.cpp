@@ -19,12 +19,8 @@ using cc::Vector;
 
 namespace {
 
-struct Law {
-  const char* name;
-  cc::ContactLawParameters parameters;
-};
-// ε_N = 1e3, ε_T = 5e2; stick with μ = 100, slip with μ = 0.2 (the committed tractions below).
-const Law kLaws[] = {{"frictionless", {1e3, 0.0, 0.0}}, {"stick", {1e3, 5e2, 100.0}}, {"slip", {1e3, 5e2, 0.2}}};
+using ct::kLaws;
+using ct::Law;
 
 template <class Facet>
 double checkTangent(const cc::NodeToFacetContact<Facet>& element, const cc::NodeToFacetGeometry<Facet>& g,

@@ -10,9 +10,32 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace contessa::contact::testing {
+
+/// The three contact laws the element tests run each case with: ε_N = 1e3, ε_T = 5e2; stick with μ = 100,
+/// slip with μ = 0.2 (against the committed tractions each test sets).
+struct Law {
+  const char* name;
+  ContactLawParameters parameters;
+};
+inline const Law kLaws[] = {{"frictionless", {1e3, 0.0, 0.0}}, {"stick", {1e3, 5e2, 100.0}}, {"slip", {1e3, 5e2, 0.2}}};
+
+/// The facet types beyond Line2 and Quad4, for typed tests, and their names in the tests' names.
+using NewFacetTypes = ::testing::Types<Line3Facet, Tri3Facet, Tri6Facet, Quad8Facet, Quad9Facet>;
+struct FacetTypeName {
+  template <class T>
+  static std::string GetName(int) {
+    if (std::is_same_v<T, Line3Facet>) return "Line3";
+    if (std::is_same_v<T, Tri3Facet>) return "Tri3";
+    if (std::is_same_v<T, Tri6Facet>) return "Tri6";
+    if (std::is_same_v<T, Quad8Facet>) return "Quad8";
+    return "Quad9";
+  }
+};
+
 
 /// The central-difference step of the tangent checks, and the relative difference they accept.
 constexpr double kFdStep = 1e-6;

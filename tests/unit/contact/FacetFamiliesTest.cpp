@@ -81,19 +81,7 @@ std::array<typename Facet::Point, Facet::kNodes> curvedFacet(double warp) {
 template <class Facet>
 class FacetFamilies : public ::testing::Test {};
 
-using FacetTypes = ::testing::Types<cc::Line3Facet, cc::Tri3Facet, cc::Tri6Facet, cc::Quad8Facet, cc::Quad9Facet>;
-
-struct FacetName {
-  template <class T>
-  static std::string GetName(int) {
-    if (std::is_same_v<T, cc::Line3Facet>) return "Line3";
-    if (std::is_same_v<T, cc::Tri3Facet>) return "Tri3";
-    if (std::is_same_v<T, cc::Tri6Facet>) return "Tri6";
-    if (std::is_same_v<T, cc::Quad8Facet>) return "Quad8";
-    return "Quad9";
-  }
-};
-TYPED_TEST_SUITE(FacetFamilies, FacetTypes, FacetName);
+TYPED_TEST_SUITE(FacetFamilies, ct::NewFacetTypes, ct::FacetTypeName);
 
 /// Interior points of the parent domain (inside the unit triangle for the triangular facets).
 template <class Facet>

@@ -29,12 +29,8 @@ using cc::Vector;
 
 namespace {
 
-struct Law {
-  const char* name;
-  cc::ContactLawParameters parameters;
-};
-// ε_N = 1e3, ε_T = 5e2; stick with μ = 100, slip with μ = 0.2 (against the committed tractions below).
-const Law kLaws[] = {{"frictionless", {1e3, 0.0, 0.0}}, {"stick", {1e3, 5e2, 100.0}}, {"slip", {1e3, 5e2, 0.2}}};
+using ct::kLaws;
+using ct::Law;
 constexpr double kReach = 0.05;
 
 /// A skewed facet: node i at an affine image of its parent coordinates, lifted out of plane by `warp` (a
@@ -71,18 +67,7 @@ std::vector<Vector<Facet::kSurfaceDim>> pastBoundary(double delta) {
 template <class Facet>
 class NewFacetContact : public ::testing::Test {};
 
-using FacetTypes = ::testing::Types<cc::Line3Facet, cc::Tri3Facet, cc::Tri6Facet, cc::Quad8Facet, cc::Quad9Facet>;
-struct FacetName {
-  template <class T>
-  static std::string GetName(int) {
-    if (std::is_same_v<T, cc::Line3Facet>) return "Line3";
-    if (std::is_same_v<T, cc::Tri3Facet>) return "Tri3";
-    if (std::is_same_v<T, cc::Tri6Facet>) return "Tri6";
-    if (std::is_same_v<T, cc::Quad8Facet>) return "Quad8";
-    return "Quad9";
-  }
-};
-TYPED_TEST_SUITE(NewFacetContact, FacetTypes, FacetName);
+TYPED_TEST_SUITE(NewFacetContact, ct::NewFacetTypes, ct::FacetTypeName);
 
 }  // namespace
 
