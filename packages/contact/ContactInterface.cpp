@@ -572,18 +572,9 @@ void slaveNodeFields(History& h, Change& c, Output& o, Position& x, Fields& fiel
   field("slip", h.accumulatedSlip);
   field("normal_multiplier", h.normalMultiplier);  // augmented Lagrangian (0 with the penalty law)
   field("tangential_multiplier", h.tangentialMultiplier);
-  field("committed_gap", c.committedGap, StateValues::AnyDouble);  // +inf: no master facet in reach
-  field("trial_gap", c.trialGap, StateValues::AnyDouble);
-  field("committed_status", c.committedStatus);
-  field("trial_status", c.trialStatus);
-  field("committed_indicator", c.committedIndicator, StateValues::AnyDouble);  // NaN unless in frictional contact
-  field("trial_indicator", c.trialIndicator, StateValues::AnyDouble);
-  field("slip_reversed", c.slipReversed);
+  slaveChangeFields(c, field);
   field("trial_facet", c.trialFacet);
-  field("pressure", o.pressure);
-  field("gap", o.gap, StateValues::AnyDouble);
-  field("output_status", o.status);
-  field("output_slip", o.slip);
+  slaveOutputFields(o, field);
   field("position", x);
 }
 

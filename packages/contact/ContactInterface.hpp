@@ -61,6 +61,27 @@ struct TunnellingNode {
   double time = 0;        ///< where along the increment, 0 (committed) … 1 (trial)
 };
 
+/// The restart fields of a slave node's change over the last increment and of its output, which the
+/// node-to-facet and the mortar interfaces both keep (their saveCommittedSlaves / restoreSlaves: const parts
+/// when saving, copies to put back when loading).
+template <class Change, class Fields>
+void slaveChangeFields(Change& c, Fields& field) {
+  field("committed_gap", c.committedGap, StateValues::AnyDouble);  // +inf: no master in reach
+  field("trial_gap", c.trialGap, StateValues::AnyDouble);
+  field("committed_status", c.committedStatus);
+  field("trial_status", c.trialStatus);
+  field("committed_indicator", c.committedIndicator, StateValues::AnyDouble);  // NaN unless in frictional contact
+  field("trial_indicator", c.trialIndicator, StateValues::AnyDouble);
+  field("slip_reversed", c.slipReversed);
+}
+template <class Output, class Fields>
+void slaveOutputFields(Output& o, Fields& field) {
+  field("pressure", o.pressure);
+  field("gap", o.gap, StateValues::AnyDouble);
+  field("output_status", o.status);
+  field("output_slip", o.slip);
+}
+
 /// One interface as the model sees it, whatever the dimension.
 class ContactInterfaceBase {
  public:

@@ -475,17 +475,8 @@ namespace {
 // start, eq. M9).
 template <class Change, class Output, class Fields>
 void mortarSlaveFields(Change& c, Output& o, double& traction, Vector<2>& position, Fields& field) {
-  field("committed_gap", c.committedGap, StateValues::AnyDouble);  // +inf: no master segment met
-  field("trial_gap", c.trialGap, StateValues::AnyDouble);
-  field("committed_status", c.committedStatus);
-  field("trial_status", c.trialStatus);
-  field("committed_indicator", c.committedIndicator, StateValues::AnyDouble);  // NaN unless in frictional contact
-  field("trial_indicator", c.trialIndicator, StateValues::AnyDouble);
-  field("slip_reversed", c.slipReversed);
-  field("pressure", o.pressure);
-  field("gap", o.gap, StateValues::AnyDouble);
-  field("output_status", o.status);
-  field("output_slip", o.slip);
+  slaveChangeFields(c, field);
+  slaveOutputFields(o, field);
   field("tangential_traction", traction);
   field("position", position, StateValues::AnyDouble);
 }
