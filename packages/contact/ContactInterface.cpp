@@ -641,13 +641,9 @@ void ContactInterface<Facet>::restoreMaster(const StateRecord& table) {
   lastFacets_ = std::move(facets);
 }
 
-template class ContactInterface<Line2Facet>;
-template class ContactInterface<Quad4Facet>;
-template class ContactInterface<Line3Facet>;
-template class ContactInterface<Tri3Facet>;
-template class ContactInterface<Tri6Facet>;
-template class ContactInterface<Quad8Facet>;
-template class ContactInterface<Quad9Facet>;
+#define CONTESSA_INSTANTIATE_CONTACT_INTERFACE(F) template class ContactInterface<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_INSTANTIATE_CONTACT_INTERFACE)
+#undef CONTESSA_INSTANTIATE_CONTACT_INTERFACE
 
 std::unique_ptr<ContactInterfaceBase> makeContactInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
   // The master facets' type (MasterFacet.hpp), from the space dimension and their node count.

@@ -326,12 +326,8 @@ FacetSelection<Facet> FacetSelector<Facet>::select(const typename Facet::Point& 
     return selectOnFaces<Facet>(options_, slave, candidates, slaveSize);
 }
 
-template class FacetSelector<Line2Facet>;
-template class FacetSelector<Line3Facet>;
-template class FacetSelector<Tri3Facet>;
-template class FacetSelector<Quad4Facet>;
-template class FacetSelector<Tri6Facet>;
-template class FacetSelector<Quad8Facet>;
-template class FacetSelector<Quad9Facet>;
+#define CONTESSA_INSTANTIATE_FACET_SELECTOR(F) template class FacetSelector<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_INSTANTIATE_FACET_SELECTOR)
+#undef CONTESSA_INSTANTIATE_FACET_SELECTOR
 
 }  // namespace contessa::contact

@@ -95,12 +95,8 @@ class FacetSelector {
   FacetSelectorOptions options_;
 };
 
-extern template class FacetSelector<Line2Facet>;
-extern template class FacetSelector<Line3Facet>;
-extern template class FacetSelector<Tri3Facet>;
-extern template class FacetSelector<Quad4Facet>;
-extern template class FacetSelector<Tri6Facet>;
-extern template class FacetSelector<Quad8Facet>;
-extern template class FacetSelector<Quad9Facet>;
+#define CONTESSA_EXTERN_FACET_SELECTOR(F) extern template class FacetSelector<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_EXTERN_FACET_SELECTOR)
+#undef CONTESSA_EXTERN_FACET_SELECTOR
 
 }  // namespace contessa::contact

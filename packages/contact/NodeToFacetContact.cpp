@@ -523,13 +523,9 @@ FacetGapVariation<Facet> facetGapVariation(const NodeToFacetGeometry<Facet>& x) 
   return out;
 }
 
-template class NodeToFacetContact<Line2Facet>;
-template class NodeToFacetContact<Quad4Facet>;
-template class NodeToFacetContact<Line3Facet>;
-template class NodeToFacetContact<Tri3Facet>;
-template class NodeToFacetContact<Tri6Facet>;
-template class NodeToFacetContact<Quad8Facet>;
-template class NodeToFacetContact<Quad9Facet>;
+#define CONTESSA_INSTANTIATE_NODE_TO_FACET_CONTACT(F) template class NodeToFacetContact<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_INSTANTIATE_NODE_TO_FACET_CONTACT)
+#undef CONTESSA_INSTANTIATE_NODE_TO_FACET_CONTACT
 
 template FacetGapVariation<Line2Facet> facetGapVariation<Line2Facet>(const NodeToFacetGeometry<Line2Facet>&);
 template FacetGapVariation<Quad4Facet> facetGapVariation<Quad4Facet>(const NodeToFacetGeometry<Quad4Facet>&);

@@ -207,12 +207,8 @@ struct FacetGapVariation {
 template <class Facet>
 FacetGapVariation<Facet> facetGapVariation(const NodeToFacetGeometry<Facet>& x);
 
-extern template class NodeToFacetContact<Line2Facet>;
-extern template class NodeToFacetContact<Quad4Facet>;
-extern template class NodeToFacetContact<Line3Facet>;
-extern template class NodeToFacetContact<Tri3Facet>;
-extern template class NodeToFacetContact<Tri6Facet>;
-extern template class NodeToFacetContact<Quad8Facet>;
-extern template class NodeToFacetContact<Quad9Facet>;
+#define CONTESSA_EXTERN_NODE_TO_FACET_CONTACT(F) extern template class NodeToFacetContact<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_EXTERN_NODE_TO_FACET_CONTACT)
+#undef CONTESSA_EXTERN_NODE_TO_FACET_CONTACT
 
 }  // namespace contessa::contact

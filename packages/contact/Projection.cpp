@@ -199,12 +199,8 @@ ProjectionResult<Facet> Projection<Facet>::project(const Point& slave, const Nod
   return p;
 }
 
-template class Projection<Line2Facet>;
-template class Projection<Quad4Facet>;
-template class Projection<Line3Facet>;
-template class Projection<Tri3Facet>;
-template class Projection<Tri6Facet>;
-template class Projection<Quad8Facet>;
-template class Projection<Quad9Facet>;
+#define CONTESSA_INSTANTIATE_PROJECTION(F) template class Projection<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_INSTANTIATE_PROJECTION)
+#undef CONTESSA_INSTANTIATE_PROJECTION
 
 }  // namespace contessa::contact

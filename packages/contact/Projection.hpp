@@ -87,13 +87,9 @@ class Projection {
   ProjectionOptions options_;
 };
 
-extern template class Projection<Line2Facet>;
-extern template class Projection<Quad4Facet>;
-extern template class Projection<Line3Facet>;
-extern template class Projection<Tri3Facet>;
-extern template class Projection<Tri6Facet>;
-extern template class Projection<Quad8Facet>;
-extern template class Projection<Quad9Facet>;
+#define CONTESSA_EXTERN_PROJECTION(F) extern template class Projection<F>;
+CONTESSA_FOR_EACH_FACET(CONTESSA_EXTERN_PROJECTION)
+#undef CONTESSA_EXTERN_PROJECTION
 
 using SegmentProjection2D = Projection<Line2Facet>;
 using FaceProjection3D = Projection<Quad4Facet>;
