@@ -1,5 +1,6 @@
 #include "model/ContactAssembly.hpp"
 
+#include "common/NumberText.hpp"
 #include "contact/MortarInterface.hpp"
 
 #include <algorithm>
@@ -322,14 +323,6 @@ void ContactAssembly::rollback() {
   augmentations_.assign(interfaces_.size(), 0);
 }
 
-namespace {
-std::string shortText(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-}  // namespace
-
 bool ContactAssembly::augment(double lambda) {
   const Comm& comm = *layout_.comm();
   augmentations_.resize(interfaces_.size(), 0);
@@ -355,12 +348,12 @@ bool ContactAssembly::augment(double lambda) {
     if (comm.getRank() == 0) {
       const std::string path = "Problem/Contact/" + interfaces_[i]->spec().name + "/";
       const std::string missed =
-          penetrates ? "penetration " + shortText(all[0]) + " L > " + path + "Penetration Tolerance " + shortText(law.penetrationTolerance)
-                     : "elastic slip " + shortText(all[1]) + " L > " + path + "Elastic Slip Tolerance " + shortText(law.elasticSlipTolerance);
+          penetrates ? "penetration " + threeDigits(all[0]) + " L > " + path + "Penetration Tolerance " + threeDigits(law.penetrationTolerance)
+                     : "elastic slip " + threeDigits(all[1]) + " L > " + path + "Elastic Slip Tolerance " + threeDigits(law.elasticSlipTolerance);
       std::fprintf(stderr,
                    "contessa: warning: contact interface '%s': %s after Max Augmentations = %d at load factor %s "
                    "(increment accepted; said once: raise Max Augmentations or the Normal Penalty)\n",
-                   interfaces_[i]->spec().label().c_str(), missed.c_str(), law.maxAugmentations, shortText(lambda).c_str());
+                   interfaces_[i]->spec().label().c_str(), missed.c_str(), law.maxAugmentations, threeDigits(lambda).c_str());
       std::fflush(stderr);
     }
   }

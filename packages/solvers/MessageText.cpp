@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "common/NumberText.hpp"
+
 namespace contessa::solvers {
 
-std::string shortNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
+std::string shortNumber(double value) { return threeDigits(value); }
 
 std::string loadFactorText(double lambda) {
   char text[32];
