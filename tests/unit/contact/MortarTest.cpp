@@ -347,21 +347,7 @@ Assembled frictionalTrial(bool rigidMaster, const std::vector<double>& x, double
   auto interface = frictionalInterface(rigidMaster);
   assemble(*interface, unevenCoordinates(), 0.3);  // evaluates and commits
   if (stuck > 0.0) assemble(*interface, slid(stuck), 0.3 + 0.5 * stuck);
-  const int n = static_cast<int>(x.size());
-  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}};
-  interface->evaluate([&](GlobalIndex node, double* p) { p[0] = x[2 * node], p[1] = x[2 * node + 1]; }, lambda, true,
-                      [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
-                        for (int a = 0; a < m; ++a) {
-                          if (dofs[a] < 0) continue;
-                          out.residual[dofs[a]] += r[a];
-                          out.dLambda[dofs[a]] += drdl[a];
-                          for (int b = 0; b < m; ++b)
-                            if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
-                        }
-                      });
-  interface->commit();
-  out.states = interface->committedStates();
-  return out;
+  return assemble(*interface, x, lambda);  // the trial evaluation, then its commit
 }
 
 void expectFrictionalTangentIsTheCentralDifference(bool rigidMaster, double slide, ContactStatus expected,
