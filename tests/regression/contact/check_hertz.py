@@ -22,21 +22,13 @@ see docs/verification-contact.md):
   (the discrete edge smears the pressure over one element; measured 0.29 h_edge);
 - equilibrium: reaction_end_y = -contact_force_flat_y to 1e-8 relative.
 Exit 0 when every check holds."""
-import argparse
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import contact_results as cr  # noqa: E402
 
-parser = argparse.ArgumentParser()
-parser.add_argument("exo")
-parser.add_argument("history")
-parser.add_argument("--R", type=float, default=10.0)
-parser.add_argument("--E", type=float, default=1000.0)
-parser.add_argument("--nu", type=float, default=0.3)
-parser.add_argument("--p0-rtol", type=float, default=1e-3)
-parser.add_argument("--a-rtol", type=float, default=2e-3)
+parser = cr.hertz_parser(R=10.0, E=1000.0, p0_rtol=1e-3, a_rtol=2e-3)
 parser.add_argument("--profile-tol", type=float, default=2e-3)
 parser.add_argument("--sphere", action="store_true", help="axisymmetric sphere (Hertz for a sphere, P = force)")
 args = parser.parse_args()
@@ -63,8 +55,4 @@ checks = [
     ("equilibrium", f"reaction_end_y + contact_force_flat_y = {r['reaction_end_y'] + r['force_y']:.2e}",
      abs(r["reaction_end_y"] + r["force_y"]) <= 1e-8 * abs(r["force_y"]), "<= 1e-8 x force"),
 ]
-failed = 0
-for name, text, ok, tol in checks:
-    print(f"{'ok  ' if ok else 'FAIL'} {name}: {text} ({tol})")
-    failed += not ok
-sys.exit(1 if failed else 0)
+cr.exit_with_checks(checks)

@@ -4,8 +4,10 @@
 Used by the check_*.py scripts of this directory (CTest) and by docs/scripts/*_study.py (the studies
 behind docs/verification-contact.md), so the tests and the documented numbers come from the same code.
 Only numpy and netCDF4 (Debian's /usr/bin/python3)."""
+import argparse
 import csv
 import math
+import sys
 
 import netCDF4
 import numpy as np
@@ -25,6 +27,7 @@ class Results:
         self.ds = netCDF4.Dataset(path)
         self.x = np.asarray(self.ds.variables["coordx"][:], dtype=float)
         self.y = np.asarray(self.ds.variables["coordy"][:], dtype=float)
+        self.z = np.asarray(self.ds.variables["coordz"][:], dtype=float) if "coordz" in self.ds.variables else None
         self.times = np.asarray(self.ds.variables["time_whole"][:], dtype=float)
         self.nodal_names = _names(self.ds, "name_nod_var")
         self.node_set_names = _names(self.ds, "ns_names")
@@ -39,6 +42,45 @@ class Results:
         if name not in self.nodal_names:
             raise KeyError(f"{self.path}: no nodal variable '{name}' (have {self.nodal_names})")
         return np.asarray(self.ds.variables[f"vals_nod_var{self.nodal_names.index(name) + 1}"][step, :], dtype=float)
+
+
+def required_options(positional, texts=(), numbers=(), pairs=()):
+    """A check script's command line: the file `positional`, then options every call gives: `texts` as
+    strings, `numbers` as floats, `pairs` as two floats each (the parsed arguments)."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument(positional)
+    for name in texts:
+        parser.add_argument(name, required=True)
+    for name in numbers:
+        parser.add_argument(name, type=float, required=True)
+    for name in pairs:
+        parser.add_argument(name, type=float, nargs=2, required=True)
+    return parser.parse_args()
+
+
+def hertz_parser(R, E, p0_rtol, a_rtol):
+    """The Hertz checks' command line, EXO HISTORY and the body's radius, Young's modulus and Poisson's
+    ratio (0.3), with the default tolerances on the peak pressure and on the fitted contact half-width or
+    radius; a script adds its own options."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("exo")
+    parser.add_argument("history")
+    parser.add_argument("--R", type=float, default=R)
+    parser.add_argument("--E", type=float, default=E)
+    parser.add_argument("--nu", type=float, default=0.3)
+    parser.add_argument("--p0-rtol", type=float, default=p0_rtol)
+    parser.add_argument("--a-rtol", type=float, default=a_rtol)
+    return parser
+
+
+def exit_with_checks(checks):
+    """Prints each check (name, what was measured, whether it holds, the bound) as an ok or FAIL line and
+    exits 1 when one fails, 0 otherwise."""
+    failed = 0
+    for name, text, ok, tol in checks:
+        print(f"{'ok  ' if ok else 'FAIL'} {name}: {text} ({tol})")
+        failed += not ok
+    sys.exit(1 if failed else 0)
 
 
 def read_history(path):

@@ -19,49 +19,29 @@ displacement-driven values of Code_Aster's SSNV104 (two hemispheres R = 50, each
 sqrt(R h / 2) = 10 mm, p0 = E/(pi (1 - nu^2)) sqrt(2 h / R) = 2798.3 MPa): the hemisphere pushed at its
 equator carries 12 % more force than Hertz's half-space for the same approach, so those differ by more.
 Exit 0 when every check holds."""
-import argparse
-import csv
 import math
+import os
 import sys
 
-import netCDF4
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact"))
+import contact_results as cr  # noqa: E402
 
-def names(ds, var):
-    if var not in ds.variables:
-        return []
-    return ["".join(c.decode() for c in row if c not in (b"", b"\x00")).strip() for row in ds.variables[var][:].data]
-
-
-parser = argparse.ArgumentParser()
-parser.add_argument("exo")
-parser.add_argument("history")
-parser.add_argument("--R", type=float, default=50.0)
-parser.add_argument("--E", type=float, default=20000.0)
-parser.add_argument("--nu", type=float, default=0.3)
+parser = cr.hertz_parser(R=50.0, E=20000.0, p0_rtol=0.03, a_rtol=0.03)
 parser.add_argument("--interface", default="plane")
 parser.add_argument("--surface", default="surface")
 parser.add_argument("--reaction", default="equator")
-parser.add_argument("--p0-rtol", type=float, default=0.03)
-parser.add_argument("--a-rtol", type=float, default=0.03)
 args = parser.parse_args()
 
-ds = netCDF4.Dataset(args.exo)
-x, y = (np.asarray(ds.variables[f"coord{c}"][:], dtype=float) for c in "xy")
-nodal = names(ds, "name_nod_var")
-sets = names(ds, "ns_names")
-if "contact_pressure" not in nodal:
-    sys.exit(f"{args.exo}: no nodal variable contact_pressure (have {nodal})")
-pressure = np.asarray(ds.variables[f"vals_nod_var{nodal.index('contact_pressure') + 1}"][-1, :], dtype=float)
-surface = np.asarray(ds.variables[f"node_ns{sets.index(args.surface) + 1}"][:], dtype=int) - 1
-rows = list(csv.DictReader(open(args.history)))
-last = {k: float(v) for k, v in rows[-1].items()}
+res = cr.Results(args.exo)
+x, y, z = res.x, res.y, res.z
+pressure = res.nodal("contact_pressure")
+surface = res.node_set(args.surface)
+last = cr.read_history(args.history)[-1]
 force = last[f"contact_force_{args.interface}_z"]
 P = 4.0 * abs(force)
-E_star = args.E / (1.0 - args.nu ** 2)
-a_h = (3.0 * P * args.R / (4.0 * E_star)) ** (1.0 / 3.0)
-p0_h = 3.0 * P / (2.0 * math.pi * a_h ** 2)
+a_h, p0_h = cr.hertz_sphere(P, args.R, args.E, args.nu)
 
 r = np.hypot(x[surface], y[surface])
 p = pressure[surface]
@@ -79,14 +59,13 @@ beyond = r[(~touching) & (r > r_last)]
 r_open = beyond.min() if beyond.size else float("nan")
 # The element size at the last contact node: its longest edge to another surface node (Hex8 edges).
 last_node = surface[order][touching][np.argmax(r[touching])]
-z = np.asarray(ds.variables["coordz"][:], dtype=float)
 on_surface = set(surface.tolist())
 HEX_EDGES = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
 h_edge = 0.0
-for key in ds.variables:
+for key in res.ds.variables:
     if not key.startswith("connect"):
         continue
-    cells = np.asarray(ds.variables[key][:], dtype=int) - 1
+    cells = np.asarray(res.ds.variables[key][:], dtype=int) - 1
     if cells.ndim != 2 or cells.shape[1] != 8:  # the rigid plane's SHELL4 block
         continue
     for cell in cells[np.any(cells == last_node, axis=1)]:
@@ -110,8 +89,4 @@ checks = [
     ("equilibrium", f"reaction_{args.reaction}_z + contact force = {reaction + force:.2e}",
      abs(reaction + force) <= 1e-6 * abs(force), "<= 1e-6 x force"),
 ]
-failed = 0
-for name, text, ok, tol in checks:
-    print(f"{'ok  ' if ok else 'FAIL'} {name}: {text} ({tol})")
-    failed += not ok
-sys.exit(1 if failed else 0)
+cr.exit_with_checks(checks)

@@ -6,7 +6,6 @@ A block sliding on a plane y = const: at the last row of the history, the fricti
 (DX, 0, DZ) (a unit vector), each to R. What holds on faces whose total normal force carries a penalty
 error (TRI6, QUAD8: docs/verification-contact.md §11): Coulomb's law on the force the interface does carry.
 Exit 0 when it holds."""
-import argparse
 import math
 import os
 import sys
@@ -14,13 +13,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact"))
 import contact_results as cr  # noqa: E402
 
-parser = argparse.ArgumentParser()
-parser.add_argument("csv")
-parser.add_argument("--interface", required=True)
-parser.add_argument("--mu", type=float, required=True)
-parser.add_argument("--direction", type=float, nargs=2, required=True)
-parser.add_argument("--rtol", type=float, required=True)
-args = parser.parse_args()
+args = cr.required_options("csv", texts=["--interface"], numbers=["--mu", "--rtol"], pairs=["--direction"])
 
 row = cr.read_history(args.csv)[-1]
 fx, fy, fz = (row[f"contact_force_{args.interface}_{c}"] for c in "xyz")

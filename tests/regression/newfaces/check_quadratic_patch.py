@@ -8,7 +8,6 @@ which are 0 at the faces' corners and A/3 at their mid-edge nodes, whatever the 
 then ~0 at a corner node and (A/3)/(A/4) = 4/3 P at a mid-edge node. Checked at the last step: every
 corner node (x and z multiples of the grid size H) below C x P, every mid-edge node within T of R x P.
 Exit 0 when it holds."""
-import argparse
 import os
 import sys
 
@@ -17,22 +16,14 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact"))
 import contact_results as cr  # noqa: E402
 
-parser = argparse.ArgumentParser()
-parser.add_argument("exo")
-parser.add_argument("--slave", required=True)
-parser.add_argument("--pressure", type=float, required=True)
-parser.add_argument("--grid", type=float, required=True)
-parser.add_argument("--corner-max", type=float, required=True)
-parser.add_argument("--mid-ratio", type=float, required=True)
-parser.add_argument("--rtol", type=float, required=True)
-args = parser.parse_args()
+args = cr.required_options("exo", texts=["--slave"],
+                           numbers=["--pressure", "--grid", "--corner-max", "--mid-ratio", "--rtol"])
 
 res = cr.Results(args.exo)
 nodes = res.node_set(args.slave)
-z = np.asarray(res.ds.variables["coordz"][:], dtype=float)
 p = res.nodal("contact_pressure")[nodes] / args.pressure
 on_grid = lambda v: np.abs(v / args.grid - np.round(v / args.grid)) < 1e-9  # noqa: E731
-corner = on_grid(res.x[nodes]) & on_grid(z[nodes])
+corner = on_grid(res.x[nodes]) & on_grid(res.z[nodes])
 print(f"{args.slave}: {corner.sum()} corner nodes, p/P {p[corner].min():.4g} .. {p[corner].max():.4g}; "
       f"{(~corner).sum()} mid-edge nodes, p/P {p[~corner].min():.6g} .. {p[~corner].max():.6g}")
 failed = False

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -36,41 +37,53 @@ void expectSameAsBruteForce(const std::vector<cc::BoundingBox<Dim>>& boxes, cons
   EXPECT_LT(nonEmpty, points.size());
 }
 
+// `count` random facets of N nodes in the unit square or cube (`facetNodes(unit, offset)` draws one facet's
+// nodes from uniform numbers in [0, 1] and in [-spread, spread]), boxed with `padding` and queried at 3000
+// random points: the tree gives the brute-force candidates.
+template <int Dim, int N, class FacetNodes>
+void expectRandomFacetsGiveBruteForce(unsigned seed, int count, double spread, double padding,
+                                      const FacetNodes& facetNodes) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unitDistribution(0.0, 1.0);
+  std::uniform_real_distribution<double> offsetDistribution(-spread, spread);
+  const auto unit = [&] { return unitDistribution(rng); };
+  const auto offset = [&] { return offsetDistribution(rng); };
+  std::vector<Vector<Dim>> nodes;
+  std::vector<std::array<int, N>> facets;
+  for (int f = 0; f < count; ++f) {
+    const std::array<Vector<Dim>, N> x = facetNodes(unit, offset);
+    std::array<int, N> ids;
+    for (int k = 0; k < N; ++k) {
+      ids[k] = N * f + k;
+      nodes.push_back(x[k]);
+    }
+    facets.push_back(ids);
+  }
+  const auto boxes = cc::facetBoundingBoxes<Dim, N>(nodes, facets, padding);
+  std::vector<Vector<Dim>> points(3000);
+  for (auto& point : points)
+    for (auto& c : point) c = unit();
+  expectSameAsBruteForce<Dim>(boxes, points);
+}
+
 }  // namespace
 
 TEST(BoundingBoxTree, RandomSegments2DGiveTheBruteForceCandidates) {
-  std::mt19937 rng(42);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_real_distribution<double> offset(-0.05, 0.05);
-  std::vector<Vector<2>> nodes;
-  std::vector<std::array<int, 2>> segments;
-  for (int s = 0; s < 500; ++s) {
-    const Vector<2> a{unit(rng), unit(rng)};
-    nodes.push_back(a);
-    nodes.push_back({a[0] + offset(rng), a[1] + offset(rng)});
-    segments.push_back({2 * s, 2 * s + 1});
-  }
-  const auto boxes = cc::facetBoundingBoxes<2, 2>(nodes, segments, 0.01);
-  std::vector<Vector<2>> points;
-  for (int p = 0; p < 3000; ++p) points.push_back({unit(rng), unit(rng)});
-  expectSameAsBruteForce<2>(boxes, points);
+  // 500 short segments: a random node and another within 0.05 of it in x and y.
+  expectRandomFacetsGiveBruteForce<2, 2>(42, 500, 0.05, 0.01, [](const auto& unit, const auto& offset) {
+    const Vector<2> a{unit(), unit()};
+    return std::array<Vector<2>, 2>{a, Vector<2>{a[0] + offset(), a[1] + offset()}};
+  });
 }
 
 TEST(BoundingBoxTree, RandomQuadFaces3DGiveTheBruteForceCandidates) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::uniform_real_distribution<double> offset(-0.08, 0.08);
-  std::vector<Vector<3>> nodes;
-  std::vector<std::array<int, 4>> faces;
-  for (int f = 0; f < 400; ++f) {
-    const Vector<3> c{unit(rng), unit(rng), unit(rng)};
-    for (int k = 0; k < 4; ++k) nodes.push_back({c[0] + offset(rng), c[1] + offset(rng), c[2] + offset(rng)});
-    faces.push_back({4 * f, 4 * f + 1, 4 * f + 2, 4 * f + 3});
-  }
-  const auto boxes = cc::facetBoundingBoxes<3, 4>(nodes, faces, 0.02);
-  std::vector<Vector<3>> points;
-  for (int p = 0; p < 3000; ++p) points.push_back({unit(rng), unit(rng), unit(rng)});
-  expectSameAsBruteForce<3>(boxes, points);
+  // 400 small faces: four nodes within 0.08 of a random centre in each direction.
+  expectRandomFacetsGiveBruteForce<3, 4>(7, 400, 0.08, 0.02, [](const auto& unit, const auto& offset) {
+    const Vector<3> c{unit(), unit(), unit()};
+    std::array<Vector<3>, 4> x;
+    for (auto& node : x) node = {c[0] + offset(), c[1] + offset(), c[2] + offset()};
+    return x;
+  });
 }
 
 TEST(BoundingBoxTree, BoxBoundaryIsClosedAndEmptyTreeHasNoCandidates) {

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -87,6 +88,11 @@ Matrix<kDofs<Facet>, kDofs<Facet>> finiteDifferenceTangent(const NodeToFacetCont
   return k;
 }
 
+/// The 3D element tests' 4-node faces on (0,0)–(2,2): flat in z = 0, and warped off that plane.
+using Quad4Face = std::array<Vector<3>, 4>;
+inline const Quad4Face kFlatFace{{{0.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {2.0, 2.0, 0.0}, {0.0, 2.0, 0.0}}};
+inline const Quad4Face kWarpedFace{{{0.0, 0.0, 0.0}, {2.0, 0.1, 0.4}, {2.2, 2.0, -0.1}, {-0.1, 1.9, 0.3}}};
+
 /// A committed state in contact on `facet` at ξ_n with traction t_n (stick unless said), and the slip
 /// accumulated so far.
 template <int S>
@@ -136,6 +142,17 @@ double expectTangentClose(const Matrix<N, N>& tangent, const Matrix<N, N>& fd, d
   std::printf("[ FD       ] %-44s ‖K − K_FD‖/‖K_FD‖ = %.2e\n", label.c_str(), error);
   EXPECT_LT(error, tolerance) << label;
   return error;
+}
+
+/// The consistent tangent of the element at `point` of facet 3 (no facet length) against central
+/// differences of its residual, labelled `what`: the relative difference, expected below kFdTolerance.
+template <class Facet>
+double expectTangentAtPointClose(const NodeToFacetContact<Facet>& element, const NodeToFacetGeometry<Facet>& g,
+                                 const ContactHistory<Facet::kSurfaceDim>& committed, const ContactPoint& point,
+                                 const std::string& what) {
+  const auto r = element.evaluate(g, 3, committed, 0.0, SlipTangent::consistent(), point);
+  return expectTangentClose(r.tangent, finiteDifferenceTangent(element, g, 3, committed, kFdStep, 0.0, point),
+                            kFdTolerance, what);
 }
 
 /// Several such comparisons, the worst kept.

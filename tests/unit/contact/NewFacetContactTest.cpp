@@ -117,10 +117,7 @@ TYPED_TEST(NewFacetContact, FadedElementPastTheBoundaryMatchesCentralDifferences
         for (int a = 0; a < M; ++a) EXPECT_NEAR(r.projection.xi[a], xi[a], 1e-9) << what;
         EXPECT_GT(r.freeEdgeWeight, 0.0) << what;
         EXPECT_LT(r.freeEdgeWeight, 1.0) << what;
-        worst = std::max(worst, ct::expectTangentClose(r.tangent,
-                                                       ct::finiteDifferenceTangent(element, g, 3, committed, ct::kFdStep,
-                                                                                   0.0, point),
-                                                       ct::kFdTolerance, what));
+        worst = std::max(worst, ct::expectTangentAtPointClose(element, g, committed, point, what));
       }
     }
   }
@@ -151,10 +148,7 @@ TYPED_TEST(NewFacetContact, EdgeAndVertexElementsMatchCentralDifferences) {
       const auto r = element.evaluate(g, 3, committed, 0.0, cc::SlipTangent::consistent(), point);
       const std::string what = std::string(law.name) + (point.kind == ContactPoint::Kind::Edge ? " edge" : " vertex");
       EXPECT_LT(r.gap, 0.0) << what;
-      worst = std::max(worst, ct::expectTangentClose(r.tangent,
-                                                     ct::finiteDifferenceTangent(element, g, 3, committed, ct::kFdStep,
-                                                                                 0.0, point),
-                                                     ct::kFdTolerance, what));
+      worst = std::max(worst, ct::expectTangentAtPointClose(element, g, committed, point, what));
     }
   }
   std::printf("[ FD       ] %d-node facet, edge and vertex points: worst relative error %.2e\n", Facet::kNodes, worst);

@@ -2,35 +2,23 @@
 // the test that says when they spoil the answer (contact/RegularisationMeasures.hpp).
 #include <gtest/gtest.h>
 
-#include "contact/ContactInterface.hpp"
+#include "InterfaceTestTools.hpp"
 
 namespace cc = contessa::contact;
+namespace ct = contessa::contact::testing;
 
 namespace {
 
 // Three slave nodes at y = 0 (x = 0, 1, 2) under a rigid line at y = 0.5 (body above), 20 long, that moves
 // by λ (mx, −1): it touches the nodes at λ = 0.5.
 cc::ContactInterfaceSpec plate(double mx) {
-  cc::ContactInterfaceSpec spec;
-  spec.name = "plate";
-  spec.dimension = 2;
-  spec.slaveNodes = {0, 1, 2};
-  spec.slaveAreas = {0.5, 1.0, 0.5};
-  spec.slaveFacetLengths = {1.0, 1.0, 1.0};
-  spec.rigidMaster = true;
-  spec.rigidSurface.points = {-10.0, 0.5, 10.0, 0.5};
-  spec.rigidSurface.facets = {0, 1};
-  spec.rigidSurface.motion = {mx, -1.0};
-  spec.law.normalPenalty = 1e6;
+  auto spec = ct::threeNodesUnderRigidLine({{-10.0, 0.5}, {10.0, 0.5}}, {mx, -1.0});
   spec.law.frictionCoefficient = 0.3;
   spec.law.slipTolerance = 0.01;  // stick radius 0.01 × L = 0.01
   return spec;
 }
 
-void slave(cc::GlobalIndex node, double* x) {
-  x[0] = static_cast<double>(node);
-  x[1] = 0.0;
-}
+constexpr auto slave = ct::threeNodesOnXAxis;
 
 cc::RegularisationMeasures after(double mx, double lambda) {
   const auto interface = cc::makeContactInterface(plate(mx), {1, 1, 1});

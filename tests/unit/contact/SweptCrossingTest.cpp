@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "contact/ContactInterface.hpp"
+#include "InterfaceTestTools.hpp"
 
 namespace cc = contessa::contact;
 using cc::Line2Facet;
@@ -185,30 +185,14 @@ TEST(SweptCrossing3D, NotACrossing) {
 
 // Three slave nodes on y = 0 (x = 0, 1, 2), a rigid master above them moving down by `motion` at λ = 1.
 cc::ContactInterfaceSpec plateSpec(std::vector<cc::Vector<2>> points, double motion) {
-  cc::ContactInterfaceSpec spec;
-  spec.name = "plate";
-  spec.dimension = 2;
-  spec.slaveNodes = {0, 1, 2};
-  spec.slaveAreas = {0.5, 1.0, 0.5};
-  spec.slaveFacetLengths = {1.0, 1.0, 1.0};
-  spec.rigidMaster = true;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    spec.rigidSurface.points.insert(spec.rigidSurface.points.end(), {points[i][0], points[i][1]});
-    if (i + 1 < points.size()) spec.rigidSurface.facets.insert(spec.rigidSurface.facets.end(), {int(i), int(i + 1)});
-  }
-  spec.rigidSurface.motion = {0.0, -motion};
-  spec.law.normalPenalty = 1e6;
-  return spec;
+  return cc::testing::threeNodesUnderRigidLine(points, {0.0, -motion});
 }
 
 class Tunnelling : public ::testing::Test {
  protected:
-  static void slave(cc::GlobalIndex node, double* x) {
-    x[0] = static_cast<double>(node);
-    x[1] = 0.0;
-  }
   static void evaluate(cc::ContactInterfaceBase& i, double lambda) {
-    i.evaluate(slave, lambda, true, [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {});
+    const auto sink = [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {};
+    i.evaluate(cc::testing::threeNodesOnXAxis, lambda, true, sink);
   }
   // The plate: a line 0.5 above the nodes, traversed towards +x (the body above it); 4 long, so a
   // node more than 4 away from it is beyond the search reach.
