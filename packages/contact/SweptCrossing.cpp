@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/Projection.hpp"
+
 namespace contessa::contact {
 
 namespace {
@@ -135,6 +137,24 @@ std::array<double, 4> monotoneBreaks(const std::array<double, 4>& c, int& count)
   return breaks;
 }
 
+/// The node x ends behind the facet itself, not only behind one of its flat pieces: its closest point on
+/// the facet lies inside it (within `tol` in ξ) with g_N < 0 (eq. 4–6). On a curved facet (a 3-node edge,
+/// a 6-, 8- or 9-node face, a warped 4-node face) the pieces are chords of the surface, and the sliver
+/// between a chord and the surface, as deep as the facet's sagitta, lies in front of a facet that bulges
+/// away from the slave (a master indented by the slave, theory-contact.md §12): a node resting there has
+/// a positive gap and has crossed nothing. When Newton does not converge on the facet the pieces' verdict
+/// stands.
+template <class Facet>
+bool endsBehindFacet(const typename Facet::Point& x, const std::array<typename Facet::Point, Facet::kNodes>& facet,
+                     double tol) {
+  if constexpr (Facet::kAffine) {
+    return true;  // the facet is its one flat piece: the pieces' test was exact
+  } else {
+    const ProjectionResult<Facet> p = Projection<Facet>().project(x, facet);
+    return !p.converged || (p.isPenetrating() && p.isInside(tol));
+  }
+}
+
 }  // namespace
 
 std::array<double, 3> signChangeRootsInUnitInterval(const std::array<double, 4>& c, int& count) {
@@ -163,7 +183,7 @@ SweptCrossing sweptCrossing(const typename Facet::Point& slave0, const typename 
     const Piece<Facet> end(facet0, facet1, nodes, 1.0);
     if (end.side(slave1) < 0.0 && end.containsProjection(slave1, insideTolerance)) endsBehind = true;
   }
-  if (!endsBehind) return {};
+  if (!endsBehind || !endsBehindFacet<Facet>(slave1, facet1, insideTolerance)) return {};
 
   for (int k = 0; k < Facet::kPieces; ++k) {
     const auto phi = [&](double t) {

@@ -164,21 +164,91 @@ TEST(SweptCrossing3D, FaceMovingThroughStaticNode) {
 
 TEST(SweptCrossing3D, TiltingFaceCubic) {
   // Node 2 rises from z = −1 to z = 3 (the face warps; each triangle's φ is a cubic in general). The
-  // node (0.7, 0.2, 0.5) lies over triangle 0–1–2, whose plane is z = y · z_2: at the node
-  // z = 0.2 z_2(t) = 0.2 (−1 + 4t), which reaches 0.5 at t = 7/8.
+  // node (0.7, 0.2, 0.4) lies over triangle 0–1–2, whose plane is z = y · z_2: at the node
+  // z = 0.2 z_2(t) = 0.2 (−1 + 4t), which reaches 0.4 at t = 3/4. At t = 1 the node is behind the
+  // bilinear face too (z = x y z_2 = 0.42 there).
   std::array<P3, 4> f0 = kFace, f1 = kFace;
   f0[2][2] = -1.0;
   f1[2][2] = 3.0;
-  const auto c = cc::sweptCrossing<Quad4Facet>({0.7, 0.2, 0.5}, {0.7, 0.2, 0.5}, f0, f1);
+  const auto c = cc::sweptCrossing<Quad4Facet>({0.7, 0.2, 0.4}, {0.7, 0.2, 0.4}, f0, f1);
   ASSERT_TRUE(c.crossed);
   EXPECT_EQ(c.piece, 0);
-  EXPECT_NEAR(c.time, 7.0 / 8.0, 1e-13);
+  EXPECT_NEAR(c.time, 3.0 / 4.0, 1e-13);
+  // At z = 0.5 the node ends behind the triangle (0.6 at t = 1) but in front of the warped face (0.42):
+  // in the sliver between the face and its flat piece, not in contact, not a crossing (theory-contact §12).
+  EXPECT_FALSE(cc::sweptCrossing<Quad4Facet>({0.7, 0.2, 0.5}, {0.7, 0.2, 0.5}, f0, f1).crossed);
 }
 
 TEST(SweptCrossing3D, NotACrossing) {
   EXPECT_FALSE(cc::sweptCrossing<Quad4Facet>({0.3, 0.6, -1.0}, {0.3, 0.6, 1.0}, kFace, kFace).crossed);  // leaving
   EXPECT_FALSE(cc::sweptCrossing<Quad4Facet>({1.2, 0.5, 1.0}, {1.2, 0.5, -1.0}, kFace, kFace).crossed);  // beside
   EXPECT_FALSE(cc::sweptCrossing<Quad4Facet>({0.5, 0.5, 1.0}, {0.5, 0.5, 0.1}, kFace, kFace).crossed);   // stops short
+}
+
+// ---- Curved facets: the node must end behind the facet, not only behind one of its flat pieces ----------
+
+// A quadratic facet on the parent domain (z = 0 in 3D, y = 0 in 2D) whose mid-edge nodes are raised by 0.1
+// (and a Quad9's centre by 0.2) into the master body, away from the front: the facet bulges away from the
+// slave, as a master indented by it does, and lies up to 0.05 (its sagitta over each chord) behind its
+// flat pieces. A node that comes from the front and stops between a piece and the facet has a positive gap
+// on the facet and has not crossed it (the shallow ironing on Q8: a die node resting in the sliver of a
+// 3-node edge was reported as tunnelling, docs/verification-contact.md §11).
+// Depth d into the master body as a coordinate: the body of a segment traversed towards +x lies above it
+// (+y), that of a counter-clockwise face below it (−z).
+template <class Facet>
+constexpr double kIntoBody = Facet::kSpaceDim == 2 ? 1.0 : -1.0;
+
+template <class Facet>
+std::array<typename Facet::Point, Facet::kNodes> bulgingFacet(int corners, double centreDepth = 0.0) {
+  std::array<typename Facet::Point, Facet::kNodes> x{};
+  for (int i = 0; i < Facet::kNodes; ++i) {
+    const auto xi = Facet::nodeCoords(i);
+    for (int a = 0; a < Facet::kSurfaceDim; ++a) x[i][a] = xi[a];
+    const double depth = i < corners ? 0.0 : (centreDepth > 0.0 && i == Facet::kNodes - 1) ? centreDepth : 0.1;
+    x[i][Facet::kSpaceDim - 1] = kIntoBody<Facet> * depth;
+  }
+  return x;
+}
+
+// The node comes straight in from depth −1 (in front) to depth `end` over the parent point `at`, where
+// the facet lies at depth `surface` and its flat piece at depth `piece`: it must not cross when it stops
+// between the two, and crosses through the piece at t = (1 + piece) / (1 + end) when it goes behind both.
+template <class Facet>
+void expectSliverIsNotACrossing(const std::array<typename Facet::Point, Facet::kNodes>& facet,
+                                const typename Facet::SurfaceCoords& at, double piece, double surface) {
+  const auto path = [&](double end) {
+    typename Facet::Point x0{}, x1{};
+    for (int a = 0; a < Facet::kSurfaceDim; ++a) x0[a] = x1[a] = at[a];
+    x0[Facet::kSpaceDim - 1] = -kIntoBody<Facet>;
+    x1[Facet::kSpaceDim - 1] = kIntoBody<Facet> * end;
+    return cc::sweptCrossing<Facet>(x0, x1, facet, facet);
+  };
+  EXPECT_FALSE(path(0.5 * (piece + surface)).crossed) << "stopped between the piece and the facet";
+  const double behind = surface + 0.05;
+  const auto c = path(behind);
+  ASSERT_TRUE(c.crossed) << "went behind the facet";
+  EXPECT_NEAR(c.time, (1.0 + piece) / (1.0 + behind), 1e-12) << "entered through the flat piece";
+}
+
+TEST(SweptCrossingCurved, Line3SliverIsNotACrossing) {
+  // Depth 0.1 (1 − ξ²) at ξ = 0.5: the facet at 0.075, the chord (ξ = 0 … 1) at 0.05.
+  expectSliverIsNotACrossing<cc::Line3Facet>(bulgingFacet<cc::Line3Facet>(2), {0.5}, 0.05, 0.075);
+}
+
+TEST(SweptCrossingCurved, Tri6SliverIsNotACrossing) {
+  // At the centroid: the facet 0.1 · 4 (L₀L₁ + L₁L₂ + L₂L₀) = 0.4/3, the middle triangle 0.1.
+  expectSliverIsNotACrossing<cc::Tri6Facet>(bulgingFacet<cc::Tri6Facet>(3), {1.0 / 3.0, 1.0 / 3.0}, 0.1, 0.4 / 3.0);
+}
+
+TEST(SweptCrossingCurved, Quad8SliverIsNotACrossing) {
+  // At the centre: four mid-edge functions of 1/2 each, 0.2; the middle quadrilateral of the mid-edge nodes 0.1.
+  expectSliverIsNotACrossing<cc::Quad8Facet>(bulgingFacet<cc::Quad8Facet>(4), {0.0, 0.0}, 0.1, 0.2);
+}
+
+TEST(SweptCrossingCurved, Quad9SliverIsNotACrossing) {
+  // The depths are 0.1 (2 − ξ² − η²) at the nodes, so the facet is that paraboloid: 0.15 at (0.5, 0.5),
+  // on the diagonal centre – corner 2 of the triangle 8–5–2, whose depth there is 0.1.
+  expectSliverIsNotACrossing<cc::Quad9Facet>(bulgingFacet<cc::Quad9Facet>(4, 0.2), {0.5, 0.5}, 0.1, 0.15);
 }
 
 // ---- ContactInterfaceBase::tunnellingNodes -------------------------------------------------------------
