@@ -18,8 +18,8 @@
 // its centre in the committed configuration: constant within an increment), so z is the node's distance
 // across the edge, positive towards b. S is C² (S′ = S″ = 0 at both ends): at |z| = b the element is the
 // single facet's, with its residual and tangent. The force is t_N ∂g/∂u, the tangent ε_N ∂g ∂gᵀ + t_N ∂²g,
-// both exact (ValleyBlendResult). With Coulomb friction each facet's tangential part is blended with the
-// same w (ValleyFriction).
+// both exact (ValleyBlendResult). With Coulomb friction (penalty) the slip is blended with the same w in one
+// chart of both facets, under one return mapping (ValleyFriction).
 //
 // Where: the selected facet's edges that another candidate facet holds (2D: a shared vertex; 3D: a shared
 // edge), where the two facets form a valley (the partner's centre in front of the facet's tangent plane at
