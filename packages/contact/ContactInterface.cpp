@@ -218,24 +218,35 @@ class ContactInterface final : public ContactInterfaceBase {
   /// Scales the element by the tributary area of slave node k and hands it to the sink; returns the
   /// scaled residual (its first kDim entries are minus the force on the slave node).
   Vector<kDofs> scatter(std::size_t k, int facet, const NodeToFacetResult<Facet>& r, const Sink& sink) const;
-  /// A frictionless slave node within the band around a valley edge: the element blended over the two
-  /// facets sharing it (ValleyBlend.hpp), which replaces the selection's normal contact; nullopt elsewhere.
+  /// A slave node within the band around a valley edge: the element blended over the two facets sharing it
+  /// (ValleyBlend.hpp), which replaces the selection's contact; nullopt elsewhere. With friction (penalty
+  /// enforcement) its tangential part lives in the chart of facet a, the selected one, against `committed`,
+  /// the node's committed history on it.
   struct Blend {
     ValleyEdge edge;
     ValleyBlendResult<Facet> result;
   };
   std::optional<Blend> valleyBlend(std::size_t k, const Point& xs, const FacetSelection<Facet>& selection,
-                                   const Facets& candidates) const {
+                                   const Facets& candidates, const ContactHistory<kXi>& committed) const {
     if constexpr (!kValleyBlendable<Facet>) {
       return std::nullopt;
     } else {
-      if (!blendable_ || !spec_.law.isFrictionless() || selection.kind == SelectionKind::None) return std::nullopt;
+      if (!blendable_ || selection.kind == SelectionKind::None) return std::nullopt;
+      const bool frictional = !spec_.law.isFrictionless();
+      if (frictional && spec_.law.isAugmented()) return std::nullopt;  // the blend's friction: penalty only
       for (std::size_t c = 0; c < candidates.size(); ++c) {
         if (candidates[c].id != selection.facet) continue;
         const auto edge = findValleyEdge<Facet>(xs, c, candidates, committedMaster_, spec_.slaveFacetLengths[k]);
         if (!edge) return std::nullopt;
+        ValleyFriction<Facet> friction;
+        if (frictional) {
+          friction.law = &spec_.law;
+          friction.committed = committed;
+          friction.facetLength = spec_.slaveFacetLengths[k];
+          friction.approach = chartApproachOf(k, candidates[edge->a].id, candidates[edge->b].id, *edge, committed);
+        }
         Blend blend{*edge, evaluateValleyBlend<Facet>(PenaltyNormalLaw(spec_.law.normalPenalty), xs,
-                                                      candidates[edge->a], candidates[edge->b], *edge)};
+                                                      candidates[edge->a], candidates[edge->b], *edge, friction)};
         if (blend.result.numBlocks == 0) return std::nullopt;
         // The facets' positions in the surface, for their DOF ids.
         blend.edge.a = static_cast<std::size_t>(candidates[edge->a].id);
@@ -245,12 +256,41 @@ class ContactInterface final : public ContactInterfaceBase {
       return std::nullopt;
     }
   }
-  /// The node's state from the blend: its gap, status and normal traction (frictionless: no tangential part).
-  static void applyBlend(const Blend& blend, double& gap, NodeToFacetResult<Facet>& r) {
-    gap = blend.result.gap;
-    r.gap = blend.result.gap;
-    r.status = blend.result.isActive() ? ContactStatus::Slip : ContactStatus::Open;
-    r.normalTraction = blend.result.isActive() ? blend.result.normalTraction : 0.0;
+  /// approachOf for a blended node: its committed position over the committed facets a and b, in a's chart.
+  CommittedApproach<kXi> chartApproachOf(std::size_t k, int a, int b, const ValleyEdge& edge,
+                                         const ContactHistory<kXi>& committed) const {
+    const double gap = committedOutput_[k].gap;
+    if (committed.isInContact() || !std::isfinite(gap) || committedSlave_.size() != spec_.slaveNodes.size() ||
+        a < 0 || b < 0 || a >= static_cast<int>(committedMaster_.size()) || b >= static_cast<int>(committedMaster_.size()))
+      return {};
+    if constexpr (kValleyBlendable<Facet>) {
+      const auto xi = valleyChartPoint<Facet>(committedSlave_[k], committedMaster_[a], committedMaster_[b], edge);
+      if (xi) return CommittedApproach<kXi>::at(gap, *xi);
+    }
+    return {};
+  }
+  /// The node's state from the blend: its gap, status and normal traction; with friction its tangential
+  /// state and trial history in facet a's chart (ValleyFriction).
+  static void applyBlend(const Blend& blend, double& gap, NodeToFacetResult<Facet>& r,
+                         const ContactHistory<kXi>& committed) {
+    const auto& b = blend.result;
+    gap = b.gap;
+    r.gap = b.gap;
+    r.status = b.isActive() ? b.status : ContactStatus::Open;
+    r.normalTraction = b.isActive() ? b.normalTraction : 0.0;
+    if (b.isActive() && b.frictional) {
+      r.projection.xi = b.chartXi;
+      r.projection.metric = b.chartMetric;
+      r.projection.inverseMetric = inverse(b.chartMetric);
+      r.friction = b.friction;
+      r.tangentialTraction = b.traction;
+      r.trial = b.trial;
+    }
+    if (r.status == ContactStatus::Open) {  // as the element leaves an open node: no traction, no new slip
+      r.tangentialTraction = {};
+      r.trial.tangentialTraction = {};
+      r.trial.accumulatedSlip = committed.accumulatedSlip;
+    }
     r.trial.status = r.status;
   }
   /// scatter for a blended element (its DOFs: the slave node's, then the two facets' distinct nodes').
@@ -274,9 +314,9 @@ class ContactInterface final : public ContactInterfaceBase {
   Facets lastFacets_;            ///< master positions of the latest trial evaluation
   std::vector<Point> committedSlave_;  ///< slave positions of the committed configuration
   std::vector<Point> lastSlave_;       ///< slave positions of the latest trial evaluation
-  /// Frictionless at set-up: the matrix graph then holds the couplings across master edges that a valley
-  /// blend needs (model::ContactAssembly), so only such an interface blends.
-  const bool blendable_ = spec_.law.isFrictionless();
+  /// Frictionless or penalty enforced at set-up: the matrix graph then holds the couplings across master
+  /// edges that a valley blend needs (model::ContactAssembly), so only such an interface blends.
+  const bool blendable_ = spec_.law.isFrictionless() || !spec_.law.isAugmented();
 };
 
 template <class Facet>
@@ -304,19 +344,20 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
     const bool frozenOpen =
         frozen_ && !history_.committed(k).isInContact() && !(committedOutput_[k].gap <= kTouchingGap);
     if (selection.kind != SelectionKind::None && !frozenOpen) {
-      // The history is kept on the facet the node projected on at the last commit.
-      const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
+      // The history is kept on the facet the node projected on at the last commit; near a valley edge the
+      // blend replaces the element. Newton iterates (updateTrial): a node whose slip direction has just
+      // reversed gets a secant tangential stiffness (SlipReversalDamping; not in the blend); the residual
+      // is the same either way.
       const auto& facet = facets[selection.facet];
-      // Newton iterates (updateTrial): a node whose slip direction has just reversed gets a secant
-      // tangential stiffness (SlipReversalDamping); the residual is the same either way.
+      const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
       NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, selection, committed);
+      const std::optional<Blend> blend = valleyBlend(k, xs, selection, candidates, committed);
+      if (blend) applyBlend(*blend, out.gap, r, committed);
       if (updateTrial) {
         damping_.observe(k, history_.trial(k), r.trial);
         const SlipTangent tangent = damping_.tangent(k);
-        if (tangent.secant) r = evaluateElement(k, xs, facet, selection, committed, tangent);
+        if (tangent.secant && !blend) r = evaluateElement(k, xs, facet, selection, committed, tangent);
       }
-      const std::optional<Blend> blend = valleyBlend(k, xs, selection, candidates);
-      if (blend) applyBlend(*blend, out.gap, r);
       trial = r.trial;
       change = changeOf(k, out.gap, &r, committed);
       out.status = r.status;
@@ -518,7 +559,7 @@ std::vector<SlaveNodeChange> ContactInterface<Facet>::changesAt(const NodePositi
     const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
     NodeToFacetResult<Facet> r = evaluateElement(k, xs, facets[selection.facet], selection, committed);
     double gap = selection.gap;
-    if (const auto blend = valleyBlend(k, xs, selection, candidates)) applyBlend(*blend, gap, r);
+    if (const auto blend = valleyBlend(k, xs, selection, candidates, committed)) applyBlend(*blend, gap, r, committed);
     out.push_back(changeOf(k, gap, &r, committed));
   }
   return out;

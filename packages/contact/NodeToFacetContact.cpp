@@ -271,6 +271,21 @@ TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters&
   return law;
 }
 
+/// dā_βγ = [0, H_i,β] ⊗ ā_γ + [0, H_i,γ] ⊗ ā_β + (Γ_βεγ + Γ_γεβ) Ξ^ε (Γ_αβγ = x̄,αβ·ā_γ), the metric's variation.
+template <class Facet>
+std::array<std::array<typename Operators<Facet>::Column, Facet::kSurfaceDim>, Facet::kSurfaceDim> metricVariation(
+    const FacetKinematics<Facet>& k) {
+  constexpr int M = Facet::kSurfaceDim;
+  using Op = Operators<Facet>;
+  std::array<std::array<typename Op::Column, M>, M> dMetric{};
+  for (int be = 0; be < M; ++be)
+    for (int ga = 0; ga < M; ++ga) {
+      dMetric[be][ga] = add(Op::kron(k.base[be], k.a[ga]), Op::kron(k.base[ga], k.a[be]));
+      for (int ep = 0; ep < M; ++ep) addScaled(dMetric[be][ga], k.gamma[be][ep][ga] + k.gamma[ga][ep][be], k.Xi[ep]);
+    }
+  return dMetric;
+}
+
 /// Tangent term (b): Ξ^α (dt_Tα/du)ᵀ with the exact variation of the traction:
 ///   dt_α = ∂t_α/∂Δξ^β ∂Δξ^β/∂u + ∂t_α/∂ā_βγ dā_βγ + ∂t_α/∂t_N ε_N N,   (∂Δξ/∂u: TangentialLaw)
 ///   dā_βγ = [0, H_i,β] ⊗ ā_γ + [0, H_i,γ] ⊗ ā_β + (Γ_βεγ + Γ_γεβ) Ξ^ε     (Γ_αβγ = x̄,αβ·ā_γ)
@@ -283,12 +298,7 @@ void addTractionVariation(typename Operators<Facet>::Square& K, const FacetKinem
   constexpr int M = Facet::kSurfaceDim;
   using Op = Operators<Facet>;
   using Column = typename Op::Column;
-  std::array<std::array<Column, M>, M> dMetric{};
-  for (int be = 0; be < M; ++be)
-    for (int ga = 0; ga < M; ++ga) {
-      dMetric[be][ga] = add(Op::kron(k.base[be], k.a[ga]), Op::kron(k.base[ga], k.a[be]));
-      for (int ep = 0; ep < M; ++ep) addScaled(dMetric[be][ga], k.gamma[be][ep][ga] + k.gamma[ga][ep][be], k.Xi[ep]);
-    }
+  const std::array<std::array<Column, M>, M> dMetric = metricVariation<Facet>(k);
   for (int al = 0; al < M; ++al) {
     Column dt = scaled(law.dT_dNormal[al] * epsN, N);
     for (int be = 0; be < M; ++be) {
@@ -520,6 +530,7 @@ FacetGapVariation<Facet> facetGapVariation(const NodeToFacetGeometry<Facet>& x) 
     unit[al] = 1.0;
     addProjectionCurvature<Facet>(out.xiSecond[al], k, unit);  // term (c) with t_T = e_α
   }
+  out.metricFirst = metricVariation<Facet>(k);
   return out;
 }
 

@@ -189,7 +189,8 @@ class NodeToFacetContact {
 
 /// A slave node's gap on one facet (its projection ξ̄ of eq. 1–4, on the facet or its extension) with the
 /// exact first and second derivatives of g_N and ξ̄ in the element dofs [x^k, x_1, …, x_n] (§6.1 of
-/// docs/theory-contact.md: ∂g_N/∂u = N, ∂ξ̄^α/∂u = Ξ^α, ∂²g_N/∂u² of term (a), ∂²ξ̄^α/∂u² of term (c)):
+/// docs/theory-contact.md: ∂g_N/∂u = N, ∂ξ̄^α/∂u = Ξ^α, ∂²g_N/∂u² of term (a), ∂²ξ̄^α/∂u² of term (c)),
+/// and the first derivative of the metric ā_βγ at ξ̄ (term (b)):
 /// what an element built on two facets at once (ValleyBlend) is made of. `valid` is false when the
 /// projection did not converge or the node sits at a focal point of the facet.
 template <class Facet>
@@ -202,6 +203,8 @@ struct FacetGapVariation {
   Matrix<kDofs, kDofs> gapSecond{};                       ///< ∂²g_N/∂u²
   std::array<Vector<kDofs>, kSurfaceDim> xiFirst{};       ///< ∂ξ̄^α/∂u
   std::array<Matrix<kDofs, kDofs>, kSurfaceDim> xiSecond{};  ///< ∂²ξ̄^α/∂u²
+  /// ∂ā_βγ/∂u of the metric at ξ̄ (term (b) of §6.1): [0, H_i,β] ⊗ ā_γ + [0, H_i,γ] ⊗ ā_β + (Γ_βεγ + Γ_γεβ) Ξ^ε
+  std::array<std::array<Vector<kDofs>, kSurfaceDim>, kSurfaceDim> metricFirst{};
 };
 
 template <class Facet>

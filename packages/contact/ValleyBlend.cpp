@@ -101,64 +101,215 @@ std::optional<ValleyEdge> findValleyEdge(const typename Facet::Point& slave, std
   return best;
 }
 
+namespace {
+
+/// The union of the two facets' nodes, the blended element's dofs: the slave, a's nodes, b's nodes not in
+/// a. blockOf[f][i]: the block of local node i of facet f (block 0 is the slave node in both facets'
+/// element dofs). Columns and squares over the union are std::vector (row-major squares).
+template <class Facet>
+struct UnionDofs {
+  static constexpr int kDim = Facet::kSpaceDim;
+  static constexpr int kNodes = Facet::kNodes;
+  static constexpr int kFacetDofs = kDim * (1 + kNodes);
+  using Column = std::vector<double>;
+  using Square = std::vector<double>;
+  std::array<std::array<int, 1 + kNodes>, 2> blockOf{};
+  int n = 0;
+
+  UnionDofs(const MasterFacetNodes<Facet>& a, const MasterFacetNodes<Facet>& b, ValleyBlendResult<Facet>& out) {
+    int blocks = 1 + kNodes;
+    for (int i = 0; i < kNodes; ++i) {
+      blockOf[0][1 + i] = 1 + i;
+      out.source[1 + i] = {0, i};
+    }
+    for (int j = 0; j < kNodes; ++j) {
+      int shared = -1;
+      for (int i = 0; i < kNodes && shared < 0; ++i)
+        if (a.nodes[i] == b.nodes[j]) shared = 1 + i;
+      if (shared < 0) {
+        out.source[blocks] = {1, j};
+        shared = blocks++;
+      }
+      blockOf[1][1 + j] = shared;
+    }
+    out.numBlocks = blocks;
+    n = blocks * kDim;
+  }
+  int dof(int f, int elementDof) const { return blockOf[f][elementDof / kDim] * kDim + elementDof % kDim; }
+  Column column() const { return Column(n, 0.0); }
+  Square square() const { return Square(static_cast<std::size_t>(n) * n, 0.0); }
+  /// into += s v, v over facet f's element dofs
+  void embed(int f, const Vector<kFacetDofs>& v, double s, Column& into) const {
+    for (int i = 0; i < kFacetDofs; ++i) into[dof(f, i)] += s * v[i];
+  }
+  void embedMatrix(int f, const Matrix<kFacetDofs, kFacetDofs>& m, double s, Square& into) const {
+    for (int i = 0; i < kFacetDofs; ++i)
+      for (int j = 0; j < kFacetDofs; ++j) into[dof(f, i) * n + dof(f, j)] += s * m(i, j);
+  }
+  /// into += s x yᵀ
+  void outer(Square& into, double s, const Column& x, const Column& y) const {
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) into[i * n + j] += s * x[i] * y[j];
+  }
+};
+
+/// What the friction part needs of the normal blend: w and its derivatives (∂w = w_z ∂z, ∂²w = w_zz ∂z ∂zᵀ +
+/// w_z ∂²z), ∂g and ε_N.
+struct BlendWeight {
+  double w = 0.0, wz = 0.0, wzz = 0.0, epsN = 0.0;
+  const std::vector<double>* dz = nullptr;
+  const std::vector<double>* d2z = nullptr;
+  const std::vector<double>* dg = nullptr;
+};
+
+/// The slip increment Δξ̃ of the return mapping and how it varies (∂Δξ̃ = slipScale ∂ξ̃ + slipPerGap ∂g), as
+/// NodeToFacetContact's for one facet: against ξ_n in contact at the commit; for a first contact against
+/// the point it touched, ξ̃_0 + τ(ξ̃ − ξ̃_0), τ = g_0/(g_0 − g) (§5.2).
+template <int M>
+struct SlipIncrement {
+  Vector<M> value{};
+  double slipScale = 1.0;
+  Vector<M> slipPerGap{};
+};
+
+template <int M>
+SlipIncrement<M> slipIncrementOf(const Vector<M>& xi, double gap, const ContactHistory<M>& committed,
+                                 const CommittedApproach<M>& approach) {
+  SlipIncrement<M> s;
+  if (committed.isInContact()) {
+    s.value = subtract(xi, committed.xi);
+    return s;
+  }
+  const Vector<M> path = subtract(xi, approach.xi);
+  s.value = path;
+  if (!(approach.gap > 0.0)) return s;
+  const double closing = approach.gap - gap;
+  const double tau = approach.gap / closing;
+  s.slipScale = 1.0 - tau;
+  s.slipPerGap = scaled(-approach.gap / (closing * closing), path);
+  s.value = scaled(1.0 - tau, path);
+  return s;
+}
+
+/// Coulomb friction in the blend (ValleyFriction): ξ̃, Ā and their derivatives over the union, one return
+/// mapping, r_T = t_α ∂ξ̃^α, K_T = ∂ξ̃^α ⊗ ∂t_α + t_α ∂²ξ̃^α.
+template <class Facet>
+void addFriction(const ValleyFriction<Facet>& friction, const MasterFacetNodes<Facet>& a, const MasterFacetNodes<Facet>& b,
+                 const ValleyEdge& edge, const UnionDofs<Facet>& dofs, const FacetGapVariation<Facet>& va,
+                 const FacetGapVariation<Facet>& vb, const BlendWeight& bw, ValleyBlendResult<Facet>& out) {
+  constexpr int M = Facet::kSurfaceDim;
+  using Column = std::vector<double>;
+  const int n = dofs.n;
+  const ValleyChart<Facet> chart = valleyChart<Facet>(a, b, edge);
+  const Matrix<M, M> Jinv = inverse(chart.J);
+  const double w = bw.w;
+  Column dw = *bw.dz;
+  for (double& v : dw) v *= bw.wz;
+  // ξ̃ = ξ̄_a + w D, D = U(ξ̄_b) − ξ̄_a; ∂ξ̃^α = Ξ_a^α + w G^α + D^α ∂w, G^α = J^α_β Ξ_b^β − Ξ_a^α.
+  const Vector<M> D = subtract(chart.map(vb.projection.xi), va.projection.xi);
+  const Vector<M> xi = add(va.projection.xi, scaled(w, D));
+  std::array<Column, M> G, dxi;
+  for (int al = 0; al < M; ++al) {
+    G[al] = dofs.column();
+    dofs.embed(0, va.xiFirst[al], -1.0, G[al]);
+    for (int be = 0; be < M; ++be) dofs.embed(1, vb.xiFirst[be], chart.J(al, be), G[al]);
+    dxi[al] = dofs.column();
+    dofs.embed(0, va.xiFirst[al], 1.0, dxi[al]);
+    for (int i = 0; i < n; ++i) dxi[al][i] += w * G[al][i] + D[al] * dw[i];
+  }
+  // Ā = (1 − w) ā_a + w B, B = J⁻ᵀ ā_b J⁻¹; ∂Ā = (1 − w) ∂ā_a + w J⁻ᵀ ∂ā_b J⁻¹ + (B − ā_a) ∂w.
+  const Matrix<M, M> B = multiply(transpose(Jinv), multiply(vb.projection.metric, Jinv));
+  Matrix<M, M> metric{};
+  std::array<std::array<Column, M>, M> dMetric;
+  for (int be = 0; be < M; ++be)
+    for (int ga = 0; ga < M; ++ga) {
+      metric(be, ga) = (1.0 - w) * va.projection.metric(be, ga) + w * B(be, ga);
+      auto& d = dMetric[be][ga];
+      d = dofs.column();
+      dofs.embed(0, va.metricFirst[be][ga], 1.0 - w, d);
+      for (int de = 0; de < M; ++de)
+        for (int ep = 0; ep < M; ++ep) dofs.embed(1, vb.metricFirst[de][ep], w * Jinv(de, be) * Jinv(ep, ga), d);
+      for (int i = 0; i < n; ++i) d[i] += (B(be, ga) - va.projection.metric(be, ga)) * dw[i];
+    }
+  out.frictional = true;
+  out.chartXi = xi;
+  out.chartMetric = metric;
+  out.trial = friction.committed;
+  out.trial.segment = a.id;
+  out.trial.xi = xi;
+  out.trial.normalMultiplier = 0.0;
+  out.trial.tangentialMultiplier = {};
+  if (!friction.committed.isInContact() && !friction.approach.known) {  // first contact, approach unknown
+    out.status = out.trial.status = ContactStatus::Stick;  // ξ_n := ξ̃, t_T ≡ 0 in this increment
+    out.trial.tangentialTraction = {};
+    return;
+  }
+  // One return mapping, eq. (20)–(23), in a's chart.
+  const ContactLawParameters& law = *friction.law;
+  const SlipIncrement<M> slip = slipIncrementOf(xi, out.gap, friction.committed, friction.approach);
+  ReturnMappingInput<M> in;
+  in.committedTraction = friction.committed.isInContact() ? friction.committed.tangentialTraction : Vector<M>{};
+  in.slipIncrement = slip.value;
+  in.metric = metric;
+  in.normalTraction = out.normalTraction;
+  in.facetLength = friction.facetLength;
+  out.friction = CoulombReturnMapping<M>(law.tangentialPenalty, law.frictionCoefficient, law.slipTolerance).map(in);
+  const auto& rm = out.friction;
+  out.status = out.trial.status = rm.status;
+  out.traction = out.trial.tangentialTraction = rm.traction;
+  // eq. (7), backward Euler, in the chart's metric
+  out.trial.accumulatedSlip =
+      friction.committed.accumulatedSlip + std::sqrt(dot(slip.value, multiply(metric, slip.value)));
+  for (int al = 0; al < M; ++al) {
+    // ∂t_α = ∂t_α/∂Δξ̃^β (slipScale ∂ξ̃^β + slipPerGap^β ∂g) + ∂t_α/∂Ā_βγ ∂Ā_βγ + ∂t_α/∂t_N ε_N ∂g
+    Column dt = dofs.column();
+    double perGap = rm.dTraction_dNormalTraction[al] * bw.epsN;
+    for (int be = 0; be < M; ++be) {
+      perGap += rm.dTraction_dSlipIncrement(al, be) * slip.slipPerGap[be];
+      for (int i = 0; i < n; ++i) dt[i] += rm.dTraction_dSlipIncrement(al, be) * slip.slipScale * dxi[be][i];
+      for (int ga = 0; ga < M; ++ga)
+        for (int i = 0; i < n; ++i) dt[i] += rm.dTraction_dMetric[al](be, ga) * dMetric[be][ga][i];
+    }
+    for (int i = 0; i < n; ++i) dt[i] += perGap * (*bw.dg)[i];
+    for (int i = 0; i < n; ++i) out.residual[i] += rm.traction[al] * dxi[al][i];
+    dofs.outer(out.tangent, 1.0, dxi[al], dt);
+    // t_α ∂²ξ̃^α = t_α [(1 − w) ∂²ξ̄_a^α + w J^α_β ∂²ξ̄_b^β + G^α ∂wᵀ + ∂w G^αᵀ + D^α ∂²w]
+    const double t = rm.traction[al];
+    if (t == 0.0) continue;
+    dofs.embedMatrix(0, va.xiSecond[al], t * (1.0 - w), out.tangent);
+    for (int be = 0; be < M; ++be) dofs.embedMatrix(1, vb.xiSecond[be], t * w * chart.J(al, be), out.tangent);
+    dofs.outer(out.tangent, t, G[al], dw);
+    dofs.outer(out.tangent, t, dw, G[al]);
+    dofs.outer(out.tangent, t * D[al] * bw.wzz, *bw.dz, *bw.dz);
+    for (std::size_t i = 0; i < out.tangent.size(); ++i) out.tangent[i] += t * D[al] * bw.wz * (*bw.d2z)[i];
+  }
+}
+
+}  // namespace
+
 template <class Facet>
 ValleyBlendResult<Facet> evaluateValleyBlend(const PenaltyNormalLaw& law, const typename Facet::Point& slave,
                                              const MasterFacetNodes<Facet>& a, const MasterFacetNodes<Facet>& b,
-                                             const ValleyEdge& edge) {
-  constexpr int kDim = Facet::kSpaceDim;
-  constexpr int kNodes = Facet::kNodes;
+                                             const ValleyEdge& edge, const ValleyFriction<Facet>& friction) {
   using Variation = FacetGapVariation<Facet>;
   ValleyBlendResult<Facet> out;
   const Variation va = facetGapVariation<Facet>({slave, a.x});
   const Variation vb = facetGapVariation<Facet>({slave, b.x});
   if (!va.valid || !vb.valid) return out;
-
-  // The union of the nodes: the slave, a's nodes, b's nodes not in a. blockOf[f][i]: the block of local
-  // node i of facet f (block 0 is the slave node in both facets' element dofs).
-  std::array<std::array<int, 1 + kNodes>, 2> blockOf{};
-  int blocks = 1 + kNodes;
-  for (int i = 0; i < kNodes; ++i) {
-    blockOf[0][1 + i] = 1 + i;
-    out.source[1 + i] = {0, i};
-  }
-  for (int j = 0; j < kNodes; ++j) {
-    int shared = -1;
-    for (int i = 0; i < kNodes && shared < 0; ++i)
-      if (a.nodes[i] == b.nodes[j]) shared = 1 + i;
-    if (shared < 0) {
-      out.source[blocks] = {1, j};
-      shared = blocks++;
-    }
-    blockOf[1][1 + j] = shared;
-  }
-  out.numBlocks = blocks;
-  const int n = blocks * kDim;
-  const auto dof = [&](int f, int elementDof) { return blockOf[f][elementDof / kDim] * kDim + elementDof % kDim; };
-  using Column = std::vector<double>;
-  using Square = std::vector<double>;
-  const auto embed = [&](int f, const Vector<Variation::kDofs>& v, double s, Column& into) {
-    for (int i = 0; i < Variation::kDofs; ++i) into[dof(f, i)] += s * v[i];
-  };
-  const auto embedMatrix = [&](int f, const Matrix<Variation::kDofs, Variation::kDofs>& m, double s, Square& into) {
-    for (int i = 0; i < Variation::kDofs; ++i)
-      for (int j = 0; j < Variation::kDofs; ++j) into[dof(f, i) * n + dof(f, j)] += s * m(i, j);
-  };
-  const auto outer = [&](Square& into, double s, const Column& x, const Column& y) {
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) into[i * n + j] += s * x[i] * y[j];
-  };
+  const UnionDofs<Facet> dofs(a, b, out);
+  const int n = dofs.n;
 
   // z = ½(ℓ_a η_a − ℓ_b η_b), η_f = s_f ξ̄_f^α − 1, and its derivatives.
   const double etaA = edge.sideA * va.projection.xi[edge.acrossA] - 1.0;
   const double etaB = edge.sideB * vb.projection.xi[edge.acrossB] - 1.0;
   const double z = 0.5 * (edge.lengthA * etaA - edge.lengthB * etaB);
   const double ca = 0.5 * edge.lengthA * edge.sideA, cb = -0.5 * edge.lengthB * edge.sideB;
-  Column dz(n, 0.0);
-  Square d2z(static_cast<std::size_t>(n) * n, 0.0);
-  embed(0, va.xiFirst[edge.acrossA], ca, dz);
-  embed(1, vb.xiFirst[edge.acrossB], cb, dz);
-  embedMatrix(0, va.xiSecond[edge.acrossA], ca, d2z);
-  embedMatrix(1, vb.xiSecond[edge.acrossB], cb, d2z);
+  auto dz = dofs.column();
+  auto d2z = dofs.square();
+  dofs.embed(0, va.xiFirst[edge.acrossA], ca, dz);
+  dofs.embed(1, vb.xiFirst[edge.acrossB], cb, dz);
+  dofs.embedMatrix(0, va.xiSecond[edge.acrossA], ca, d2z);
+  dofs.embedMatrix(1, vb.xiSecond[edge.acrossB], cb, d2z);
 
   // w = S(t), t = z/(2b) + ½.
   const Step s = smootherstep(z / (2.0 * edge.band) + 0.5);
@@ -168,18 +319,18 @@ ValleyBlendResult<Facet> evaluateValleyBlend(const PenaltyNormalLaw& law, const 
   // g = g_a − w q, q = g_a − g_b; Q = ∂q/∂u.
   const double q = va.projection.gap - vb.projection.gap;
   out.gap = va.projection.gap - w * q;
-  Column Q(n, 0.0), dg(n, 0.0);
-  embed(0, va.gapFirst, 1.0, Q);
-  embed(1, vb.gapFirst, -1.0, Q);
-  embed(0, va.gapFirst, 1.0, dg);
+  auto Q = dofs.column(), dg = dofs.column();
+  dofs.embed(0, va.gapFirst, 1.0, Q);
+  dofs.embed(1, vb.gapFirst, -1.0, Q);
+  dofs.embed(0, va.gapFirst, 1.0, dg);
   for (int i = 0; i < n; ++i) dg[i] -= w * Q[i] + q * wz * dz[i];
   // ∂²g = (1 − w) H_a + w H_b − w_z (Q ∂zᵀ + ∂z Qᵀ) − q (w_zz ∂z ∂zᵀ + w_z ∂²z)
-  Square d2g(static_cast<std::size_t>(n) * n, 0.0);
-  embedMatrix(0, va.gapSecond, 1.0 - w, d2g);
-  embedMatrix(1, vb.gapSecond, w, d2g);
-  outer(d2g, -wz, Q, dz);
-  outer(d2g, -wz, dz, Q);
-  outer(d2g, -q * wzz, dz, dz);
+  auto d2g = dofs.square();
+  dofs.embedMatrix(0, va.gapSecond, 1.0 - w, d2g);
+  dofs.embedMatrix(1, vb.gapSecond, w, d2g);
+  dofs.outer(d2g, -wz, Q, dz);
+  dofs.outer(d2g, -wz, dz, Q);
+  dofs.outer(d2g, -q * wzz, dz, dz);
   for (std::size_t i = 0; i < d2g.size(); ++i) d2g[i] -= q * wz * d2z[i];
 
   out.normalTraction = law.traction(out.gap);
@@ -187,10 +338,62 @@ ValleyBlendResult<Facet> evaluateValleyBlend(const PenaltyNormalLaw& law, const 
   out.residual.assign(n, 0.0);
   out.tangent.assign(static_cast<std::size_t>(n) * n, 0.0);
   if (!law.isActive(out.gap)) return out;
+  out.status = ContactStatus::Slip;  // frictionless: free sliding
   for (int i = 0; i < n; ++i) out.residual[i] = out.normalTraction * dg[i];
-  outer(out.tangent, epsN, dg, dg);
+  dofs.outer(out.tangent, epsN, dg, dg);
   for (std::size_t i = 0; i < d2g.size(); ++i) out.tangent[i] += out.normalTraction * d2g[i];
+  if (friction.law == nullptr) return out;
+  BlendWeight bw;
+  bw.w = w;
+  bw.wz = wz;
+  bw.wzz = wzz;
+  bw.epsN = epsN;
+  bw.dz = &dz;
+  bw.d2z = &d2z;
+  bw.dg = &dg;
+  addFriction(friction, a, b, edge, dofs, va, vb, bw, out);
   return out;
+}
+
+template <class Facet>
+ValleyChart<Facet> valleyChart(const MasterFacetNodes<Facet>& a, const MasterFacetNodes<Facet>& b, const ValleyEdge& edge) {
+  ValleyChart<Facet> u;
+  // Across: η_a = −(ℓ_b/ℓ_a) η_b, η_f = s_f ξ^α_f − 1.
+  const double ratio = edge.lengthB / edge.lengthA;
+  u.J(edge.acrossA, edge.acrossB) = -edge.sideA * edge.sideB * ratio;
+  u.c[edge.acrossA] = edge.sideA * (1.0 + ratio);
+  if constexpr (Facet::kSurfaceDim == 2) {
+    // Along: the edge's two nodes keep their places (their coordinates ±1 on each facet).
+    const int alongA = 1 - edge.acrossA, alongB = 1 - edge.acrossB;
+    std::array<double, 2> onA{}, onB{};
+    int found = 0;
+    for (int i = 0; i < Facet::kNodes && found < 2; ++i) {
+      if (Facet::nodeCoords(i)[edge.acrossA] != edge.sideA) continue;
+      for (int j = 0; j < Facet::kNodes; ++j)
+        if (b.nodes[j] == a.nodes[i]) {
+          onA[found] = Facet::nodeCoords(i)[alongA];
+          onB[found] = Facet::nodeCoords(j)[alongB];
+          ++found;
+        }
+    }
+    const double scale = found == 2 ? (onA[0] - onA[1]) / (onB[0] - onB[1]) : 1.0;
+    u.J(alongA, alongB) = scale;
+    u.c[alongA] = onA[0] - scale * onB[0];
+  }
+  return u;
+}
+
+template <class Facet>
+std::optional<typename Facet::SurfaceCoords> valleyChartPoint(const typename Facet::Point& slave,
+                                                             const MasterFacetNodes<Facet>& a,
+                                                             const MasterFacetNodes<Facet>& b, const ValleyEdge& edge) {
+  const Projection<Facet> projection;
+  const auto pa = projection.project(slave, a.x), pb = projection.project(slave, b.x);
+  if (!pa.converged || !pb.converged) return std::nullopt;
+  const double etaA = edge.sideA * pa.xi[edge.acrossA] - 1.0, etaB = edge.sideB * pb.xi[edge.acrossB] - 1.0;
+  const double z = 0.5 * (edge.lengthA * etaA - edge.lengthB * etaB);
+  const double w = smootherstep(z / (2.0 * edge.band) + 0.5).value;
+  return add(scaled(1.0 - w, pa.xi), scaled(w, valleyChart<Facet>(a, b, edge).map(pb.xi)));
 }
 
 template std::optional<ValleyEdge> findValleyEdge<Line2Facet>(const Line2Facet::Point&, std::size_t,
@@ -204,10 +407,25 @@ template std::optional<ValleyEdge> findValleyEdge<Quad4Facet>(const Quad4Facet::
 template ValleyBlendResult<Line2Facet> evaluateValleyBlend<Line2Facet>(const PenaltyNormalLaw&, const Line2Facet::Point&,
                                                                        const MasterFacetNodes<Line2Facet>&,
                                                                        const MasterFacetNodes<Line2Facet>&,
-                                                                       const ValleyEdge&);
+                                                                       const ValleyEdge&,
+                                                                       const ValleyFriction<Line2Facet>&);
 template ValleyBlendResult<Quad4Facet> evaluateValleyBlend<Quad4Facet>(const PenaltyNormalLaw&, const Quad4Facet::Point&,
                                                                        const MasterFacetNodes<Quad4Facet>&,
                                                                        const MasterFacetNodes<Quad4Facet>&,
-                                                                       const ValleyEdge&);
+                                                                       const ValleyEdge&,
+                                                                       const ValleyFriction<Quad4Facet>&);
+
+template ValleyChart<Line2Facet> valleyChart<Line2Facet>(const MasterFacetNodes<Line2Facet>&,
+                                                         const MasterFacetNodes<Line2Facet>&, const ValleyEdge&);
+template ValleyChart<Quad4Facet> valleyChart<Quad4Facet>(const MasterFacetNodes<Quad4Facet>&,
+                                                         const MasterFacetNodes<Quad4Facet>&, const ValleyEdge&);
+template std::optional<Line2Facet::SurfaceCoords> valleyChartPoint<Line2Facet>(const Line2Facet::Point&,
+                                                                               const MasterFacetNodes<Line2Facet>&,
+                                                                               const MasterFacetNodes<Line2Facet>&,
+                                                                               const ValleyEdge&);
+template std::optional<Quad4Facet::SurfaceCoords> valleyChartPoint<Quad4Facet>(const Quad4Facet::Point&,
+                                                                               const MasterFacetNodes<Quad4Facet>&,
+                                                                               const MasterFacetNodes<Quad4Facet>&,
+                                                                               const ValleyEdge&);
 
 }  // namespace contessa::contact

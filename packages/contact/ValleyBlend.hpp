@@ -18,7 +18,8 @@
 // its centre in the committed configuration: constant within an increment), so z is the node's distance
 // across the edge, positive towards b. S is C² (S′ = S″ = 0 at both ends): at |z| = b the element is the
 // single facet's, with its residual and tangent. The force is t_N ∂g/∂u, the tangent ε_N ∂g ∂gᵀ + t_N ∂²g,
-// both exact (ValleyBlendResult). Only frictionless contact is blended (ContactInterface).
+// both exact (ValleyBlendResult). With Coulomb friction (penalty) the slip is blended with the same w in one
+// chart of both facets, under one return mapping (ValleyFriction).
 //
 // Where: the selected facet's edges that another candidate facet holds (2D: a shared vertex; 3D: a shared
 // edge), where the two facets form a valley (the partner's centre in front of the facet's tangent plane at
@@ -69,18 +70,68 @@ std::optional<ValleyEdge> findValleyEdge(const typename Facet::Point& slave, std
                                          const std::vector<MasterFacetNodes<Facet>>& reference, double slaveSize,
                                          const ValleyBlendOptions& options = {});
 
+/// The blend's surface chart: facet a's parent coordinates, facet b's mapped into them by unfolding b about
+/// the shared edge, ξ_a = U(ξ_b) = c + J ξ_b (across the edge η_a = −(ℓ_b/ℓ_a) η_b, along it the edge's own
+/// parametrisation, ±1): an isometry between flat rectangular facets, and the map HistoryTransfer applies
+/// to a point carried across the edge. Constant within an increment (ℓ_f: committed configuration).
+template <class Facet>
+struct ValleyChart {
+  static constexpr int M = Facet::kSurfaceDim;
+  Matrix<M, M> J{};
+  Vector<M> c{};
+  Vector<M> map(const Vector<M>& xiB) const { return add(c, multiply(J, xiB)); }
+};
+
+template <class Facet>
+ValleyChart<Facet> valleyChart(const MasterFacetNodes<Facet>& a, const MasterFacetNodes<Facet>& b, const ValleyEdge& edge);
+
+/// Coulomb friction in the blend (docs/theory-contact.md §6.5): one contact point in facet a's chart,
+///   ξ̃ = (1 − w) ξ̄_a + w U(ξ̄_b),   Ā = (1 − w) ā_a + w J⁻ᵀ ā_b J⁻¹   (the metric in that chart),
+/// one return mapping (eq. 20–23) of t_T,n + ε_T Ā Δξ̃ with Δξ̃ = ξ̃ − ξ_n, t_N of the blended gap g, and
+///   r_T = t_Tα ∂ξ̃^α/∂u,   K_T = ∂ξ̃^α ⊗ ∂t_Tα/∂u + t_Tα ∂²ξ̃^α/∂u²,
+/// with ∂w = w_z ∂z in ∂ξ̃ and ∂Ā. Under a valley the facets' projections of a node pressed straight down
+/// move apart, by |Δg_N| sin(θ/2) each; their blend does not (at the bottom), so pressing is not slip. The
+/// history (ξ_n, t_T,n) is the node's on facet a, the chart's facet (the selected one), re-expressed there
+/// by HistoryTransfer as everywhere; the node stores (ξ̃, t_T) on a. law = null: frictionless.
+template <class Facet>
+struct ValleyFriction {
+  static constexpr int kSurfaceDim = Facet::kSurfaceDim;
+  const ContactLawParameters* law = nullptr;
+  ContactHistory<kSurfaceDim> committed{};     ///< on facet a
+  CommittedApproach<kSurfaceDim> approach{};   ///< a first contact: where it was at the commit, ξ in a's chart
+  double facetLength = 0.0;                    ///< L_k
+};
+
+/// ξ̃ of `slave` over the facets a and b of `edge` (ValleyFriction), e.g. a node's committed position on
+/// the committed facets (its approach); nullopt when a projection fails.
+template <class Facet>
+std::optional<typename Facet::SurfaceCoords> valleyChartPoint(const typename Facet::Point& slave,
+                                                             const MasterFacetNodes<Facet>& a,
+                                                             const MasterFacetNodes<Facet>& b, const ValleyEdge& edge);
+
 /// The blended element on the union of the two facets' nodes: block 0 the slave node, then facet a's
 /// nodes, then facet b's nodes not in a (`source`: which facet, which local node). Residual and tangent
 /// (row-major) over numBlocks × kSpaceDim dofs. numBlocks = 0: not evaluated (a projection failed).
 template <class Facet>
 struct ValleyBlendResult {
   static constexpr int kMaxBlocks = 1 + 2 * Facet::kNodes;
+  static constexpr int kSurfaceDim = Facet::kSurfaceDim;
   int numBlocks = 0;
   std::array<std::pair<int, int>, kMaxBlocks> source{};  ///< block ≥ 1: (0 facet a | 1 facet b, local node)
   double gap = 0.0;             ///< g of the blend
   double normalTraction = 0.0;  ///< t_N(g), eq. (16)
   double weight = 0.0;          ///< w
   std::vector<double> residual, tangent;
+  /// Open, or in contact: Slip without friction, else the return mapping's Stick or Slip.
+  ContactStatus status = ContactStatus::Open;
+  /// With friction (ValleyFriction), in contact: ξ̃, Ā, t_Tα (in a's chart), the return mapping's state and
+  /// the trial history on facet a.
+  bool frictional = false;
+  Vector<kSurfaceDim> chartXi{};
+  Matrix<kSurfaceDim, kSurfaceDim> chartMetric{};
+  Vector<kSurfaceDim> traction{};
+  ReturnMappingResult<kSurfaceDim> friction{};
+  ContactHistory<kSurfaceDim> trial{};
 
   int numDofs() const { return numBlocks * Facet::kSpaceDim; }
   bool isActive() const { return numBlocks > 0 && gap < 0.0; }
@@ -89,6 +140,6 @@ struct ValleyBlendResult {
 template <class Facet>
 ValleyBlendResult<Facet> evaluateValleyBlend(const PenaltyNormalLaw& law, const typename Facet::Point& slave,
                                              const MasterFacetNodes<Facet>& a, const MasterFacetNodes<Facet>& b,
-                                             const ValleyEdge& edge);
+                                             const ValleyEdge& edge, const ValleyFriction<Facet>& friction = {});
 
 }  // namespace contessa::contact

@@ -106,7 +106,9 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
         }
     // Only the facets contact::kValleyBlendable names (2-node segments, 4-node faces) are blended.
     const bool blended = spec.nodesPerFacet() == 2 || spec.nodesPerFacet() == 4;
-    if (!spec.mortar && spec.law.isFrictionless() && blended) addAcrossEdgeCouplings(spec, rows);
+    // With friction the blend is that of the penalty law only (contact::ContactInterface).
+    const bool blends = spec.law.isFrictionless() || !spec.law.isAugmented();
+    if (!spec.mortar && blends && blended) addAcrossEdgeCouplings(spec, rows);
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
       if (!evaluates[k] || spec.mortar) continue;
       dofsOf(spec.slaveNodes[k], a);
@@ -124,7 +126,7 @@ void ContactAssembly::addReservedCouplings(std::vector<std::vector<LO>>& rows) c
 
 void ContactAssembly::addAcrossEdgeCouplings(const contact::ContactInterfaceSpec& spec,
                                              std::vector<std::vector<LO>>& rows) const {
-  // A frictionless node-to-facet element near a valley edge is blended over the two facets sharing it
+  // A node-to-facet element near a valley edge is blended over the two facets sharing it
   // (contact/ValleyBlend.hpp): it couples the nodes of both. Facets sharing an edge (2D: a vertex; 3D: at
   // least two nodes) reserve each other's nodes.
   const int dim = layout_.dimension();

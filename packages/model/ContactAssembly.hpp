@@ -97,7 +97,7 @@ class ContactAssembly {
   /// A mortar interface's couplings: each owned slave node's weighted-gap support, every node with every other.
   void addMortarCouplings(const contact::ContactInterfaceSpec& spec, const std::vector<char>& evaluates,
                           const contact::CouplingReservation& reservation, std::vector<std::vector<LO>>& rows) const;
-  /// A frictionless node-to-facet interface's couplings across master edges (its valley blends).
+  /// A node-to-facet interface's couplings across master edges (its valley blends; frictionless or penalty).
   void addAcrossEdgeCouplings(const contact::ContactInterfaceSpec& spec, std::vector<std::vector<LO>>& rows) const;
   /// Current position of a mesh node: reference + overlapped displacement.
   contact::ContactInterfaceBase::NodePosition positions(const double* u) const;
