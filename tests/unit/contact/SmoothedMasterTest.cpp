@@ -123,24 +123,30 @@ TEST(SmoothedMaster, FacetsOfASideSetTakeTheirNeighbours) {
 
 // The element on the smoothed segment: its consistent tangent (NodeToFacetContact.hpp, with the cubic's third
 // derivatives in the second variation of ξ̄) against central differences of its residual.
+// Also on a free end's segment, whose missing neighbour is its end node (x_p = x_a: two element dofs that
+// the assembly adds into the same node's).
 TEST(SmoothedMaster, ConsistentTangentMatchesCentralDifferences) {
-  const Nodes facet{{{-0.1, 0.35}, {0.4, -0.05}, {1.3, 0.1}, {2.0, 0.6}}};  // uneven, curved
+  const Nodes uneven{{{-0.1, 0.35}, {0.4, -0.05}, {1.3, 0.1}, {2.0, 0.6}}};  // uneven, curved
+  const Nodes freeEnd{{{0.4, -0.05}, {0.4, -0.05}, {1.3, 0.1}, {2.0, 0.6}}};
   double worst = 0.0;
-  for (const ct::Law& law : ct::kLaws) {
-    const cc::NodeToFacetContact<HermiteLine4Facet> element(law.parameters);
-    for (double xi : {-0.85, 0.1, 0.7}) {
-      SCOPED_TRACE(std::string(law.name) + " at " + std::to_string(xi));
-      const auto at = cc::Projection<HermiteLine4Facet>::evaluateAt(Point{}, facet, {xi});
-      const cc::NodeToFacetGeometry<HermiteLine4Facet> g{cc::add(at.position, cc::scaled(-0.05, at.normal)), facet};
-      const auto committed = ct::committedHistory<1>(3, {xi - 0.07}, {1.5});
-      const auto r = element.evaluate(g, 3, committed);
-      ASSERT_TRUE(r.projection.converged);
-      EXPECT_NEAR(r.projection.xi[0], xi, 1e-11);
-      EXPECT_NEAR(r.gap, -0.05, 1e-12);
-      if (law.parameters.frictionCoefficient > 0.0)
-        EXPECT_EQ(r.status, law.parameters.frictionCoefficient > 1.0 ? ContactStatus::Stick : ContactStatus::Slip);
-      const auto fd = ct::finiteDifferenceTangent(element, g, 3, committed, 1e-6);
-      worst = std::max(worst, ct::expectTangentClose(r.tangent, fd, 1e-6, std::string("Hermite ") + law.name));
+  for (const Nodes& facet : {uneven, freeEnd}) {
+    for (const ct::Law& law : ct::kLaws) {
+      const cc::NodeToFacetContact<HermiteLine4Facet> element(law.parameters);
+      for (double xi : {-0.85, 0.1, 0.7}) {
+        SCOPED_TRACE(std::string(law.name) + " at " + std::to_string(xi));
+        const auto at = cc::Projection<HermiteLine4Facet>::evaluateAt(Point{}, facet, {xi});
+        const cc::NodeToFacetGeometry<HermiteLine4Facet> g{cc::add(at.position, cc::scaled(-0.05, at.normal)), facet};
+        const auto committed = ct::committedHistory<1>(3, {xi - 0.07}, {1.5});
+        const auto r = element.evaluate(g, 3, committed);
+        ASSERT_TRUE(r.projection.converged);
+        EXPECT_NEAR(r.projection.xi[0], xi, 1e-11);
+        EXPECT_NEAR(r.gap, -0.05, 1e-12);
+        if (law.parameters.frictionCoefficient > 0.0) {
+          EXPECT_EQ(r.status, law.parameters.frictionCoefficient > 1.0 ? ContactStatus::Stick : ContactStatus::Slip);
+        }
+        const auto fd = ct::finiteDifferenceTangent(element, g, 3, committed, 1e-6);
+        worst = std::max(worst, ct::expectTangentClose(r.tangent, fd, 1e-6, std::string("Hermite ") + law.name));
+      }
     }
   }
   std::printf("[ FD       ] Hermite segment: worst ‖K − K_FD‖/‖K_FD‖ = %.2e\n", worst);
