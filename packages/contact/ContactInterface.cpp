@@ -12,6 +12,7 @@
 #include "contact/NodeToFacetContact.hpp"
 #include "contact/SlipReversalDamping.hpp"
 #include "contact/SweptCrossing.hpp"
+#include "contact/SmoothedMaster.hpp"
 #include "contact/ValleyBlend.hpp"
 
 namespace contessa::contact {
@@ -691,6 +692,7 @@ std::unique_ptr<ContactInterfaceBase> makeContactInterface(ContactInterfaceSpec 
   switch (spec.dimension * 100 + spec.nodesPerFacet()) {
     case 202: return std::make_unique<ContactInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
     case 203: return std::make_unique<ContactInterface<Line3Facet>>(std::move(spec), std::move(evaluatesSlave));
+    case 204: return std::make_unique<ContactInterface<HermiteLine4Facet>>(std::move(spec), std::move(evaluatesSlave));
     case 303: return std::make_unique<ContactInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
     case 304: return std::make_unique<ContactInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
     case 306: return std::make_unique<ContactInterface<Tri6Facet>>(std::move(spec), std::move(evaluatesSlave));

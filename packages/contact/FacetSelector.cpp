@@ -46,7 +46,8 @@ bool withinFreeEdgeReach(const ProjectionResult<Facet>& p, const std::array<type
 
 // ---- 2D node-to-segment (Line2Facet, Line3Facet) ----------------------------------------------------------
 //
-// A segment's ends are its nodes 0 and 1 (ξ = −1, +1), straight or quadratic: neighbours share an end.
+// A segment's ends (ξ = −1, +1) are its nodes 0 and 1, straight or quadratic, 1 and 2 smoothed
+// (segmentEndNode): neighbours share an end.
 
 template <class Facet>
 FacetSelection<Facet> selectOnSegments(const FacetSelectorOptions& options_, const typename Facet::Point& slave,
@@ -67,23 +68,24 @@ FacetSelection<Facet> selectOnSegments(const FacetSelectorOptions& options_, con
   // 2. Corner regions: a vertex that is the clamped closest point of two candidate segments, unless a free
   //    end of the surface is closer (the node is then past that end, as in 3D).
   double freeEndDistance = std::numeric_limits<double>::infinity();
+  const std::array<int, 2> ends{segmentEndNode<Facet>(0), segmentEndNode<Facet>(1)};  // local nodes at ξ = ∓1
   for (std::size_t c = 0; c < candidates.size(); ++c)
     for (int end = 0; end < 2; ++end) {
-      const int vertex = candidates[c].nodes[end];
+      const int vertex = candidates[c].nodes[ends[end]];
       bool shared = false;
       for (std::size_t o = 0; o < candidates.size() && !shared; ++o)
-        shared = o != c && (candidates[o].nodes[0] == vertex || candidates[o].nodes[1] == vertex);
-      if (!shared) freeEndDistance = std::min(freeEndDistance, norm(subtract(slave, candidates[c].x[end])));
+        shared = o != c && (candidates[o].nodes[ends[0]] == vertex || candidates[o].nodes[ends[1]] == vertex);
+      if (!shared) freeEndDistance = std::min(freeEndDistance, norm(subtract(slave, candidates[c].x[ends[end]])));
     }
   for (std::size_t a = 0; a < candidates.size(); ++a) {
     const auto& pa = projected[a];
     if (!pa.converged || pa.isInside(options_.insideTolerance)) continue;
-    const int endA = pa.xi[0] > 0.0 ? 1 : 0;
+    const int endA = ends[pa.xi[0] > 0.0 ? 1 : 0];
     const int vertex = candidates[a].nodes[endA];
     for (std::size_t b = a + 1; b < candidates.size(); ++b) {
       const auto& pb = projected[b];
       if (!pb.converged || pb.isInside(options_.insideTolerance)) continue;
-      const int endB = pb.xi[0] > 0.0 ? 1 : 0;
+      const int endB = ends[pb.xi[0] > 0.0 ? 1 : 0];
       if (candidates[b].nodes[endB] != vertex) continue;
 
       const Vector<2>& xv = candidates[a].x[endA];

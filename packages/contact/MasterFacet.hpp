@@ -611,8 +611,11 @@ struct MasterFacetNodes {
 
 /// Every facet type, for the explicit instantiations of the templates written on the facet traits:
 /// CONTESSA_FOR_EACH_FACET(M) expands to M(Line2Facet) M(Quad4Facet) … M(Quad9Facet), so that a new facet
-/// family is named here once rather than in every translation unit that instantiates.
+/// family is named here once rather than in every translation unit that instantiates. HermiteLine4Facet (the
+/// smoothed 2D master, SmoothedMasterFacet.hpp, included below) is a master facet only.
 #define CONTESSA_FOR_EACH_FACET(M) \
-  M(Line2Facet) M(Quad4Facet) M(Line3Facet) M(Tri3Facet) M(Tri6Facet) M(Quad8Facet) M(Quad9Facet)
+  M(Line2Facet) M(Quad4Facet) M(Line3Facet) M(Tri3Facet) M(Tri6Facet) M(Quad8Facet) M(Quad9Facet) M(HermiteLine4Facet)
 
 }  // namespace contessa::contact
+
+#include "contact/SmoothedMasterFacet.hpp"

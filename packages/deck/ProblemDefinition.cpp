@@ -14,6 +14,7 @@
 #include "deck/MeshReferences.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "contact/ContactSurface.hpp"
+#include "contact/SmoothedMaster.hpp"
 #include "mesh/MeshDistribution.hpp"
 #include "mesh/MeshFactory.hpp"
 #include "mesh/MeshMerge.hpp"
@@ -152,6 +153,22 @@ void requireMortarSupported(const ParameterList& list, int dimension, bool revol
   requireInput(!list.get<bool>("Two Pass"), what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
 
+// What Master Smoothing = Hermite takes (contact/SmoothedMaster.hpp): one-line InputErrors.
+void requireSmoothingSupported(const contact::ContactInterfaceSpec& spec, const std::string& where,
+                               const std::string& masterSet) {
+  const std::string what = where + "/Master Smoothing: Hermite ";
+  requireInput(spec.dimension == 2, what + "smooths 2D master segments; this mesh is " + std::to_string(spec.dimension) + "D (use None)");
+  requireInput(!spec.mortar, what + "is for Discretization = Node To Segment (use None with Mortar)");
+  requireInput(spec.nodesPerFacet() == 2, what + "takes 2-node segments; side set '" + masterSet + "' has " +
+                                              std::to_string(spec.nodesPerFacet()) + "-node sides (use None)");
+}
+
+// The master's segments as C1 Hermite segments, each with its two neighbouring nodes (HermiteLine4Facet).
+void smoothMaster(contact::ContactInterfaceSpec& spec) {
+  spec.masterFacets = contact::hermiteMasterFacets(spec.masterFacets);
+  spec.masterFacetNodes = contact::HermiteLine4Facet::kNodes;
+}
+
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
                                                         const mesh::DistributedMesh& part,
                                                         SurfaceCoordinates& coordinates, bool revolved) {
@@ -197,6 +214,9 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.slaveFacetLengths = slave.facetLengths;
   if (rigid) {
     requireInput(!list.get<bool>("Two Pass"), where + "/Two Pass: a rigid master has no slave side of its own");
+    requireInput(list.get<std::string>("Master Smoothing") == "None",
+                 where + "/Master Smoothing: Hermite smooths a deformable master's side set; a Rigid Surface is "
+                         "its own polyline (use None)");
     spec.rigidMaster = true;
     auto& surface = spec.rigidSurface;
     surface.points.assign(points.begin(), points.end());
@@ -219,6 +239,9 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   requireInput(!spec.mortar || master.nodesPerFacet == 2,
                where + "/Discretization: Mortar takes 2-node segments; side set '" + masterSet + "' has " +
                    std::to_string(master.nodesPerFacet) + "-node sides (use Node To Segment)");
+  const bool smoothed = list.get<std::string>("Master Smoothing") == "Hermite";
+  if (smoothed) requireSmoothingSupported(spec, where, masterSet);
+  if (smoothed) smoothMaster(spec);
   if (!list.get<bool>("Two Pass")) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
   contact::ContactInterfaceSpec swapped = spec;
@@ -228,6 +251,8 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   swapped.slaveFacetLengths = master.facetLengths;
   swapped.masterFacets = slave.facets;
   swapped.masterFacetNodes = slave.nodesPerFacet;
+  if (smoothed) requireSmoothingSupported(swapped, where, slaveSet);
+  if (smoothed) smoothMaster(swapped);
   return {spec, swapped};
 }
 
@@ -317,6 +342,11 @@ RCP<const ParameterList> contactValidParameters() {
             "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: weighted gaps "
             "over the slave segments against every master segment they overlap (2D, frictionless, single pass: "
             "passes the non-matching contact patch test)");
+  setChoice(*p, "Master Smoothing", "None", {"None", "Hermite"},
+            "None: the master surface is its facets. Hermite (2D node-to-segment, deformable 2-node master): each "
+            "master segment is the cubic Hermite curve through its ends with the tangents of the neighbouring "
+            "nodes, so the surface and its normal are continuous across the master nodes (C1); for sliding under "
+            "curved bodies (docs/theory-contact.md §16)");
   return p;
 }
 
