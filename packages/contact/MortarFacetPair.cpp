@@ -13,6 +13,16 @@ namespace contessa::contact {
 namespace {
 
 constexpr int kN = kMortarFacetPairCoordinates;
+
+/// A slave vertex within this fraction of the facet size of a master edge's line counts as on it
+/// (MortarClipping.hpp). Wider than 2D's kMortarSnap (1e-9), as measured on the 3D patch tests: where the
+/// slave's and the master's outer edges are flush at the solution, a slave edge overhanging the master
+/// adds the edge term p |g| L of the clip vertices (1e-6 N there) and a master edge overhanging the slave
+/// none, so Newton's iterates bounce across the flush position by that force over the lateral stiffness,
+/// p² / (ε_N E) ≈ 1e-9 mm = 3e-9 h, and with 1e-9 h the residual stalled at 1e-7 (3/2 faces: 10 iterations
+/// instead of 2). Of order the penetration times the strain in general (p/ε_N h · p/E ≈ 1e-6); the
+/// overlap it adds or drops, 1e-6 h along an edge, is far below the discretisation error.
+constexpr double kMortarClipSnap = 1e-6;
 using SecondOrder = Dual<Dual<double, kN>, kN>;
 
 template <class T>
@@ -171,12 +181,15 @@ double facetDiameter(const LinearFacet<T>& f) {
 }
 
 /// Whether the pair can carry a force: the master faces the slave (n_m · n_0 ≤ −kMortarMinFacing) and
-/// lies within one facet size of it along n_0 (not the far side of a thin body, not far in front), as in 2D.
+/// its plane lies within one facet size of the slave's centre along n_0 (not the far side of a thin body,
+/// not far in front), as in 2D. Measured to the master's plane, not its centre: a large master facet (a
+/// rigid plane) has its centre far to the side of a tilted slave facet that it touches.
 template <class T>
 bool facing(const LinearFacet<T>& slave, const LinearFacet<T>& master, const ProjectionPlane<T>& plane, double size) {
   const Point3<double> n0 = values(plane.normal), nm = values(unit(master.centreNormal()));
-  if (dot(n0, nm) > -kMortarMinFacing) return false;
-  const double distance = dot(values(master.centre() - slave.centre()), n0);
+  const double cosine = dot(n0, nm);
+  if (cosine > -kMortarMinFacing) return false;
+  const double distance = dot(values(master.centre() - slave.centre()), nm) / cosine;
   return std::abs(distance) <= size;
 }
 
@@ -204,7 +217,7 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
   std::vector<PlanePoint<T>> masterPolygon(masterProjected.rbegin(), masterProjected.rend());
   const T slaveArea2 = twiceSignedArea(slavePolygon);
   if (!(valueOf(twiceSignedArea(masterPolygon)) > 0.0) || !(valueOf(slaveArea2) > 0.0)) return out;
-  const std::vector<PlanePoint<T>> clip = clipConvexPolygon(slavePolygon, masterPolygon, kMortarSnap * size);
+  const std::vector<PlanePoint<T>> clip = clipConvexPolygon(slavePolygon, masterPolygon, kMortarClipSnap * size);
   if (clip.size() < 3 || !(valueOf(twiceSignedArea(clip)) > kMortarSnap * valueOf(slaveArea2))) return out;
   out.overlaps = true;
   // eq. M15–M17: triangles (c, v_i, v_i+1) about the vertex centroid c, Gauss points p on each; at p the
