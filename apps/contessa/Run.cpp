@@ -317,6 +317,15 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   output::ResultsOutput results(problem, *model, cl.outputDirectory, name, !cl.quiet, input.description,
                                 cl.restart.empty() ? nullptr : &restart.historyRows);
   if (root && !results.warning().empty()) std::printf("contessa: warning: %s\n", results.warning().c_str());
+  // Two-pass node-to-facet over-constrains faces that do not match (issue 25, point 3;
+  // docs/verification-contact.md §9.1): said once per interface, pointing to mortar.
+  for (const auto& spec : problem.contacts)
+    if (root && spec.secondPass)
+      std::fprintf(stderr,
+                   "contessa: warning: contact interface '%s': Two Pass = true enforces both sides' nodes on the "
+                   "other's facets; on non-matching faces that over-constrains the interface and Newton may not "
+                   "converge: use Discretization = Mortar (single pass) instead\n",
+                   spec.name.c_str());
   requireHistoryColumns(problem, results.historyColumns());
   if (root && !cl.quiet)
     std::printf("contessa: %s on %d rank(s): %lld nodes, %lld elements, %lld unknowns\n", cl.deck.c_str(),

@@ -48,7 +48,8 @@ struct ContactInterfaceSpec {
   /// The slave side's facets as mesh node tuples, nodesPerFacet() per facet, oriented so their normal is
   /// the slave body's outward normal (the mortar integrates over them).
   std::vector<GlobalIndex> slaveFacets;
-  std::vector<double> slaveSegmentLengths;  ///< 2D: each slave facet's reference length (the mortar's measure)
+  /// Each slave facet's reference length (2D) or area (3D): the mortar's measure (MortarSegment, MortarFacetPair).
+  std::vector<double> slaveFacetMeasures;
 
   /// The interface in messages: its name, "(second pass)" added for the second pass.
   std::string label() const { return secondPass ? name + " (second pass)" : name; }

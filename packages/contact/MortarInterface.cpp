@@ -10,19 +10,45 @@
 #include "contact/BoundingBoxTree.hpp"
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/MasterSurface.hpp"
+#include "contact/MortarFacetPair.hpp"
 #include "contact/MortarSegment.hpp"
 
 namespace contessa::contact {
 
 namespace {
 constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
-constexpr int kDim = 2;
-using Facets = std::vector<MasterFacetNodes<Line2Facet>>;
 
-double segmentLength(const Vector<2>& a, const Vector<2>& b) { return norm(subtract(b, a)); }
+/// The largest distance between two of a facet's nodes.
+template <class Facet>
+double facetDiameter(const MasterFacetNodes<Facet>& m) {
+  double h = 0;
+  for (std::size_t a = 0; a < m.x.size(); ++a)
+    for (std::size_t b = a + 1; b < m.x.size(); ++b) h = std::max(h, norm(subtract(m.x[b], m.x[a])));
+  return h;
+}
+
+/// The pair kernel of the dimension: its coordinates' layout and its derivatives (MortarSegment.hpp in 2D,
+/// MortarFacetPair.hpp in 3D). The rest of the interface is one code path.
+template <int Dim>
+struct MortarPairLayout;
+template <>
+struct MortarPairLayout<2> {
+  static constexpr int kCoordinates = kMortarPairCoordinates;  // s0 s1 m0 m1 y0 y1 (MortarSegment.hpp)
+  static constexpr int kFirstMaster = 2;
+  static constexpr int kMasterNodes = 2;
+  using Derivatives = MortarPairDerivatives;
+};
+template <>
+struct MortarPairLayout<3> {
+  static constexpr int kCoordinates = kMortarFacetPairCoordinates;  // s0–s3 m0–m3 (MortarFacetPair.hpp)
+  static constexpr int kFirstMaster = kMortarFacetNodes;
+  static constexpr int kMasterNodes = kMortarFacetNodes;
+  using Derivatives = MortarFacetPairDerivatives;
+};
 
 /// The weighted gap of one slave node, g̃_k = Σ over its slave segments and the master segments they meet
 /// (eq. M5), with, when asked, its gradient and Hessian over its support: the nodes it depends on.
+template <int kDim>
 struct NodeWeightedGap {
   bool overlaps = false;  ///< some master segment meets one of the node's slave segments
   double value = 0;       ///< g̃_k
@@ -51,26 +77,38 @@ struct NodeWeightedGap {
 
 }  // namespace
 
-/// The mortar interface (2D segments): see MortarInterface.hpp.
+/// The mortar interface over master facets of type MasterFacetType (2D: Line2; 3D: Tri3, Quad4): see
+/// MortarInterface.hpp.
+template <class MasterFacetType>
 class MortarInterface final : public ContactInterfaceBase {
+  static constexpr int kDim = MasterFacetType::kSpaceDim;
+  using Layout = MortarPairLayout<kDim>;
+  using Facets = std::vector<MasterFacetNodes<MasterFacetType>>;
+  using WeightedGap = NodeWeightedGap<kDim>;
+
  public:
   MortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave)
       : ContactInterfaceBase(std::move(spec), std::move(evaluatesSlave)),
+        perFacet_(static_cast<std::size_t>(spec_.slaveNodesPerFacet())),
         master_(spec_),
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
         trialTraction_(spec_.slaveNodes.size(), 0.0),
         committedTraction_(spec_.slaveNodes.size(), 0.0) {
-    if (spec_.dimension != 2 || spec_.slaveFacets.size() != 2 * spec_.slaveSegmentLengths.size())
-      throw std::logic_error("MortarInterface '" + spec_.label() + "': 2D slave segments with their lengths expected");
+    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4);
+    if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() != perFacet_ * spec_.slaveFacetMeasures.size())
+      throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
+    if (kDim == 3 && frictional())
+      throw std::logic_error("MortarInterface '" + spec_.label() + "': 3D mortar is frictionless (the deck refuses first)");
     segmentsAt_.resize(spec_.slaveNodes.size());
-    for (std::size_t s = 0; s < spec_.slaveFacets.size() / 2; ++s)
-      for (int a = 0; a < 2; ++a) segmentsAt_[slaveIndex(spec_.slaveFacets[2 * s + a])].push_back({s, a});
+    for (std::size_t s = 0; s < spec_.slaveFacets.size() / perFacet_; ++s)
+      for (std::size_t a = 0; a < perFacet_; ++a)
+        segmentsAt_[slaveIndex(spec_.slaveFacets[perFacet_ * s + a])].push_back({s, static_cast<int>(a)});
     // The slave nodes whose committed positions this rank keeps: those of an evaluated node's segments.
     keepsSlave_.assign(spec_.slaveNodes.size(), 0);
     for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
       if (evaluatesSlave_[k])
         for (const SegmentEnd& se : segmentsAt_[k])
-          for (int a = 0; a < 2; ++a) keepsSlave_[slaveIndex(spec_.slaveFacets[2 * se.segment + a])] = 1;
+          for (std::size_t a = 0; a < perFacet_; ++a) keepsSlave_[slaveIndex(spec_.slaveFacets[perFacet_ * se.segment + a])] = 1;
   }
 
   std::unique_ptr<ContactInterfaceBase> clone() const override { return std::make_unique<MortarInterface>(*this); }
@@ -98,7 +136,7 @@ class MortarInterface final : public ContactInterfaceBase {
  private:
   struct SegmentEnd {
     std::size_t segment;
-    int end;  ///< 0 or 1: which node of the segment the slave node is
+    int end;  ///< which node of the slave facet the slave node is
   };
   std::size_t slaveIndex(GlobalIndex node) const {
     const auto& s = spec_.slaveNodes;
@@ -106,33 +144,43 @@ class MortarInterface final : public ContactInterfaceBase {
     if (it == s.end() || *it != node) throw std::logic_error("MortarInterface: a slave facet's node is not a slave node");
     return static_cast<std::size_t>(it - s.begin());
   }
-  /// The nodes of a slave segment's pairs: its two slave nodes, two master nodes (set per master facet),
-  /// and the slave nodes beyond its ends (which enter the averaged nodal normals).
+  /// The nodes of a slave facet's pairs in the kernel's order (2D: its two slave nodes, two master nodes
+  /// set per master facet, and the slave nodes beyond its ends, which enter the averaged nodal normals;
+  /// 3D: its three or four slave nodes, then the master facet's).
   struct PairNodes {
-    std::array<GlobalIndex, kMortarPairCoordinates / kDim> nodes{};
-    MortarSlaveNeighbours neighbours;
-    double referenceLength = 0;
+    std::array<GlobalIndex, Layout::kCoordinates / kDim> nodes{};
+    std::array<char, Layout::kCoordinates / kDim> used{};  ///< which entries the kernel reads
+    MortarSlaveNeighbours neighbours;                     ///< 2D
+    MortarFacetPairShape shape;                           ///< 3D
+    double referenceMeasure = 0;
     std::size_t segment = 0;
   };
   BoundingBoxTree<kDim> searchTree(const Facets& facets) const;
   bool frictional() const { return !spec_.law.isFrictionless(); }
-  NodeWeightedGap weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
+  WeightedGap weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
                               const BoundingBoxTree<kDim>& tree, bool derivatives) const;
   /// The committed positions of a pair's slave and master nodes (friction); false before any commit.
   bool committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const;
   /// Coulomb's return mapping (CoulombReturnMapping, eq. 17–23) on slave node k's weighted slip increment
   /// per tributary length Δũ_k / A_k, with its pressure p_k (eq. M10).
-  ReturnMappingResult<1> tangentialTraction(std::size_t k, const NodeWeightedGap& w, double pressure) const;
+  ReturnMappingResult<1> tangentialTraction(std::size_t k, const WeightedGap& w, double pressure) const;
   void recordPositions(const NodePosition& position, const Facets& facets);
   PairNodes pairNodes(std::size_t segment) const;
-  void addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x, const PairNodes& pair,
+  /// The master facet's nodes and coordinates into the pair's.
+  void setMaster(PairNodes& pair, std::array<double, Layout::kCoordinates>& x, const MasterFacetNodes<MasterFacetType>& m) const;
+  /// The pair's values: its overlap, the slave node's weighted gap and slip increment (2D friction).
+  void addPairValues(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
+                     int facet) const;
+  const typename Layout::Derivatives& pairDerivatives(const std::array<double, Layout::kCoordinates>& x,
+                                                      const PairNodes& pair, int facet) const;
+  void addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
                int facet, bool derivatives) const;
   /// Node k's term: residual −p ∇g̃, tangent (ε/A) ∇g̃ ⊗ ∇g̃ − p ∇²g̃ (eq. M7–M8), and with friction
   /// t_T ∇Δũ and its derivative (eq. M11–M12); adds the force on the slave nodes to `force`.
-  void assemble(std::size_t k, const NodeWeightedGap& w, double pressure, const ReturnMappingResult<1>* tangential,
+  void assemble(std::size_t k, const WeightedGap& w, double pressure, const ReturnMappingResult<1>* tangential,
                 const Sink& sink, std::vector<double>& force) const;
   /// Node k's state; with friction and a closed node, `tangential` receives the return mapping's result.
-  SlaveNodeState stateOf(std::size_t k, const NodeWeightedGap& w, bool frozenOpen,
+  SlaveNodeState stateOf(std::size_t k, const WeightedGap& w, bool frozenOpen,
                          ReturnMappingResult<1>* tangential = nullptr) const;
   SlaveNodeChange changeOf(std::size_t k, const SlaveNodeState& trial, const ReturnMappingResult<1>* tangential) const;
   SlaveNodeChange unchanged(std::size_t k) const {
@@ -142,7 +190,8 @@ class MortarInterface final : public ContactInterfaceBase {
     return c;
   }
 
-  MasterSurface<Line2Facet> master_;
+  std::size_t perFacet_;  ///< nodes per slave facet
+  MasterSurface<MasterFacetType> master_;
   std::vector<std::vector<SegmentEnd>> segmentsAt_;  ///< per slave node: its slave segments
   CoulombReturnMapping<1> friction_;
   std::vector<double> trialTraction_, committedTraction_;  ///< t_T per slave node (eq. 22), along t_m
@@ -152,31 +201,44 @@ class MortarInterface final : public ContactInterfaceBase {
   std::vector<Vector<kDim>> trialSlave_, committedSlave_;
   Facets trialMaster_, committedMaster_;
   /// The segment pairs' derivatives of the evaluation under way, by (slave segment, master facet).
-  mutable std::map<std::pair<std::size_t, int>, MortarPairDerivatives> pairDerivatives_;
+  mutable std::map<std::pair<std::size_t, int>, typename Layout::Derivatives> pairDerivatives_;
 };
 
-MortarInterface::PairNodes MortarInterface::pairNodes(std::size_t segment) const {
+template <class F>
+typename MortarInterface<F>::PairNodes MortarInterface<F>::pairNodes(std::size_t segment) const {
   PairNodes pair;
   pair.segment = segment;
-  pair.referenceLength = spec_.slaveSegmentLengths[segment];
-  for (int a = 0; a < 2; ++a) pair.nodes[a] = spec_.slaveFacets[2 * segment + a];
-  // The neighbour segment at end a (a 2D slave surface has at most one): its other node, and whether it
-  // runs into the pair's segment (σ = +1 at end 0: stored y → s_0; at end 1: s_1 → y) or against it.
-  for (int a = 0; a < 2; ++a)
-    for (const SegmentEnd& other : segmentsAt_[slaveIndex(pair.nodes[a])]) {
-      if (other.segment == segment) continue;
-      pair.nodes[4 + a] = spec_.slaveFacets[2 * other.segment + 1 - other.end];
-      pair.neighbours.orientation[a] = (other.end == 1 - a) ? 1 : -1;
-      break;
-    }
+  pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
+  const int slaveCount = static_cast<int>(perFacet_);
+  for (int a = 0; a < slaveCount; ++a) {
+    pair.nodes[a] = spec_.slaveFacets[perFacet_ * segment + a];
+    pair.used[a] = 1;
+  }
+  if constexpr (kDim == 3) {
+    pair.shape.slaveNodes = slaveCount;
+    pair.shape.masterNodes = F::kNodes;
+  } else {
+    // The neighbour segment at end a (a 2D slave surface has at most one): its other node, and whether it
+    // runs into the pair's segment (σ = +1 at end 0: stored y → s_0; at end 1: s_1 → y) or against it.
+    for (int a = 0; a < 2; ++a)
+      for (const SegmentEnd& other : segmentsAt_[slaveIndex(pair.nodes[a])]) {
+        if (other.segment == segment) continue;
+        pair.nodes[4 + a] = spec_.slaveFacets[2 * other.segment + 1 - other.end];
+        pair.used[4 + a] = 1;
+        pair.neighbours.orientation[a] = (other.end == 1 - a) ? 1 : -1;
+        break;
+      }
+  }
+  for (int b = 0; b < F::kNodes; ++b) pair.used[Layout::kFirstMaster + b] = 1;
   return pair;
 }
 
-BoundingBoxTree<kDim> MortarInterface::searchTree(const Facets& facets) const {
-  // Master boxes enlarged by the largest master and slave segments: a slave segment's box then meets every
-  // master segment the mortar integral can pair it with.
+template <class F>
+BoundingBoxTree<MortarInterface<F>::kDim> MortarInterface<F>::searchTree(const Facets& facets) const {
+  // Master boxes enlarged by the largest master and slave facets: a slave facet's box then meets every
+  // master facet the mortar integral can pair it with.
   double reach = 0;
-  for (const auto& m : facets) reach = std::max(reach, segmentLength(m.x[0], m.x[1]));
+  for (const auto& m : facets) reach = std::max(reach, facetDiameter(m));
   for (double h : spec_.slaveFacetLengths) reach = std::max(reach, h);
   std::vector<BoundingBox<kDim>> boxes(facets.size());
   for (std::size_t s = 0; s < facets.size(); ++s) {
@@ -186,42 +248,77 @@ BoundingBoxTree<kDim> MortarInterface::searchTree(const Facets& facets) const {
   return BoundingBoxTree<kDim>(std::move(boxes));
 }
 
-void MortarInterface::addPair(NodeWeightedGap& w, int end, const SegmentPairCoordinates<double>& x,
-                              const PairNodes& pair, int facet, bool derivatives) const {
-  SegmentPairCommitted then{};
-  const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
-  if (!derivatives) {
-    const MortarPairGaps<double> g = segmentPairGaps(x, pair.referenceLength, pair.neighbours, committed);
+template <class F>
+void MortarInterface<F>::setMaster(PairNodes& pair, std::array<double, Layout::kCoordinates>& x,
+                                   const MasterFacetNodes<F>& m) const {
+  for (int b = 0; b < F::kNodes; ++b) {
+    pair.nodes[Layout::kFirstMaster + b] = m.nodes[b];
+    for (int c = 0; c < kDim; ++c) x[kDim * (Layout::kFirstMaster + b) + c] = m.x[b][c];
+  }
+}
+
+template <class F>
+void MortarInterface<F>::addPairValues(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x,
+                                       const PairNodes& pair, int facet) const {
+  if constexpr (kDim == 2) {
+    SegmentPairCommitted then{};
+    const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
+    const MortarPairGaps<double> g = segmentPairGaps(x, pair.referenceMeasure, pair.neighbours, committed);
     w.overlaps = w.overlaps || g.overlaps;
     if (g.overlaps) {
       w.value += g.weightedGap[end];
       w.slip += g.weightedSlip[end];
     }
-    return;
+  } else {
+    (void)facet;
+    const MortarFacetPairGaps<double> g = facetPairGaps(x, pair.referenceMeasure, pair.shape);
+    w.overlaps = w.overlaps || g.overlaps;
+    if (g.overlaps) w.value += g.weightedGap[end];
   }
-  // Both slave nodes of a segment pair need its derivatives: differentiated once per evaluation.
+}
+
+template <class F>
+auto MortarInterface<F>::pairDerivatives(
+    const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair, int facet) const
+    -> const typename Layout::Derivatives& {
+  // Every slave node of a pair needs its derivatives: differentiated once per evaluation.
   const auto key = std::make_pair(pair.segment, facet);
   auto cached = pairDerivatives_.find(key);
-  if (cached == pairDerivatives_.end())
-    cached = pairDerivatives_.emplace(key, segmentPairDerivatives(x, pair.referenceLength, pair.neighbours, committed)).first;
-  const MortarPairDerivatives& g = cached->second;
+  if (cached != pairDerivatives_.end()) return cached->second;
+  if constexpr (kDim == 2) {
+    SegmentPairCommitted then{};
+    const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
+    return pairDerivatives_.emplace(key, segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, committed))
+        .first->second;
+  } else {
+    return pairDerivatives_.emplace(key, facetPairDerivatives(x, pair.referenceMeasure, pair.shape)).first->second;
+  }
+}
+
+template <class F>
+void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x,
+                                 const PairNodes& pair, int facet, bool derivatives) const {
+  if (!derivatives) return addPairValues(w, end, x, pair, facet);
+  const typename Layout::Derivatives& g = pairDerivatives(x, pair, facet);
   if (!g.overlaps) return;
   w.overlaps = true;
   w.value += g.weightedGap[end];
-  w.slip += g.weightedSlip[end];
+  if constexpr (kDim == 2) w.slip += g.weightedSlip[end];
   const auto masterDofs = master_.dofs(facet);
   const auto masterMotion = master_.dPositiondLambda(facet);
-  constexpr int kPairNodes = kMortarPairCoordinates / kDim;
+  constexpr int kPairNodes = Layout::kCoordinates / kDim;
   std::array<int, kPairNodes> at{};
   for (int a = 0; a < kPairNodes; ++a) {
-    const bool master = a == 2 || a == 3;
-    if (!master && a >= 4 && pair.neighbours.orientation[a - 4] == 0) {
-      at[a] = -1;  // no slave node beyond this end: its coordinates are unused
+    if (!pair.used[a]) {
+      at[a] = -1;  // no node here (no slave node beyond a 2D end, a triangle's fourth): its coordinates are unused
       continue;
     }
-    const GlobalIndex slaveDofs[kDim] = {kDim * pair.nodes[a], kDim * pair.nodes[a] + 1};
-    const double still[kDim] = {0.0, 0.0};
-    at[a] = master ? w.indexOf(pair.nodes[a], &masterDofs[kDim * (a - 2)], &masterMotion[kDim * (a - 2)])
+    const int b = a - Layout::kFirstMaster;
+    const bool master = b >= 0 && b < Layout::kMasterNodes;
+    GlobalIndex slaveDofs[kDim];
+    for (int c = 0; c < kDim; ++c) slaveDofs[c] = kDim * pair.nodes[a] + c;
+    const double still[kDim] = {};
+    at[a] = master ? w.indexOf(pair.nodes[a], &masterDofs[kDim * b], &masterMotion[kDim * b])
                    : w.indexOf(pair.nodes[a], slaveDofs, still);
   }
   const int n = w.size();
@@ -237,35 +334,41 @@ void MortarInterface::addPair(NodeWeightedGap& w, int end, const SegmentPairCoor
   grow(w.slipHessian);
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
   w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
-  constexpr int m = kMortarPairCoordinates;
+  constexpr int m = Layout::kCoordinates;
   for (int i = 0; i < m; ++i) {
     if (at[i / kDim] < 0) continue;
     const int gi = kDim * at[i / kDim] + i % kDim;
     w.gradient[gi] += g.gradient[end][i];
-    w.slipGradient[gi] += g.slipGradient[end][i];
+    if constexpr (kDim == 2) w.slipGradient[gi] += g.slipGradient[end][i];
     for (int j = 0; j < m; ++j) {
       if (at[j / kDim] < 0) continue;
       const int gj = kDim * at[j / kDim] + j % kDim;
       w.hessian[gi * n + gj] += g.hessian[end][i * m + j];
-      w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+      if constexpr (kDim == 2) w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
     }
   }
 }
 
-bool MortarInterface::committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const {
-  if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
-  for (int a = 0; a < 2; ++a) {
-    const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
-    const Vector<kDim>& xm = committedMaster_[facet].x[a];
-    for (int c = 0; c < kDim; ++c) {
-      out[kDim * a + c] = xs[c];
-      out[4 + kDim * a + c] = xm[c];
+template <class F>
+bool MortarInterface<F>::committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const {
+  if constexpr (kDim != 2) {
+    return false;  // 3D mortar is frictionless: no slip increments
+  } else {
+    if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
+    for (int a = 0; a < 2; ++a) {
+      const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
+      const Vector<kDim>& xm = committedMaster_[facet].x[a];
+      for (int c = 0; c < kDim; ++c) {
+        out[kDim * a + c] = xs[c];
+        out[4 + kDim * a + c] = xm[c];
+      }
     }
+    return true;
   }
-  return true;
 }
 
-void MortarInterface::recordPositions(const NodePosition& position, const Facets& facets) {
+template <class F>
+void MortarInterface<F>::recordPositions(const NodePosition& position, const Facets& facets) {
   trialSlave_.resize(spec_.slaveNodes.size());
   for (std::size_t j = 0; j < spec_.slaveNodes.size(); ++j)
     if (keepsSlave_[j]) position(spec_.slaveNodes[j], trialSlave_[j].data());
@@ -275,8 +378,9 @@ void MortarInterface::recordPositions(const NodePosition& position, const Facets
   if (committedMaster_.empty()) committedMaster_ = trialMaster_;
 }
 
-ReturnMappingResult<1> MortarInterface::tangentialTraction(std::size_t k, const NodeWeightedGap& w,
-                                                           double pressure) const {
+template <class F>
+ReturnMappingResult<1> MortarInterface<F>::tangentialTraction(std::size_t k, const WeightedGap& w,
+                                                              double pressure) const {
   ReturnMappingInput<1> in;
   in.committedTraction[0] = committedTraction_[k];
   in.slipIncrement[0] = w.slip / spec_.slaveAreas[k];  // a length: Δũ_k is a slip times a length
@@ -286,13 +390,15 @@ ReturnMappingResult<1> MortarInterface::tangentialTraction(std::size_t k, const 
   return friction_.map(in);
 }
 
-NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
-                                             const BoundingBoxTree<kDim>& tree, bool derivatives) const {
-  NodeWeightedGap w;
+template <class F>
+auto MortarInterface<F>::weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
+                                     const BoundingBoxTree<kDim>& tree, bool derivatives) const -> WeightedGap {
+  WeightedGap w;
   if (derivatives) {  // slave node k first: the assembly reads the slave node from the first DOFs
     const GlobalIndex node = spec_.slaveNodes[k];
-    const GlobalIndex dofs[kDim] = {kDim * node, kDim * node + 1};
-    const double still[kDim] = {0.0, 0.0};
+    GlobalIndex dofs[kDim];
+    for (int c = 0; c < kDim; ++c) dofs[c] = kDim * node + c;
+    const double still[kDim] = {};
     w.indexOf(node, dofs, still);
     w.gradient.assign(kDim, 0.0);
     w.hessian.assign(kDim * kDim, 0.0);
@@ -302,30 +408,31 @@ NodeWeightedGap MortarInterface::weightedGap(std::size_t k, const NodePosition& 
   std::vector<int> hits;
   for (const SegmentEnd& se : segmentsAt_[k]) {
     PairNodes pair = pairNodes(se.segment);
-    SegmentPairCoordinates<double> x{};
-    position(pair.nodes[0], &x[0]);
-    position(pair.nodes[1], &x[2]);
-    for (int a = 0; a < 2; ++a)
-      if (pair.neighbours.orientation[a] != 0) position(pair.nodes[4 + a], &x[8 + 2 * a]);
+    std::array<double, Layout::kCoordinates> x{};
     BoundingBox<kDim> box;
-    box.include({x[0], x[1]});
-    box.include({x[2], x[3]});
+    for (int a = 0; a < Layout::kFirstMaster; ++a) {
+      if (!pair.used[a]) continue;
+      position(pair.nodes[a], &x[kDim * a]);
+      if (a < static_cast<int>(perFacet_)) {
+        Vector<kDim> p;
+        std::copy(&x[kDim * a], &x[kDim * a] + kDim, p.begin());
+        box.include(p);
+      }
+    }
+    for (int a = Layout::kFirstMaster + Layout::kMasterNodes; a < Layout::kCoordinates / kDim; ++a)
+      if (pair.used[a]) position(pair.nodes[a], &x[kDim * a]);
     hits.clear();
     tree.queryBox(box, hits);
     std::sort(hits.begin(), hits.end());  // the same summation order on every rank and every call
     for (int f : hits) {
-      for (int a = 0; a < 2; ++a) {
-        pair.nodes[2 + a] = facets[f].nodes[a];
-        x[4 + 2 * a] = facets[f].x[a][0];
-        x[5 + 2 * a] = facets[f].x[a][1];
-      }
+      setMaster(pair, x, facets[f]);
       addPair(w, se.end, x, pair, f, derivatives);
     }
   }
   return w;
 }
-
-SlaveNodeState MortarInterface::stateOf(std::size_t k, const NodeWeightedGap& w, bool frozenOpen,
+template <class F>
+SlaveNodeState MortarInterface<F>::stateOf(std::size_t k, const WeightedGap& w, bool frozenOpen,
                                         ReturnMappingResult<1>* tangential) const {
   SlaveNodeState out;
   // The gap shown and counted: g̃_k / A_k, so that the pressure is −ε_N times it, as t_N = ε_N g_N (eq. 16).
@@ -345,7 +452,8 @@ SlaveNodeState MortarInterface::stateOf(std::size_t k, const NodeWeightedGap& w,
   return out;
 }
 
-SlaveNodeChange MortarInterface::changeOf(std::size_t k, const SlaveNodeState& trial,
+template <class F>
+SlaveNodeChange MortarInterface<F>::changeOf(std::size_t k, const SlaveNodeState& trial,
                                           const ReturnMappingResult<1>* tangential) const {
   SlaveNodeChange c = unchanged(k);
   c.trialGap = trial.gap;
@@ -363,7 +471,8 @@ SlaveNodeChange MortarInterface::changeOf(std::size_t k, const SlaveNodeState& t
   return c;
 }
 
-void MortarInterface::assemble(std::size_t k, const NodeWeightedGap& w, double pressure,
+template <class F>
+void MortarInterface<F>::assemble(std::size_t k, const WeightedGap& w, double pressure,
                                const ReturnMappingResult<1>* tangential, const Sink& sink,
                                std::vector<double>& force) const {
   const int n = w.size();
@@ -398,7 +507,8 @@ void MortarInterface::assemble(std::size_t k, const NodeWeightedGap& w, double p
       for (int c = 0; c < kDim; ++c) force[c] -= residual[kDim * a + c];
 }
 
-void MortarInterface::evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) {
+template <class F>
+void MortarInterface<F>::evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) {
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
   if (frictional()) recordPositions(position, facets);
@@ -409,7 +519,7 @@ void MortarInterface::evaluate(const NodePosition& position, double loadFactor, 
     // Frozen: nodes open at the commit carry no force, except those already touching (zero gap).
     const bool frozenOpen = frozen_ && committedOutput_[k].status == ContactStatus::Open &&
                             !(committedOutput_[k].gap <= kTouchingGap);
-    NodeWeightedGap w = weightedGap(k, position, facets, tree, false);
+    WeightedGap w = weightedGap(k, position, facets, tree, false);
     ReturnMappingResult<1> tangential;
     SlaveNodeState out = stateOf(k, w, frozenOpen, &tangential);
     const bool closed = out.status != ContactStatus::Open;
@@ -427,7 +537,8 @@ void MortarInterface::evaluate(const NodePosition& position, double loadFactor, 
   if (updateTrial) trialForce_ = force;
 }
 
-std::vector<SlaveNodeChange> MortarInterface::changesAt(const NodePosition& position, double loadFactor) const {
+template <class F>
+std::vector<SlaveNodeChange> MortarInterface<F>::changesAt(const NodePosition& position, double loadFactor) const {
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
   std::vector<SlaveNodeChange> out;
@@ -441,12 +552,16 @@ std::vector<SlaveNodeChange> MortarInterface::changesAt(const NodePosition& posi
   return out;
 }
 
-void MortarInterface::commit() {
+template <class F>
+void MortarInterface<F>::commit() {
   ContactCounts counts;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k] || trialOutput_[k].status == ContactStatus::Open) continue;
     ++counts.active;
     if (committedOutput_[k].status == ContactStatus::Open) ++counts.newlyActive;
+    // Without friction a closed node is neither sticking nor slipping (stateOf marks it Slip only because
+    // it slides freely): it counts as active alone, stick = slip = 0, as node-to-facet (issue 25, point 4).
+    if (!frictional()) continue;
     if (trialOutput_[k].status == ContactStatus::Stick) ++counts.stick;
     if (trialOutput_[k].status == ContactStatus::Slip) ++counts.slip;
   }
@@ -460,7 +575,8 @@ void MortarInterface::commit() {
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
 }
 
-void MortarInterface::rollback() {
+template <class F>
+void MortarInterface<F>::rollback() {
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
   trialTraction_ = committedTraction_;
@@ -473,8 +589,8 @@ namespace {
 // A mortar slave node's fields in the restart file: its change over the last increment, its output, its
 // tangential traction and its committed position (NaN when no friction kept it: the slip increments'
 // start, eq. M9).
-template <class Change, class Output, class Fields>
-void mortarSlaveFields(Change& c, Output& o, double& traction, Vector<2>& position, Fields& field) {
+template <class Change, class Output, class Position, class Fields>
+void mortarSlaveFields(Change& c, Output& o, double& traction, Position& position, Fields& field) {
   slaveChangeFields(c, field);
   slaveOutputFields(o, field);
   field("tangential_traction", traction);
@@ -482,7 +598,8 @@ void mortarSlaveFields(Change& c, Output& o, double& traction, Vector<2>& positi
 }
 }  // namespace
 
-void MortarInterface::saveCommittedSlaves(StateRecord& table) const {
+template <class F>
+void MortarInterface<F>::saveCommittedSlaves(StateRecord& table) const {
   StateTableWriter rows(table);
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave()[k]) continue;
@@ -490,14 +607,16 @@ void MortarInterface::saveCommittedSlaves(StateRecord& table) const {
     SlaveNodeChange c = committedIncrement_[k];
     SlaveNodeState o = committedOutput_[k];
     double traction = committedTraction_[k];
-    Vector<2> x{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+    Vector<kDim> x;
+    x.fill(std::numeric_limits<double>::quiet_NaN());
     if (!committedSlave_.empty()) x = committedSlave_[k];
     mortarSlaveFields(c, o, traction, x, rows);
   }
   rows.finish();
 }
 
-void MortarInterface::restoreSlaves(const StateRecord& table) {
+template <class F>
+void MortarInterface<F>::restoreSlaves(const StateRecord& table) {
   StateTableReader rows(table);
   std::vector<Vector<kDim>> positions(spec_.slaveNodes.size());
   std::vector<char> known(spec_.slaveNodes.size(), 0);
@@ -505,10 +624,10 @@ void MortarInterface::restoreSlaves(const StateRecord& table) {
     SlaveNodeChange c;
     SlaveNodeState o;
     double traction = 0;
-    Vector<2> x{};
+    Vector<kDim> x{};
     mortarSlaveFields(c, o, traction, x, rows);
     // Every row's position: a node's neighbour may be owned by another rank.
-    known[k] = std::isfinite(x[0]) && std::isfinite(x[1]);
+    known[k] = std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
     positions[k] = x;
     if (!evaluatesSlave()[k]) return;
     committedIncrement_[k] = c;
@@ -531,7 +650,8 @@ void mortarMasterFields(Facet& m, Fields& field) {
 }
 }  // namespace
 
-void MortarInterface::saveCommittedMaster(StateRecord& table) const {
+template <class F>
+void MortarInterface<F>::saveCommittedMaster(StateRecord& table) const {
   StateTableWriter rows(table);
   for (std::size_t i = 0; i < committedMaster_.size(); ++i) {
     rows.beginRow(static_cast<std::int64_t>(i));
@@ -541,7 +661,8 @@ void MortarInterface::saveCommittedMaster(StateRecord& table) const {
   rows.finish();
 }
 
-void MortarInterface::restoreMaster(const StateRecord& table) {
+template <class F>
+void MortarInterface<F>::restoreMaster(const StateRecord& table) {
   StateTableReader rows(table);
   Facets facets(rows.rows());
   for (std::size_t i = 0; i < facets.size(); ++i) {
@@ -552,7 +673,10 @@ void MortarInterface::restoreMaster(const StateRecord& table) {
 }
 
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
-  return std::make_unique<MortarInterface>(std::move(spec), std::move(evaluatesSlave));
+  if (spec.dimension == 2) return std::make_unique<MortarInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+  if (spec.nodesPerFacet() == 3)
+    return std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
+  return std::make_unique<MortarInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
 }
 
 ContactInterfaceSpec mortarReservationSpec(const ContactInterfaceSpec& spec) {
@@ -568,16 +692,21 @@ ContactInterfaceSpec mortarReservationSpec(const ContactInterfaceSpec& spec) {
 std::vector<std::size_t> mortarSlaveNeighbours(const ContactInterfaceSpec& spec, std::size_t k) {
   const auto& s = spec.slaveNodes;
   const auto index = [&](GlobalIndex node) { return static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), node) - s.begin()); };
+  const std::size_t perFacet = static_cast<std::size_t>(spec.slaveNodesPerFacet());
+  // The other nodes of the slave facets at node j.
   const auto adjacent = [&](std::size_t j, std::vector<std::size_t>& out) {
-    for (std::size_t f = 0; f + 1 < spec.slaveFacets.size(); f += 2)
-      for (int a = 0; a < 2; ++a)
-        if (spec.slaveFacets[f + a] == s[j]) out.push_back(index(spec.slaveFacets[f + 1 - a]));
+    for (std::size_t f = 0; f + perFacet <= spec.slaveFacets.size(); f += perFacet)
+      if (std::find(&spec.slaveFacets[f], &spec.slaveFacets[f] + perFacet, s[j]) != &spec.slaveFacets[f] + perFacet)
+        for (std::size_t a = 0; a < perFacet; ++a)
+          if (spec.slaveFacets[f + a] != s[j]) out.push_back(index(spec.slaveFacets[f + a]));
   };
-  // Two segments away: the nodal normals at node k's neighbours depend on their own neighbours.
   std::vector<std::size_t> near{k};
   adjacent(k, near);
   std::vector<std::size_t> out = near;
-  for (std::size_t i = 1; i < near.size(); ++i) adjacent(near[i], out);
+  // 2D: two segments away, the nodal normals at node k's neighbours depending on their own neighbours.
+  // 3D: one facet away, a facet pair depending on its own nodes only (MortarFacetPair.hpp).
+  if (spec.dimension == 2)
+    for (std::size_t i = 1; i < near.size(); ++i) adjacent(near[i], out);
   std::sort(out.begin() + 1, out.end());
   out.erase(std::unique(out.begin() + 1, out.end()), out.end());
   out.erase(std::remove(out.begin() + 1, out.end(), k), out.end());

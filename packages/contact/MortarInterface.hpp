@@ -1,14 +1,15 @@
 #pragma once
-// Mortar (segment-to-segment) contact of one interface, 2D, penalty, frictionless or Coulomb
-// (theory-contact.md §13): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over its slave
-// segments (MortarSegment.hpp: segmented along the averaged nodal normals, the gap along the master's
-// normal), the pressure p_k = ε_N ⟨−g̃_k⟩ / A_k (A_k its reference tributary length, as the node-to-segment
-// force uses) and the contact energy Σ_k ε_N ⟨−g̃_k⟩² / (2 A_k), whose gradient is the residual and whose
+// Mortar (segment-to-segment) contact of one interface, penalty; 2D frictionless or Coulomb, 3D
+// frictionless (theory-contact.md §13): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over
+// its slave facets (2D, MortarSegment.hpp: segmented along the averaged nodal normals; 3D,
+// MortarFacetPair.hpp: the facets projected on the slave facet's plane and clipped; the gap along the
+// master's normal in both), the pressure p_k = ε_N ⟨−g̃_k⟩ / A_k (A_k its reference tributary length or
+// area, as the node-to-facet force uses) and the contact energy Σ_k ε_N ⟨−g̃_k⟩² / (2 A_k), whose gradient is the residual and whose
 // Hessian, with the exact second derivatives of g̃_k, the tangent. With friction, the weighted slip
 // increment Δũ_k (eq. M9) goes through node-to-segment's return mapping (CoulombReturnMapping) and adds
 // t_T ∇Δũ_k and its linearisation (eq. M11–M12). Behind the same ContactInterfaceBase as node-to-segment:
 // the owner of slave node k assembles node k's term (its weighted gap's whole support: the slave nodes
-// within two segments and the master nodes under its segments), and Contact Beta counts events on the
+// within two segments in 2D, of its facets in 3D, and the master nodes under its facets), and Contact Beta counts events on the
 // slave nodes' weighted gaps and stick/slip states.
 #include <memory>
 #include <vector>
@@ -17,7 +18,8 @@
 
 namespace contessa::contact {
 
-/// The mortar interface of spec (spec.mortar; 2D only: a logic_error otherwise, the deck refuses first).
+/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles and quadrilaterals; 3D frictionless
+/// only: a logic_error otherwise, the deck refuses first).
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
 
 /// The spec whose reservation (CouplingReservation) holds every master node a mortar slave node's term can
@@ -25,9 +27,9 @@ std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec s
 /// always; the whole master surface would make each slave node's block dense in all its nodes).
 ContactInterfaceSpec mortarReservationSpec(const ContactInterfaceSpec& spec);
 
-/// The slave nodes (indices into spec.slaveNodes) within two slave segments of slave node k, k first: the
-/// slave nodes a mortar slave node's term couples (its segments' nodes, and theirs through the averaged
-/// nodal normals).
+/// The slave nodes (indices into spec.slaveNodes) a mortar slave node k's term couples, k first: in 2D
+/// those within two slave segments (its segments' nodes, and theirs through the averaged nodal normals), in
+/// 3D those of its slave facets.
 std::vector<std::size_t> mortarSlaveNeighbours(const ContactInterfaceSpec& spec, std::size_t k);
 
 }  // namespace contessa::contact

@@ -1,6 +1,7 @@
 #include "deck/ProblemDefinition.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -146,10 +147,12 @@ contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const
 void requireMortarSupported(const ParameterList& list, int dimension, bool revolved, const contact::ContactLawParameters& law,
                             const std::string& where) {
   const std::string what = where + "/Discretization: Mortar is implemented ";
-  requireInput(dimension == 2, what + "in 2D only, this mesh is 3D; use Node To Segment");
   requireInput(!law.isAugmented(), where + "/Enforcement: Augmented Lagrangian is implemented for Node To Segment only, not "
                                           "with Discretization = Mortar; use Enforcement = Penalty");
-  requireInput(!revolved, what + "for plane strain only, not for an axisymmetric problem; use Node To Segment");
+  requireInput(dimension == 2 || law.isFrictionless(),
+               where + "/Friction Coefficient: Discretization = Mortar is frictionless in 3D (penalty, no Coulomb "
+                       "friction yet); set Friction Coefficient = 0 or use Discretization = Node To Segment");
+  requireInput(!revolved, what + "for plane strain and 3D only, not for an axisymmetric problem; use Node To Segment");
   requireInput(!list.get<bool>("Two Pass"), what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
 
@@ -167,6 +170,40 @@ void requireSmoothingSupported(const contact::ContactInterfaceSpec& spec, const 
 void smoothMaster(contact::ContactInterfaceSpec& spec) {
   spec.masterFacets = contact::hermiteMasterFacets(spec.masterFacets);
   spec.masterFacetNodes = contact::HermiteLine4Facet::kNodes;
+}
+
+// Whether a side set's facets are ones the mortar kernels integrate: 2-node segments in 2D (MortarSegment),
+// 3-node triangles and 4-node quadrilaterals in 3D (MortarFacetPair).
+void requireMortarFacets(int dimension, int nodesPerFacet, const std::string& set, const std::string& where) {
+  const bool linear = dimension == 2 ? nodesPerFacet == 2 : (nodesPerFacet == 3 || nodesPerFacet == 4);
+  requireInput(linear, where + "/Discretization: Mortar takes " +
+                           (dimension == 2 ? std::string("2-node segments") : std::string("3- or 4-node faces")) +
+                           "; side set '" + set + "' has " + std::to_string(nodesPerFacet) +
+                           "-node sides (use Node To Segment)");
+}
+
+// The reference measure of each slave facet, the mortar's dΓ_0 (InterfaceSpec::slaveFacetMeasures): a
+// segment's length (2D), a triangle's area, a quadrilateral's |d_1 × d_2| / 2 (its diagonals': the area
+// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp).
+std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& facets, int perFacet,
+                                       const SurfaceCoordinates& coordinates) {
+  std::vector<double> out;
+  const auto at = [&](std::size_t i) { return coordinates.at(facets[i]); };
+  const auto diff = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return std::array<double, 3>{b[0] - a[0], b[1] - a[1], a.size() > 2 ? b[2] - a[2] : 0.0};
+  };
+  for (std::size_t f = 0; f + perFacet <= facets.size(); f += static_cast<std::size_t>(perFacet)) {
+    if (perFacet == 2) {
+      const auto d = diff(at(f), at(f + 1));
+      out.push_back(std::hypot(d[0], d[1]));
+      continue;
+    }
+    const auto u = diff(at(f), at(f + 2));
+    const auto v = perFacet == 3 ? diff(at(f), at(f + 1)) : diff(at(f + 1), at(f + 3));
+    const std::array<double, 3> c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    out.push_back(0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
+  }
+  return out;
 }
 
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
@@ -200,15 +237,10 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveFacets = slave.facets;
   spec.slaveFacetNodes = slave.nodesPerFacet;
-  requireInput(!spec.mortar || slave.nodesPerFacet == 2,
-               where + "/Discretization: Mortar takes 2-node segments; side set '" + slaveSet + "' has " +
-                   std::to_string(slave.nodesPerFacet) + "-node sides (use Node To Segment)");
-  if (spec.dimension == 2 && slave.nodesPerFacet == 2)
-    for (std::size_t f = 0; f + 1 < slave.facets.size(); f += 2) {
-      const auto& a = coordinates.at(slave.facets[f]);
-      const auto& b = coordinates.at(slave.facets[f + 1]);
-      spec.slaveSegmentLengths.push_back(std::hypot(b[0] - a[0], b[1] - a[1]));
-    }
+  if (spec.mortar) {
+    requireMortarFacets(mesh.dimension, slave.nodesPerFacet, slaveSet, where);
+    spec.slaveFacetMeasures = slaveFacetMeasures(slave.facets, slave.nodesPerFacet, coordinates);
+  }
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
   spec.slaveFacetLengths = slave.facetLengths;
@@ -236,9 +268,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   const auto master = gatheredSurface(part, masterSet, where + "/Master Side Set", coordinates, revolved);
   spec.masterFacets = master.facets;
   spec.masterFacetNodes = master.nodesPerFacet;
-  requireInput(!spec.mortar || master.nodesPerFacet == 2,
-               where + "/Discretization: Mortar takes 2-node segments; side set '" + masterSet + "' has " +
-                   std::to_string(master.nodesPerFacet) + "-node sides (use Node To Segment)");
+  if (spec.mortar) requireMortarFacets(mesh.dimension, master.nodesPerFacet, masterSet, where);
   const bool smoothed = list.get<std::string>("Master Smoothing") == "Hermite";
   if (smoothed) requireSmoothingSupported(spec, where, masterSet);
   if (smoothed) smoothMaster(spec);
@@ -340,8 +370,8 @@ RCP<const ParameterList> contactValidParameters() {
   p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
   setChoice(*p, "Discretization", "Node To Segment", {"Node To Segment", "Mortar"},
             "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: weighted gaps "
-            "over the slave segments against every master segment they overlap (2D, frictionless, single pass: "
-            "passes the non-matching contact patch test)");
+            "over the slave facets against every master facet they overlap (2D with Coulomb friction; 3D on "
+            "Tri3/Quad4 faces, frictionless; penalty, single pass: passes the non-matching contact patch test)");
   setChoice(*p, "Master Smoothing", "None", {"None", "Hermite"},
             "None: the master surface is its facets. Hermite (2D node-to-segment, deformable 2-node master): each "
             "master segment is the cubic Hermite curve through its ends with the tangents of the neighbouring "

@@ -183,7 +183,7 @@ ContactInterfaceSpec patchSpec(bool rigidMaster) {
   spec.mortar = true;
   spec.slaveNodes = {0, 1, 2, 3};
   spec.slaveFacets = {0, 1, 1, 2, 2, 3};
-  spec.slaveSegmentLengths = {1.0, 1.0, 1.0};
+  spec.slaveFacetMeasures = {1.0, 1.0, 1.0};
   spec.slaveAreas = {0.5, 1.0, 1.0, 0.5};
   spec.slaveFacetLengths = {1.0, 1.0, 1.0, 1.0};
   spec.law.normalPenalty = kPenalty;

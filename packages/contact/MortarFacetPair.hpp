@@ -1,0 +1,70 @@
+#pragma once
+// The mortar integral of one slave facet against one master facet (3D; 3- and 4-node facets): the
+// segmentation and the weighted gaps g̃_a = ∫ N_a g dA of the slave facet's nodes over the part of the
+// slave facet the master facet covers (theory-contact.md §13, "3D segmentation", eq. M13–M17). As the 2D
+// segment pair (MortarSegment.hpp), written once as a template on the number type and evaluated with
+// nested dual numbers (MortarDual.hpp) for the exact gradient and Hessian with respect to the 24 nodal
+// coordinates: the projection plane, the clip polygon's vertices, the Gauss points' parametric
+// coordinates on both facets and the master normal all depend on the nodes, and that dependence is
+// differentiated to round-off (the full linearisation of the segmentation, Popp et al. 2010), with no
+// hand-derived formula.
+//
+// Segmentation (Puso & Laursen 2004 §3): both facets are projected along the slave facet's normal n_0 at
+// its centre onto the plane through its centre, the projected master polygon clips the projected slave
+// polygon (MortarClipping.hpp), and the clip polygon is cut into triangles about its vertex centroid. A
+// Gauss point p of a triangle maps back to the slave point x_s(ξ) and the master point x_m(η) whose
+// projections are p; the gap is measured along the master's outward normal there, g = (x_s − x_m) · n_m
+// (as in 2D, MortarSegment.cpp says why). The plane's normal is the slave facet's own, not the average
+// of its nodes' averaged normals: a pair then depends on its own eight nodes only (theory-contact §13
+// discusses what this changes on curved faces).
+#include <array>
+
+namespace contessa::contact {
+
+/// A 3D pair's coordinates: slave nodes 0–3 then master nodes 0–3, three coordinates each (a 3-node
+/// facet's fourth node's entries are zero and unused). Each facet is ordered so that its right-hand
+/// normal points out of its body: the slave's towards the master, the master's towards the slave.
+constexpr int kMortarFacetNodes = 4;
+constexpr int kMortarFacetPairCoordinates = 3 * 2 * kMortarFacetNodes;
+template <class T>
+using FacetPairCoordinates = std::array<T, kMortarFacetPairCoordinates>;
+
+/// The node counts of the pair's slave and master facets (3: Tri3, 4: Quad4).
+struct MortarFacetPairShape {
+  int slaveNodes = 4;
+  int masterNodes = 4;
+};
+
+/// Weighted gaps of the slave facet's nodes and their mortar areas ∫ N_a dA_0 over the overlap.
+template <class T>
+struct MortarFacetPairGaps {
+  bool overlaps = false;
+  std::array<T, kMortarFacetNodes> weightedGap{};
+  std::array<T, kMortarFacetNodes> mortarArea{};
+};
+
+/// The integral over the overlap (eq. M13–M17). The measure is the slave facet's reference area: the
+/// current projected area scaled by A_0 / A_projected(slave facet), so that, as in 2D, the weighted gaps
+/// are per reference area and a uniform gap g gives g̃_a = g A_a exactly (the patch test).
+template <class T>
+MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, double referenceArea,
+                                          const MortarFacetPairShape& shape);
+
+/// Weighted gaps with their gradient and Hessian with respect to the 24 coordinates.
+struct MortarFacetPairDerivatives {
+  static constexpr int kCoordinates = kMortarFacetPairCoordinates;
+  bool overlaps = false;
+  std::array<double, kMortarFacetNodes> weightedGap{};
+  std::array<double, kMortarFacetNodes> mortarArea{};
+  std::array<std::array<double, kCoordinates>, kMortarFacetNodes> gradient{};
+  std::array<std::array<double, kCoordinates * kCoordinates>, kMortarFacetNodes> hessian{};  ///< row-major
+};
+
+/// The pair's weighted gaps (values only).
+MortarFacetPairGaps<double> facetPairGaps(const FacetPairCoordinates<double>& x, double referenceArea,
+                                          const MortarFacetPairShape& shape = {});
+/// The pair's weighted gaps differentiated twice.
+MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
+                                                const MortarFacetPairShape& shape = {});
+
+}  // namespace contessa::contact

@@ -1,0 +1,323 @@
+// The 3D mortar kernel (MortarFacetPair: projection, Sutherland–Hodgman clipping, centroid triangulation)
+// and the 3D mortar interface: the weighted gaps of non-matching facet pairs against their closed form,
+// their exact first and second derivatives against central differences (facets cut by the clip, warped
+// quadrilaterals, triangles), and the interface's residual, tangent and ∂r/∂λ against central differences
+// of its residual.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <cmath>
+#include <vector>
+
+#include "contact/MortarFacetPair.hpp"
+#include "contact/MortarInterface.hpp"
+
+namespace contessa::contact {
+namespace {
+
+constexpr int kM = kMortarFacetPairCoordinates;
+
+// The unit square slave facet on z = 0 (anticlockwise seen from +z: its normal points up, out of the
+// body below) under a master rectangle [x0, x1] × [y0, y1] at height z (clockwise seen from +z: its
+// normal points down, out of the body above).
+FacetPairCoordinates<double> flatPair(double x0, double x1, double y0, double y1, double z) {
+  return {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, x0, y0, z, x0, y1, z, x1, y1, z, x1, y0, z};
+}
+
+TEST(MortarFacetPair, WeightedGapsOfAFlatPartialOverlapAreTheGapTimesTheMortarAreas) {
+  // The master covers x ∈ [0.3, 1] of the slave: ∫ N_0 = ∫_0.3^1 (1 − x) dx ∫_0^1 (1 − y) dy = 0.245 × 0.5,
+  // ∫ N_1 = ∫_0.3^1 x dx × 0.5 = 0.455 × 0.5 (N_0 = (1 − x)(1 − y), N_1 = x (1 − y), ...).
+  const double gap = -0.01;
+  const MortarFacetPairGaps<double> g = facetPairGaps(flatPair(0.3, 1.7, -0.2, 1.5, gap), 1.0);
+  ASSERT_TRUE(g.overlaps);
+  const double expected[4] = {0.1225, 0.2275, 0.2275, 0.1225};
+  for (int a = 0; a < 4; ++a) {
+    EXPECT_NEAR(g.mortarArea[a], expected[a], 1e-14) << a;
+    EXPECT_NEAR(g.weightedGap[a], gap * expected[a], 1e-15) << a;
+  }
+  // A stretched slave facet (reference area 2 against a current 1): the measure is the reference area's.
+  const MortarFacetPairGaps<double> stretched = facetPairGaps(flatPair(0.3, 1.7, -0.2, 1.5, gap), 2.0);
+  EXPECT_NEAR(stretched.mortarArea[1], 2 * expected[1], 1e-14);
+}
+
+TEST(MortarFacetPair, AnObliqueMasterCutsTheSlaveAlongItsEdgesAndTheAreasSumToTheOverlap) {
+  // A unit master square turned by 30° about the slave's centre (clockwise from +z): the clip polygon is
+  // the octagon where each slave edge meets the two master edges crossing it, a master edge being the line
+  // n · (p − c) = ½ of outward normal n. Its area (shoelace of those 8 points) is the sum of the mortar
+  // areas, and the gap being uniform, g̃_a = g ∫ N_a.
+  const double c = 0.5, t = M_PI / 6, s = std::sin(t), co = std::cos(t), gap = -0.02;
+  FacetPairCoordinates<double> x = flatPair(0, 1, 0, 1, gap);
+  const double corners[4][2] = {{-0.5, -0.5}, {-0.5, 0.5}, {0.5, 0.5}, {0.5, -0.5}};
+  for (int b = 0; b < 4; ++b) {
+    x[12 + 3 * b] = c + co * corners[b][0] - s * corners[b][1];
+    x[13 + 3 * b] = c + s * corners[b][0] + co * corners[b][1];
+  }
+  const MortarFacetPairGaps<double> g = facetPairGaps(x, 1.0);
+  ASSERT_TRUE(g.overlaps);
+  std::vector<std::array<double, 2>> octagon;
+  const double normals[4][2] = {{co, s}, {-s, co}, {-co, -s}, {s, -co}};
+  const double slaveEdges[4][4] = {{0, 0, 1, 0}, {1, 0, 0, 1}, {1, 1, -1, 0}, {0, 1, 0, -1}};  // start, direction
+  for (const auto& e : slaveEdges) {
+    std::vector<double> params;
+    for (const auto& n : normals) {
+      const double along = n[0] * e[2] + n[1] * e[3];
+      if (std::abs(along) < 1e-12) continue;
+      const double p = (0.5 - n[0] * (e[0] - c) - n[1] * (e[1] - c)) / along;
+      if (p > 0 && p < 1) params.push_back(p);
+    }
+    std::sort(params.begin(), params.end());
+    for (double p : params) octagon.push_back({e[0] + p * e[2], e[1] + p * e[3]});
+  }
+  ASSERT_EQ(octagon.size(), 8u);
+  double twiceArea = 0;
+  for (std::size_t i = 0; i < octagon.size(); ++i) {
+    const auto& p = octagon[i];
+    const auto& q = octagon[(i + 1) % octagon.size()];
+    twiceArea += p[0] * q[1] - p[1] * q[0];
+  }
+  double overlap = 0;
+  for (double m : g.mortarArea) overlap += m;
+  EXPECT_NEAR(overlap, 0.5 * twiceArea, 1e-13);
+  EXPECT_LT(overlap, 0.95);  // a real cut
+  for (int a = 0; a < 4; ++a) {
+    EXPECT_NEAR(g.weightedGap[a], gap * g.mortarArea[a], 1e-15);
+    EXPECT_NEAR(g.mortarArea[a], 0.25 * overlap, 1e-13) << "the octagon is symmetric about the centre";
+  }
+}
+
+TEST(MortarFacetPair, PairsThatDoNotFaceOrOverlapOrLieFarAwayCountNothing) {
+  EXPECT_FALSE(facetPairGaps(flatPair(1.2, 2.0, 0.0, 1.0, 0.0), 1.0).overlaps);  // beside the slave
+  FacetPairCoordinates<double> turned = flatPair(0, 1, 0, 1, 0.0);               // normal up, like the slave's
+  std::swap(turned[15], turned[21]), std::swap(turned[16], turned[22]);
+  EXPECT_FALSE(facetPairGaps(turned, 1.0).overlaps);
+  EXPECT_FALSE(facetPairGaps(flatPair(0, 1, 0, 1, -3.0), 1.0).overlaps);  // far behind: another side
+  EXPECT_FALSE(facetPairGaps(flatPair(0, 1, 0, 1, 3.0), 1.0).overlaps);   // far in front
+  EXPECT_TRUE(facetPairGaps(flatPair(0, 1, 0, 1, 0.5), 1.0).overlaps);
+}
+
+// A warped slave quadrilateral under a warped, tilted master that covers part of it: the clip cuts the
+// slave facet, its vertices mix slave nodes, master nodes and edge crossings.
+FacetPairCoordinates<double> unevenPair() {
+  return {0.02, -0.01, 0.01, 1.05, 0.03, -0.02, 0.97, 1.04, 0.015, -0.03, 0.98, 0.0,
+          0.31, -0.22, -0.006, 0.28, 1.52, -0.013, 1.71, 1.47, -0.008, 1.69, -0.18, -0.011};
+}
+
+void expectDerivativesAreCentralDifferences(const FacetPairCoordinates<double>& x, const MortarFacetPairShape& shape,
+                                            double referenceArea) {
+  const MortarFacetPairDerivatives d = facetPairDerivatives(x, referenceArea, shape);
+  ASSERT_TRUE(d.overlaps);
+  const MortarFacetPairGaps<double> plain = facetPairGaps(x, referenceArea, shape);
+  const double h = 1e-6;
+  for (int a = 0; a < shape.slaveNodes; ++a) {
+    EXPECT_NEAR(d.weightedGap[a], plain.weightedGap[a], 1e-17);
+    double scale = 0, gradientError = 0, hessianScale = 0, hessianError = 0;
+    for (int j = 0; j < kM; ++j) {
+      auto plus = x, minus = x;
+      plus[j] += h;
+      minus[j] -= h;
+      const double fd =
+          (facetPairGaps(plus, referenceArea, shape).weightedGap[a] - facetPairGaps(minus, referenceArea, shape).weightedGap[a]) /
+          (2 * h);
+      scale = std::max(scale, std::abs(d.gradient[a][j]));
+      gradientError = std::max(gradientError, std::abs(fd - d.gradient[a][j]));
+      const MortarFacetPairDerivatives dp = facetPairDerivatives(plus, referenceArea, shape),
+                                       dm = facetPairDerivatives(minus, referenceArea, shape);
+      for (int i = 0; i < kM; ++i) {
+        const double fdHessian = (dp.gradient[a][i] - dm.gradient[a][i]) / (2 * h);
+        hessianScale = std::max(hessianScale, std::abs(d.hessian[a][i * kM + j]));
+        hessianError = std::max(hessianError, std::abs(fdHessian - d.hessian[a][i * kM + j]));
+        EXPECT_NEAR(d.hessian[a][i * kM + j], d.hessian[a][j * kM + i], 1e-12) << "a Hessian is symmetric";
+      }
+    }
+    EXPECT_GT(scale, 0.05);  // derivatives that are there (each node's share of the overlap is 0.03 ... 0.3)
+    EXPECT_GT(hessianScale, 0.01);
+    EXPECT_LT(gradientError, 1e-8 * scale) << "slave node " << a;
+    EXPECT_LT(hessianError, 1e-7 * hessianScale) << "slave node " << a;
+  }
+}
+
+TEST(MortarFacetPair, GradientAndHessianOfQuadOnQuadCutByTheClipAreCentralDifferences) {
+  expectDerivativesAreCentralDifferences(unevenPair(), {4, 4}, 1.1);
+}
+
+TEST(MortarFacetPair, GradientAndHessianOfTrianglesAreCentralDifferences) {
+  // A triangle slave (nodes 0, 1, 2 of the uneven quadrilateral) under the quadrilateral master, and the
+  // quadrilateral slave under a triangle master (its nodes 0, 1, 2): the fourth nodes' entries unused.
+  FacetPairCoordinates<double> x = unevenPair();
+  for (int i = 9; i < 12; ++i) x[i] = 0.0;
+  expectDerivativesAreCentralDifferences(x, {3, 4}, 0.55);
+  x = unevenPair();
+  for (int i = 21; i < 24; ++i) x[i] = 0.0;
+  expectDerivativesAreCentralDifferences(x, {4, 3}, 1.0);
+}
+
+TEST(MortarFacetPair, TheClipVerticesAreDifferentiatedToo) {
+  // Moving a master node sideways moves the clip polygon's edge: the weighted gaps owe it the edge term
+  // g N_a ∂(clip)/∂x_m, not zero for a flat parallel pair whose gap is uniform (no other dependence on x_m's
+  // in-plane position): d g̃_a / d x_m0 = g ∂(mortar area)/∂x_m0.
+  const double gap = -0.01;
+  const MortarFacetPairDerivatives d = facetPairDerivatives(flatPair(0.3, 1.7, -0.2, 1.5, gap), 1.0);
+  // Moving master nodes 0 and 1 (x = 0.3) by δ along x shrinks the overlap by δ: with one of them moved the
+  // edge turns; their sum is the translation's derivative, −∫_edge N_a = −(∫_0^1 N_a(0.3, y) dy).
+  for (int a = 0; a < 4; ++a) {
+    const double along = d.gradient[a][12] + d.gradient[a][15];
+    const double edgeIntegral = (a == 0 || a == 3 ? 0.7 : 0.3) * 0.5;
+    EXPECT_NEAR(along, -gap * edgeIntegral, 1e-13) << a;
+  }
+}
+
+// The interface: a 2 × 2 slave face of unit quadrilaterals on z = 0 (nodes 0–8, row-major in x then y)
+// under a deformable master of two quadrilaterals whose common edge x = 0.7 crosses the slave facets
+// (nodes 9–14), or under a rigid quadrilateral.
+constexpr double kPenalty = 1e3;
+
+ContactInterfaceSpec faceSpec(bool rigidMaster) {
+  ContactInterfaceSpec spec;
+  spec.name = "face";
+  spec.dimension = 3;
+  spec.mortar = true;
+  spec.slaveNodes = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  spec.slaveFacets = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7};
+  spec.slaveFacetMeasures = {1.0, 1.0, 1.0, 1.0};
+  spec.slaveAreas = {0.25, 0.5, 0.25, 0.5, 1.0, 0.5, 0.25, 0.5, 0.25};
+  spec.slaveFacetLengths.assign(9, 1.0);
+  spec.law.normalPenalty = kPenalty;
+  if (rigidMaster) {
+    spec.rigidMaster = true;
+    const double z = -0.03;
+    spec.rigidSurface.points = {-0.2, -0.1, z, 2.3, -0.1, z, 2.3, 2.2, z, -0.2, 2.2, z};
+    spec.rigidSurface.facets = {0, 3, 2, 1};  // clockwise from +z: normal down, towards the slave
+    spec.rigidSurface.motion = {0.1, -0.05, -0.02};
+  } else {
+    // Nodes 9–11 at y = −0.2 (x = −0.1, 0.7, 2.1), 12–14 at y = 2.2: two quadrilaterals, normal down.
+    spec.masterFacets = {9, 12, 13, 10, 10, 13, 14, 11};
+  }
+  return spec;
+}
+
+std::vector<double> faceCoordinates(double penetration) {
+  std::vector<double> x;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) x.insert(x.end(), {double(i), double(j), 0.0});
+  for (double y : {-0.2, 2.2})
+    for (double xm : {-0.1, 0.7, 2.1}) x.insert(x.end(), {xm, y, -penetration});
+  return x;
+}
+
+// Every node moved a little: warped facets, clip edges inside the slave facets.
+std::vector<double> unevenFace() {
+  std::vector<double> x = faceCoordinates(0.02);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.013 * std::sin(1.7 * double(i) + 0.4);
+  return x;
+}
+
+struct Assembled {
+  std::vector<double> residual, tangent, dLambda;
+  std::vector<SlaveNodeState> states;
+  ContactCounts counts;
+};
+
+Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+  const int n = static_cast<int>(x.size());
+  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}, {}};
+  interface.evaluate([&](GlobalIndex node, double* p) { std::copy(&x[3 * node], &x[3 * node] + 3, p); }, lambda, true,
+                     [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
+                       for (int a = 0; a < m; ++a) {
+                         if (dofs[a] < 0) continue;
+                         out.residual[dofs[a]] += r[a];
+                         out.dLambda[dofs[a]] += drdl[a];
+                         for (int b = 0; b < m; ++b)
+                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
+                       }
+                     });
+  interface.commit();
+  out.states = interface.committedStates();
+  out.counts = interface.committedCounts();
+  return out;
+}
+
+std::unique_ptr<ContactInterfaceBase> faceInterface(bool rigidMaster) {
+  return makeMortarInterface(faceSpec(rigidMaster), std::vector<char>(9, 1));
+}
+
+TEST(MortarInterface3D, NonMatchingFlatPenetrationGivesTheSamePressureAtEverySlaveNode) {
+  const double d = 1e-3;
+  auto interface = faceInterface(false);
+  const Assembled a = assemble(*interface, faceCoordinates(d), 0.0);
+  for (const auto& s : a.states) EXPECT_NEAR(s.pressure, kPenalty * d, 1e-12 * kPenalty * d);
+  double slaveForce = 0, masterForce = 0;
+  for (int node = 0; node < 15; ++node) (node < 9 ? slaveForce : masterForce) -= a.residual[3 * node + 2];
+  EXPECT_NEAR(slaveForce, -kPenalty * d * 4.0, 1e-12);  // pressure × slave area 4, pushing the slave down
+  EXPECT_NEAR(masterForce, kPenalty * d * 4.0, 1e-12);
+  EXPECT_NEAR(interface->committedSlaveForce()[2], -kPenalty * d * 4.0, 1e-12);
+  // Frictionless: every node closed and active, none counted as sticking or slipping (issue 25, point 4).
+  EXPECT_EQ(a.counts.active, 9);
+  EXPECT_EQ(a.counts.stick, 0);
+  EXPECT_EQ(a.counts.slip, 0);
+}
+
+double tangentError(bool rigidMaster, double* scale) {
+  const auto x = unevenFace();
+  const Assembled a = assemble(*faceInterface(rigidMaster), x, 0.3);
+  for (const auto& s : a.states) EXPECT_NE(s.status, ContactStatus::Open) << "the test wants every node closed";
+  const int n = static_cast<int>(x.size());
+  const double h = 1e-7;
+  double error = 0;
+  *scale = 0;
+  for (int j = 0; j < n; ++j) {
+    auto plus = x, minus = x;
+    plus[j] += h;
+    minus[j] -= h;
+    const auto rp = assemble(*faceInterface(rigidMaster), plus, 0.3).residual;
+    const auto rm = assemble(*faceInterface(rigidMaster), minus, 0.3).residual;
+    for (int i = 0; i < n; ++i) {
+      *scale = std::max(*scale, std::abs(a.tangent[i * n + j]));
+      error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
+    }
+  }
+  return error;
+}
+
+TEST(MortarInterface3D, TangentIsTheCentralDifferenceOfTheResidualWithADeformableMaster) {
+  double scale = 0;
+  const double error = tangentError(false, &scale);
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+}
+
+TEST(MortarInterface3D, TangentAndLoadDerivativeAreCentralDifferencesWithAMovingRigidMaster) {
+  double scale = 0;
+  const double error = tangentError(true, &scale);
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+  const auto x = unevenFace();
+  const double lambda = 0.3, h = 1e-7;
+  const Assembled a = assemble(*faceInterface(true), x, lambda);
+  const auto rp = assemble(*faceInterface(true), x, lambda + h).residual;
+  const auto rm = assemble(*faceInterface(true), x, lambda - h).residual;
+  double dScale = 0, dError = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    dScale = std::max(dScale, std::abs(a.dLambda[i]));
+    dError = std::max(dError, std::abs((rp[i] - rm[i]) / (2 * h) - a.dLambda[i]));
+  }
+  EXPECT_GT(dScale, 1.0);
+  EXPECT_LT(dError, 1e-6 * dScale);
+}
+
+TEST(MortarInterface3D, FrictionIsRefusedIn3D) {
+  ContactInterfaceSpec spec = faceSpec(false);
+  spec.law.frictionCoefficient = 0.3;
+  spec.law.tangentialPenalty = 1e3;
+  EXPECT_THROW(makeMortarInterface(spec, std::vector<char>(9, 1)), std::logic_error);
+}
+
+TEST(MortarInterface3D, TheSlaveNeighboursAreThoseOfTheNodesFacets) {
+  const ContactInterfaceSpec spec = faceSpec(false);
+  EXPECT_EQ(mortarSlaveNeighbours(spec, 4), (std::vector<std::size_t>{4, 0, 1, 2, 3, 5, 6, 7, 8}));
+  EXPECT_EQ(mortarSlaveNeighbours(spec, 0), (std::vector<std::size_t>{0, 1, 3, 4}));
+}
+
+}  // namespace
+}  // namespace contessa::contact
