@@ -34,8 +34,8 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 INPUTS = os.path.join(ROOT, "inputs")
 STEP = "Piro/LOCA/Step Size/"
 FINAL = re.compile(r"(\d+) increments \((\d+) failed attempts?\), (\d+) Newton iterations")
-# The decks' regression checks expect their own law, penalty and stepping: wide tolerances keep exit 3
-# (a failed check) from hiding a run that reached its load.
+# The tube deck's increment check expects Contact Beta's count: a wide tolerance keeps it quiet for fixed
+# steps (exit 3, a failed check, counts as reaching the load anyway).
 NO_CHECKS = ["Problem/Regression/increments/Absolute Tolerance=1000"]
 
 
@@ -53,13 +53,14 @@ def cases():
     tube = os.path.join(INPUTS, "tube_bending.xml")
     verification = os.path.join(INPUTS, "verification")
     return {
-        "tube": Case("tube", tube, "plate", "contact_force_plate_y", ["1e3", "1e5", "1e7", "1e9"], TUBE_STEPPING),
+        "tube": Case("tube", tube, "plate", "contact_force_plate_y", ["1e3", "1e5", "1e7", "1e9"], TUBE_STEPPING,
+                     NO_CHECKS),
         "tube-friction": Case("tube mu=0.2", tube, "plate", "contact_force_plate_y", ["1e3", "1e5", "1e7", "1e9"],
-                              TUBE_STEPPING, ["Problem/Contact/plate/Friction Coefficient=0.2"]),
+                              TUBE_STEPPING, ["Problem/Contact/plate/Friction Coefficient=0.2"] + NO_CHECKS),
         "hertz-sphere": Case("Hertz sphere", os.path.join(verification, "hertz_sphere.xml"), "plane",
                              "reaction_equator_z", ["1e4", "1e7"], [("Contact Beta", [])]),
         "hertz-cylinder": Case("Hertz cylinder", os.path.join(verification, "hertz_cylinder.xml"), "flat",
-                               None, ["1e4", "1e7"], [("fixed", [])]),
+                               "contact_force_flat_y", ["1e4", "1e7"], [("fixed", [])]),
         "block": Case("Coulomb block 2D", os.path.join(verification, "coulomb_block.xml"), "base",
                       "reaction_top_x", ["1e3", "1e6"], [("fixed", [])]),
         "block-3d": Case("Coulomb block 3D", os.path.join(verification, "coulomb_block_3d.xml"), "base",
@@ -116,7 +117,7 @@ def main():
     n = 0
     for key in selected:
         case = cases()[key]
-        base = case.extra + NO_CHECKS + args.sets
+        base = case.extra + args.sets
         for stepping, step_sets in case.steppings:
             results = {}
             for penalty in case.penalties:
