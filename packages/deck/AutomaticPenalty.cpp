@@ -55,11 +55,31 @@ double largestStiffnessOverSize(const mesh::DistributedMesh& part, const std::ve
   return part.numRanks > 1 ? mesh::overRanks(part.comm, largest).max : largest;  // one rank: MPI may not be running
 }
 
+void warnSoftAugmentedPenalty(const contact::ContactInterfaceSpec& spec, const Teuchos::ParameterList& list,
+                              const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks) {
+  if (!spec.law.isAugmented()) return;
+  const std::string set = list.get<std::string>(spec.secondPass ? "Master Side Set" : "Slave Side Set");
+  const double stiffness = largestStiffnessOverSize(mesh, blocks, set);  // collective
+  const double penalty = spec.law.normalPenalty;
+  if (!(penalty < 0.1 * stiffness) || mesh.rank != 0) return;
+  std::fprintf(stderr,
+               "contessa: warning: contact interface '%s': Problem/Contact/%s/Normal Penalty %.3g is below a tenth of "
+               "E'/h = %.3g under side set '%s': each augmented Lagrangian update removes only %.0f %% of a "
+               "penetration and nodes held off the surface by their multipliers make the contact set chatter (give "
+               "at least %.3g)\n",
+               spec.label().c_str(), spec.name.c_str(), penalty, stiffness, set.c_str(),
+               100.0 * penalty / (penalty + stiffness), 0.1 * stiffness);
+  std::fflush(stderr);
+}
+
 void setAutomaticPenalties(std::vector<contact::ContactInterfaceSpec>& passes, const Teuchos::ParameterList& list,
                            const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks) {
   for (auto& spec : passes) {
     auto& law = spec.law;
-    if (law.normalPenalty > 0.0) continue;  // given in the deck
+    if (law.normalPenalty > 0.0) {  // given in the deck
+      warnSoftAugmentedPenalty(spec, list, mesh, blocks);
+      continue;
+    }
     const std::string set = list.get<std::string>(spec.secondPass ? "Master Side Set" : "Slave Side Set");
     const double stiffness = largestStiffnessOverSize(mesh, blocks, set);
     requireInput(stiffness > 0.0, "Problem/Contact/" + spec.name + "/Normal Penalty: required here (no element "

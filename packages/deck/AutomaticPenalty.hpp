@@ -23,8 +23,14 @@ double planeStrainModulus(const mechanics::Material& material);
 double largestStiffnessOverSize(const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks,
                                 const std::string& sideSet);
 
+/// Collective: with Enforcement = Augmented Lagrangian and a Normal Penalty below E'/h/10 of its slave side,
+/// rank 0 warns in one line: the Uzawa updates then converge by ε/(ε + E'/h) only (docs/theory-contact.md
+/// §15, "A penalty too soft").
+void warnSoftAugmentedPenalty(const contact::ContactInterfaceSpec& spec, const Teuchos::ParameterList& list,
+                              const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks);
+
 /// Collective: fills the automatic penalties of an interface's passes (`list`: its deck sublist; the
-/// second pass's slave side is the Master Side Set).
+/// second pass's slave side is the Master Side Set); warns of a soft augmented one that is given.
 void setAutomaticPenalties(std::vector<contact::ContactInterfaceSpec>& passes, const Teuchos::ParameterList& list,
                            const mesh::DistributedMesh& mesh, const std::vector<BlockPhysics>& blocks);
 

@@ -4,6 +4,7 @@
 #include "contact/MortarInterface.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -325,7 +326,25 @@ void ContactAssembly::rollback() {
   augmentations_.assign(interfaces_.size(), 0);
 }
 
-bool ContactAssembly::augment(double lambda) {
+double ContactAssembly::earlyUpdateBound() const {
+  // An update at an iterate whose gaps are still moving by more than a tenth of a tolerance would chase the
+  // Newton error, not the violation (docs/theory-contact.md §15, "Updates before convergence").
+  double bound = HUGE_VAL;
+  for (const auto& c : interfaces_) {
+    const auto& law = c->spec().law;
+    if (!law.isAugmented()) continue;
+    const auto& lengths = c->spec().slaveFacetLengths;
+    const double shortest = lengths.empty() ? 0.0 : *std::min_element(lengths.begin(), lengths.end());
+    // The elastic slip matters only with friction.
+    const double slip = law.isFrictionless() ? 0.0 : law.elasticSlipTolerance;
+    for (double tolerance : {law.penetrationTolerance, slip})
+      if (tolerance > 0.0) bound = std::min(bound, 0.1 * tolerance * shortest);
+  }
+  return bound;
+}
+
+bool ContactAssembly::augment(double lambda, const AugmentationPoint& at) {
+  if (!at.converged && !(at.errorEstimate <= earlyUpdateBound())) return false;
   const Comm& comm = *layout_.comm();
   augmentations_.resize(interfaces_.size(), 0);
   augmentationWarned_.resize(interfaces_.size(), 0);
@@ -336,30 +355,32 @@ bool ContactAssembly::augment(double lambda) {
     const contact::AugmentationViolation local = interfaces_[i]->trialViolation();
     double mine[2] = {local.penetration, local.elasticSlip}, all[2] = {0, 0};
     Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, mine, all);
-    const bool penetrates = all[0] > law.penetrationTolerance;
-    const bool slips = all[1] > law.elasticSlipTolerance;
-    if (!penetrates && !slips) continue;
+    if (all[0] <= law.penetrationTolerance && all[1] <= law.elasticSlipTolerance) continue;
     if (augmentations_[i] < law.maxAugmentations) {
       interfaces_[i]->augment();
       ++augmentations_[i];
       updated = true;
-      continue;
-    }
-    if (augmentationWarned_[i] || law.maxAugmentations == 0) continue;
-    augmentationWarned_[i] = 1;
-    if (comm.getRank() == 0) {
-      const std::string path = "Problem/Contact/" + interfaces_[i]->spec().name + "/";
-      const std::string missed =
-          penetrates ? "penetration " + threeDigits(all[0]) + " L > " + path + "Penetration Tolerance " + threeDigits(law.penetrationTolerance)
-                     : "elastic slip " + threeDigits(all[1]) + " L > " + path + "Elastic Slip Tolerance " + threeDigits(law.elasticSlipTolerance);
-      std::fprintf(stderr,
-                   "contessa: warning: contact interface '%s': %s after Max Augmentations = %d at load factor %s "
-                   "(increment accepted; said once: raise Max Augmentations or the Normal Penalty)\n",
-                   interfaces_[i]->spec().label().c_str(), missed.c_str(), law.maxAugmentations, threeDigits(lambda).c_str());
-      std::fflush(stderr);
+    } else if (at.converged && !augmentationWarned_[i] && law.maxAugmentations > 0) {
+      warnShortOfTolerance(i, all, lambda);
     }
   }
   return updated;
+}
+
+void ContactAssembly::warnShortOfTolerance(std::size_t i, const double violation[2], double lambda) {
+  augmentationWarned_[i] = 1;
+  if (layout_.comm()->getRank() != 0) return;
+  const auto& law = interfaces_[i]->spec().law;
+  const std::string path = "Problem/Contact/" + interfaces_[i]->spec().name + "/";
+  const std::string missed =
+      violation[0] > law.penetrationTolerance
+          ? "penetration " + threeDigits(violation[0]) + " L > " + path + "Penetration Tolerance " + threeDigits(law.penetrationTolerance)
+          : "elastic slip " + threeDigits(violation[1]) + " L > " + path + "Elastic Slip Tolerance " + threeDigits(law.elasticSlipTolerance);
+  std::fprintf(stderr,
+               "contessa: warning: contact interface '%s': %s after Max Augmentations = %d at load factor %s "
+               "(increment accepted; said once: raise Max Augmentations or the Normal Penalty)\n",
+               interfaces_[i]->spec().label().c_str(), missed.c_str(), law.maxAugmentations, threeDigits(lambda).c_str());
+  std::fflush(stderr);
 }
 
 void ContactAssembly::saveState(StateRecord& contact, bool writer) const {

@@ -14,6 +14,7 @@
 #include "contact/CouplingReservation.hpp"
 #include "continuation/LoadSchedule.hpp"
 #include "deck/ProblemDefinition.hpp"
+#include "model/ContactAugmentation.hpp"
 #include "common/StateRecord.hpp"
 #include "model/DofLayout.hpp"
 #include "model/StiffnessScatter.hpp"
@@ -68,11 +69,13 @@ class ContactAssembly {
 
   void commit();
   void rollback();
-  /// Collective, at a converged iterate: the Uzawa update of every augmented-Lagrangian interface that misses
+  /// Collective, at a Newton iterate: the Uzawa update of every augmented-Lagrangian interface that misses
   /// a tolerance (the largest violation over all ranks) and has updates left in the increment; true when
-  /// one was updated. An interface out of updates and still outside a tolerance is accepted, and rank 0
-  /// says so once per interface (`lambda`: the load factor, for that line).
-  bool augment(double lambda);
+  /// one was updated. At an unconverged iterate nothing is updated unless the Newton update is below a
+  /// tenth of every augmented interface's tolerance lengths (earlyUpdateBound). At a converged one, an
+  /// interface out of updates and still outside a tolerance is accepted, and rank 0 says so once per
+  /// interface (`lambda`: the load factor, for that line).
+  bool augment(double lambda, const AugmentationPoint& at);
   /// This rank's part of the committed contact state, a group "interface_<i>" per interface: its slave
   /// nodes (table "slaves"; rank `writer` also the table "master").
   void saveState(StateRecord& contact, bool writer) const;
@@ -114,7 +117,12 @@ class ContactAssembly {
   std::string outside_;                  ///< the first of them, in words
   bool frozen_ = false;
   std::vector<int> augmentations_;  ///< per interface: multiplier updates in the current increment
-  std::vector<char> augmentationWarned_;  ///< per interface: the run has said it stopped short of a tolerance
+  std::vector<char> augmentationWarned_;
+  /// The largest Newton update at which an unconverged iterate's violations are trusted for an update.
+  double earlyUpdateBound() const;
+  /// Rank 0, once per interface: interface i stopped short of a tolerance (`violation`: its penetration
+  /// and elastic slip over L).
+  void warnShortOfTolerance(std::size_t i, const double violation[2], double lambda);  ///< per interface: the run has said it stopped short of a tolerance
   std::vector<double> frictionStart_, frictionChange_;  ///< per interface, of the current load step
   /// Sets each interface's friction coefficient at amplitude a where the load step changes it.
   void frictionAt(double a) const;

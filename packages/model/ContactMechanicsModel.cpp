@@ -323,8 +323,8 @@ void ContactMechanicsModel::commitState() {
   passServesEvaluations_ = false;
 }
 
-bool ContactMechanicsModel::augmentContact() {
-  if (!contact_->augment(lastLoadFactor_)) return false;
+bool ContactMechanicsModel::augmentContact(const AugmentationPoint& at) {
+  if (!contact_->augment(lastLoadFactor_, at)) return false;
   // The multipliers changed: the next request evaluates the contact again.
   passServesEvaluations_ = false;
   passServesReactions_ = false;

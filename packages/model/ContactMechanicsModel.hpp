@@ -76,8 +76,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   // increment, rolled back when an increment is abandoned.
   void commitState() override;
   void rollbackState() override;
-  // ContactAugmentation: the Uzawa update of the augmented-Lagrangian interfaces at a converged iterate.
-  bool augmentContact() override;
+  // ContactAugmentation: the Uzawa update of the augmented-Lagrangian interfaces at a Newton iterate.
+  bool augmentContact(const AugmentationPoint& at) override;
   bool hasAugmentedContact() const override;
   /// This rank's part of the committed state for a restart file: the states of its elements (group
   /// "elements", a table per state size), its contact slave nodes (group "contact"; rank 0 also the master

@@ -3,6 +3,9 @@
 #include <NOX_Abstract_Group.H>
 #include <NOX_Abstract_Vector.H>
 #include <NOX_Solver_Generic.H>
+#include <NOX_Solver_LineSearchBased.H>
+
+#include <cmath>
 
 #include "solvers/IterativeSolveMonitor.hpp"
 #include "solvers/MumpsSolver.hpp"
@@ -46,11 +49,15 @@ NOX::StatusTest::StatusType AcceptedConvergenceTest::checkStatus(const NOX::Solv
     return status_;
   }
   status_ = converged_->checkStatus(solver, type);
+  if (status_ == NOX::StatusTest::Unconverged && solveAgain_ && solver.getNumIterations() > 0) {
+    solveAgain_(solver, false);  // an early multiplier update (the solve goes on either way)
+    return status_;
+  }
   if (status_ != NOX::StatusTest::Converged) return status_;
   rejection_ = reject_();
   if (!rejection_.empty())
     status_ = NOX::StatusTest::Failed;
-  else if (solveAgain_ && solveAgain_(solver.getNumIterations()))
+  else if (solveAgain_ && solveAgain_(solver, true))
     status_ = NOX::StatusTest::Unconverged;
   return status_;
 }
@@ -98,7 +105,9 @@ NewtonStatusTests::NewtonStatusTests(const model::SolveDiagnostics& diagnostics,
                                                      }
                                                      return why;
                                                    },
-                                                   [this](int iteration) { return augment(iteration); }))),
+                                                   [this](const NOX::Solver::Generic& solver, bool converged) {
+                                                     return augment(solver, converged);
+                                                   }))),
       maxIters_(rcp(new IterationLimit(maxIterations))),
       combo_(rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR))) {
   combo_->addStatusTest(finite_);
@@ -107,13 +116,45 @@ NewtonStatusTests::NewtonStatusTests(const model::SolveDiagnostics& diagnostics,
   combo_->addStatusTest(maxIters_);
 }
 
-bool NewtonStatusTests::augment(int iteration) {
-  if (augmentation_ == nullptr || !augmentation_->augmentContact()) return false;
+namespace {
+
+// The largest displacement component of the Newton step that led to the solver's iterate: the full
+// direction, not the step a line search shortened (as ResidualTest's update test).
+double newtonStep(const NOX::Solver::Generic& solver) {
+  auto dx = solver.getSolutionGroup().getX().clone(NOX::DeepCopy);
+  dx->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
+  const auto* lineSearch = dynamic_cast<const NOX::Solver::LineSearchBased*>(&solver);
+  const double step = lineSearch != nullptr ? lineSearch->getStepSize() : 1.0;
+  return step > 0 ? dx->norm(NOX::Abstract::Vector::MaxNorm) / step : HUGE_VAL;
+}
+
+}  // namespace
+
+bool NewtonStatusTests::augment(const NOX::Solver::Generic& solver, bool converged) {
+  if (augmentation_ == nullptr) return false;
+  model::AugmentationPoint at;
+  if (!converged) {
+    // Early updates only where the iterate is the solve's own (not while Contact Beta holds new contacts
+    // back or has just changed what is evaluated).
+    if (!augmentation_->hasAugmentedContact()) return false;
+    if (stepControl_ != nullptr && (!stepControl_->mayConverge() || !stepControl_->updateMeaningful())) return false;
+    // The iterate's remaining error, estimated from the contraction ρ of its last two Newton steps
+    // (ρ/(1 − ρ) times the last step: a linear rate's geometric tail, and at a quadratic rate more than
+    // the next step). None before two steps of the same problem.
+    const double step = newtonStep(solver), previous = previousStep_;
+    previousStep_ = step;
+    const double rate = step / previous;
+    if (!std::isfinite(previous) || !(rate < 0.5)) return false;
+    at.converged = false;
+    at.errorEstimate = rate / (1.0 - rate) * step;
+  }
+  if (!augmentation_->augmentContact(at)) return false;
   ++augmentations_;
-  maxIters_->restartAt(iteration);
-  // The one status test that changes the group: the converged iterate is the start of a new problem at the
-  // same load factor (new multipliers), so its f is computed again before the next Newton direction. The
-  // group's f and Jacobian are invalidated as ContactBetaStepControl::iterateSet does it.
+  previousStep_ = HUGE_VAL;  // the next step is the new problem's first
+  maxIters_->restartAt(solver.getNumIterations());
+  // The one status test that changes the group: the iterate is the start of a new problem at the same load
+  // factor (new multipliers), so its f is computed again before the next Newton direction. The group's f
+  // and Jacobian are invalidated as ContactBetaStepControl::iterateSet does it.
   NOX::Abstract::Group& group = group_();
   const auto x = group.getX().clone(NOX::DeepCopy);
   group.setX(*x);
@@ -122,6 +163,7 @@ bool NewtonStatusTests::augment(int iteration) {
 }
 
 void NewtonStatusTests::startSolve() {
+  previousStep_ = HUGE_VAL;
   const MumpsFailures* failures = mumpsFailures(linearSolver_.get());
   linearFailuresAtStart_ = failures != nullptr ? failures->count : 0;
   iterativeFailuresAtStart_ = iterativeSolveLog().failures;

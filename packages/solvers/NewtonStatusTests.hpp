@@ -12,6 +12,7 @@
 // When a solve fails, diagnose() names the reason for the one-line stop message: the test that failed,
 // the element that made the residual NaN, the linear solver's failure (a singular stiffness and its free
 // direction), the tunnelling node.
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -52,10 +53,11 @@ struct SolveFailure {
 /// state fails the solve, so the continuation cuts the step back.
 class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
  public:
-  /// `solveAgain(iteration)` (may be empty), asked at an accepted state: true keeps the solve going at this
-  /// load factor (the augmented Lagrangian's multipliers were updated and f computed again with them).
+  /// `solveAgain(solver, converged)` (may be empty), asked at an accepted state (converged = true) and at
+  /// every unconverged iterate after the first (false): true keeps the solve going at this load factor (the
+  /// augmented Lagrangian's multipliers were updated and f computed again with them).
   AcceptedConvergenceTest(Teuchos::RCP<NOX::StatusTest::Generic> converged, std::function<std::string()> reject,
-                          std::function<bool(int)> solveAgain = {})
+                          std::function<bool(const NOX::Solver::Generic&, bool)> solveAgain = {})
       : converged_(std::move(converged)), reject_(std::move(reject)), solveAgain_(std::move(solveAgain)) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType type) override;
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
@@ -66,7 +68,7 @@ class AcceptedConvergenceTest : public NOX::StatusTest::Generic {
  private:
   Teuchos::RCP<NOX::StatusTest::Generic> converged_;
   std::function<std::string()> reject_;
-  std::function<bool(int)> solveAgain_;
+  std::function<bool(const NOX::Solver::Generic&, bool)> solveAgain_;
   std::string rejection_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
@@ -142,8 +144,10 @@ class NewtonStatusTests {
   model::ContactAugmentation* augmentation_ = nullptr;
   std::function<NOX::Abstract::Group&()> group_;
   int augmentations_ = 0;
-  /// At an accepted state: updates the multipliers and recomputes f when the augmentation asks for it.
-  bool augment(int iteration);
+  double previousStep_ = HUGE_VAL;  ///< the last Newton step's largest component in this problem (early updates)
+  /// At an accepted state (`converged`) or an unconverged iterate: updates the multipliers and recomputes f
+  /// when the augmentation asks for it.
+  bool augment(const NOX::Solver::Generic& solver, bool converged);
 };
 
 }  // namespace contessa::solvers
