@@ -54,17 +54,10 @@ class DisplacementElement final : public ShapeKernel<Shape, Kinematics::kHoop> {
         Kinematics::template addDivergence<N>(g.dNdX[q].data(), g.hoop.at(q), P[q], g.weightedVolume[q], internalForce);
     }
     if (stiffness) {
-      if (material.tangentIsSymmetric()) {  // K symmetric: its upper blocks, then mirrored
-        for (int q = 0; q < Q; ++q)
-          Kinematics::template addSymmetricTangent<N>(g.dNdX[q].data(), g.hoop.at(q), A[q], g.weightedVolume[q],
-                                                      stiffness, ND, q == 0);
-        mirrorUpperTriangle<ND>(stiffness, ND);
-      } else {
-        std::fill(stiffness, stiffness + ND * ND, 0.0);
-        for (int q = 0; q < Q; ++q)
-          Kinematics::template addTangent<N, N>(g.dNdX[q].data(), g.hoop.at(q), g.dNdX[q].data(), g.hoop.at(q), A[q],
-                                                g.weightedVolume[q], stiffness, ND);
-      }
+      std::fill(stiffness, stiffness + ND * ND, 0.0);
+      for (int q = 0; q < Q; ++q)
+        Kinematics::template addTangent<N, N>(g.dNdX[q].data(), g.hoop.at(q), g.dNdX[q].data(), g.hoop.at(q), A[q],
+                                              g.weightedVolume[q], stiffness, ND);
     }
     return ElementStatus::Ok;
   }

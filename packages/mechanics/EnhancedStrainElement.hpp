@@ -109,7 +109,7 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
                                               internalForce);
     }
     std::array<double, NA * ND> W{};  // K_αα⁻¹ K_αu
-    if (stiffness && !condensedTangent(g, s, material.tangentIsSymmetric(), stiffness, W))
+    if (stiffness && !condensedTangent(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), stiffness, W))
       return ElementStatus::InternalSolveFailed;
     if (state) {
       std::copy(solution.begin(), solution.end(), state + kStateAlpha);
@@ -163,6 +163,11 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   // round-off floor: a Newton step negligible against the element size, or a residual that is small
   // and no longer decreasing (quadratic convergence would have reduced it by orders of magnitude).
   static constexpr double kResidualTolerance = 1e-13;
+  // The half tangent and LDLᵀ (condensedTangent) for a symmetric material tangent: measured in
+  // instructions per Jacobian (bench/README.md, issue 23 third round), Hex8 Enhanced 139 000 → 111 747,
+  // but Q4 Enhanced 8 477 → 10 246 (its 12 × 12 blocks are too small for the halving to outweigh the
+  // mirroring and the triangular loops), so 3D only; the revolved 2D kinematics never takes it.
+  static constexpr bool kSymmetricPathPays = D == 3 && !Kinematics::kHoop;
   static constexpr double kStagnationTolerance = 1e-9;
   static constexpr double kStepTolerance = 1e-14;
 
@@ -206,11 +211,13 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   bool condensedTangent(const Geometry& g, const PointStates& s, bool symmetric, double* K,
                         std::array<double, NA * ND>& W) const {
     std::array<double, NE * NE> Ke;  // the symmetric path fills its upper triangle at the first point
-    if (symmetric) {
-      for (int q = 0; q < Q; ++q)
-        Kinematics::template addSymmetricTangent<G>(g.gradients[q].data(), g.hoop.at(q), s.A[q], g.weightedVolume[q],
-                                                    Ke.data(), NE, q == 0);
-      return condenseSymmetric(Ke, K, W);
+    if constexpr (kSymmetricPathPays) {
+      if (symmetric) {
+        for (int q = 0; q < Q; ++q)
+          Kinematics::template addSymmetricTangent<G>(g.gradients[q].data(), g.hoop.at(q), s.A[q], g.weightedVolume[q],
+                                                      Ke.data(), NE, q == 0);
+        return condenseSymmetric(Ke, K, W);
+      }
     }
     Ke.fill(0.0);
     for (int q = 0; q < Q; ++q)
@@ -297,18 +304,20 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   /// K_αα Δα = −R_α (`step` holds −R_α on entry, Δα on exit); LDLᵀ for a symmetric material tangent.
   static bool localNewtonStep(const Geometry& g, const PointStates& s, bool symmetric, std::array<double, NA * NA>& Kaa,
                               Alpha& step) {
-    if (!symmetric) {
-      for (int q = 0; q < Q; ++q) {
-        const double* modes = g.gradients[q].data() + ND;
-        Kinematics::template addTangent<M, M>(modes, nullptr, modes, nullptr, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
+    if constexpr (kSymmetricPathPays) {
+      if (symmetric) {
+        for (int q = 0; q < Q; ++q)
+          Kinematics::template addSymmetricTangent<M>(g.gradients[q].data() + ND, nullptr, s.A[q], g.weightedVolume[q],
+                                                      Kaa.data(), NA, q == 0);
+        mirrorUpperTriangle<NA>(Kaa.data(), NA);
+        return solveSymmetricInPlace<NA, 1>(Kaa.data(), step.data());
       }
-      return solveDenseInPlace<NA, 1>(Kaa.data(), step.data());
     }
-    for (int q = 0; q < Q; ++q)
-      Kinematics::template addSymmetricTangent<M>(g.gradients[q].data() + ND, nullptr, s.A[q], g.weightedVolume[q],
-                                                  Kaa.data(), NA, q == 0);
-    mirrorUpperTriangle<NA>(Kaa.data(), NA);
-    return solveSymmetricInPlace<NA, 1>(Kaa.data(), step.data());
+    for (int q = 0; q < Q; ++q) {
+      const double* modes = g.gradients[q].data() + ND;
+      Kinematics::template addTangent<M, M>(modes, nullptr, modes, nullptr, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
+    }
+    return solveDenseInPlace<NA, 1>(Kaa.data(), step.data());
   }
 
   /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F,
@@ -343,7 +352,8 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
       // Newton step K_αα Δα = −R_α.
       std::array<double, NA * NA> Kaa{};
       for (int m = 0; m < NA; ++m) step[m] = -R[m];
-      if (!localNewtonStep(g, s, material.tangentIsSymmetric(), Kaa, step)) return ElementStatus::InternalSolveFailed;
+      if (!localNewtonStep(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), Kaa, step))
+        return ElementStatus::InternalSolveFailed;
       // The current α is already exact to round-off; F, P, A in s belong to it.
       if (norm<NA>(step.data()) <= kStepTolerance * (norm<NA>(alpha.data()) + g.length)) return ElementStatus::Ok;
       for (int m = 0; m < NA; ++m) alpha[m] += step[m];

@@ -14,7 +14,6 @@
 // An operator takes a list of Count gradient vectors g_a (D components each) and, for axisymmetry,
 // their hoop coefficients c_a = N_a / R (null: none, as for the enhanced modes, which carry no hoop
 // strain). The planar operators are the ones in SolidOperators.hpp, unchanged.
-#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -140,16 +139,6 @@ struct AxisymmetricKinematics {
       for (int a = 0; a < Rows; ++a)
         for (int b = 0; b < Cols; ++b)
           K[static_cast<std::size_t>(2 * a) * ld + 2 * b] += hoopG[a] * A[idx4(2, 2, 2, 2)] * hoopH[b] * wj;
-  }
-  /// The whole of addTangent with h = g (its hoop couplings have no upper-blocks-only form here; the
-  /// revolved elements are 2D and small): mirrorUpperTriangle then overwrites the lower triangle with
-  /// the upper one, equal to round-off.
-  template <int Count>
-  static void addSymmetricTangent(const double* g, const double* hoop, const Tangent<3>& A, double wj, double* K,
-                                  int ld, bool first) {
-    if (first)
-      for (int r = 0; r < 2 * Count; ++r) std::fill(K + static_cast<std::size_t>(r) * ld, K + static_cast<std::size_t>(r) * ld + 2 * Count, 0.0);
-    addTangent<Count, Count>(g, hoop, g, hoop, A, wj, K, ld);
   }
   static Tensor2 threeByThree(const Matrix<3>& F) { return F; }
 

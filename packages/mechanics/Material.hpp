@@ -40,8 +40,8 @@ class Material {
   virtual bool isSmallStrain() const { return false; }
 
   /// True when A has major symmetry at every F, A_iJkL = A_kLiJ: a law with a stored energy W, for
-  /// which A = ∂²W/∂F∂F. The element kernels then build only half of each tangent and condense it
-  /// with LDLᵀ (SolidOperators.hpp, addSymmetricTangent). False unless a law says so.
+  /// which A = ∂²W/∂F∂F. Hex8 Enhanced then builds only half of its tangent and condenses it
+  /// with LDLᵀ (EnhancedStrainElement.hpp, kSymmetricPathPays). False unless a law says so.
   virtual bool tangentIsSymmetric() const { return false; }
 };
 

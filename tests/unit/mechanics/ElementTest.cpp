@@ -130,9 +130,9 @@ class UndeclaredSymmetry final : public Material {
 };
 
 TEST_P(ElementCase, SymmetricPathEqualsGeneralPath) {
-  // Half the tangent mirrored and the LDLᵀ condensation (a law that declares A_iJkL = A_kLiJ) against
-  // the whole tangent and Gaussian elimination: the same force, tangent and internal variables to
-  // round-off.
+  // Half the tangent mirrored and the LDLᵀ condensation (a law that declares A_iJkL = A_kLiJ; Hex8
+  // Enhanced) against the whole tangent and Gaussian elimination: the same force, tangent and internal
+  // variables to round-off. The other kernels take one path for both.
   ASSERT_TRUE(material->tangentIsSymmetric());
   const UndeclaredSymmetry general(*material);
   const auto u = deformation(X, *kernel, 1.0);
@@ -141,9 +141,15 @@ TEST_P(ElementCase, SymmetricPathEqualsGeneralPath) {
   ASSERT_EQ(kernel->evaluate(X.data(), u.data(), alphaG.data(), general, fG.data(), KG.data()), ElementStatus::Ok);
   EXPECT_LT(maxAbsDifference(fS, fG), 1e-12 * maxAbs(fG));
   EXPECT_LT(maxAbsDifference(KS, KG), 1e-12 * maxAbs(KG));
-  if (ni > 0) EXPECT_LT(maxAbsDifference(alphaS, alphaG), 1e-12 * maxAbs(alphaG));
-  for (int r = 0; r < nd; ++r)
-    for (int c = 0; c < r; ++c) EXPECT_EQ(KS[r * nd + c], KS[c * nd + r]) << "mirrored, so exactly symmetric";
+  if (ni > 0) {
+    EXPECT_LT(maxAbsDifference(alphaS, alphaG), 1e-12 * maxAbs(alphaG));
+  }
+  if (GetParam().element == "Hex8 Enhanced") {  // the one kernel that takes the symmetric path (kSymmetricPathPays)
+    for (int r = 0; r < nd; ++r)
+      for (int c = 0; c < r; ++c) {
+        EXPECT_EQ(KS[r * nd + c], KS[c * nd + r]) << "mirrored, so exactly symmetric";
+      }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElementsAllLaws, ElementCase, ::testing::ValuesIn(allCases()), caseName);
