@@ -109,26 +109,8 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
                                               internalForce);
     }
     std::array<double, NA * ND> W{};  // K_αα⁻¹ K_αu
-    if (stiffness) {
-      // All four blocks at α* at once: nodes and modes are one list of gradients.
-      std::array<double, NE * NE> Ke{};
-      for (int q = 0; q < Q; ++q)
-        Kinematics::template addTangent<G, G>(g.gradients[q].data(), g.hoop.at(q), g.gradients[q].data(),
-                                              g.hoop.at(q), s.A[q], g.weightedVolume[q], Ke.data(), NE);
-      // Static condensation: K = K_uu − K_uα W with K_αα W = K_αu.
-      std::array<double, NA * NA> Kaa;
-      for (int m = 0; m < NA; ++m) {
-        for (int n = 0; n < NA; ++n) Kaa[m * NA + n] = Ke[(ND + m) * NE + ND + n];
-        for (int c = 0; c < ND; ++c) W[m * ND + c] = Ke[(ND + m) * NE + c];
-      }
-      if (!solveDenseInPlace<NA, ND>(Kaa.data(), W.data())) return ElementStatus::InternalSolveFailed;
-      for (int r = 0; r < ND; ++r)
-        for (int c = 0; c < ND; ++c) {
-          double sum = 0.0;
-          for (int m = 0; m < NA; ++m) sum += Ke[r * NE + ND + m] * W[m * ND + c];
-          stiffness[r * ND + c] = Ke[r * NE + c] - sum;
-        }
-    }
+    if (stiffness && !condensedTangent(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), stiffness, W))
+      return ElementStatus::InternalSolveFailed;
     if (state) {
       std::copy(solution.begin(), solution.end(), state + kStateAlpha);
       std::copy(u, u + ND, state + kStateDisplacement);
@@ -181,6 +163,11 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   // round-off floor: a Newton step negligible against the element size, or a residual that is small
   // and no longer decreasing (quadratic convergence would have reduced it by orders of magnitude).
   static constexpr double kResidualTolerance = 1e-13;
+  // The half tangent and LDLᵀ (condensedTangent) for a symmetric material tangent: measured in
+  // instructions per Jacobian (bench/README.md, issue 23 third round), Hex8 Enhanced 139 000 → 111 747,
+  // but Q4 Enhanced 8 477 → 10 246 (its 12 × 12 blocks are too small for the halving to outweigh the
+  // mirroring and the triangular loops), so 3D only; the revolved 2D kinematics never takes it.
+  static constexpr bool kSymmetricPathPays = D == 3 && !Kinematics::kHoop;
   static constexpr double kStagnationTolerance = 1e-9;
   static constexpr double kStepTolerance = 1e-14;
 
@@ -218,6 +205,80 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     return true;
   }
 
+  /// K = K_uu − K_uα W with W = K_αα⁻¹ K_αu, from the extended tangent at α* (all four blocks at
+  /// once: nodes and modes are one list of gradients). With a symmetric material tangent only the upper
+  /// blocks are built and condensed by LDLᵀ (condenseSymmetric). False when K_αα is singular.
+  bool condensedTangent(const Geometry& g, const PointStates& s, bool symmetric, double* K,
+                        std::array<double, NA * ND>& W) const {
+    std::array<double, NE * NE> Ke;  // the symmetric path fills its upper triangle at the first point
+    if constexpr (kSymmetricPathPays) {
+      if (symmetric) {
+        for (int q = 0; q < Q; ++q)
+          Kinematics::template addSymmetricTangent<G>(g.gradients[q].data(), g.hoop.at(q), s.A[q], g.weightedVolume[q],
+                                                      Ke.data(), NE, q == 0);
+        return condenseSymmetric(Ke, K, W);
+      }
+    }
+    Ke.fill(0.0);
+    for (int q = 0; q < Q; ++q)
+      Kinematics::template addTangent<G, G>(g.gradients[q].data(), g.hoop.at(q), g.gradients[q].data(), g.hoop.at(q),
+                                            s.A[q], g.weightedVolume[q], Ke.data(), NE);
+    return condenseGeneral(Ke, K, W);
+  }
+
+  /// Static condensation by Gaussian elimination with partial pivoting: K_αα W = K_αu, then
+  /// K = K_uu − K_uα W. Ke whole.
+  static bool condenseGeneral(const std::array<double, NE * NE>& Ke, double* K, std::array<double, NA * ND>& W) {
+    std::array<double, NA * NA> Kaa;
+    for (int m = 0; m < NA; ++m) {
+      for (int n = 0; n < NA; ++n) Kaa[m * NA + n] = Ke[(ND + m) * NE + ND + n];
+      for (int c = 0; c < ND; ++c) W[m * ND + c] = Ke[(ND + m) * NE + c];
+    }
+    if (!solveDenseInPlace<NA, ND>(Kaa.data(), W.data())) return false;
+    for (int r = 0; r < ND; ++r)
+      for (int c = 0; c < ND; ++c) {
+        double sum = 0.0;
+        for (int m = 0; m < NA; ++m) sum += Ke[r * NE + ND + m] * W[m * ND + c];
+        K[r * ND + c] = Ke[r * NE + c] - sum;
+      }
+    return true;
+  }
+
+  /// Static condensation of a symmetric Ke given by its upper triangle (addSymmetricTangent): with
+  /// K_αα = L D Lᵀ and Y = L⁻¹ K_αu, K = K_uu − Yᵀ D⁻¹ Y (symmetric) and W = L⁻ᵀ D⁻¹ Y: the
+  /// triangular solves replace the pivoting elimination with 24 right-hand sides; when K_αα is not
+  /// positive definite (LDLᵀ refuses), Ke is completed and condenseGeneral pivots.
+  static bool condenseSymmetric(std::array<double, NE * NE>& Ke, double* K, std::array<double, NA * ND>& W) {
+    std::array<double, NA * NA> Kaa;
+    for (int m = 0; m < NA; ++m)
+      for (int n = 0; n <= m; ++n) Kaa[m * NA + n] = Ke[(ND + n) * NE + ND + m];
+    if (!factorPositiveDefinite<NA>(Kaa.data())) {
+      mirrorUpperTriangle<NE>(Ke.data(), NE);
+      return condenseGeneral(Ke, K, W);
+    }
+    std::array<double, NA * ND> Y;  // K_αu, from the upper block K_uα
+    for (int m = 0; m < NA; ++m)
+      for (int c = 0; c < ND; ++c) Y[m * ND + c] = Ke[c * NE + ND + m];
+    forwardSubstitute<NA, ND>(Kaa.data(), Y.data());
+    for (int m = 0; m < NA; ++m) {
+      const double inverse = 1.0 / Kaa[m * NA + m];
+      for (int c = 0; c < ND; ++c) W[m * ND + c] = Y[m * ND + c] * inverse;
+    }
+    // Whole rows (fixed-length loops, which the compiler vectorises: a triangle's variable-length ones
+    // cost more instructions than the operations they save), then the upper triangle mirrored, so that
+    // K is exactly symmetric.
+    for (int r = 0; r < ND; ++r)
+      for (int c = r; c < ND; ++c) K[r * ND + c] = K[c * ND + r] = Ke[r * NE + c];
+    for (int r = 0; r < ND; ++r)
+      for (int m = 0; m < NA; ++m) {
+        const double y = Y[m * ND + r];
+        for (int c = 0; c < ND; ++c) K[r * ND + c] -= y * W[m * ND + c];
+      }
+    mirrorUpperTriangle<ND>(K, ND);
+    backSubstitute<NA, ND>(Kaa.data(), W.data());
+    return true;
+  }
+
   static Matrix<MD> compatibleGradient(const Geometry& g, int q, const double* u) {
     Matrix<MD> H{};
     Kinematics::template addGradient<N>(g.gradients[q].data(), g.hoop.at(q), u, H);
@@ -238,6 +299,25 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     double s = 0.0;
     for (int k = 0; k < n; ++k) s += v[k] * v[k];
     return std::sqrt(s);
+  }
+
+  /// K_αα Δα = −R_α (`step` holds −R_α on entry, Δα on exit); LDLᵀ for a symmetric material tangent.
+  static bool localNewtonStep(const Geometry& g, const PointStates& s, bool symmetric, std::array<double, NA * NA>& Kaa,
+                              Alpha& step) {
+    if constexpr (kSymmetricPathPays) {
+      if (symmetric) {
+        for (int q = 0; q < Q; ++q)
+          Kinematics::template addSymmetricTangent<M>(g.gradients[q].data() + ND, nullptr, s.A[q], g.weightedVolume[q],
+                                                      Kaa.data(), NA, q == 0);
+        mirrorUpperTriangle<NA>(Kaa.data(), NA);
+        return solveSymmetricInPlace<NA, 1>(Kaa.data(), step.data());
+      }
+    }
+    for (int q = 0; q < Q; ++q) {
+      const double* modes = g.gradients[q].data() + ND;
+      Kinematics::template addTangent<M, M>(modes, nullptr, modes, nullptr, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
+    }
+    return solveDenseInPlace<NA, 1>(Kaa.data(), step.data());
   }
 
   /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F,
@@ -271,12 +351,9 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
         return ElementStatus::Ok;
       // Newton step K_αα Δα = −R_α.
       std::array<double, NA * NA> Kaa{};
-      for (int q = 0; q < Q; ++q) {
-        const double* modes = g.gradients[q].data() + ND;
-        Kinematics::template addTangent<M, M>(modes, nullptr, modes, nullptr, s.A[q], g.weightedVolume[q], Kaa.data(), NA);
-      }
       for (int m = 0; m < NA; ++m) step[m] = -R[m];
-      if (!solveDenseInPlace<NA, 1>(Kaa.data(), step.data())) return ElementStatus::InternalSolveFailed;
+      if (!localNewtonStep(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), Kaa, step))
+        return ElementStatus::InternalSolveFailed;
       // The current α is already exact to round-off; F, P, A in s belong to it.
       if (norm<NA>(step.data()) <= kStepTolerance * (norm<NA>(alpha.data()) + g.length)) return ElementStatus::Ok;
       for (int m = 0; m < NA; ++m) alpha[m] += step[m];

@@ -55,6 +55,13 @@ struct PlanarKinematics {
                          const Tangent<D>& A, double wj, double* K, int ld) {
     mechanics::addTangent<D, Rows, Cols>(g, h, A, wj, K, ld);
   }
+  /// addTangent with h = g for a major-symmetric A: the blocks b ≥ a only (mirrorUpperTriangle completes K),
+  /// assigned instead of added at the `first` point.
+  template <int Count>
+  static void addSymmetricTangent(const double* g, const double* /*hoop*/, const Tangent<D>& A, double wj, double* K,
+                                  int ld, bool first) {
+    mechanics::addSymmetricTangent<D, Count>(g, A, wj, K, ld, first);
+  }
   /// The 3 × 3 F for output stresses (plane strain: F_33 = 1).
   static Tensor2 threeByThree(const Matrix<D>& F) { return embedIn3D<D>(F, 1.0); }
 };

@@ -38,6 +38,11 @@ class Material {
 
   /// True for geometrically linear laws (the element then uses the small-strain kinematics).
   virtual bool isSmallStrain() const { return false; }
+
+  /// True when A has major symmetry at every F, A_iJkL = A_kLiJ: a law with a stored energy W, for
+  /// which A = ∂²W/∂F∂F. Hex8 Enhanced then builds only half of its tangent and condenses it
+  /// with LDLᵀ (EnhancedStrainElement.hpp, kSymmetricPathPays). False unless a law says so.
+  virtual bool tangentIsSymmetric() const { return false; }
 };
 
 /// Implements every Material entry from one dimension-general formula,
@@ -59,6 +64,9 @@ class MaterialLaw : public Material {
   bool firstPiolaKirchhoffAtPoints(int count, const Matrix<3>* F, Matrix<3>* P, Tangent<3>* A) const final {
     return atPoints<3>(count, F, P, A);
   }
+  /// Every law of this package derives P from a stored energy (the small-strain one for Linear
+  /// Elastic): MaterialTest checks the symmetry of each law's A.
+  bool tangentIsSymmetric() const override { return true; }
 
  private:
   const Law& law() const { return static_cast<const Law&>(*this); }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "mechanics/Element.hpp"
@@ -69,6 +70,67 @@ inline void addTangent(const double* g, const double* h, const Tangent<D>& A, do
           row[D * b + k] += s;
         }
     }
+}
+
+/// The rows D·a + i of addTangent's K with h = g, over the columns of the blocks b ≥ a only, At being
+/// A · wj with its last two indices swapped (as in addTangent). `a` is a template parameter so that
+/// every column loop has a length known at compile time and is unrolled and vectorised as addTangent's
+/// are (with a run-time start the triangle saved only 14 % of the instructions for Hex8 Enhanced).
+template <int D, int Count, bool kAssign, int a>
+inline void addUpperRowBlock(const double* g, const double (&At)[D][D][D][D], double* __restrict K, int ld) {
+  for (int i = 0; i < D; ++i) {
+    double AN[D][D];  // Σ_J g_aJ A_iJkL · wj, indexed [L][k]
+    for (int L = 0; L < D; ++L)
+      for (int k = 0; k < D; ++k) {
+        double s = g[D * a] * At[i][0][L][k];
+        for (int J = 1; J < D; ++J) s += g[D * a + J] * At[i][J][L][k];
+        AN[L][k] = s;
+      }
+    double* row = K + static_cast<std::size_t>(D * a + i) * ld;
+    for (int b = a; b < Count; ++b)
+      for (int k = 0; k < D; ++k) {
+        double s = AN[0][k] * g[D * b];
+        for (int L = 1; L < D; ++L) s += AN[L][k] * g[D * b + L];
+        if constexpr (kAssign)
+          row[D * b + k] = s;
+        else
+          row[D * b + k] += s;
+      }
+  }
+}
+
+template <int D, int Count, bool kAssign, int... a>
+inline void addUpperRowBlocks(const double* g, const double (&At)[D][D][D][D], double* __restrict K, int ld,
+                              std::integer_sequence<int, a...>) {
+  (addUpperRowBlock<D, Count, kAssign, a>(g, At, K, ld), ...);
+}
+
+/// addTangent with h = g and Rows = Cols = Count when A has major symmetry (A_iJkL = A_kLiJ: a law
+/// with a stored energy, Material::tangentIsSymmetric), so that K is symmetric: only the blocks b ≥ a
+/// are accumulated (the diagonal blocks whole), 60 % of addTangent's multiplications for the 11
+/// gradients of Hex8 Enhanced; mirrorUpperTriangle completes K once after the last point. With
+/// `first`, the blocks are assigned instead of added to (the first point: K need not be zeroed).
+template <int D, int Count>
+inline void addSymmetricTangent(const double* g, const Tangent<D>& A, double wj, double* __restrict K, int ld,
+                                bool first) {
+  double At[D][D][D][D];
+  for (int i = 0; i < D; ++i)
+    for (int J = 0; J < D; ++J)
+      for (int k = 0; k < D; ++k)
+        for (int L = 0; L < D; ++L) At[i][J][L][k] = A[((D * i + J) * D + k) * D + L] * wj;
+  if (first)
+    addUpperRowBlocks<D, Count, true>(g, At, K, ld, std::make_integer_sequence<int, Count>{});
+  else
+    addUpperRowBlocks<D, Count, false>(g, At, K, ld, std::make_integer_sequence<int, Count>{});
+}
+
+/// K_cr = K_rc for c > r: completes a symmetric n × n K (leading dimension `ld`) from its upper
+/// triangle, which holds every block that addSymmetricTangent builds (the diagonal blocks' own lower
+/// halves are overwritten too, so that K comes out exactly symmetric).
+template <int n>
+inline void mirrorUpperTriangle(double* K, int ld) {
+  for (int r = 0; r < n; ++r)
+    for (int c = r + 1; c < n; ++c) K[static_cast<std::size_t>(c) * ld + r] = K[static_cast<std::size_t>(r) * ld + c];
 }
 
 /// Frobenius norm of a D × D matrix.

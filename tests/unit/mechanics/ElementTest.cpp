@@ -109,6 +109,49 @@ TEST_P(ElementCase, StiffnessHasOnlyTheRigidBodyModesAsZeroEnergyModes) {
   EXPECT_EQ(nullity(K, nd), D * (D + 1) / 2);
 }
 
+/// The same law, not declaring its tangent symmetric: the kernels then take their general path (the
+/// whole tangent, Gaussian elimination for the enhanced modes).
+class UndeclaredSymmetry final : public Material {
+ public:
+  explicit UndeclaredSymmetry(const Material& law) : law_(law) {}
+  bool firstPiolaKirchhoff(const Tensor2& F, Tensor2& P, Tensor4* A) const override {
+    return law_.firstPiolaKirchhoff(F, P, A);
+  }
+  bool firstPiolaKirchhoffAtPoints(int n, const Matrix<2>* F, Matrix<2>* P, Tangent<2>* A) const override {
+    return law_.firstPiolaKirchhoffAtPoints(n, F, P, A);
+  }
+  bool firstPiolaKirchhoffAtPoints(int n, const Matrix<3>* F, Matrix<3>* P, Tangent<3>* A) const override {
+    return law_.firstPiolaKirchhoffAtPoints(n, F, P, A);
+  }
+  bool isSmallStrain() const override { return law_.isSmallStrain(); }
+
+ private:
+  const Material& law_;
+};
+
+TEST_P(ElementCase, SymmetricPathEqualsGeneralPath) {
+  // Half the tangent mirrored and the LDLᵀ condensation (a law that declares A_iJkL = A_kLiJ; Hex8
+  // Enhanced) against the whole tangent and Gaussian elimination: the same force, tangent and internal
+  // variables to round-off. The other kernels take one path for both.
+  ASSERT_TRUE(material->tangentIsSymmetric());
+  const UndeclaredSymmetry general(*material);
+  const auto u = deformation(X, *kernel, 1.0);
+  std::vector<double> alphaS(ni, 0.0), alphaG(ni, 0.0), fS(nd), fG(nd), KS(nd * nd), KG(nd * nd);
+  ASSERT_EQ(kernel->evaluate(X.data(), u.data(), alphaS.data(), *material, fS.data(), KS.data()), ElementStatus::Ok);
+  ASSERT_EQ(kernel->evaluate(X.data(), u.data(), alphaG.data(), general, fG.data(), KG.data()), ElementStatus::Ok);
+  EXPECT_LT(maxAbsDifference(fS, fG), 1e-12 * maxAbs(fG));
+  EXPECT_LT(maxAbsDifference(KS, KG), 1e-12 * maxAbs(KG));
+  if (ni > 0) {
+    EXPECT_LT(maxAbsDifference(alphaS, alphaG), 1e-12 * maxAbs(alphaG));
+  }
+  if (GetParam().element == "Hex8 Enhanced") {  // the one kernel that takes the symmetric path (kSymmetricPathPays)
+    for (int r = 0; r < nd; ++r)
+      for (int c = 0; c < r; ++c) {
+        EXPECT_EQ(KS[r * nd + c], KS[c * nd + r]) << "mirrored, so exactly symmetric";
+      }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllElementsAllLaws, ElementCase, ::testing::ValuesIn(allCases()), caseName);
 
 class FiniteStrainElement : public ElementCase {};
