@@ -13,6 +13,7 @@
 
 #include "contact/MortarFacetPair.hpp"
 #include "contact/MortarInterface.hpp"
+#include "MortarTestTools.hpp"
 
 namespace contessa::contact {
 namespace {
@@ -213,29 +214,10 @@ std::vector<double> unevenFace() {
   return x;
 }
 
-struct Assembled {
-  std::vector<double> residual, tangent, dLambda;
-  std::vector<SlaveNodeState> states;
-  ContactCounts counts;
-};
+using testing::Assembled;
 
 Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
-  const int n = static_cast<int>(x.size());
-  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}, {}};
-  interface.evaluate([&](GlobalIndex node, double* p) { std::copy(&x[3 * node], &x[3 * node] + 3, p); }, lambda, true,
-                     [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
-                       for (int a = 0; a < m; ++a) {
-                         if (dofs[a] < 0) continue;
-                         out.residual[dofs[a]] += r[a];
-                         out.dLambda[dofs[a]] += drdl[a];
-                         for (int b = 0; b < m; ++b)
-                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
-                       }
-                     });
-  interface.commit();
-  out.states = interface.committedStates();
-  out.counts = interface.committedCounts();
-  return out;
+  return testing::assemble<3>(interface, x, lambda);
 }
 
 std::unique_ptr<ContactInterfaceBase> faceInterface(bool rigidMaster) {
@@ -262,22 +244,10 @@ double tangentError(bool rigidMaster, double* scale) {
   const auto x = unevenFace();
   const Assembled a = assemble(*faceInterface(rigidMaster), x, 0.3);
   for (const auto& s : a.states) EXPECT_NE(s.status, ContactStatus::Open) << "the test wants every node closed";
-  const int n = static_cast<int>(x.size());
-  const double h = 1e-7;
-  double error = 0;
-  *scale = 0;
-  for (int j = 0; j < n; ++j) {
-    auto plus = x, minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto rp = assemble(*faceInterface(rigidMaster), plus, 0.3).residual;
-    const auto rm = assemble(*faceInterface(rigidMaster), minus, 0.3).residual;
-    for (int i = 0; i < n; ++i) {
-      *scale = std::max(*scale, std::abs(a.tangent[i * n + j]));
-      error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
-    }
-  }
-  return error;
+  const auto residualAt = [&](const std::vector<double>& y) {
+    return assemble(*faceInterface(rigidMaster), y, 0.3).residual;
+  };
+  return testing::tangentCentralDifferenceError(a.tangent, x, residualAt, scale);
 }
 
 TEST(MortarInterface3D, TangentIsTheCentralDifferenceOfTheResidualWithADeformableMaster) {
@@ -293,15 +263,11 @@ TEST(MortarInterface3D, TangentAndLoadDerivativeAreCentralDifferencesWithAMoving
   EXPECT_GT(scale, 100.0);
   EXPECT_LT(error, 1e-6 * scale);
   const auto x = unevenFace();
-  const double lambda = 0.3, h = 1e-7;
+  const double lambda = 0.3;
   const Assembled a = assemble(*faceInterface(true), x, lambda);
-  const auto rp = assemble(*faceInterface(true), x, lambda + h).residual;
-  const auto rm = assemble(*faceInterface(true), x, lambda - h).residual;
-  double dScale = 0, dError = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    dScale = std::max(dScale, std::abs(a.dLambda[i]));
-    dError = std::max(dError, std::abs((rp[i] - rm[i]) / (2 * h) - a.dLambda[i]));
-  }
+  double dScale = 0;
+  const double dError = testing::loadDerivativeCentralDifferenceError(
+      a.dLambda, lambda, [&](double mu) { return assemble(*faceInterface(true), x, mu).residual; }, &dScale);
   EXPECT_GT(dScale, 1.0);
   EXPECT_LT(dError, 1e-6 * dScale);
 }

@@ -10,6 +10,7 @@
 
 #include "contact/MortarInterface.hpp"
 #include "contact/MortarSegment.hpp"
+#include "MortarTestTools.hpp"
 
 namespace contessa::contact {
 namespace {
@@ -203,27 +204,10 @@ std::vector<double> patchCoordinates(double penetration) {
   return {3, 0, 2, 0, 1, 0, 0, 0, -0.2, -penetration, 1.5, -penetration, 3.2, -penetration};
 }
 
-struct Assembled {
-  std::vector<double> residual, tangent, dLambda;  // over every DOF of the 7 nodes
-  std::vector<SlaveNodeState> states;
-};
+using testing::Assembled;
 
 Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
-  const int n = static_cast<int>(x.size());
-  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}};
-  interface.evaluate([&](GlobalIndex node, double* p) { p[0] = x[2 * node], p[1] = x[2 * node + 1]; }, lambda, true,
-                     [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
-                       for (int a = 0; a < m; ++a) {
-                         if (dofs[a] < 0) continue;
-                         out.residual[dofs[a]] += r[a];
-                         out.dLambda[dofs[a]] += drdl[a];
-                         for (int b = 0; b < m; ++b)
-                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
-                       }
-                     });
-  interface.commit();
-  out.states = interface.committedStates();
-  return out;
+  return testing::assemble<2>(interface, x, lambda);
 }
 
 std::unique_ptr<ContactInterfaceBase> patchInterface(bool rigidMaster) {
@@ -253,26 +237,13 @@ std::vector<double> unevenCoordinates() {
 }
 
 double tangentError(bool rigidMaster, double* scale) {
-  auto interface = patchInterface(rigidMaster);
   const auto x = unevenCoordinates();
-  const Assembled a = assemble(*interface, x, 0.3);
+  const Assembled a = assemble(*patchInterface(rigidMaster), x, 0.3);
   for (const auto& s : a.states) EXPECT_EQ(s.status, ContactStatus::Slip) << "the test wants every node closed";
-  const int n = static_cast<int>(x.size());
-  const double h = 1e-7;
-  double error = 0;
-  *scale = 0;
-  for (int j = 0; j < n; ++j) {
-    auto plus = x, minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto rp = assemble(*patchInterface(rigidMaster), plus, 0.3).residual;
-    const auto rm = assemble(*patchInterface(rigidMaster), minus, 0.3).residual;
-    for (int i = 0; i < n; ++i) {
-      *scale = std::max(*scale, std::abs(a.tangent[i * n + j]));
-      error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
-    }
-  }
-  return error;
+  const auto residualAt = [&](const std::vector<double>& y) {
+    return assemble(*patchInterface(rigidMaster), y, 0.3).residual;
+  };
+  return testing::tangentCentralDifferenceError(a.tangent, x, residualAt, scale);
 }
 
 TEST(MortarInterface, TangentIsTheCentralDifferenceOfTheResidualWithADeformableMaster) {
@@ -289,15 +260,11 @@ TEST(MortarInterface, TangentAndLoadDerivativeAreCentralDifferencesWithAMovingRi
   EXPECT_LT(error, 1e-6 * scale);
   // ∂r/∂λ: the rigid master moves by λ · motion.
   const auto x = unevenCoordinates();
-  const double lambda = 0.3, h = 1e-7;
+  const double lambda = 0.3;
   const Assembled a = assemble(*patchInterface(true), x, lambda);
-  const auto rp = assemble(*patchInterface(true), x, lambda + h).residual;
-  const auto rm = assemble(*patchInterface(true), x, lambda - h).residual;
-  double dScale = 0, dError = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    dScale = std::max(dScale, std::abs(a.dLambda[i]));
-    dError = std::max(dError, std::abs((rp[i] - rm[i]) / (2 * h) - a.dLambda[i]));
-  }
+  double dScale = 0;
+  const double dError = testing::loadDerivativeCentralDifferenceError(
+      a.dLambda, lambda, [&](double mu) { return assemble(*patchInterface(true), x, mu).residual; }, &dScale);
   EXPECT_GT(dScale, 1.0);
   EXPECT_LT(dError, 1e-6 * dScale);
 }

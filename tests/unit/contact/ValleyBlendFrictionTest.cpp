@@ -8,6 +8,7 @@
 // when the selection changes); in slip the traction is on the Coulomb cone in the chart's metric.
 #include "contact/HistoryTransfer.hpp"
 #include "contact/ValleyBlend.hpp"
+#include "ValleyBlendTestTools.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@
 #include <vector>
 
 namespace cc = contessa::contact;
+using namespace contessa::contact::testing;
 
 namespace {
 
@@ -25,32 +27,6 @@ constexpr double kPenalty = 1e3;    // ε_N
 constexpr double kTangential = 1e3;  // ε_T
 constexpr double kMu = 0.3;
 constexpr double kSlaveSize = 5.0;  // L_k: the band is b = 1e-2 L_k = 0.05
-
-template <class Facet>
-using Facets = std::vector<cc::MasterFacetNodes<Facet>>;
-
-template <class Facet>
-cc::MasterFacetNodes<Facet> facet(int id, std::array<int, Facet::kNodes> nodes,
-                                  std::array<typename Facet::Point, Facet::kNodes> x) {
-  cc::MasterFacetNodes<Facet> f;
-  f.id = id;
-  f.nodes = nodes;
-  f.x = x;
-  return f;
-}
-
-// 2D valley at the origin: a rises to the left, b to the right (slope `rise`), body below (n̄ ≈ +y).
-Facets<cc::Line2Facet> valley2D(double rise) {
-  return {facet<cc::Line2Facet>(0, {10, 11}, {{{0.0, 0.0}, {-1.0, rise}}}),
-          facet<cc::Line2Facet>(1, {12, 10}, {{{1.0, rise}, {0.0, 0.0}}})};
-}
-
-// 3D valley along the y axis (a: x < 0, b: x > 0), the far corner of b lifted by `warp`. Body below.
-Facets<cc::Quad4Facet> valley3D(double rise, double warp) {
-  using P = cc::Quad4Facet::Point;
-  return {facet<cc::Quad4Facet>(0, {20, 21, 22, 23}, {P{-1.0, 0.0, rise}, P{0.0, 0.0, 0.0}, P{0.0, 1.0, 0.0}, P{-1.0, 1.0, rise}}),
-          facet<cc::Quad4Facet>(1, {21, 24, 25, 22}, {P{0.0, 0.0, 0.0}, P{1.0, 0.0, rise}, P{1.0, 1.0, rise + warp}, P{0.0, 1.0, 0.0}})};
-}
 
 /// The frictional state a slave node comes from: its committed history stored on facet `stored` (the other
 /// facet's is re-expressed from it, as ContactInterface does), or a first touch from an approach.
@@ -115,24 +91,6 @@ cc::ValleyBlendResult<Facet> blendAt(const Setup<Facet>& s, const typename Facet
   friction.approach = s.approach;
   friction.facetLength = kSlaveSize;
   return cc::evaluateValleyBlend<Facet>(cc::PenaltyNormalLaw(kPenalty), slave, facets[e.a], facets[e.b], e, friction);
-}
-
-/// Moves dof `d` of the blend's union by h in both facets (a shared node moves in both).
-template <class Facet>
-void perturb(typename Facet::Point& slave, Facets<Facet>& facets, const cc::ValleyBlendResult<Facet>& r,
-             const cc::ValleyEdge& e, int d, double h) {
-  constexpr int kDim = Facet::kSpaceDim;
-  const int block = d / kDim, c = d % kDim;
-  if (block == 0) {
-    slave[c] += h;
-    return;
-  }
-  const auto [f, i] = r.source[block];
-  const std::size_t from = f == 0 ? e.a : e.b, other = f == 0 ? e.b : e.a;
-  const int id = facets[from].nodes[i];
-  facets[from].x[i][c] += h;
-  for (int j = 0; j < Facet::kNodes; ++j)
-    if (facets[other].nodes[j] == id) facets[other].x[j][c] += h;
 }
 
 /// Worst entry-wise relative difference between the tangent and fourth-order central differences of the

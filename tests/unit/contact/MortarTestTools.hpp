@@ -1,0 +1,77 @@
+#pragma once
+// What the 2D and 3D mortar interface tests share: one evaluation of an interface into dense arrays, and
+// the central-difference checks of its tangent and of its load derivative ∂r/∂λ (the project's rule: every
+// tangent against a finite-difference derivative of its residual).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "contact/ContactInterface.hpp"
+
+namespace contessa::contact::testing {
+
+struct Assembled {
+  std::vector<double> residual, tangent, dLambda;  // over every DOF of the test's nodes
+  std::vector<SlaveNodeState> states;
+  ContactCounts counts;
+};
+
+// Evaluates and commits `interface` at the coordinates x (Dim per node, node-major) and load factor λ.
+template <int Dim>
+Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+  const int n = static_cast<int>(x.size());
+  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}, {}};
+  interface.evaluate([&](GlobalIndex node, double* p) { std::copy(&x[Dim * node], &x[Dim * node] + Dim, p); }, lambda,
+                     true, [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
+                       for (int a = 0; a < m; ++a) {
+                         if (dofs[a] < 0) continue;
+                         out.residual[dofs[a]] += r[a];
+                         out.dLambda[dofs[a]] += drdl[a];
+                         for (int b = 0; b < m; ++b)
+                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
+                       }
+                     });
+  interface.commit();
+  out.states = interface.committedStates();
+  out.counts = interface.committedCounts();
+  return out;
+}
+
+// The largest |(r(x + h e_j) − r(x − h e_j)) / 2h − K_ij| over the dense tangent K (h = 1e-7), with the
+// largest |K_ij| in *scale; residualAt(y) is the residual at coordinates y.
+template <class ResidualAt>
+double tangentCentralDifferenceError(const std::vector<double>& tangent, const std::vector<double>& x,
+                                     ResidualAt residualAt, double* scale) {
+  const int n = static_cast<int>(x.size());
+  const double h = 1e-7;
+  double error = 0;
+  *scale = 0;
+  for (int j = 0; j < n; ++j) {
+    auto plus = x, minus = x;
+    plus[j] += h;
+    minus[j] -= h;
+    const auto rp = residualAt(plus), rm = residualAt(minus);
+    for (int i = 0; i < n; ++i) {
+      *scale = std::max(*scale, std::abs(tangent[i * n + j]));
+      error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - tangent[i * n + j]));
+    }
+  }
+  return error;
+}
+
+// The same for ∂r/∂λ at λ; residualAt(μ) is the residual at load factor μ.
+template <class ResidualAt>
+double loadDerivativeCentralDifferenceError(const std::vector<double>& dLambda, double lambda, ResidualAt residualAt,
+                                            double* scale) {
+  const double h = 1e-7;
+  const auto rp = residualAt(lambda + h), rm = residualAt(lambda - h);
+  double error = 0;
+  *scale = 0;
+  for (std::size_t i = 0; i < dLambda.size(); ++i) {
+    *scale = std::max(*scale, std::abs(dLambda[i]));
+    error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - dLambda[i]));
+  }
+  return error;
+}
+
+}  // namespace contessa::contact::testing
