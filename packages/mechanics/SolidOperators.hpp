@@ -37,31 +37,42 @@ inline void addDivergence(const double* g, const Matrix<D>& P, double wj, double
     }
 }
 
+/// At[i][J][L][k] = A_iJkL · wj: A scaled by the point's weight with its last two indices swapped, so
+/// that the tangent's column loops run over contiguous k (the two components of a row entry pair in 2D)
+/// and vectorise without shuffles.
+template <int D>
+inline void swapLastIndicesScaled(const Tangent<D>& A, double wj, double (&At)[D][D][D][D]) {
+  for (int i = 0; i < D; ++i)
+    for (int J = 0; J < D; ++J)
+      for (int k = 0; k < D; ++k)
+        for (int L = 0; L < D; ++L) At[i][J][L][k] = A[((D * i + J) * D + k) * D + L] * wj;
+}
+
+/// AN[L][k] = Σ_J g_aJ At[i][J][L][k], row (a, i)'s contraction of g_a into A before the columns are
+/// swept. (The sum starts from its first term rather than from 0.0, which the compiler may not do for
+/// us: x + 0.0 is not x for x = −0.0.)
+template <int D>
+inline void contractRow(const double* ga, const double (&Ati)[D][D][D], double (&AN)[D][D]) {
+  for (int L = 0; L < D; ++L)
+    for (int k = 0; k < D; ++k) {
+      double s = ga[0] * Ati[0][L][k];
+      for (int J = 1; J < D; ++J) s += ga[J] * Ati[J][L][k];
+      AN[L][k] = s;
+    }
+}
+
 /// K_(ai),(bk) += g_aJ A_iJkL h_bL · wj for a < Rows, b < Cols, into K with leading dimension `ld`
 /// (row D·a + i, column D·b + k). With g = h = ∂N/∂X this is K_uu, material and geometric stiffness
 /// together since A = ∂P/∂F. No symmetry of A is assumed. K must not overlap g, h or A (it never
 /// does: K is the caller's output block), which lets the compiler keep the row sums in registers.
 template <int D, int Rows, int Cols>
 inline void addTangent(const double* g, const double* h, const Tangent<D>& A, double wj, double* __restrict K, int ld) {
-  // A · wj with its last two indices swapped, At[i][J][L][k], so that every loop below runs over
-  // contiguous k (the two components of a row entry pair in 2D) and vectorises without shuffles.
   double At[D][D][D][D];
-  for (int i = 0; i < D; ++i)
-    for (int J = 0; J < D; ++J)
-      for (int k = 0; k < D; ++k)
-        for (int L = 0; L < D; ++L) At[i][J][L][k] = A[((D * i + J) * D + k) * D + L] * wj;
+  swapLastIndicesScaled<D>(A, wj, At);
   for (int a = 0; a < Rows; ++a)
     for (int i = 0; i < D; ++i) {
-      // Row (a, i): first contract g_a into A, then sweep the columns. (Sums start from their first
-      // term rather than from 0.0, which the compiler may not do for us: x + 0.0 is not x for
-      // x = −0.0.)
       double AN[D][D];  // Σ_J g_aJ A_iJkL · wj, indexed [L][k]
-      for (int L = 0; L < D; ++L)
-        for (int k = 0; k < D; ++k) {
-          double s = g[D * a] * At[i][0][L][k];
-          for (int J = 1; J < D; ++J) s += g[D * a + J] * At[i][J][L][k];
-          AN[L][k] = s;
-        }
+      contractRow<D>(g + D * a, At[i], AN);
       double* row = K + static_cast<std::size_t>(D * a + i) * ld;
       for (int b = 0; b < Cols; ++b)
         for (int k = 0; k < D; ++k) {
@@ -80,12 +91,7 @@ template <int D, int Count, bool kAssign, int a>
 inline void addUpperRowBlock(const double* g, const double (&At)[D][D][D][D], double* __restrict K, int ld) {
   for (int i = 0; i < D; ++i) {
     double AN[D][D];  // Σ_J g_aJ A_iJkL · wj, indexed [L][k]
-    for (int L = 0; L < D; ++L)
-      for (int k = 0; k < D; ++k) {
-        double s = g[D * a] * At[i][0][L][k];
-        for (int J = 1; J < D; ++J) s += g[D * a + J] * At[i][J][L][k];
-        AN[L][k] = s;
-      }
+    contractRow<D>(g + D * a, At[i], AN);
     double* row = K + static_cast<std::size_t>(D * a + i) * ld;
     for (int b = a; b < Count; ++b)
       for (int k = 0; k < D; ++k) {
@@ -114,10 +120,7 @@ template <int D, int Count>
 inline void addSymmetricTangent(const double* g, const Tangent<D>& A, double wj, double* __restrict K, int ld,
                                 bool first) {
   double At[D][D][D][D];
-  for (int i = 0; i < D; ++i)
-    for (int J = 0; J < D; ++J)
-      for (int k = 0; k < D; ++k)
-        for (int L = 0; L < D; ++L) At[i][J][L][k] = A[((D * i + J) * D + k) * D + L] * wj;
+  swapLastIndicesScaled<D>(A, wj, At);
   if (first)
     addUpperRowBlocks<D, Count, true>(g, At, K, ld, std::make_integer_sequence<int, Count>{});
   else
