@@ -9,6 +9,7 @@
 #include "common/Error.hpp"
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
+#include "deck/ProblemDefinition.hpp"
 #include "solvers/StepSizeMethods.hpp"
 
 namespace contessa::solvers {

@@ -8,9 +8,11 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "deck/ProblemDefinition.hpp"
-
 #include "solvers/StepSizeMethods.hpp"  // stepSizeMethods()
+
+namespace contessa::deck {
+struct ProblemDefinition;  // deck/ProblemDefinition.hpp: solvers/ headers include no deck header
+}
 
 namespace contessa::solvers {
 
