@@ -154,7 +154,7 @@ bool NewtonStatusTests::augment(const NOX::Solver::Generic& solver, bool converg
   maxIters_->restartAt(solver.getNumIterations());
   // The one status test that changes the group: the iterate is the start of a new problem at the same load
   // factor (new multipliers), so its f is computed again before the next Newton direction. The group's f
-  // and Jacobian are invalidated as ContactBetaStepControl::iterateSet does it.
+  // and Jacobian are invalidated as a step control's iterateSet hook does it (StepControl.hpp).
   NOX::Abstract::Group& group = group_();
   const auto x = group.getX().clone(NOX::DeepCopy);
   group.setX(*x);

@@ -10,7 +10,7 @@ if grep -nE '#include[[:space:]]+"(deck|mesh|mechanics|contact)/' "$packages"/so
   echo "FAIL: a solvers/ header includes a deck, mesh, mechanics or contact header (above)"
   status=1
 fi
-loop="ContinuationDriver IncrementBookkeeper ContinuationRestart LocaResume StaticSolveDriver StepControlRelay"
+loop="ContinuationDriver IncrementBookkeeper StopMessage NewtonStatusTests ContinuationRestart LocaResume StaticSolveDriver StepControlRelay"
 for name in $loop; do
   for file in "$packages/solvers/$name.hpp" "$packages/solvers/$name.cpp" "$packages/solvers/StepControl.hpp"; do
     [ -f "$file" ] || continue
