@@ -12,6 +12,7 @@ packages=(
   libgtest-dev googletest
   paraview python3-paraview xvfb xauth
   slurm-wlm munge
+  calculix-ccx
 )
 
 missing=()
