@@ -137,7 +137,12 @@ bool NewtonStatusTests::augment(const NOX::Solver::Generic& solver, bool converg
     // Early updates only where the iterate is the solve's own (not while Contact Beta holds new contacts
     // back or has just changed what is evaluated).
     if (!augmentation_->hasAugmentedContact()) return false;
-    if (stepControl_ != nullptr && (!stepControl_->mayConverge() || !stepControl_->updateMeaningful())) return false;
+    if (stepControl_ != nullptr && (!stepControl_->mayConverge() || !stepControl_->updateMeaningful())) {
+      // This iterate's step belongs to another problem than the next one (new contacts held back, or just
+      // released): the contraction is measured again from the next two steps.
+      previousStep_ = HUGE_VAL;
+      return false;
+    }
     // The iterate's remaining error, estimated from the contraction ρ of its last two Newton steps
     // (ρ/(1 − ρ) times the last step: a linear rate's geometric tail, and at a quadratic rate more than
     // the next step). None before two steps of the same problem.
