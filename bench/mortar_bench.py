@@ -19,6 +19,11 @@ With --callgrind each variant runs once under valgrind's callgrind, counting the
 inside ContactAssembly::assemble (the same contact phase; independent of the machine's load, about 50x
 slower): the table then gives instructions per evaluation and per Newton iteration and their ratios.
 --max-value L stops the load at λ = L (the deck's checks are off; a shorter run for callgrind).
+With --perf each run is sampled by `perf record` (cpu-clock at 4000 Hz, DWARF call stacks) and the contact
+phase's time is its CPU time: the samples with ContactAssembly::assemble on the stack over the frequency.
+A sampled process counts only while it runs, so on a loaded machine (wall times inflated many times by
+the other processes) this stays what the contact phase costs; about ±5 % from the sampling. Slow: perf
+report unwinds the DWARF stacks, minutes per run on a loaded machine.
 
     /usr/bin/python3 bench/mortar_bench.py [--case 2d|3d|both] [--repeat 3] [--contessa PATH] [--work DIR]
     /usr/bin/python3 bench/mortar_bench.py --callgrind [--max-value 0.3] [--case 2d]
@@ -46,9 +51,26 @@ CASES = {
 CONTACT = re.compile(r"^\s*contact: search, elements, scatter\s+(\S+)\s+\S+\s+(\d+)\s*$")
 TOTAL = re.compile(r"^\s*total\s+(\S+)")
 NEWTON = re.compile(r"(\d+) Newton iterations")
+PERF_FREQUENCY = 4000
 
 
-def run(contessa, work, case, discretization, mu, index, callgrind=False, max_value=None):
+def contact_cpu_seconds(samples):
+    """CPU seconds of the contact phase from a perf record file: samples under ContactAssembly::assemble."""
+    def report(*args):
+        return subprocess.run(["perf", "report", "-i", samples, "--stdio", "-g", "none", *args],
+                              capture_output=True, text=True).stdout
+    total = sum(int(line.split()[1]) for line in report("--no-children", "--sort", "pid", "-n").splitlines()
+                if line.strip() and not line.startswith("#") and line.split()[0].endswith("%"))
+    share = 0.0
+    for line in report("--children", "--sort", "symbol").splitlines():
+        fields = line.split()
+        if len(fields) >= 4 and fields[3] == "contessa::model::ContactAssembly::assemble":
+            share = float(line.split()[0].rstrip("%")) / 100
+    os.remove(samples)
+    return share * total / PERF_FREQUENCY
+
+
+def run(contessa, work, case, discretization, mu, index, callgrind=False, max_value=None, perf=False):
     c = CASES[case]
     out = os.path.join(work, f"{case}_{discretization.replace(' ', '')}_mu{mu}_{index}")
     cmd = [contessa, os.path.join(ROOT, "inputs", c["deck"]), "--quiet", "--timers", "--output-dir", out,
@@ -59,6 +81,9 @@ def run(contessa, work, case, discretization, mu, index, callgrind=False, max_va
     if max_value is not None:
         cmd += ["--set", f"Piro/LOCA/Stepper/Max Value={max_value}"]
     profile = out + ".callgrind"
+    samples = out + ".perf"
+    if perf:
+        cmd = ["perf", "record", "-q", "-F", str(PERF_FREQUENCY), "--call-graph", "dwarf,16384", "-o", samples, *cmd]
     if callgrind:
         cmd = ["valgrind", "--tool=callgrind", "--collect-atstart=no",
                "--toggle-collect=contessa::model::ContactAssembly::assemble*",
@@ -79,6 +104,8 @@ def run(contessa, work, case, discretization, mu, index, callgrind=False, max_va
             newton = int(m.group(1))
     if contact is None or total is None or newton is None:
         sys.exit(f"no timer table or Newton count in the output of {' '.join(cmd)}")
+    if perf:
+        return contact_cpu_seconds(samples), contact[1], total, newton
     return (instructions if callgrind else contact[0]), contact[1], total, newton
 
 
@@ -90,6 +117,7 @@ def main():
     parser.add_argument("--work", default=None)
     parser.add_argument("--callgrind", action="store_true", help="count instructions (one run per variant)")
     parser.add_argument("--max-value", type=float, default=None, help="stop the load at this λ")
+    parser.add_argument("--perf", action="store_true", help="the contact phase's CPU time, sampled by perf")
     args = parser.parse_args()
     if args.callgrind:
         args.repeat = 1
@@ -101,12 +129,14 @@ def main():
     results = {v: [] for v in variants}
     for i in range(args.repeat):
         for v in variants:
-            results[v].append(run(args.contessa, work, *v, i, args.callgrind, args.max_value))
+            results[v].append(run(args.contessa, work, *v, i, args.callgrind, args.max_value, args.perf))
     load = os.getloadavg()[0]
     if args.callgrind:
         return print_instructions(variants, results, args.max_value)
+    clock = "CPU time sampled by perf" if args.perf else "wall time"
     print(f"1 rank, median of {args.repeat}, load average {load:.1f} on {os.cpu_count()} cores; contact phase = "
-          "search, every slave node's term, scatter; 2d: fixed steps, 3d: 4 x 50 section, Contact Beta N_c = 4\n")
+          f"search, every slave node's term, scatter ({clock}); 2d: fixed steps, 3d: 4 x 50 section, "
+          "Contact Beta N_c = 4\n")
     print("| case | friction | discretisation | Newton | contact evaluations | contact s | ms / evaluation "
           "| µs / (slave node · evaluation) | ms / Newton iteration | mortar / NTS per evaluation "
           "| mortar / NTS per Newton iteration | total s |")
