@@ -1,16 +1,32 @@
 #!/usr/bin/python3
-"""Mortar against node-to-segment on the tube (inputs/tube_bending.xml, 102 slave nodes on the outer arc
-against the rigid plate): the contact phase's wall time per evaluation and per slave node.
+"""Mortar against node-to-segment/face on the tube: the contact phase's wall time per evaluation, per slave
+node and evaluation, and per Newton iteration.
 
-Runs the fixed-step tube (Method=Constant, 47 increments) with `--timers`, frictionless and with
-Friction Coefficient = 0.2, once with Discretization = Node To Segment and once with Mortar, --repeat
-times each (interleaved, so that a change of machine load hits every variant alike), and prints one
-Markdown table: Newton iterations, contact evaluations (the timer's count: residual and Jacobian passes),
+Cases (--case, default both):
+  2d  the fixed-step tube (inputs/tube_bending.xml, Method=Constant, 47 increments; 102 slave nodes on the
+      outer arc against the rigid plate), frictionless and with Friction Coefficient = 0.2;
+  3d  the extruded tube (inputs/tube_bending_3d.xml) on the registered 4 x 50 section, one layer (102 slave
+      nodes on QUAD4 faces), the deck's Contact Beta (N_c = 4), frictionless (3D mortar is frictionless).
+Each variant runs with `--timers`, once with Discretization = Node To Segment and once with Mortar,
+--repeat times (interleaved, so that a change of machine load hits every variant alike), and one Markdown
+table is printed: Newton iterations, contact evaluations (the timer's count: residual and Jacobian passes),
 the median contact-phase time ("contact: search, elements, scatter": search, every slave node's term,
-scatter into the matrix), that time per evaluation and per slave node and evaluation, mortar over
-node-to-segment per evaluation, and the median total wall time.
+scatter into the matrix), that time per evaluation, per slave node and evaluation and per Newton
+iteration, mortar over node-to-segment per evaluation and per Newton iteration (the two discretisations
+need different numbers of iterations), and the median total wall time.
 
-    /usr/bin/python3 bench/mortar_bench.py [--repeat 3] [--contessa PATH] [--work DIR]
+With --callgrind each variant runs once under valgrind's callgrind, counting the instructions executed
+inside ContactAssembly::assemble (the same contact phase; independent of the machine's load, about 50x
+slower): the table then gives instructions per evaluation and per Newton iteration and their ratios.
+--max-value L stops the load at λ = L (the deck's checks are off; a shorter run for callgrind).
+With --perf each run is sampled by `perf record` (cpu-clock at 4000 Hz, DWARF call stacks) and the contact
+phase's time is its CPU time: the samples with ContactAssembly::assemble on the stack over the frequency.
+A sampled process counts only while it runs, so on a loaded machine (wall times inflated many times by
+the other processes) this stays what the contact phase costs; about ±5 % from the sampling. Slow: perf
+report unwinds the DWARF stacks, minutes per run on a loaded machine.
+
+    /usr/bin/python3 bench/mortar_bench.py [--case 2d|3d|both] [--repeat 3] [--contessa PATH] [--work DIR]
+    /usr/bin/python3 bench/mortar_bench.py --callgrind [--max-value 0.3] [--case 2d]
 """
 import argparse
 import os
@@ -21,25 +37,63 @@ import sys
 import tempfile
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
-DECK = os.path.join(ROOT, "inputs", "tube_bending.xml")
-SLAVE_NODES = 102  # the outer arc: 101 elements around it
-FIXED = ["--set", "Piro/LOCA/Step Size/Method=Constant", "--set", "Problem/Regression/increments/Expected=47"]
+CHECKS_OFF = [  # the runs' own answers differ from the decks' baselines
+    "--set", "Problem/Regression/plate force/Relative Tolerance=1",
+    "--set", "Problem/Regression/contact nodes/Absolute Tolerance=1000",
+    "--set", "Problem/Regression/increments/Absolute Tolerance=1000"]
+CASES = {
+    "2d": dict(deck="tube_bending.xml", slave_nodes=102, frictions=(0.0, 0.2),
+               sets=["--set", "Piro/LOCA/Step Size/Method=Constant"]),
+    "3d": dict(deck="tube_bending_3d.xml", slave_nodes=102, frictions=(0.0,),
+               sets=["--set", "Problem/Mesh/Elements Through Thickness=4",
+                     "--set", "Problem/Mesh/Elements Around Arc=50"]),
+}
 CONTACT = re.compile(r"^\s*contact: search, elements, scatter\s+(\S+)\s+\S+\s+(\d+)\s*$")
 TOTAL = re.compile(r"^\s*total\s+(\S+)")
 NEWTON = re.compile(r"(\d+) Newton iterations")
+PERF_FREQUENCY = 4000
 
 
-def run(contessa, work, discretization, mu, index):
-    out = os.path.join(work, f"{discretization.replace(' ', '')}_mu{mu}_{index}")
-    cmd = [contessa, DECK, "--quiet", "--timers", "--output-dir", out, *FIXED,
-           "--set", f"Problem/Contact/plate/Discretization={discretization}",
-           "--set", f"Problem/Contact/plate/Friction Coefficient={mu}",
-           # the runs' own answers differ from the deck's frictionless node-to-segment baselines
-           "--set", "Problem/Regression/plate force/Relative Tolerance=1",
-           "--set", "Problem/Regression/contact nodes/Absolute Tolerance=100"]
+def contact_cpu_seconds(samples):
+    """CPU seconds of the contact phase from a perf record file: samples under ContactAssembly::assemble."""
+    def report(*args):
+        return subprocess.run(["perf", "report", "-i", samples, "--stdio", "-g", "none", *args],
+                              capture_output=True, text=True).stdout
+    total = sum(int(line.split()[1]) for line in report("--no-children", "--sort", "pid", "-n").splitlines()
+                if line.strip() and not line.startswith("#") and line.split()[0].endswith("%"))
+    share = 0.0
+    for line in report("--children", "--sort", "symbol").splitlines():
+        fields = line.split()
+        if len(fields) >= 4 and fields[3] == "contessa::model::ContactAssembly::assemble":
+            share = float(line.split()[0].rstrip("%")) / 100
+    os.remove(samples)
+    return share * total / PERF_FREQUENCY
+
+
+def run(contessa, work, case, discretization, mu, index, callgrind=False, max_value=None, perf=False):
+    c = CASES[case]
+    out = os.path.join(work, f"{case}_{discretization.replace(' ', '')}_mu{mu}_{index}")
+    cmd = [contessa, os.path.join(ROOT, "inputs", c["deck"]), "--quiet", "--timers", "--output-dir", out,
+           *c["sets"], *CHECKS_OFF,
+           "--set", f"Problem/Contact/plate/Discretization={discretization}"]
+    if mu > 0:
+        cmd += ["--set", f"Problem/Contact/plate/Friction Coefficient={mu}"]
+    if max_value is not None:
+        cmd += ["--set", f"Piro/LOCA/Stepper/Max Value={max_value}"]
+    profile = out + ".callgrind"
+    samples = out + ".perf"
+    if perf:
+        cmd = ["perf", "record", "-q", "-F", str(PERF_FREQUENCY), "--call-graph", "dwarf,16384", "-o", samples, *cmd]
+    if callgrind:
+        cmd = ["valgrind", "--tool=callgrind", "--collect-atstart=no",
+               "--toggle-collect=contessa::model::ContactAssembly::assemble*",
+               f"--callgrind-out-file={profile}", *cmd]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
         sys.exit(f"{' '.join(cmd)} exited with {p.returncode}:\n{p.stderr[-2000:]}")
+    if callgrind:
+        with open(profile) as f:
+            instructions = next(int(line.split()[1]) for line in f if line.startswith("summary:"))
     contact = total = newton = None
     for line in (p.stdout + p.stderr).splitlines():
         if (m := CONTACT.match(line)):
@@ -48,37 +102,75 @@ def run(contessa, work, discretization, mu, index):
             total = float(m.group(1))
         elif (m := NEWTON.search(line)) and "finished after" in line:
             newton = int(m.group(1))
-    if contact is None or total is None:
-        sys.exit(f"no timer table in the output of {' '.join(cmd)}")
-    return contact[0], contact[1], total, newton
+    if contact is None or total is None or newton is None:
+        sys.exit(f"no timer table or Newton count in the output of {' '.join(cmd)}")
+    if perf:
+        return contact_cpu_seconds(samples), contact[1], total, newton
+    return (instructions if callgrind else contact[0]), contact[1], total, newton
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--case", choices=("2d", "3d", "both"), default="both")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
     parser.add_argument("--work", default=None)
+    parser.add_argument("--callgrind", action="store_true", help="count instructions (one run per variant)")
+    parser.add_argument("--max-value", type=float, default=None, help="stop the load at this λ")
+    parser.add_argument("--perf", action="store_true", help="the contact phase's CPU time, sampled by perf")
     args = parser.parse_args()
+    if args.callgrind:
+        args.repeat = 1
     work = args.work or tempfile.mkdtemp(prefix="mortar_bench_")
-    variants = [(d, mu) for mu in (0.0, 0.2) for d in ("Node To Segment", "Mortar")]
+    os.makedirs(work, exist_ok=True)
+    cases = ("2d", "3d") if args.case == "both" else (args.case,)
+    variants = [(case, d, mu) for case in cases for mu in CASES[case]["frictions"]
+                for d in ("Node To Segment", "Mortar")]
     results = {v: [] for v in variants}
     for i in range(args.repeat):
         for v in variants:
-            results[v].append(run(args.contessa, work, *v, i))
-    print(f"tube, fixed steps, 1 rank, median of {args.repeat}; contact phase = search, every slave node's term, scatter\n")
-    print("| friction | discretisation | Newton | contact evaluations | contact s | ms / evaluation "
-          "| µs / (slave node · evaluation) | mortar / node-to-segment | total s |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    per_eval = {}
+            results[v].append(run(args.contessa, work, *v, i, args.callgrind, args.max_value, args.perf))
+    load = os.getloadavg()[0]
+    if args.callgrind:
+        return print_instructions(variants, results, args.max_value)
+    clock = "CPU time sampled by perf" if args.perf else "wall time"
+    print(f"1 rank, median of {args.repeat}, load average {load:.1f} on {os.cpu_count()} cores; contact phase = "
+          f"search, every slave node's term, scatter ({clock}); 2d: fixed steps, 3d: 4 x 50 section, "
+          "Contact Beta N_c = 4\n")
+    print("| case | friction | discretisation | Newton | contact evaluations | contact s | ms / evaluation "
+          "| µs / (slave node · evaluation) | ms / Newton iteration | mortar / NTS per evaluation "
+          "| mortar / NTS per Newton iteration | total s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    per_eval, per_newton = {}, {}
     for v in variants:
         rows = results[v]
         contact = statistics.median(r[0] for r in rows)
-        evaluations = rows[0][1]
+        evaluations, newton = rows[0][1], rows[0][3]
         total = statistics.median(r[2] for r in rows)
         per_eval[v] = contact / evaluations
-        ratio = per_eval[v] / per_eval[("Node To Segment", v[1])]
-        print(f"| {v[1]:g} | {v[0]} | {rows[0][3]} | {evaluations} | {contact:.4f} | {1e3 * per_eval[v]:.3f} "
-              f"| {1e6 * per_eval[v] / SLAVE_NODES:.2f} | {ratio:.2f} | {total:.2f} |")
+        per_newton[v] = contact / newton
+        base = (v[0], "Node To Segment", v[2])
+        name = v[1] if v[0] == "2d" or v[1] == "Mortar" else "Node To Face"
+        print(f"| {v[0]} | {v[2]:g} | {name} | {newton} | {evaluations} | {contact:.4f} | {1e3 * per_eval[v]:.3f} "
+              f"| {1e6 * per_eval[v] / CASES[v[0]]['slave_nodes']:.2f} | {1e3 * per_newton[v]:.3f} "
+              f"| {per_eval[v] / per_eval[base]:.2f} | {per_newton[v] / per_newton[base]:.2f} | {total:.2f} |")
+
+
+def print_instructions(variants, results, max_value):
+    print(f"callgrind: instructions inside ContactAssembly::assemble, 1 rank, load to λ = {max_value or 1:g}; "
+          "2d: fixed steps, 3d: 4 x 50 section, Contact Beta N_c = 4\n")
+    print("| case | friction | discretisation | Newton | contact evaluations | instructions (10^6) "
+          "| per evaluation (10^3) | per Newton iteration (10^3) | mortar / NTS per evaluation "
+          "| mortar / NTS per Newton iteration |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for v in variants:
+        instructions, evaluations, _, newton = results[v][0]
+        base = results[(v[0], "Node To Segment", v[2])][0]
+        name = v[1] if v[0] == "2d" or v[1] == "Mortar" else "Node To Face"
+        print(f"| {v[0]} | {v[2]:g} | {name} | {newton} | {evaluations} | {instructions / 1e6:.1f} "
+              f"| {instructions / evaluations / 1e3:.1f} | {instructions / newton / 1e3:.1f} "
+              f"| {instructions / evaluations / (base[0] / base[1]):.2f} "
+              f"| {instructions / newton / (base[0] / base[3]):.2f} |")
 
 
 if __name__ == "__main__":

@@ -94,4 +94,219 @@ Dual<Dual<double, N>, N> secondOrderVariable(double x, int i) {
   return r;
 }
 
+/// A number with its gradient and Hessian over N variables, the Hessian's upper triangle stored once
+/// (packed row by row: (i, j ≥ i) at i N − i (i − 1)/2 + j − i). Carries what Dual<Dual<double, N>, N>
+/// carries, without its duplicate gradient (v.d and d[·].v) and its duplicate Hessian half: a product costs
+/// about N²/2 multiply-adds of four terms against the nested duals' N² of inner dual products, and a
+/// quotient or square root applies the chain rule once (f', f'') instead of differentiating the inner
+/// operations again. Constants (doubles mixed in) scale or shift without forming a number.
+template <int N>
+struct HessianDual {
+  static constexpr int kPacked = N * (N + 1) / 2;
+  double v;
+  std::array<double, N> g;
+  std::array<double, kPacked> h;
+  HessianDual() : HessianDual(0.0) {}
+  HessianDual(double value) : v(value) {  // NOLINT(google-explicit-constructor): constants mix freely
+    g.fill(0.0);
+    h.fill(0.0);
+  }
+  /// The operations' results, every derivative written next: not zeroed first.
+  struct Unset {};
+  HessianDual(double value, Unset) : v(value) {}  // NOLINT(cppcoreguidelines-pro-type-member-init)
+
+  static constexpr int packed(int i, int j) { return i * N - i * (i - 1) / 2 + (j - i); }
+  double gradient(int i) const { return g[i]; }
+  double hessian(int i, int j) const { return i <= j ? h[packed(i, j)] : h[packed(j, i)]; }
+};
+
+template <int N>
+double valueOf(const HessianDual<N>& x) {
+  return x.v;
+}
+
+namespace hessian_dual_detail {
+/// r.g = fa a.g + fb b.g, r.h = fa a.h + fb b.h + c (a.g ⊗ b.g + b.g ⊗ a.g): the second-order chain rule of
+/// r = f(a, b) with f's first derivatives (fa, fb) and mixed second derivative c (∂²f/∂a² = ∂²f/∂b² = 0).
+template <int N>
+void combine(HessianDual<N>& r, const HessianDual<N>& a, double fa, const HessianDual<N>& b, double fb, double c) {
+  for (int i = 0; i < N; ++i) r.g[i] = fa * a.g[i] + fb * b.g[i];
+  int k = 0;
+  for (int i = 0; i < N; ++i) {
+    const double ai = c * a.g[i], bi = c * b.g[i];
+    for (int j = i; j < N; ++j, ++k) r.h[k] = fa * a.h[k] + fb * b.h[k] + ai * b.g[j] + bi * a.g[j];
+  }
+}
+/// r = f(a) with f'(a) = d1, f''(a) = d2.
+template <int N>
+HessianDual<N> apply(const HessianDual<N>& a, double value, double d1, double d2) {
+  HessianDual<N> r(value, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = d1 * a.g[i];
+  int k = 0;
+  for (int i = 0; i < N; ++i) {
+    const double ai = d2 * a.g[i];
+    for (int j = i; j < N; ++j, ++k) r.h[k] = d1 * a.h[k] + ai * a.g[j];
+  }
+  return r;
+}
+}  // namespace hessian_dual_detail
+
+template <int N>
+HessianDual<N> operator+(const HessianDual<N>& a, const HessianDual<N>& b) {
+  HessianDual<N> r(a.v + b.v, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] + b.g[i];
+  for (int k = 0; k < HessianDual<N>::kPacked; ++k) r.h[k] = a.h[k] + b.h[k];
+  return r;
+}
+template <int N>
+HessianDual<N> operator-(const HessianDual<N>& a, const HessianDual<N>& b) {
+  HessianDual<N> r(a.v - b.v, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] - b.g[i];
+  for (int k = 0; k < HessianDual<N>::kPacked; ++k) r.h[k] = a.h[k] - b.h[k];
+  return r;
+}
+template <int N>
+HessianDual<N> operator-(const HessianDual<N>& a) {
+  HessianDual<N> r(-a.v, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = -a.g[i];
+  for (int k = 0; k < HessianDual<N>::kPacked; ++k) r.h[k] = -a.h[k];
+  return r;
+}
+template <int N>
+HessianDual<N> operator*(const HessianDual<N>& a, const HessianDual<N>& b) {
+  HessianDual<N> r(a.v * b.v, typename HessianDual<N>::Unset{});
+  hessian_dual_detail::combine(r, a, b.v, b, a.v, 1.0);
+  return r;
+}
+/// q = a / b: from a = q b, q'' = (a'' − q b'' − q' ⊗ b' − b' ⊗ q') / b. The value and the gradient are
+/// rounded as Dual's (divided, not multiplied by 1/b): the residual, −p ∇g̃, is then the nested duals' to
+/// the bit, and the finite-difference checks of the tangent see the same residuals.
+template <int N>
+HessianDual<N> operator/(const HessianDual<N>& a, const HessianDual<N>& b) {
+  const double inverse = 1.0 / b.v;
+  HessianDual<N> r(a.v / b.v, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = (a.g[i] - r.v * b.g[i]) / b.v;
+  int k = 0;
+  for (int i = 0; i < N; ++i)
+    for (int j = i; j < N; ++j, ++k)
+      r.h[k] = (a.h[k] - r.v * b.h[k] - r.g[i] * b.g[j] - b.g[i] * r.g[j]) * inverse;
+  return r;
+}
+template <int N>
+HessianDual<N> sqrt(const HessianDual<N>& a) {
+  const double s = std::sqrt(a.v);
+  HessianDual<N> r = hessian_dual_detail::apply(a, s, 0.5 / s, -0.25 / (a.v * s));
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] / (2.0 * s);  // rounded as Dual's (operator/ says why)
+  return r;
+}
+
+// Mixed with plain doubles: shifts and scalings, no product of derivatives.
+template <int N>
+HessianDual<N> operator+(const HessianDual<N>& a, double b) {
+  HessianDual<N> r = a;
+  r.v += b;
+  return r;
+}
+template <int N>
+HessianDual<N> operator+(double a, const HessianDual<N>& b) { return b + a; }
+template <int N>
+HessianDual<N> operator-(const HessianDual<N>& a, double b) { return a + (-b); }
+template <int N>
+HessianDual<N> operator-(double a, const HessianDual<N>& b) {
+  HessianDual<N> r = -b;
+  r.v += a;
+  return r;
+}
+template <int N>
+HessianDual<N> operator*(const HessianDual<N>& a, double b) {
+  HessianDual<N> r(a.v * b, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] * b;
+  for (int k = 0; k < HessianDual<N>::kPacked; ++k) r.h[k] = a.h[k] * b;
+  return r;
+}
+template <int N>
+HessianDual<N> operator*(double a, const HessianDual<N>& b) { return b * a; }
+template <int N>
+HessianDual<N> operator/(const HessianDual<N>& a, double b) {
+  HessianDual<N> r(a.v / b, typename HessianDual<N>::Unset{});
+  for (int i = 0; i < N; ++i) r.g[i] = a.g[i] / b;
+  for (int k = 0; k < HessianDual<N>::kPacked; ++k) r.h[k] = a.h[k] / b;
+  return r;
+}
+/// a / b = a f(b), f(x) = 1/x: f' = −1/x², f'' = 2/x³.
+template <int N>
+HessianDual<N> operator/(double a, const HessianDual<N>& b) {
+  const double inverse = 1.0 / b.v;
+  HessianDual<N> r = hessian_dual_detail::apply(b, a / b.v, -a * inverse * inverse, 2.0 * a * inverse * inverse * inverse);
+  for (int i = 0; i < N; ++i) r.g[i] = -(r.v * b.g[i]) / b.v;  // rounded as Dual's (operator/ says why)
+  return r;
+}
+
+/// The independent variable x_i of N: value x, gradient e_i, Hessian 0.
+template <int N>
+HessianDual<N> hessianVariable(double x, int i) {
+  HessianDual<N> r(x);
+  r.g[i] = 1.0;
+  return r;
+}
+
+/// Which variable each of a kernel's C coordinates is: its own (variable[i] ≥ 0), or, for a rigid body's
+/// coordinates (variable[i] < 0), the one variable of the body's motion, the last of V, along which
+/// coordinate i moves by motion[i]. A rigid master's coordinates are not unknowns: the tangent needs no
+/// derivative in them, and ∂r/∂λ only the derivative along the motion (the load factor's), so V = the
+/// own coordinates + 1 instead of C (2D: 9 instead of 12; 3D: 13 instead of 24), and the Hessian's cost
+/// goes with V².
+template <int C>
+struct KernelVariables {
+  std::array<int, C> variable{};
+  std::array<double, C> motion{};
+  /// The coordinate whose entries receive the derivatives along the motion (the other rigid ones get 0).
+  int motionEntry = -1;
+
+  template <int V>
+  std::array<HessianDual<V>, C> seed(const std::array<double, C>& x) const {
+    std::array<HessianDual<V>, C> out;
+    for (int i = 0; i < C; ++i) {
+      out[i] = HessianDual<V>(x[i]);
+      if (variable[i] >= 0)
+        out[i].g[variable[i]] = 1.0;
+      else
+        out[i].g[V - 1] = motion[i];
+    }
+    return out;
+  }
+  /// f's gradient and Hessian (row-major, C × C) over the coordinates.
+  template <int V>
+  void extract(const HessianDual<V>& f, std::array<double, C>& gradient, std::array<double, C * C>& hessian) const {
+    std::array<int, C> at{};
+    for (int i = 0; i < C; ++i) at[i] = variable[i] >= 0 ? variable[i] : (i == motionEntry ? V - 1 : -1);
+    for (int i = 0; i < C; ++i) {
+      gradient[i] = at[i] < 0 ? 0.0 : f.gradient(at[i]);
+      for (int j = 0; j < C; ++j) hessian[i * C + j] = at[i] < 0 || at[j] < 0 ? 0.0 : f.hessian(at[i], at[j]);
+    }
+  }
+};
+
+/// Every coordinate its own variable.
+template <int C>
+KernelVariables<C> ownVariables() {
+  KernelVariables<C> v;
+  for (int i = 0; i < C; ++i) v.variable[i] = i;
+  return v;
+}
+/// The coordinates [first, first + count) those of a rigid body moving by motion (count entries): its
+/// derivatives along the motion in entry `first`; the others their own variables, in order.
+template <int C>
+KernelVariables<C> rigidBodyVariables(int first, int count, const double* motion) {
+  KernelVariables<C> v;
+  int next = 0;
+  for (int i = 0; i < C; ++i) {
+    const bool rigid = i >= first && i < first + count;
+    v.variable[i] = rigid ? -1 : next++;
+    v.motion[i] = rigid ? motion[i - first] : 0.0;
+  }
+  v.motionEntry = first;
+  return v;
+}
+
 }  // namespace contessa::contact

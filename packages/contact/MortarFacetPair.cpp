@@ -23,7 +23,6 @@ constexpr int kN = kMortarFacetPairCoordinates;
 /// instead of 2). Of order the penetration times the strain in general (p/ε_N h · p/E ≈ 1e-6); the
 /// overlap it adds or drops, 1e-6 h along an edge, is far below the discretisation error.
 constexpr double kMortarClipSnap = 1e-6;
-using SecondOrder = Dual<Dual<double, kN>, kN>;
 
 template <class T>
 struct Point3 {
@@ -248,22 +247,29 @@ MortarFacetPairGaps<double> facetPairGaps(const FacetPairCoordinates<double>& x,
   return integrateFacetPair(x, referenceArea, shape);
 }
 
-MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
-                                                const MortarFacetPairShape& shape) {
-  FacetPairCoordinates<SecondOrder> seeded;
-  for (int i = 0; i < kN; ++i) seeded[i] = secondOrderVariable<kN>(x[i], i);
-  const MortarFacetPairGaps<SecondOrder> g = integrateFacetPair(seeded, referenceArea, shape);
+namespace {
+template <int V>
+MortarFacetPairDerivatives differentiateFacetPair(const FacetPairCoordinates<double>& x, double referenceArea,
+                                                  const MortarFacetPairShape& shape,
+                                                  const KernelVariables<kN>& variables) {
+  const MortarFacetPairGaps<HessianDual<V>> g = integrateFacetPair(variables.template seed<V>(x), referenceArea, shape);
   MortarFacetPairDerivatives out;
   out.overlaps = g.overlaps;
   for (int a = 0; a < kMortarFacetNodes; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v.v;
-    out.mortarArea[a] = g.mortarArea[a].v.v;
-    for (int i = 0; i < kN; ++i) {
-      out.gradient[a][i] = g.weightedGap[a].d[i].v;
-      for (int j = 0; j < kN; ++j) out.hessian[a][i * kN + j] = g.weightedGap[a].d[i].d[j];
-    }
+    out.weightedGap[a] = g.weightedGap[a].v;
+    out.mortarArea[a] = g.mortarArea[a].v;
+    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
   }
   return out;
+}
+}  // namespace
+
+MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
+                                                const MortarFacetPairShape& shape, const double* masterMotion) {
+  constexpr int master = 3 * kMortarFacetNodes;  // the master's first coordinate
+  if (masterMotion == nullptr) return differentiateFacetPair<kN>(x, referenceArea, shape, ownVariables<kN>());
+  // A rigid master: the twelve slave coordinates and the motion (MortarDual.hpp, KernelVariables).
+  return differentiateFacetPair<master + 1>(x, referenceArea, shape, rigidBodyVariables<kN>(master, master, masterMotion));
 }
 
 }  // namespace contessa::contact

@@ -63,8 +63,12 @@ struct MortarFacetPairDerivatives {
 /// The pair's weighted gaps (values only).
 MortarFacetPairGaps<double> facetPairGaps(const FacetPairCoordinates<double>& x, double referenceArea,
                                           const MortarFacetPairShape& shape = {});
-/// The pair's weighted gaps differentiated twice.
+/// The pair's weighted gaps differentiated twice (MortarDual.hpp's HessianDual). With `masterMotion` (a
+/// rigid master: ∂x/∂λ of its twelve coordinates, entries 12–23), the master is differentiated along that
+/// motion only: entry 12 holds the derivatives along it, entries 13–23 are zero (as 2D's
+/// segmentPairDerivatives).
 MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
-                                                const MortarFacetPairShape& shape = {});
+                                                const MortarFacetPairShape& shape = {},
+                                                const double* masterMotion = nullptr);
 
 }  // namespace contessa::contact

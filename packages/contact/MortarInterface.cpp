@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <utility>
@@ -17,6 +19,9 @@ namespace contessa::contact {
 
 namespace {
 constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
+/// The support point of a rigid master's motion (MortarInterface::addPair): no mesh node nor rigid point
+/// (those are ≥ 0 and −1, −2, …).
+constexpr GlobalIndex kRigidMotionPoint = std::numeric_limits<GlobalIndex>::min();
 
 /// The largest distance between two of a facet's nodes.
 template <class Facet>
@@ -37,6 +42,7 @@ struct MortarPairLayout<2> {
   static constexpr int kFirstMaster = 2;
   static constexpr int kMasterNodes = 2;
   using Derivatives = MortarPairDerivatives;
+  using Gaps = MortarPairGaps<double>;
 };
 template <>
 struct MortarPairLayout<3> {
@@ -44,6 +50,7 @@ struct MortarPairLayout<3> {
   static constexpr int kFirstMaster = kMortarFacetNodes;
   static constexpr int kMasterNodes = kMortarFacetNodes;
   using Derivatives = MortarFacetPairDerivatives;
+  using Gaps = MortarFacetPairGaps<double>;
 };
 
 /// The weighted gap of one slave node, g̃_k = Σ over its slave segments and the master segments they meet
@@ -168,13 +175,26 @@ class MortarInterface final : public ContactInterfaceBase {
   PairNodes pairNodes(std::size_t segment) const;
   /// The master facet's nodes and coordinates into the pair's.
   void setMaster(PairNodes& pair, std::array<double, Layout::kCoordinates>& x, const MasterFacetNodes<MasterFacetType>& m) const;
-  /// The pair's values: its overlap, the slave node's weighted gap and slip increment (2D friction).
-  void addPairValues(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
-                     int facet) const;
+  /// The pair's values: its overlap, its slave nodes' weighted gaps and slip increments (2D friction).
+  typename Layout::Gaps pairValues(const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
+                                   int facet) const;
+  /// One slave segment's pairs at the positions of the evaluation under way (`evaluation`): the
+  /// segment's nodes and coordinates, the master facets the search pairs it with (sorted: the same
+  /// summation order on every rank and every call) and the pairs' values. Each slave node of the
+  /// segment reads them (2 in 2D, 3 or 4 in 3D), the value pass and the derivative pass alike.
+  struct SegmentPairs {
+    std::uint64_t evaluation = 0;
+    PairNodes pair;
+    std::array<double, Layout::kCoordinates> x{};  ///< the slave entries (the master's set per facet)
+    std::vector<int> facets;
+    std::vector<typename Layout::Gaps> values;  ///< per facet
+  };
+  const SegmentPairs& segmentPairs(std::size_t segment, const NodePosition& position, const Facets& facets,
+                                   const BoundingBoxTree<kDim>& tree) const;
   const typename Layout::Derivatives& pairDerivatives(const std::array<double, Layout::kCoordinates>& x,
                                                       const PairNodes& pair, int facet) const;
   void addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
-               int facet, bool derivatives) const;
+               int facet) const;
   /// Node k's term: residual −p ∇g̃, tangent (ε/A) ∇g̃ ⊗ ∇g̃ − p ∇²g̃ (eq. M7–M8), and with friction
   /// t_T ∇Δũ and its derivative (eq. M11–M12); adds the force on the slave nodes to `force`.
   void assemble(std::size_t k, const WeightedGap& w, double pressure, const ReturnMappingResult<1>* tangential,
@@ -200,8 +220,23 @@ class MortarInterface final : public ContactInterfaceBase {
   // slave nodes (kept ones), and the master facets as MasterSurface gives them (a rigid one moved).
   std::vector<Vector<kDim>> trialSlave_, committedSlave_;
   Facets trialMaster_, committedMaster_;
-  /// The segment pairs' derivatives of the evaluation under way, by (slave segment, master facet).
-  mutable std::map<std::pair<std::size_t, int>, typename Layout::Derivatives> pairDerivatives_;
+  /// A pair's derivatives with the inputs they were computed from (its coordinates and, 2D friction, the
+  /// committed positions), and the last evaluation that used them.
+  struct CachedPair {
+    std::array<double, Layout::kCoordinates> x{};
+    SegmentPairCommitted committed{};
+    bool withCommitted = false;
+    std::array<double, Layout::kCoordinates> motion{};  ///< a rigid master's ∂x/∂λ (its entries)
+    typename Layout::Derivatives derivatives;
+    std::uint64_t evaluation = 0;
+  };
+  /// The pairs' derivatives by (slave segment, master facet): computed once per evaluation and shared by
+  /// the pair's slave nodes, and kept for the next evaluation, which reuses those whose inputs are the
+  /// same to the bit (the solver evaluates the residual and then the Jacobian at the same iterate, or a
+  /// pair far from the moving part of the surface): identical inputs, identical derivatives.
+  mutable std::map<std::pair<std::size_t, int>, CachedPair> pairDerivatives_;
+  mutable std::vector<SegmentPairs> segmentPairs_;  ///< by slave segment
+  mutable std::uint64_t evaluation_ = 0;  ///< evaluations and look-aheads started (the caches' clock)
 };
 
 template <class F>
@@ -258,47 +293,89 @@ void MortarInterface<F>::setMaster(PairNodes& pair, std::array<double, Layout::k
 }
 
 template <class F>
-void MortarInterface<F>::addPairValues(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x,
-                                       const PairNodes& pair, int facet) const {
+auto MortarInterface<F>::pairValues(const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
+                                    int facet) const -> typename Layout::Gaps {
   if constexpr (kDim == 2) {
     SegmentPairCommitted then{};
     const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
-    const MortarPairGaps<double> g = segmentPairGaps(x, pair.referenceMeasure, pair.neighbours, committed);
-    w.overlaps = w.overlaps || g.overlaps;
-    if (g.overlaps) {
-      w.value += g.weightedGap[end];
-      w.slip += g.weightedSlip[end];
-    }
+    return segmentPairGaps(x, pair.referenceMeasure, pair.neighbours, committed);
   } else {
     (void)facet;
-    const MortarFacetPairGaps<double> g = facetPairGaps(x, pair.referenceMeasure, pair.shape);
-    w.overlaps = w.overlaps || g.overlaps;
-    if (g.overlaps) w.value += g.weightedGap[end];
+    return facetPairGaps(x, pair.referenceMeasure, pair.shape);
   }
+}
+
+template <class F>
+auto MortarInterface<F>::segmentPairs(std::size_t segment, const NodePosition& position, const Facets& facets,
+                                      const BoundingBoxTree<kDim>& tree) const -> const SegmentPairs& {
+  if (segmentPairs_.size() != spec_.slaveFacetMeasures.size()) segmentPairs_.resize(spec_.slaveFacetMeasures.size());
+  SegmentPairs& sp = segmentPairs_[segment];
+  if (sp.evaluation == evaluation_) return sp;
+  sp.evaluation = evaluation_;
+  sp.pair = pairNodes(segment);
+  sp.x.fill(0.0);
+  BoundingBox<kDim> box;
+  for (int a = 0; a < Layout::kFirstMaster; ++a) {
+    if (!sp.pair.used[a]) continue;
+    position(sp.pair.nodes[a], &sp.x[kDim * a]);
+    if (a < static_cast<int>(perFacet_)) {
+      Vector<kDim> p;
+      std::copy(&sp.x[kDim * a], &sp.x[kDim * a] + kDim, p.begin());
+      box.include(p);
+    }
+  }
+  for (int a = Layout::kFirstMaster + Layout::kMasterNodes; a < Layout::kCoordinates / kDim; ++a)
+    if (sp.pair.used[a]) position(sp.pair.nodes[a], &sp.x[kDim * a]);
+  sp.facets.clear();
+  tree.queryBox(box, sp.facets);
+  std::sort(sp.facets.begin(), sp.facets.end());  // the same summation order on every rank and every call
+  sp.values.clear();
+  for (int f : sp.facets) {
+    PairNodes pair = sp.pair;
+    std::array<double, Layout::kCoordinates> x = sp.x;
+    setMaster(pair, x, facets[f]);
+    sp.values.push_back(pairValues(x, pair, f));
+  }
+  return sp;
 }
 
 template <class F>
 auto MortarInterface<F>::pairDerivatives(
     const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair, int facet) const
     -> const typename Layout::Derivatives& {
-  // Every slave node of a pair needs its derivatives: differentiated once per evaluation.
-  const auto key = std::make_pair(pair.segment, facet);
-  auto cached = pairDerivatives_.find(key);
-  if (cached != pairDerivatives_.end()) return cached->second;
-  if constexpr (kDim == 2) {
-    SegmentPairCommitted then{};
-    const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
-    return pairDerivatives_.emplace(key, segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, committed))
-        .first->second;
-  } else {
-    return pairDerivatives_.emplace(key, facetPairDerivatives(x, pair.referenceMeasure, pair.shape)).first->second;
+  // Every slave node of a pair needs its derivatives: differentiated once per evaluation, and not again
+  // while its inputs stay the same (pairDerivatives_).
+  CachedPair& cached = pairDerivatives_[std::make_pair(pair.segment, facet)];
+  SegmentPairCommitted then{};
+  bool withCommitted = false;
+  if constexpr (kDim == 2) withCommitted = frictional() && committedPair(pair, facet, then);
+  // A rigid master is differentiated along its motion only (MortarDual.hpp, KernelVariables).
+  std::array<double, Layout::kCoordinates> motion{};
+  const double* rigidMotion = nullptr;
+  if (spec_.rigidMaster) {
+    const auto m = master_.dPositiondLambda(facet);
+    std::copy(m.begin(), m.end(), motion.begin());
+    rigidMotion = motion.data();
   }
+  const bool same = cached.evaluation != 0 && cached.x == x && cached.motion == motion &&
+                    cached.withCommitted == withCommitted && (!withCommitted || cached.committed == then);
+  cached.evaluation = evaluation_;
+  if (same) return cached.derivatives;
+  cached.x = x;
+  cached.motion = motion;
+  cached.committed = then;
+  cached.withCommitted = withCommitted;
+  if constexpr (kDim == 2)
+    cached.derivatives =
+        segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, withCommitted ? &then : nullptr, rigidMotion);
+  else
+    cached.derivatives = facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion);
+  return cached.derivatives;
 }
 
 template <class F>
 void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x,
-                                 const PairNodes& pair, int facet, bool derivatives) const {
-  if (!derivatives) return addPairValues(w, end, x, pair, facet);
+                                 const PairNodes& pair, int facet) const {
   const typename Layout::Derivatives& g = pairDerivatives(x, pair, facet);
   if (!g.overlaps) return;
   w.overlaps = true;
@@ -318,6 +395,16 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
     GlobalIndex slaveDofs[kDim];
     for (int c = 0; c < kDim; ++c) slaveDofs[c] = kDim * pair.nodes[a] + c;
     const double still[kDim] = {};
+    if (master && spec_.rigidMaster) {
+      // The kernel's derivatives along the rigid motion (its first master entry; the others are zero):
+      // one support point for all rigid points, no unknowns, moving as the load factor (∂x/∂λ = e_1).
+      GlobalIndex none[kDim];
+      double alongMotion[kDim] = {};
+      std::fill(none, none + kDim, GlobalIndex{-1});
+      alongMotion[0] = 1.0;
+      at[a] = w.indexOf(kRigidMotionPoint, none, alongMotion);
+      continue;
+    }
     at[a] = master ? w.indexOf(pair.nodes[a], &masterDofs[kDim * b], &masterMotion[kDim * b])
                    : w.indexOf(pair.nodes[a], slaveDofs, still);
   }
@@ -405,28 +492,21 @@ auto MortarInterface<F>::weightedGap(std::size_t k, const NodePosition& position
     w.slipGradient.assign(kDim, 0.0);
     w.slipHessian.assign(kDim * kDim, 0.0);
   }
-  std::vector<int> hits;
   for (const SegmentEnd& se : segmentsAt_[k]) {
-    PairNodes pair = pairNodes(se.segment);
-    std::array<double, Layout::kCoordinates> x{};
-    BoundingBox<kDim> box;
-    for (int a = 0; a < Layout::kFirstMaster; ++a) {
-      if (!pair.used[a]) continue;
-      position(pair.nodes[a], &x[kDim * a]);
-      if (a < static_cast<int>(perFacet_)) {
-        Vector<kDim> p;
-        std::copy(&x[kDim * a], &x[kDim * a] + kDim, p.begin());
-        box.include(p);
+    const SegmentPairs& sp = segmentPairs(se.segment, position, facets, tree);
+    for (std::size_t i = 0; i < sp.facets.size(); ++i) {
+      if (!derivatives) {
+        const typename Layout::Gaps& g = sp.values[i];
+        w.overlaps = w.overlaps || g.overlaps;
+        if (!g.overlaps) continue;
+        w.value += g.weightedGap[se.end];
+        if constexpr (kDim == 2) w.slip += g.weightedSlip[se.end];
+        continue;
       }
-    }
-    for (int a = Layout::kFirstMaster + Layout::kMasterNodes; a < Layout::kCoordinates / kDim; ++a)
-      if (pair.used[a]) position(pair.nodes[a], &x[kDim * a]);
-    hits.clear();
-    tree.queryBox(box, hits);
-    std::sort(hits.begin(), hits.end());  // the same summation order on every rank and every call
-    for (int f : hits) {
-      setMaster(pair, x, facets[f]);
-      addPair(w, se.end, x, pair, f, derivatives);
+      PairNodes pair = sp.pair;
+      std::array<double, Layout::kCoordinates> x = sp.x;
+      setMaster(pair, x, facets[sp.facets[i]]);
+      addPair(w, se.end, x, pair, sp.facets[i]);
     }
   }
   return w;
@@ -512,7 +592,7 @@ void MortarInterface<F>::evaluate(const NodePosition& position, double loadFacto
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
   if (frictional()) recordPositions(position, facets);
-  pairDerivatives_.clear();
+  ++evaluation_;
   std::vector<double> force(kDim, 0.0);
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
@@ -535,12 +615,16 @@ void MortarInterface<F>::evaluate(const NodePosition& position, double loadFacto
     }
   }
   if (updateTrial) trialForce_ = force;
+  // Pairs this evaluation did not use (opened, or out of reach) are dropped.
+  for (auto it = pairDerivatives_.begin(); it != pairDerivatives_.end();)
+    it = it->second.evaluation == evaluation_ ? std::next(it) : pairDerivatives_.erase(it);
 }
 
 template <class F>
 std::vector<SlaveNodeChange> MortarInterface<F>::changesAt(const NodePosition& position, double loadFactor) const {
   const Facets facets = master_.facets(position, loadFactor);
   const BoundingBoxTree<kDim> tree = searchTree(facets);
+  ++evaluation_;  // other positions: the segments' pairs anew
   std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;

@@ -9,8 +9,6 @@ namespace contessa::contact {
 
 namespace {
 
-using SecondOrder = Dual<Dual<double, kMortarPairCoordinates>, kMortarPairCoordinates>;
-
 template <class T>
 struct Point2 {
   T x, y;
@@ -166,29 +164,36 @@ MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, 
   return integrateSegmentPair(x, referenceLength, neighbours, committed);
 }
 
-MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength,
-                                             const MortarSlaveNeighbours& neighbours,
-                                             const SegmentPairCommitted* committed) {
-  constexpr int n = kMortarPairCoordinates;
-  SegmentPairCoordinates<SecondOrder> seeded;
-  for (int i = 0; i < n; ++i) seeded[i] = secondOrderVariable<n>(x[i], i);
-  const MortarPairGaps<SecondOrder> g = integrateSegmentPair(seeded, referenceLength, neighbours, committed);
+namespace {
+template <int V>
+MortarPairDerivatives differentiateSegmentPair(const SegmentPairCoordinates<double>& x, double referenceLength,
+                                               const MortarSlaveNeighbours& neighbours,
+                                               const SegmentPairCommitted* committed,
+                                               const KernelVariables<kMortarPairCoordinates>& variables) {
+  const MortarPairGaps<HessianDual<V>> g =
+      integrateSegmentPair(variables.template seed<V>(x), referenceLength, neighbours, committed);
   MortarPairDerivatives out;
   out.overlaps = g.overlaps;
   for (int a = 0; a < 2; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v.v;
-    out.mortarLength[a] = g.mortarLength[a].v.v;
-    out.weightedSlip[a] = g.weightedSlip[a].v.v;
-    for (int i = 0; i < n; ++i) {
-      out.gradient[a][i] = g.weightedGap[a].d[i].v;
-      out.slipGradient[a][i] = g.weightedSlip[a].d[i].v;
-      for (int j = 0; j < n; ++j) {
-        out.hessian[a][i * n + j] = g.weightedGap[a].d[i].d[j];
-        out.slipHessian[a][i * n + j] = g.weightedSlip[a].d[i].d[j];
-      }
-    }
+    out.weightedGap[a] = g.weightedGap[a].v;
+    out.mortarLength[a] = g.mortarLength[a].v;
+    out.weightedSlip[a] = g.weightedSlip[a].v;
+    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
+    variables.extract(g.weightedSlip[a], out.slipGradient[a], out.slipHessian[a]);
   }
   return out;
+}
+}  // namespace
+
+MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength,
+                                             const MortarSlaveNeighbours& neighbours,
+                                             const SegmentPairCommitted* committed, const double* masterMotion) {
+  constexpr int n = kMortarPairCoordinates;
+  if (masterMotion == nullptr)
+    return differentiateSegmentPair<n>(x, referenceLength, neighbours, committed, ownVariables<n>());
+  // A rigid master: the eight slave coordinates and the motion (MortarDual.hpp, KernelVariables).
+  return differentiateSegmentPair<n - 4 + 1>(x, referenceLength, neighbours, committed,
+                                             rigidBodyVariables<n>(4, 4, masterMotion));
 }
 
 }  // namespace contessa::contact

@@ -88,9 +88,15 @@ struct MortarPairDerivatives {
 MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, double referenceLength,
                                        const MortarSlaveNeighbours& neighbours = {},
                                        const SegmentPairCommitted* committed = nullptr);
-/// The pair's weighted gaps differentiated twice (closed nodes: residual and tangent).
+/// The pair's weighted gaps differentiated twice (closed nodes: residual and tangent), by the gradient-
+/// and-Hessian numbers of MortarDual.hpp (HessianDual). With `masterMotion` (a rigid master: ∂x/∂λ of its
+/// four coordinates, entries 4–7), the master's coordinates are not unknowns and are differentiated
+/// along that motion only: entry 4 of the gradients and Hessians holds the derivatives along the motion,
+/// entries 5–7 are zero (the interface's ∂r/∂λ contracts the master's entries with the motion; nothing
+/// else reads them).
 MortarPairDerivatives segmentPairDerivatives(const SegmentPairCoordinates<double>& x, double referenceLength,
                                              const MortarSlaveNeighbours& neighbours = {},
-                                             const SegmentPairCommitted* committed = nullptr);
+                                             const SegmentPairCommitted* committed = nullptr,
+                                             const double* masterMotion = nullptr);
 
 }  // namespace contessa::contact

@@ -154,6 +154,44 @@ TEST(MortarFacetPair, GradientAndHessianOfTrianglesAreCentralDifferences) {
   expectDerivativesAreCentralDifferences(x, {4, 3}, 1.0);
 }
 
+TEST(MortarFacetPair, ARigidMasterIsDifferentiatedAlongItsMotion) {
+  // The master's twelve coordinates (entries 12–23) moving by a translation: the derivatives along it, in
+  // entry 12, are the full derivatives contracted with the motion; the slave entries are unchanged and
+  // the master's other entries zero (what the interface's ∂r/∂λ reads of a rigid master).
+  const FacetPairCoordinates<double> x = unevenPair();
+  const MortarFacetPairShape shape{4, 4};
+  std::array<double, 12> motion{};
+  for (int b = 0; b < 4; ++b) motion[3 * b] = 0.2, motion[3 * b + 1] = -0.1, motion[3 * b + 2] = 0.6;
+  const MortarFacetPairDerivatives full = facetPairDerivatives(x, 1.1, shape);
+  const MortarFacetPairDerivatives along = facetPairDerivatives(x, 1.1, shape, motion.data());
+  ASSERT_TRUE(along.overlaps);
+  const auto contract = [&](const auto& h, int i) {  // Σ_k H[i][12 + k] motion_k
+    double sum = 0;
+    for (int k = 0; k < 12; ++k) sum += h[i * kM + 12 + k] * motion[k];
+    return sum;
+  };
+  for (int a = 0; a < 4; ++a) {
+    const auto &g = full.gradient[a], &ga = along.gradient[a];
+    const auto &h = full.hessian[a], &ha = along.hessian[a];
+    EXPECT_EQ(along.weightedGap[a], full.weightedGap[a]);
+    double gradientAlong = 0, curvatureAlong = 0, scale = 0;
+    for (int k = 0; k < 12; ++k) {
+      gradientAlong += g[12 + k] * motion[k];
+      curvatureAlong += contract(h, 12 + k) * motion[k];
+    }
+    for (double v : h) scale = std::max(scale, std::abs(v));
+    EXPECT_GT(std::abs(gradientAlong), 1e-3) << "the motion moves the gap";
+    EXPECT_NEAR(ga[12], gradientAlong, 1e-13);
+    EXPECT_NEAR(ha[12 * kM + 12], curvatureAlong, 1e-12 * scale);
+    for (int k = 13; k < kM; ++k) EXPECT_EQ(ga[k], 0.0);
+    for (int i = 0; i < 12; ++i) {
+      EXPECT_NEAR(ga[i], g[i], 1e-14);
+      EXPECT_NEAR(ha[i * kM + 12], contract(h, i), 1e-12 * scale) << i;
+      for (int j = 0; j < 12; ++j) EXPECT_NEAR(ha[i * kM + j], h[i * kM + j], 1e-12 * scale) << i << ", " << j;
+    }
+  }
+}
+
 TEST(MortarFacetPair, TheClipVerticesAreDifferentiatedToo) {
   // Moving a master node sideways moves the clip polygon's edge: the weighted gaps owe it the edge term
   // g N_a ∂(clip)/∂x_m, not zero for a flat parallel pair whose gap is uniform (no other dependence on x_m's

@@ -8,6 +8,7 @@
 #include <map>
 #include <vector>
 
+#include "contact/MortarDual.hpp"
 #include "contact/MortarInterface.hpp"
 #include "contact/MortarSegment.hpp"
 #include "MortarTestTools.hpp"
@@ -116,6 +117,93 @@ TEST(MortarSegment, GradientAndHessianAreTheCentralDifferencesOfTheWeightedGaps)
 
 TEST(MortarSegment, WeightedSlipIncrementsAreDifferentiatedTwiceExactly) {
   expectDerivativesAreCentralDifferences(tiltedNeighbours(), true);
+}
+
+// A function of three variables with every operation the kernels use (sums, products, quotients, square
+// roots, constants on either side), in any number type.
+template <class T>
+T mixedFunction(const T& a, const T& b, const T& c) {
+  using std::sqrt;
+  const T q = (a * b - 0.5) / (c + 2.0);
+  return sqrt(1.0 + a * a * c) * q - 3.0 / (b * b + 1.0) + (1.0 - c) * (a / 4.0) - (2.0 - q);
+}
+
+TEST(MortarDual, HessianDualCarriesTheNestedDualsGradientAndHessian) {
+  // HessianDual (symmetric storage, the chain rule once per operation) against Dual<Dual<double, 3>, 3>
+  // (nested forward mode): the same value and gradient, the Hessian to round-off, and a symmetric Hessian.
+  const double x[3] = {0.7, -1.3, 0.4};
+  using Nested = Dual<Dual<double, 3>, 3>;
+  const Nested n = mixedFunction(secondOrderVariable<3>(x[0], 0), secondOrderVariable<3>(x[1], 1),
+                                 secondOrderVariable<3>(x[2], 2));
+  const HessianDual<3> h = mixedFunction(hessianVariable<3>(x[0], 0), hessianVariable<3>(x[1], 1),
+                                         hessianVariable<3>(x[2], 2));
+  // The value and gradient rounded alike (the residual −p ∇g̃ the same to the bit).
+  EXPECT_EQ(h.v, n.v.v);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(h.gradient(i), n.d[i].v) << i;
+    EXPECT_NEAR(h.gradient(i), n.v.d[i], 1e-14) << i;
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_NEAR(h.hessian(i, j), n.d[i].d[j], 1e-13) << i << ", " << j;
+      EXPECT_EQ(h.hessian(i, j), h.hessian(j, i));
+    }
+  }
+  double scale = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) scale = std::max(scale, std::abs(n.d[i].d[j]));
+  EXPECT_GT(scale, 0.5) << "a function with curvature";
+}
+
+// The rigid master's coordinates (entries 4–7) moving by `motion`: the derivatives along the motion, in
+// entry 4, are the full derivatives contracted with the motion; the slave entries are unchanged.
+void expectDerivativesAlongTheMotionAreTheFullOnesContracted(bool slip) {
+  constexpr int m = kMortarPairCoordinates;
+  const auto x = tiltedPair();
+  const SegmentPairCommitted then = tiltedCommitted();
+  const SegmentPairCommitted* committed = slip ? &then : nullptr;
+  const double motion[4] = {0.3, -0.7, 0.3, -0.7};
+  const MortarPairDerivatives full = segmentPairDerivatives(x, kTiltedLength, tiltedNeighbours(), committed);
+  const MortarPairDerivatives along = segmentPairDerivatives(x, kTiltedLength, tiltedNeighbours(), committed, motion);
+  ASSERT_TRUE(along.overlaps);
+  const auto contract = [&](const std::array<double, m * m>& h, int i) {  // Σ_b H[i][4 + b] motion_b
+    double sum = 0;
+    for (int b = 0; b < 4; ++b) sum += h[i * m + 4 + b] * motion[b];
+    return sum;
+  };
+  for (int a = 0; a < 2; ++a) {
+    const auto& g = slip ? full.slipGradient[a] : full.gradient[a];
+    const auto& h = slip ? full.slipHessian[a] : full.hessian[a];
+    const auto& ga = slip ? along.slipGradient[a] : along.gradient[a];
+    const auto& ha = slip ? along.slipHessian[a] : along.hessian[a];
+    EXPECT_EQ(slip ? along.weightedSlip[a] : along.weightedGap[a], slip ? full.weightedSlip[a] : full.weightedGap[a]);
+    double gradientAlong = 0, curvatureAlong = 0, scale = 0;
+    for (int b = 0; b < 4; ++b) {
+      gradientAlong += g[4 + b] * motion[b];
+      curvatureAlong += contract(h, 4 + b) * motion[b];
+    }
+    for (int i = 0; i < m * m; ++i) scale = std::max(scale, std::abs(h[i]));
+    EXPECT_NEAR(ga[4], gradientAlong, 1e-13);
+    EXPECT_GT(std::abs(gradientAlong), 1e-3) << "the motion moves the gap";
+    EXPECT_NEAR(ha[4 * m + 4], curvatureAlong, 1e-13 * scale);
+    for (int b = 1; b < 4; ++b) EXPECT_EQ(ga[4 + b], 0.0);
+    for (int i = 0; i < m; ++i) {
+      const bool master = i >= 4 && i < 8;
+      if (!master) {
+        EXPECT_NEAR(ga[i], g[i], 1e-14);
+        EXPECT_NEAR(ha[i * m + 4], contract(h, i), 1e-13 * scale) << i;
+        EXPECT_NEAR(ha[4 * m + i], contract(h, i), 1e-13 * scale) << i;
+      }
+      for (int j = 0; j < m; ++j) {
+        if (!master && !(j >= 4 && j < 8)) {
+          EXPECT_NEAR(ha[i * m + j], h[i * m + j], 1e-13 * scale) << i << ", " << j;
+        }
+      }
+    }
+  }
+}
+
+TEST(MortarSegment, ARigidMasterIsDifferentiatedAlongItsMotion) {
+  expectDerivativesAlongTheMotionAreTheFullOnesContracted(false);
+  expectDerivativesAlongTheMotionAreTheFullOnesContracted(true);
 }
 
 TEST(MortarSegment, ARigidSlideGivesTheSlipTimesTheMortarLengths) {
@@ -370,6 +458,58 @@ TEST(MortarInterface, FrictionalTangentFromAStuckStateIsTheCentralDifferenceOfTh
   expectFrictionalTangentIsTheCentralDifference(true, 2e-3, ContactStatus::Stick, 1e-3);
   expectFrictionalTangentIsTheCentralDifference(false, 0.05, ContactStatus::Slip, 1e-3);
   expectFrictionalTangentIsTheCentralDifference(true, 0.05, ContactStatus::Slip, 1e-3);
+}
+
+// One evaluation at x and λ without a commit (the residual and tangent of a Newton iterate).
+Assembled evaluateOnly(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+  const int n = static_cast<int>(x.size());
+  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}, {}};
+  interface.evaluate([&](GlobalIndex node, double* p) { std::copy(&x[2 * node], &x[2 * node] + 2, p); }, lambda, true,
+                     [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
+                       for (int a = 0; a < m; ++a) {
+                         if (dofs[a] < 0) continue;
+                         out.residual[dofs[a]] += r[a];
+                         out.dLambda[dofs[a]] += drdl[a];
+                         for (int b = 0; b < m; ++b)
+                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
+                       }
+                     });
+  return out;
+}
+
+void expectSameAssembly(const Assembled& a, const Assembled& b) {
+  EXPECT_EQ(a.residual, b.residual);
+  EXPECT_EQ(a.tangent, b.tangent);
+  EXPECT_EQ(a.dLambda, b.dLambda);
+}
+
+TEST(MortarInterface, EvaluationsReusingThePairsDerivativesGiveWhatAFreshInterfaceGives) {
+  // The interface keeps its pairs' derivatives from one evaluation to the next and reuses those whose
+  // inputs are unchanged (the Jacobian pass at the residual pass's iterate). Iterates x1, x2 (one master
+  // node moved: the pairs on the other master segment stay), x1 again, and a moved rigid master, each
+  // against a fresh interface's evaluation: the same residual, tangent and ∂r/∂λ to the bit.
+  for (const bool rigidMaster : {false, true}) {
+    for (const bool friction : {false, true}) {
+      SCOPED_TRACE(std::string(rigidMaster ? "rigid" : "deformable") + (friction ? ", friction" : ""));
+      // Committed at the uneven configuration (friction: the slip increments' start), as every fresh one.
+      const auto fresh = [&] {
+        auto interface = friction ? frictionalInterface(rigidMaster) : patchInterface(rigidMaster);
+        assemble(*interface, unevenCoordinates(), 0.3);
+        return interface;
+      };
+      auto reused = fresh();
+      const auto x1 = slid(0.01);
+      auto x2 = x1;
+      x2[2 * 6 + 1] -= 0.004;  // master node 6 (deformable master) lower
+      const Assembled first = evaluateOnly(*reused, x1, 0.3);
+      EXPECT_GT(*std::max_element(first.tangent.begin(), first.tangent.end()), 100.0) << "closed nodes";
+      expectSameAssembly(first, evaluateOnly(*fresh(), x1, 0.3));
+      expectSameAssembly(evaluateOnly(*reused, x1, 0.3), first);
+      expectSameAssembly(evaluateOnly(*reused, x2, 0.3), evaluateOnly(*fresh(), x2, 0.3));
+      expectSameAssembly(evaluateOnly(*reused, x1, 0.3), first);
+      expectSameAssembly(evaluateOnly(*reused, x1, 0.35), evaluateOnly(*fresh(), x1, 0.35));
+    }
+  }
 }
 
 TEST(MortarInterface, SlidingNodesCarryTheCoulombForceAgainstTheSlip) {
