@@ -11,6 +11,7 @@
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/MasterSurface.hpp"
 #include "contact/MortarFacetPair.hpp"
+#include "contact/MortarQuadraticFacetPair.hpp"
 #include "contact/MortarSegment.hpp"
 
 namespace contessa::contact {
@@ -44,6 +45,25 @@ struct MortarPairLayout<3> {
   static constexpr int kFirstMaster = kMortarFacetNodes;
   static constexpr int kMasterNodes = kMortarFacetNodes;
   using Derivatives = MortarFacetPairDerivatives;
+};
+/// 3D pairs with a 6-node triangle on a side (MortarQuadraticFacetPair.hpp): s0–s5 m0–m5.
+struct QuadraticMortarPairLayout {
+  static constexpr int kCoordinates = kQuadraticFacetPairCoordinates;
+  static constexpr int kFirstMaster = kQuadraticFacetNodes;
+  static constexpr int kMasterNodes = kQuadraticFacetNodes;
+  using Derivatives = MortarQuadraticFacetPairDerivatives;
+};
+/// A master facet type whose interface takes the quadratic pair kernel (a Tri6 slave or master side):
+/// the same facets to MasterSurface, which reads only the type's constants.
+template <class Facet>
+struct QuadraticPairs : Facet {};
+template <class Facet>
+struct PairLayoutOf {
+  using type = MortarPairLayout<Facet::kSpaceDim>;
+};
+template <class Facet>
+struct PairLayoutOf<QuadraticPairs<Facet>> {
+  using type = QuadraticMortarPairLayout;
 };
 
 /// The weighted gap of one slave node, g̃_k = Σ over its slave segments and the master segments they meet
@@ -82,7 +102,7 @@ struct NodeWeightedGap {
 template <class MasterFacetType>
 class MortarInterface final : public ContactInterfaceBase {
   static constexpr int kDim = MasterFacetType::kSpaceDim;
-  using Layout = MortarPairLayout<kDim>;
+  using Layout = typename PairLayoutOf<MasterFacetType>::type;
   using Facets = std::vector<MasterFacetNodes<MasterFacetType>>;
   using WeightedGap = NodeWeightedGap<kDim>;
 
@@ -94,7 +114,8 @@ class MortarInterface final : public ContactInterfaceBase {
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
         trialTraction_(spec_.slaveNodes.size(), 0.0),
         committedTraction_(spec_.slaveNodes.size(), 0.0) {
-    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4);
+    const bool quadratic = Layout::kFirstMaster == kQuadraticFacetNodes;
+    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && perFacet_ == 6));
     if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
     if (kDim == 3 && frictional())
@@ -271,7 +292,7 @@ void MortarInterface<F>::addPairValues(WeightedGap& w, int end, const std::array
     }
   } else {
     (void)facet;
-    const MortarFacetPairGaps<double> g = facetPairGaps(x, pair.referenceMeasure, pair.shape);
+    const auto g = facetPairGaps(x, pair.referenceMeasure, pair.shape);  // the layout's kernel
     w.overlaps = w.overlaps || g.overlaps;
     if (g.overlaps) w.value += g.weightedGap[end];
   }
@@ -674,8 +695,14 @@ void MortarInterface<F>::restoreMaster(const StateRecord& table) {
 
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
   if (spec.dimension == 2) return std::make_unique<MortarInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+  const bool quadratic = spec.slaveNodesPerFacet() == 6 || spec.nodesPerFacet() == 6;
+  if (spec.nodesPerFacet() == 6)
+    return std::make_unique<MortarInterface<QuadraticPairs<Tri6Facet>>>(std::move(spec), std::move(evaluatesSlave));
   if (spec.nodesPerFacet() == 3)
-    return std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
+    return quadratic ? std::unique_ptr<ContactInterfaceBase>(std::make_unique<MortarInterface<QuadraticPairs<Tri3Facet>>>(std::move(spec), std::move(evaluatesSlave)))
+                     : std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
+  if (quadratic)
+    return std::make_unique<MortarInterface<QuadraticPairs<Quad4Facet>>>(std::move(spec), std::move(evaluatesSlave));
   return std::make_unique<MortarInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
 }
 
