@@ -90,18 +90,16 @@ struct QuadraticChart {
     }
     return d;
   }
-  /// The weights of the weighted gaps: Ñ_a of eq. M18 on a Tri6, N_a otherwise.
+  /// The weights of the weighted gaps at a point of piece i, local coordinates `local`, parent ξ: on a
+  /// Tri6 the piece's linear functions (1 − l_1 − l_2, l_1, l_2) at its three nodes (eq. M18: non-negative,
+  /// a partition of unity); N_a(ξ) otherwise.
   template <class S>
-  std::array<S, kSlots> weights(const std::array<S, 2>& xi) const {
-    std::array<S, kSlots> n = shape(xi);
-    if (!quadratic()) return n;
-    constexpr double alpha = kTri6ModifiedBasisAlpha;
+  std::array<S, kSlots> weights(int i, const std::array<S, 2>& local, const std::array<S, 2>& xi) const {
+    if (!quadratic()) return shape(xi);
     std::array<S, kSlots> w{};
-    for (int a = 3; a < 6; ++a) {
-      w[a] = (1.0 - 2.0 * alpha) * n[a];
-      for (int end = 0; end < 2; ++end) w[kTri6Ends[a][end]] = w[kTri6Ends[a][end]] + alpha * n[a];
-    }
-    for (int a = 0; a < 3; ++a) w[a] = w[a] + n[a];
+    w[kTri6Pieces[i][0]] = 1.0 - local[0] - local[1];
+    w[kTri6Pieces[i][1]] = local[0];
+    w[kTri6Pieces[i][2]] = local[1];
     return w;
   }
   Point3<T> at(const std::array<T, kSlots>& n) const {
@@ -157,17 +155,20 @@ bool addPiecePair(const QuadraticChart<T>& slave, int s, const QuadraticChart<T>
   if (!(valueOf(twiceSignedArea(masterPolygon)) > 0.0) || !(valueOf(slaveArea2) > 0.0)) return false;
   const std::vector<PlanePoint<T>> clip = clipConvexPolygon(slavePolygon, masterPolygon, kMortarClipSnap * size);
   if (clip.size() < 3 || !(valueOf(twiceSignedArea(clip)) > kMortarSnap * valueOf(slaveArea2))) return false;
-  const PlanePoint<T> c = vertexCentroid(clip);
-  for (std::size_t i = 0; i < clip.size(); ++i) {
+  // A triangular clip (a piece inside the master, the usual case away from the master's edges) is
+  // integrated as it is, not as three triangles about its centroid: a third of the Gauss points.
+  const bool triangle = clip.size() == 3;
+  const PlanePoint<T> c = triangle ? clip[0] : vertexCentroid(clip);
+  for (std::size_t i = triangle ? 1 : 0; i < (triangle ? 2 : clip.size()); ++i) {
     const PlanePoint<T> u = clip[i] - c, v = clip[(i + 1) % clip.size()] - c;
     const T triangleArea = 0.5 * planeCross(u, v);
     for (const TrianglePoint& q : triangleRule()) {
       const PlanePoint<T> p = c + scaled(u, q.l1) + scaled(v, q.l2);
-      const std::array<T, 2> xi = slave.parent(s, inverseMap(sp, slavePolygon, p));
+      const std::array<T, 2> local = inverseMap(sp, slavePolygon, p), xi = slave.parent(s, local);
       const std::array<T, 2> eta = master.parent(m, inverseMap(mp, masterProjected, p));
       // eq. M19: the quadratic points and the master's normal at the parent coordinates.
       const T g = dot(slave.at(slave.shape(xi)) - master.at(master.shape(eta)), master.unitNormal(eta));
-      const std::array<T, kSlots> w = slave.weights(xi);
+      const std::array<T, kSlots> w = slave.weights(s, local, xi);
       const T weight = q.weight * triangleArea * measure;
       for (int a = 0; a < slave.count; ++a) {
         out.weightedGap[a] = out.weightedGap[a] + weight * w[a] * g;
@@ -251,7 +252,7 @@ std::array<double, kQuadraticFacetNodes> mortarFacetNodeAreas(const MortarFaceNo
         const Point3<double> n = cross(piece.at(d[0]), piece.at(d[1]));
         // |x_,ξ × x_,η| times the local triangle's area (1/2, or 2 for half the square).
         const double jacobian = std::sqrt(dot(n, n)) * (square ? 2.0 : 0.5);
-        const std::array<double, kSlots> w = face.weights(xi);
+        const std::array<double, kSlots> w = face.weights(i, local, xi);
         for (int a = 0; a < nodes; ++a) out[a] += q.weight * jacobian * w[a];
       }
   }

@@ -9,11 +9,13 @@
 // them, affinely, to the parent coordinates ξ of the slave face and η of the master face. There the
 // quadratic geometry is evaluated, x_s(ξ) = Σ N_a(ξ) x_a, x_m(η), n_m(η), so that the nodal forces are the
 // consistent loads ∫ N_a p dA of the face the element sees (a Tri6's corners take none of a uniform
-// pressure), and the gap g = (x_s − x_m) · n_m is weighted with the modified quadratic basis Ñ_a (eq. M18,
-// Popp, Wohlmuth, Gee & Wall 2012 §3.2): Ñ_corner = N_corner + α Σ N_adjacent mid, Ñ_mid = (1 − 2α) N_mid,
-// α = 1/5, whose nodal mortar areas ∫ Ñ_a dA are all positive (2A/15 at a corner, A/5 at a mid-edge node
-// of a flat face) where the standard basis gives 0 at the corners and a penalty pressure ε g̃_a / A_a
-// could not be formed. Ñ is a partition of unity, so Σ_a Ñ_a p_a reproduces a uniform pressure.
+// pressure), and the gap g = (x_s − x_m) · n_m is weighted with the pieces' linear functions Φ_a (eq. M18:
+// on each flat piece the hat functions of its three nodes), which are non-negative — a positive gap
+// everywhere gives a positive weighted gap, which the quadratic N_a and the modified quadratic bases of
+// Popp et al. 2012, negative in parts of the face, do not — and whose nodal areas ∫ Φ_a dA are A/12 at a
+// corner and A/4 at a mid-edge node of a flat face (the standard basis gives 0 at a corner: a penalty
+// pressure ε g̃_a / A_a could not be formed). Φ is a partition of unity, so Σ_a Φ_a p_a reproduces a
+// uniform pressure.
 //
 // As MortarFacetPair, written once on the number type and differentiated twice with nested dual numbers
 // over the pair's 36 coordinates (6 slave and 6 master nodes).
@@ -29,14 +31,11 @@ constexpr int kQuadraticFacetPairCoordinates = 3 * 2 * kQuadraticFacetNodes;
 template <class T>
 using QuadraticFacetPairCoordinates = std::array<T, kQuadraticFacetPairCoordinates>;
 
-/// α of the modified Tri6 basis (eq. M18).
-constexpr double kTri6ModifiedBasisAlpha = 0.2;
-
 template <class T>
 struct MortarQuadraticFacetPairGaps {
   bool overlaps = false;
-  std::array<T, kQuadraticFacetNodes> weightedGap{};  ///< g̃_a = ∫ Ñ_a g dA_0 (eq. M19)
-  std::array<T, kQuadraticFacetNodes> mortarArea{};   ///< ∫ Ñ_a dA_0 over the overlap
+  std::array<T, kQuadraticFacetNodes> weightedGap{};  ///< g̃_a = ∫ Φ_a g dA_0 (eq. M19)
+  std::array<T, kQuadraticFacetNodes> mortarArea{};   ///< ∫ Φ_a dA_0 over the overlap
 };
 
 /// The integral over the overlap. referenceArea is the slave face's reference measure: the summed areas
@@ -67,7 +66,7 @@ using MortarFaceNodes = std::array<std::array<double, 3>, kQuadraticFacetNodes>;
 /// A slave face's reference measure for the kernels: the summed areas of its flat pieces (a Tri3's area,
 /// a Quad4's |d_1 × d_2| / 2, a Tri6's four triangles).
 double mortarFacetReferenceArea(const MortarFaceNodes& x, int nodes);
-/// Its nodes' mortar areas ∫ Ñ_a dA_0 over the whole face (the A_a of p_a = ε_N ⟨−g̃_a⟩ / A_a), integrated
+/// Its nodes' mortar areas ∫ Φ_a dA_0 over the whole face (the A_a of p_a = ε_N ⟨−g̃_a⟩ / A_a), integrated
 /// as the kernel does on the flat pieces.
 std::array<double, kQuadraticFacetNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes);
 

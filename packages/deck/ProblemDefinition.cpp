@@ -214,9 +214,10 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
   return out;
 }
 
-// The slave nodes' areas A_a of a mortar interface on 6-node triangles: ∫ Ñ_a dA_0 with the modified
-// quadratic basis (MortarQuadraticFacetPair.hpp, eq. M18), so that p_a = ε_N ⟨−g̃_a⟩ / A_a is the
-// pressure of a uniform gap; the node-to-facet areas of 6-node faces (their sub-triangles') differ.
+// The slave nodes' areas A_a of a mortar interface on 6-node triangles: ∫ Φ_a dA_0 with the flat pieces'
+// linear functions (MortarQuadraticFacetPair.hpp, eq. M18), integrated as the kernel does, so that
+// p_a = ε_N ⟨−g̃_a⟩ / A_a is the pressure of a uniform gap to round-off (the node-to-facet areas of 6-node
+// faces are the same sub-triangle shares, but scaled to the curved face's area).
 std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& spec, const SurfaceCoordinates& coordinates) {
   std::vector<double> out(spec.slaveNodes.size(), 0.0);
   const auto& nodes = spec.slaveNodes;

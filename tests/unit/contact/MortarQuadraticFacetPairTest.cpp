@@ -1,5 +1,5 @@
-// The 3D mortar kernel on 6-node triangles (MortarQuadraticFacetPair: flat pieces, modified quadratic
-// basis, quadratic geometry at the Gauss points): the nodal mortar areas of the modified basis, the patch
+// The 3D mortar kernel on 6-node triangles (MortarQuadraticFacetPair: flat pieces, the pieces' linear
+// weights, quadratic geometry at the Gauss points): the nodal mortar areas of those weights, the patch
 // test (a uniform gap's weighted gaps are the gap times those areas) on matching and non-matching Tri6
 // pairs and under a rigid quadrilateral, the consistent loads a uniform pressure gives the slave nodes, the
 // exact gradient and Hessian against central differences (Tri6 on Tri6 cut by the clip, Tri6 on Quad4,
@@ -48,12 +48,12 @@ MortarFaceNodes faceNodes(const std::array<Point, 6>& f) {
 const std::array<Point, 6> kSlave = tri6({0.0, 0.0, 0.0}, {1.2, 0.1, 0.0}, {0.2, 0.9, 0.0});
 double slaveArea() { return 0.5 * (1.2 * 0.9 - 0.1 * 0.2); }
 
-TEST(MortarQuadraticFacetPair, TheModifiedBasisGivesEveryNodeAPositiveShareOfTheArea) {
-  // eq. M18 with α = 1/5 on a flat face with straight edges: 2A/15 at a corner, A/5 at a mid-edge node.
+TEST(MortarQuadraticFacetPair, ThePiecesLinearWeightsGiveEveryNodeAPositiveShareOfTheArea) {
+  // eq. M18 on a flat face with straight edges: A/12 at a corner (one piece), A/4 at a mid-edge node (three).
   const double A = slaveArea();
   const auto areas = mortarFacetNodeAreas(faceNodes(kSlave), 6);
-  for (int a = 0; a < 3; ++a) EXPECT_NEAR(areas[a], 2.0 * A / 15.0, 1e-14) << a;
-  for (int a = 3; a < 6; ++a) EXPECT_NEAR(areas[a], A / 5.0, 1e-14) << a;
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(areas[a], A / 12.0, 1e-14) << a;
+  for (int a = 3; a < 6; ++a) EXPECT_NEAR(areas[a], A / 4.0, 1e-14) << a;
   EXPECT_NEAR(mortarFacetReferenceArea(faceNodes(kSlave), 6), A, 1e-14);
   // A curved face (mid-edge nodes lifted): still all positive, summing to its pieces' area.
   auto curved = kSlave;
@@ -107,7 +107,7 @@ TEST(MortarQuadraticFacetPair, NonMatchingTri6MastersSumToTheGapTimesTheNodalAre
 
 TEST(MortarQuadraticFacetPair, AUniformPressureLoadsTheSlaveNodesConsistently) {
   // Under a rigid quadrilateral at a uniform gap, p_a = p at every node gives the slave nodes the forces
-  // Σ_k p ∂g̃_k/∂x_a = p ∫ N_a n dA (Ñ a partition of unity): the Tri6's consistent loads, 0 at a corner
+  // Σ_k p ∂g̃_k/∂x_a = p ∫ N_a n dA (the weights a partition of unity): the Tri6's consistent loads, 0 at a corner
   // and A/3 at a mid-edge node of a flat face, which is what a uniform traction on a Tet10 face is.
   const double gap = -0.01, A = slaveArea();
   const std::vector<Point> plane = {{-1, -1, gap}, {-1, 2, gap}, {2, 2, gap}, {2, -1, gap}};
