@@ -116,7 +116,9 @@ class MortarInterface final : public ContactInterfaceBase {
         committedTraction_(spec_.slaveNodes.size(), 0.0) {
     const bool quadratic = Layout::kFirstMaster == kQuadraticFacetNodes;
     const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && perFacet_ == 6));
-    if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() != perFacet_ * spec_.slaveFacetMeasures.size())
+    // A 6-node slave face has four measures, its flat pieces' (deck/ProblemDefinition, MortarQuadraticFacetPair).
+    const std::size_t measures = perFacet_ == 6 ? 4 : 1;
+    if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() * measures != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
     if (kDim == 3 && frictional())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': 3D mortar is frictionless (the deck refuses first)");
@@ -229,7 +231,13 @@ template <class F>
 typename MortarInterface<F>::PairNodes MortarInterface<F>::pairNodes(std::size_t segment) const {
   PairNodes pair;
   pair.segment = segment;
-  pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
+  if (perFacet_ == 6) {
+    for (std::size_t i = 0; i < 4; ++i) pair.shape.slavePieceAreas[i] = spec_.slaveFacetMeasures[4 * segment + i];
+    pair.referenceMeasure = spec_.slaveFacetMeasures[4 * segment] + spec_.slaveFacetMeasures[4 * segment + 1] +
+                            spec_.slaveFacetMeasures[4 * segment + 2] + spec_.slaveFacetMeasures[4 * segment + 3];
+  } else {
+    pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
+  }
   const int slaveCount = static_cast<int>(perFacet_);
   for (int a = 0; a < slaveCount; ++a) {
     pair.nodes[a] = spec_.slaveFacets[perFacet_ * segment + a];

@@ -111,14 +111,16 @@ struct QuadraticChart {
     const auto d = shapeDerivatives(xi);
     return unit(cross(at(d[0]), at(d[1])));
   }
-  /// The summed areas of the flat pieces (a Quad4's |d_1 × d_2| / 2).
-  T area() const {
+  /// A flat piece's area (a Quad4's |d_1 × d_2| / 2).
+  T pieceArea(int i) const {
     using std::sqrt;
+    const Point3<T> n = piece(i).centreNormal();
+    return 0.5 * sqrt(dot(n, n));
+  }
+  /// The summed areas of the flat pieces.
+  T area() const {
     T sum(0.0);
-    for (int i = 0; i < pieces(); ++i) {
-      const Point3<T> n = piece(i).centreNormal();
-      sum = sum + 0.5 * sqrt(dot(n, n));
-    }
+    for (int i = 0; i < pieces(); ++i) sum = sum + pieceArea(i);
     return sum;
   }
   double diameter() const {
@@ -187,11 +189,13 @@ MortarQuadraticFacetPairGaps<T> integrateQuadraticFacetPair(const QuadraticFacet
   MortarQuadraticFacetPairGaps<T> out;
   const QuadraticChart<T> slave = chartOf(x, 0, shape.slaveNodes), master = chartOf(x, kSlots, shape.masterNodes);
   const double size = std::max(slave.diameter(), master.diameter());
-  // eq. M20: dA_0 = (A_0 / A) dA with A the current pieces' summed area.
-  const T measure = referenceArea / slave.area();
-  for (int s = 0; s < slave.pieces(); ++s)
+  // eq. M20: dA_0 = (A_0 / A) dA per flat piece of a Tri6 (its reference and current areas: a mid-edge
+  // node sliding in the face's plane then changes no weighted gap), per face otherwise.
+  for (int s = 0; s < slave.pieces(); ++s) {
+    const T measure = slave.quadratic() ? shape.slavePieceAreas[s] / slave.pieceArea(s) : referenceArea / slave.area();
     for (int m = 0; m < master.pieces(); ++m)
       if (addPiecePair(slave, s, master, m, measure, size, out)) out.overlaps = true;
+  }
   return out;
 }
 
@@ -229,6 +233,13 @@ QuadraticChart<double> chartOf(const MortarFaceNodes& x, int nodes) {
 }  // namespace
 
 double mortarFacetReferenceArea(const MortarFaceNodes& x, int nodes) { return chartOf(x, nodes).area(); }
+
+std::array<double, 4> mortarFacetPieceAreas(const MortarFaceNodes& x, int nodes) {
+  const QuadraticChart<double> face = chartOf(x, nodes);
+  std::array<double, 4> out{};
+  for (int i = 0; i < face.pieces(); ++i) out[i] = face.pieceArea(i);
+  return out;
+}
 
 std::array<double, kQuadraticFacetNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes) {
   // The kernel's integral at the reference state of a face fully overlapped: each flat piece with the

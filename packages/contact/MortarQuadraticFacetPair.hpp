@@ -38,9 +38,10 @@ struct MortarQuadraticFacetPairGaps {
   std::array<T, kQuadraticFacetNodes> mortarArea{};   ///< ∫ Φ_a dA_0 over the overlap
 };
 
-/// The integral over the overlap. referenceArea is the slave face's reference measure: the summed areas
-/// of its flat pieces (mortarFacetReferenceArea); the current pieces' summed area scales it, as the linear
-/// kernel's A_0 / A_projected (eq. M17).
+/// The integral over the overlap. The measure is the reference one, as the linear kernel's A_0 / A_projected
+/// (eq. M17): for a 6-node slave face per flat piece, shape.slavePieceAreas (mortarFacetPieceAreas) over the
+/// current piece's area; for a 3- or 4-node slave face referenceArea (its area, a Quad4's |d_1 × d_2| / 2)
+/// over the current one.
 template <class T>
 MortarQuadraticFacetPairGaps<T> integrateQuadraticFacetPair(const QuadraticFacetPairCoordinates<T>& x,
                                                             double referenceArea, const MortarFacetPairShape& shape);
@@ -66,6 +67,8 @@ using MortarFaceNodes = std::array<std::array<double, 3>, kQuadraticFacetNodes>;
 /// A slave face's reference measure for the kernels: the summed areas of its flat pieces (a Tri3's area,
 /// a Quad4's |d_1 × d_2| / 2, a Tri6's four triangles).
 double mortarFacetReferenceArea(const MortarFaceNodes& x, int nodes);
+/// A 6-node face's four flat pieces' areas (Tri6Facet::flatPieces order; a 3- or 4-node face's area first).
+std::array<double, 4> mortarFacetPieceAreas(const MortarFaceNodes& x, int nodes);
 /// Its nodes' mortar areas ∫ Φ_a dA_0 over the whole face (the A_a of p_a = ε_N ⟨−g̃_a⟩ / A_a), integrated
 /// as the kernel does on the flat pieces.
 std::array<double, kQuadraticFacetNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes);

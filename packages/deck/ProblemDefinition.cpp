@@ -186,7 +186,8 @@ void requireMortarFacets(int dimension, int nodesPerFacet, const std::string& se
 
 // The reference measure of each slave facet, the mortar's dΓ_0 (InterfaceSpec::slaveFacetMeasures): a
 // segment's length (2D), a triangle's area, a quadrilateral's |d_1 × d_2| / 2 (its diagonals': the area
-// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp).
+// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp); a 6-node triangle
+// has four, its flat pieces' areas (MortarQuadraticFacetPair.hpp, eq. M20).
 std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& facets, int perFacet,
                                        const SurfaceCoordinates& coordinates) {
   std::vector<double> out;
@@ -195,10 +196,11 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
     return std::array<double, 3>{b[0] - a[0], b[1] - a[1], a.size() > 2 ? b[2] - a[2] : 0.0};
   };
   for (std::size_t f = 0; f + perFacet <= facets.size(); f += static_cast<std::size_t>(perFacet)) {
-    if (perFacet == 6) {  // a Tri6: its four flat pieces' areas, the measure of MortarQuadraticFacetPair
+    if (perFacet == 6) {  // a Tri6: its four flat pieces' areas, four measures (MortarQuadraticFacetPair, eq. M20)
       contact::MortarFaceNodes x{};
       for (int a = 0; a < 6; ++a) std::copy_n(at(f + a).begin(), 3, x[a].begin());
-      out.push_back(contact::mortarFacetReferenceArea(x, perFacet));
+      const auto pieces = contact::mortarFacetPieceAreas(x, perFacet);
+      out.insert(out.end(), pieces.begin(), pieces.end());
       continue;
     }
     if (perFacet == 2) {

@@ -48,6 +48,13 @@ MortarFaceNodes faceNodes(const std::array<Point, 6>& f) {
 const std::array<Point, 6> kSlave = tri6({0.0, 0.0, 0.0}, {1.2, 0.1, 0.0}, {0.2, 0.9, 0.0});
 double slaveArea() { return 0.5 * (1.2 * 0.9 - 0.1 * 0.2); }
 
+// The pair's shape with a Tri6 slave: its pieces' areas in `reference` (the measure, eq. M20).
+MortarFacetPairShape tri6Shape(int masterNodes, const std::array<Point, 6>& reference) {
+  MortarFacetPairShape shape{6, masterNodes, {}};
+  shape.slavePieceAreas = mortarFacetPieceAreas(faceNodes(reference), 6);
+  return shape;
+}
+
 TEST(MortarQuadraticFacetPair, ThePiecesLinearWeightsGiveEveryNodeAPositiveShareOfTheArea) {
   // eq. M18 on a flat face with straight edges: A/12 at a corner (one piece), A/4 at a mid-edge node (three).
   const double A = slaveArea();
@@ -72,7 +79,7 @@ TEST(MortarQuadraticFacetPair, AUniformGapOnAMatchingTri6PairIsTheGapTimesTheNod
   auto master = reversed(kSlave);
   for (auto& p : master) p[2] = gap;
   const auto areas = mortarFacetNodeAreas(faceNodes(kSlave), 6);
-  const auto g = facetPairGaps(pairOf(kSlave, asVector(master)), slaveArea(), {6, 6});
+  const auto g = facetPairGaps(pairOf(kSlave, asVector(master)), slaveArea(), tri6Shape(6, kSlave));
   ASSERT_TRUE(g.overlaps);
   for (int a = 0; a < 6; ++a) {
     EXPECT_NEAR(g.mortarArea[a], areas[a], 1e-14) << a;
@@ -94,7 +101,7 @@ TEST(MortarQuadraticFacetPair, NonMatchingTri6MastersSumToTheGapTimesTheNodalAre
   std::array<double, 6> sum{}, weighted{};
   int overlapping = 0;
   for (const auto& m : masters) {
-    const auto g = facetPairGaps(pairOf(kSlave, asVector(m)), slaveArea(), {6, 6});
+    const auto g = facetPairGaps(pairOf(kSlave, asVector(m)), slaveArea(), tri6Shape(6, kSlave));
     overlapping += g.overlaps ? 1 : 0;
     for (int a = 0; a < 6; ++a) sum[a] += g.mortarArea[a], weighted[a] += g.weightedGap[a];
   }
@@ -105,13 +112,26 @@ TEST(MortarQuadraticFacetPair, NonMatchingTri6MastersSumToTheGapTimesTheNodalAre
   }
 }
 
+TEST(MortarQuadraticFacetPair, AMidEdgeNodeSlidingInTheFaceChangesNoWeightedGap) {
+  // eq. M20's measure per piece: under a uniform gap, moving mid-edge node 3 in the face's plane (the
+  // pieces' areas change, their reference ones do not) leaves every weighted gap g A_a; a measure per face
+  // (A_0 / ΣA) would shift weight between the nodes by the pieces' area change.
+  const double gap = -0.01;
+  const std::vector<Point> plane = {{-1, -1, gap}, {-1, 2, gap}, {2, 2, gap}, {2, -1, gap}};
+  auto moved = kSlave;
+  moved[3][0] += 0.07, moved[3][1] += 0.05;
+  const auto areas = mortarFacetNodeAreas(faceNodes(kSlave), 6);
+  const auto g = facetPairGaps(pairOf(moved, plane), slaveArea(), tri6Shape(4, kSlave));
+  for (int a = 0; a < 6; ++a) EXPECT_NEAR(g.weightedGap[a], gap * areas[a], 1e-15) << a;
+}
+
 TEST(MortarQuadraticFacetPair, AUniformPressureLoadsTheSlaveNodesConsistently) {
   // Under a rigid quadrilateral at a uniform gap, p_a = p at every node gives the slave nodes the forces
   // Σ_k p ∂g̃_k/∂x_a = p ∫ N_a n dA (the weights a partition of unity): the Tri6's consistent loads, 0 at a corner
   // and A/3 at a mid-edge node of a flat face, which is what a uniform traction on a Tet10 face is.
   const double gap = -0.01, A = slaveArea();
   const std::vector<Point> plane = {{-1, -1, gap}, {-1, 2, gap}, {2, 2, gap}, {2, -1, gap}};
-  const auto d = facetPairDerivatives(pairOf(kSlave, plane), A, {6, 4});
+  const auto d = facetPairDerivatives(pairOf(kSlave, plane), A, tri6Shape(4, kSlave));
   ASSERT_TRUE(d.overlaps);
   for (int a = 0; a < 6; ++a) {
     double force = 0;
@@ -176,12 +196,13 @@ void expectDerivativesAreCentralDifferences(const QuadraticFacetPairCoordinates<
 }
 
 TEST(MortarQuadraticFacetPair, GradientAndHessianOfTri6OnTri6CutByTheClipAreCentralDifferences) {
-  expectDerivativesAreCentralDifferences(pairOf(unevenSlave(), asVector(unevenMaster())), {6, 6}, 0.6);
+  // Reference pieces of the flat kSlave: the current ones stretched, the measure below 1.
+  expectDerivativesAreCentralDifferences(pairOf(unevenSlave(), asVector(unevenMaster())), tri6Shape(6, kSlave), 0.6);
 }
 
 TEST(MortarQuadraticFacetPair, GradientAndHessianOfTri6OnAQuadAndOfATriangleOnATri6AreCentralDifferences) {
   const std::vector<Point> quad = {{0.3, -0.2, -0.01}, {0.25, 1.3, -0.02}, {1.4, 1.2, -0.005}, {1.35, -0.15, -0.012}};
-  expectDerivativesAreCentralDifferences(pairOf(unevenSlave(), quad), {6, 4}, 0.55);
+  expectDerivativesAreCentralDifferences(pairOf(unevenSlave(), quad), tri6Shape(4, kSlave), 0.55);
   const auto s = unevenSlave();
   expectDerivativesAreCentralDifferences(pairOf({s[0], s[1], s[2], {}, {}, {}}, asVector(unevenMaster())), {3, 6}, 0.5);
 }
@@ -206,7 +227,8 @@ ContactInterfaceSpec tri6Spec(bool rigidMaster, const std::vector<double>& x) {
     MortarFaceNodes nodes{};
     for (int a = 0; a < 6; ++a)
       for (int c = 0; c < 3; ++c) nodes[a][c] = x[3 * spec.slaveFacets[f + a] + c];
-    spec.slaveFacetMeasures.push_back(mortarFacetReferenceArea(nodes, 6));
+    const auto pieces = mortarFacetPieceAreas(nodes, 6);
+    spec.slaveFacetMeasures.insert(spec.slaveFacetMeasures.end(), pieces.begin(), pieces.end());
     const auto areas = mortarFacetNodeAreas(nodes, 6);
     for (int a = 0; a < 6; ++a) spec.slaveAreas[spec.slaveFacets[f + a]] += areas[a];
   }
