@@ -33,6 +33,9 @@ using FacetPairCoordinates = std::array<T, kMortarFacetPairCoordinates>;
 struct MortarFacetPairShape {
   int slaveNodes = 4;
   int masterNodes = 4;
+  /// A 6-node slave face's four flat pieces' reference areas, each piece's own dA_0 / dA
+  /// (MortarQuadraticFacetPair.hpp, eq. M20); unused for 3- and 4-node faces.
+  std::array<double, 4> slavePieceAreas{};
 };
 
 /// Weighted gaps of the slave facet's nodes and their mortar areas ∫ N_a dA_0 over the overlap.

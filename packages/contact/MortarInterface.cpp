@@ -13,6 +13,7 @@
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/MasterSurface.hpp"
 #include "contact/MortarFacetPair.hpp"
+#include "contact/MortarQuadraticFacetPair.hpp"
 #include "contact/MortarSegment.hpp"
 
 namespace contessa::contact {
@@ -52,6 +53,26 @@ struct MortarPairLayout<3> {
   using Derivatives = MortarFacetPairDerivatives;
   using Gaps = MortarFacetPairGaps<double>;
 };
+/// 3D pairs with a 6-node triangle on a side (MortarQuadraticFacetPair.hpp): s0–s5 m0–m5.
+struct QuadraticMortarPairLayout {
+  static constexpr int kCoordinates = kQuadraticFacetPairCoordinates;
+  static constexpr int kFirstMaster = kQuadraticFacetNodes;
+  static constexpr int kMasterNodes = kQuadraticFacetNodes;
+  using Derivatives = MortarQuadraticFacetPairDerivatives;
+  using Gaps = MortarQuadraticFacetPairGaps<double>;
+};
+/// A master facet type whose interface takes the quadratic pair kernel (a Tri6 slave or master side):
+/// the same facets to MasterSurface, which reads only the type's constants.
+template <class Facet>
+struct QuadraticPairs : Facet {};
+template <class Facet>
+struct PairLayoutOf {
+  using type = MortarPairLayout<Facet::kSpaceDim>;
+};
+template <class Facet>
+struct PairLayoutOf<QuadraticPairs<Facet>> {
+  using type = QuadraticMortarPairLayout;
+};
 
 /// The weighted gap of one slave node, g̃_k = Σ over its slave segments and the master segments they meet
 /// (eq. M5), with, when asked, its gradient and Hessian over its support: the nodes it depends on.
@@ -89,7 +110,7 @@ struct NodeWeightedGap {
 template <class MasterFacetType>
 class MortarInterface final : public ContactInterfaceBase {
   static constexpr int kDim = MasterFacetType::kSpaceDim;
-  using Layout = MortarPairLayout<kDim>;
+  using Layout = typename PairLayoutOf<MasterFacetType>::type;
   using Facets = std::vector<MasterFacetNodes<MasterFacetType>>;
   using WeightedGap = NodeWeightedGap<kDim>;
 
@@ -101,8 +122,11 @@ class MortarInterface final : public ContactInterfaceBase {
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
         trialTraction_(spec_.slaveNodes.size(), 0.0),
         committedTraction_(spec_.slaveNodes.size(), 0.0) {
-    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4);
-    if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() != perFacet_ * spec_.slaveFacetMeasures.size())
+    const bool quadratic = Layout::kFirstMaster == kQuadraticFacetNodes;
+    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && perFacet_ == 6));
+    // A 6-node slave face has four measures, its flat pieces' (deck/ProblemDefinition, MortarQuadraticFacetPair).
+    const std::size_t measures = perFacet_ == 6 ? 4 : 1;
+    if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() * measures != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
     if (kDim == 3 && frictional())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': 3D mortar is frictionless (the deck refuses first)");
@@ -243,7 +267,13 @@ template <class F>
 typename MortarInterface<F>::PairNodes MortarInterface<F>::pairNodes(std::size_t segment) const {
   PairNodes pair;
   pair.segment = segment;
-  pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
+  if (perFacet_ == 6) {
+    for (std::size_t i = 0; i < 4; ++i) pair.shape.slavePieceAreas[i] = spec_.slaveFacetMeasures[4 * segment + i];
+    pair.referenceMeasure = spec_.slaveFacetMeasures[4 * segment] + spec_.slaveFacetMeasures[4 * segment + 1] +
+                            spec_.slaveFacetMeasures[4 * segment + 2] + spec_.slaveFacetMeasures[4 * segment + 3];
+  } else {
+    pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
+  }
   const int slaveCount = static_cast<int>(perFacet_);
   for (int a = 0; a < slaveCount; ++a) {
     pair.nodes[a] = spec_.slaveFacets[perFacet_ * segment + a];
@@ -758,8 +788,14 @@ void MortarInterface<F>::restoreMaster(const StateRecord& table) {
 
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
   if (spec.dimension == 2) return std::make_unique<MortarInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+  const bool quadratic = spec.slaveNodesPerFacet() == 6 || spec.nodesPerFacet() == 6;
+  if (spec.nodesPerFacet() == 6)
+    return std::make_unique<MortarInterface<QuadraticPairs<Tri6Facet>>>(std::move(spec), std::move(evaluatesSlave));
   if (spec.nodesPerFacet() == 3)
-    return std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
+    return quadratic ? std::unique_ptr<ContactInterfaceBase>(std::make_unique<MortarInterface<QuadraticPairs<Tri3Facet>>>(std::move(spec), std::move(evaluatesSlave)))
+                     : std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
+  if (quadratic)
+    return std::make_unique<MortarInterface<QuadraticPairs<Quad4Facet>>>(std::move(spec), std::move(evaluatesSlave));
   return std::make_unique<MortarInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
 }
 

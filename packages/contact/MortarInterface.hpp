@@ -18,7 +18,7 @@
 
 namespace contessa::contact {
 
-/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles and quadrilaterals; 3D frictionless
+/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles (3- or 6-node) and quadrilaterals; 3D frictionless
 /// only: a logic_error otherwise, the deck refuses first).
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
 

@@ -15,6 +15,7 @@
 #include "deck/MeshReferences.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "contact/ContactSurface.hpp"
+#include "contact/MortarQuadraticFacetPair.hpp"
 #include "contact/SmoothedMaster.hpp"
 #include "mesh/MeshDistribution.hpp"
 #include "mesh/MeshFactory.hpp"
@@ -173,18 +174,20 @@ void smoothMaster(contact::ContactInterfaceSpec& spec) {
 }
 
 // Whether a side set's facets are ones the mortar kernels integrate: 2-node segments in 2D (MortarSegment),
-// 3-node triangles and 4-node quadrilaterals in 3D (MortarFacetPair).
+// 3-node triangles and 4-node quadrilaterals in 3D (MortarFacetPair), 6-node triangles on their flat pieces
+// (MortarQuadraticFacetPair); not yet 8- and 9-node quadrilaterals.
 void requireMortarFacets(int dimension, int nodesPerFacet, const std::string& set, const std::string& where) {
-  const bool linear = dimension == 2 ? nodesPerFacet == 2 : (nodesPerFacet == 3 || nodesPerFacet == 4);
-  requireInput(linear, where + "/Discretization: Mortar takes " +
-                           (dimension == 2 ? std::string("2-node segments") : std::string("3- or 4-node faces")) +
+  const bool supported = dimension == 2 ? nodesPerFacet == 2 : (nodesPerFacet == 3 || nodesPerFacet == 4 || nodesPerFacet == 6);
+  requireInput(supported, where + "/Discretization: Mortar takes " +
+                           (dimension == 2 ? std::string("2-node segments") : std::string("3-, 4- or 6-node faces")) +
                            "; side set '" + set + "' has " + std::to_string(nodesPerFacet) +
                            "-node sides (use Node To Segment)");
 }
 
 // The reference measure of each slave facet, the mortar's dΓ_0 (InterfaceSpec::slaveFacetMeasures): a
 // segment's length (2D), a triangle's area, a quadrilateral's |d_1 × d_2| / 2 (its diagonals': the area
-// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp).
+// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp); a 6-node triangle
+// has four, its flat pieces' areas (MortarQuadraticFacetPair.hpp, eq. M20).
 std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& facets, int perFacet,
                                        const SurfaceCoordinates& coordinates) {
   std::vector<double> out;
@@ -193,6 +196,13 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
     return std::array<double, 3>{b[0] - a[0], b[1] - a[1], a.size() > 2 ? b[2] - a[2] : 0.0};
   };
   for (std::size_t f = 0; f + perFacet <= facets.size(); f += static_cast<std::size_t>(perFacet)) {
+    if (perFacet == 6) {  // a Tri6: its four flat pieces' areas, four measures (MortarQuadraticFacetPair, eq. M20)
+      contact::MortarFaceNodes x{};
+      for (int a = 0; a < 6; ++a) std::copy_n(at(f + a).begin(), 3, x[a].begin());
+      const auto pieces = contact::mortarFacetPieceAreas(x, perFacet);
+      out.insert(out.end(), pieces.begin(), pieces.end());
+      continue;
+    }
     if (perFacet == 2) {
       const auto d = diff(at(f), at(f + 1));
       out.push_back(std::hypot(d[0], d[1]));
@@ -202,6 +212,23 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
     const auto v = perFacet == 3 ? diff(at(f), at(f + 1)) : diff(at(f + 1), at(f + 3));
     const std::array<double, 3> c{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     out.push_back(0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
+  }
+  return out;
+}
+
+// The slave nodes' areas A_a of a mortar interface on 6-node triangles: ∫ Φ_a dA_0 with the flat pieces'
+// linear functions (MortarQuadraticFacetPair.hpp, eq. M18), integrated as the kernel does, so that
+// p_a = ε_N ⟨−g̃_a⟩ / A_a is the pressure of a uniform gap to round-off (the node-to-facet areas of 6-node
+// faces are the same sub-triangle shares, but scaled to the curved face's area).
+std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& spec, const SurfaceCoordinates& coordinates) {
+  std::vector<double> out(spec.slaveNodes.size(), 0.0);
+  const auto& nodes = spec.slaveNodes;
+  for (std::size_t f = 0; f + 6 <= spec.slaveFacets.size(); f += 6) {
+    contact::MortarFaceNodes x{};
+    for (int a = 0; a < 6; ++a) std::copy_n(coordinates.at(spec.slaveFacets[f + a]).begin(), 3, x[a].begin());
+    const auto areas = contact::mortarFacetNodeAreas(x, 6);
+    for (int a = 0; a < 6; ++a)
+      out[static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), spec.slaveFacets[f + a]) - nodes.begin())] += areas[a];
   }
   return out;
 }
@@ -243,6 +270,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   }
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
+  if (spec.mortar && slave.nodesPerFacet == 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
   if (rigid) {
     requireInput(!list.get<bool>("Two Pass"), where + "/Two Pass: a rigid master has no slave side of its own");
