@@ -120,32 +120,26 @@ void MumpsSymmetricInput::planEntries() {
       mumpsRow[i] = static_cast<MUMPS_INT>(coupledRows_.size());
     }
   coupledOrder_ = static_cast<MUMPS_INT>(coupledRows_.size());
-  const std::size_t numLower = lowerRows_.size();
-  role_.resize(numLower);
-  slot_.resize(numLower);
+  diagonalEntries_.clear();
+  pairEntries_.clear();
+  eliminatedSources_.clear();
   rows_.clear();
   cols_.clear();
   eliminated_.clear();
-  for (std::size_t e = 0; e < numLower; ++e) {
-    const auto i = static_cast<std::size_t>(lowerRows_[e] - 1), j = static_cast<std::size_t>(lowerColumns_[e] - 1);
-    Role role = Role::Dropped;
-    if (decoupled_[i] && decoupled_[j]) role = Role::Dropped;
-    else if (i == j) role = Role::Diagonal;
-    else if (!decoupled_[i] && !decoupled_[j]) role = Role::Pair;
-    else if (decoupled_[j]) role = Role::EliminateA;
-    else role = Role::EliminateB;
-    role_[e] = role;
-    if (role == Role::Diagonal || role == Role::Pair) {
-      slot_[e] = rows_.size();
-      rows_.push_back(mumpsRow[i]);
-      cols_.push_back(mumpsRow[j]);
-    } else if (role == Role::EliminateA) {
-      slot_[e] = eliminated_.size();
-      eliminated_.push_back({static_cast<MUMPS_INT>(i), static_cast<MUMPS_INT>(j), 0.0});
-    } else if (role == Role::EliminateB) {
-      slot_[e] = eliminated_.size();
-      eliminated_.push_back({static_cast<MUMPS_INT>(j), static_cast<MUMPS_INT>(i), 0.0});
+  for (std::size_t e = 0; e < lowerRows_.size(); ++e) {
+    const auto i = static_cast<MUMPS_INT>(lowerRows_[e] - 1), j = static_cast<MUMPS_INT>(lowerColumns_[e] - 1);
+    const bool iDecoupled = decoupled_[static_cast<std::size_t>(i)], jDecoupled = decoupled_[static_cast<std::size_t>(j)];
+    if (iDecoupled && jDecoupled) continue;  // a decoupled row's diagonal, or zero after the elimination
+    if (iDecoupled || jDecoupled) {
+      // a_ij with j decoupled (the lower entry), or a_ji with i decoupled (its transpose).
+      eliminatedSources_.push_back({jDecoupled ? entryA_[e] : entryB_[e]});
+      eliminated_.push_back(jDecoupled ? EliminatedEntry{i, j, 0.0} : EliminatedEntry{j, i, 0.0});
+      continue;
     }
+    if (i == j) diagonalEntries_.push_back({entryA_[e], rows_.size()});
+    else pairEntries_.push_back({entryA_[e], entryB_[e], i, j, rows_.size()});
+    rows_.push_back(mumpsRow[static_cast<std::size_t>(i)]);
+    cols_.push_back(mumpsRow[static_cast<std::size_t>(j)]);
   }
   values_.resize(rows_.size());
   patternDecoupled_ = decoupled_;
@@ -188,28 +182,14 @@ bool MumpsSymmetricInput::update(const MumpsMatrixView& general) {
   if (decoupled_ != patternDecoupled_) planEntries();
   const double* v = general.values;
   const auto valueAt = [v](long entry) { return entry >= 0 ? v[entry] : 0.0; };
-  for (std::size_t e = 0; e < role_.size(); ++e) {
-    switch (role_[e]) {
-      case Role::Diagonal:
-        values_[slot_[e]] = v[entryA_[e]];
-        break;
-      case Role::Pair: {  // (i, j), i > j: a = a_ij, b = a_ji
-        const double a = valueAt(entryA_[e]), b = valueAt(entryB_[e]);
-        const auto i = static_cast<std::size_t>(lowerRows_[e] - 1), j = static_cast<std::size_t>(lowerColumns_[e] - 1);
-        if (std::abs(a - b) > kSymmetryTolerance * std::max(rowNorm_[i], rowNorm_[j])) return false;
-        values_[slot_[e]] = 0.5 * (a + b);
-        break;
-      }
-      case Role::EliminateA:
-        eliminated_[slot_[e]].value = valueAt(entryA_[e]);
-        break;
-      case Role::EliminateB:
-        eliminated_[slot_[e]].value = valueAt(entryB_[e]);
-        break;
-      case Role::Dropped:
-        break;
-    }
+  for (const auto& d : diagonalEntries_) values_[d.slot] = v[d.entry];
+  for (const auto& p : pairEntries_) {
+    const double a = valueAt(p.a), b = valueAt(p.b);
+    if (std::abs(a - b) > kSymmetryTolerance * std::max(rowNorm_[static_cast<std::size_t>(p.i)], rowNorm_[static_cast<std::size_t>(p.j)]))
+      return false;
+    values_[p.slot] = 0.5 * (a + b);
   }
+  for (std::size_t k = 0; k < eliminated_.size(); ++k) eliminated_[k].value = valueAt(eliminatedSources_[k].entry);
   return true;
 }
 

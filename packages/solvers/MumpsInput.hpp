@@ -108,18 +108,26 @@ class MumpsSymmetricInput {
   }
 
  private:
-  /// What a lower entry becomes for the present decoupled rows (planEntries).
-  enum class Role : char {
-    Diagonal,    ///< a_ii of a coupled row, given to MUMPS
-    Pair,        ///< a_ij and a_ji of two coupled rows: checked, their mean given to MUMPS
-    EliminateA,  ///< a_ij, i coupled, j decoupled: moved to the right-hand side
-    EliminateB,  ///< a_ji, j coupled, i decoupled: moved to the right-hand side
-    Dropped      ///< both rows decoupled (a decoupled row's diagonal included): not given to MUMPS
+  /// What the lower entries become for the present decoupled rows (planEntries), one list per role so
+  /// that the per-call loops do not branch on it: a coupled row's diagonal (given to MUMPS), the pair
+  /// a_ij, a_ji of two coupled rows (checked, their mean given to MUMPS), an entry of a coupled row in a
+  /// decoupled column (moved to the right-hand side); entries between decoupled rows are left out.
+  struct DiagonalEntry {
+    long entry;        ///< the general entry
+    std::size_t slot;  ///< in values_
+  };
+  struct PairEntry {
+    long a, b;         ///< the general entries a_ij, a_ji (i > j), −1 for a zero
+    MUMPS_INT i, j;    ///< 0-based rows
+    std::size_t slot;  ///< in values_
+  };
+  struct EliminatedSource {
+    long entry;  ///< the general entry, −1 for a zero
   };
   void buildPattern(const MumpsMatrixView& general);
   void measureRows(const MumpsMatrixView& general);  ///< rowNorm_, diagonal_, decoupled_
-  /// role_, slot_, the kept entries (rows_, cols_) and eliminated_ for the present decoupled_; a new
-  /// generation.
+  /// The lists per role, the kept entries (rows_, cols_) and eliminated_ for the present decoupled_; a
+  /// new generation.
   void planEntries();
 
   long generalGeneration_ = -1;  ///< the general input's pattern this one was built from
@@ -129,9 +137,10 @@ class MumpsSymmetricInput {
   /// where its a_ij (i > j, i = lowerRows_) and a_ji are among the general entries, −1 for a zero.
   std::vector<long> entryA_, entryB_;
   std::vector<MUMPS_INT> lowerRows_, lowerColumns_;  ///< 1-based, the whole lower triangle
-  std::vector<Role> role_;                           ///< per lower entry
-  std::vector<std::size_t> slot_;      ///< per lower entry: its index in values_ or in eliminated_
-  std::vector<char> patternDecoupled_;               ///< decoupled_ when role_ was chosen
+  std::vector<DiagonalEntry> diagonalEntries_;
+  std::vector<PairEntry> pairEntries_;
+  std::vector<EliminatedSource> eliminatedSources_;  ///< per eliminated_ entry
+  std::vector<char> patternDecoupled_;               ///< decoupled_ when the roles were chosen
   MUMPS_INT coupledOrder_ = 0;                      ///< m: the rows given to MUMPS
   std::vector<MUMPS_INT> coupledRows_;               ///< per MUMPS row (0-based): its row (0-based)
   std::vector<MUMPS_INT> rows_, cols_;               ///< 1-based in MUMPS' numbering, the kept entries
