@@ -34,7 +34,8 @@ bool MumpsDistributedInput::update(const model::CrsMatrix& A, MPI_Comm comm) {
     }
   }
   if (newPattern) ++generation_;
-  values_.assign(local.values.data(), local.values.data() + local.values.extent(0));
+  values_ = const_cast<double*>(local.values.data());
+  numValues_ = local.values.extent(0);
   return newPattern != 0;
 }
 

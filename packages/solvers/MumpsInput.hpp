@@ -3,8 +3,8 @@
 // triplets with global 1-based indices (distributed input, ICNTL(18) = 3; on one rank the same triplets
 // are the centralised input, ICNTL(18) = 0). The pattern depends only on the
 // matrix graph, which changes only when the model rebuilds it (contact beyond its reserved couplings: a
-// new graph object, and a matrix on it), so it is built once per graph, recognised by identity; afterwards
-// only the values are copied, in the graph's own order (no index lookup, no pattern comparison).
+// new graph object, and a matrix on it), so it is built once per graph, recognised by identity; the
+// values are the matrix's own, in the graph's order (not copied: no index lookup, no pattern comparison).
 #include <dmumps_c.h>
 #include <mpi.h>
 
@@ -32,8 +32,10 @@ class MumpsDistributedInput {
   /// rank when any rank built a new pattern (MUMPS then needs a new analysis, JOB = 1).
   bool update(const model::CrsMatrix& A, MPI_Comm comm);
 
+  /// The values are `A`'s own storage (MUMPS and the other inputs only read them): valid until `A`'s
+  /// values change, i.e. for the factorisation that follows update().
   MumpsMatrixView view() {
-    return {n_, static_cast<MUMPS_INT8>(values_.size()), rows_.data(), cols_.data(), values_.data(), generation_};
+    return {n_, static_cast<MUMPS_INT8>(numValues_), rows_.data(), cols_.data(), values_, generation_};
   }
 
  private:
@@ -41,7 +43,8 @@ class MumpsDistributedInput {
   MUMPS_INT n_ = 0;
   long generation_ = 0;
   std::vector<MUMPS_INT> rows_, cols_;
-  std::vector<double> values_;
+  double* values_ = nullptr;  ///< `A`'s values at the last update (MUMPS' C interface takes them non-const)
+  std::size_t numValues_ = 0;
 };
 
 /// The whole matrix on rank 0, for MUMPS run there alone (`Reproducible`): the ranks' triplets gathered in
