@@ -2,7 +2,7 @@
 """Contessa against CalculiX on identical meshes: the tube in 2D and 3D, the 3D punch at a few sizes.
 
     /usr/bin/python3 bench/calculix_bench.py [--repeat 3] [--punch 10 20] [--punch-solvers MUMPS Belos]
-                                             [--cases tube2d tube3d punch] [--work DIR]
+                                             [--cases tube2d tube3d punch] [--work DIR] [--baseline OLD/contessa]
 
 Every case runs Contessa and CalculiX (`ccx`, Debian's calculix-ccx 2.20, one thread, its default
 SPOOLES solver) in turn, the pairs interleaved over --repeat rounds (every case once, then again), so that
@@ -22,6 +22,9 @@ Cases (the meshes are the same node for node):
   --punch-solvers, against CalculiX C3D8 on the same box, the punch a rigid body of bricks moved down
   1 mm in two increments, node-to-surface penalty contact (punch_input). Per-iteration figures compare
   best here: the two codes' contact algorithms take different numbers of iterations.
+
+With --baseline, another Contessa build runs every tube case too, in the same interleaved loop (a row
+"(baseline)" per case): a before/after pair measured under the same load as the CalculiX run.
 
 Tools: /usr/bin/python3 (standard library), /usr/bin/time, ccx.
 """
@@ -115,7 +118,7 @@ def ccx_iterations(directory, job):
 
 def contessa_run(a, case, work):
     deck, sets = case["deck"], case["sets"]
-    cmd = [a.contessa, os.path.join(ROOT, "inputs", deck), "--quiet", "--output-dir", work]
+    cmd = [case.get("binary", a.contessa), os.path.join(ROOT, "inputs", deck), "--quiet", "--output-dir", work]
     for s in sets:
         cmd += ["--set", s]
     r = run(cmd, work, a.timeout, accept=(0, 1, 3))
@@ -145,6 +148,8 @@ def cases(a):
         if "tube3d" in a.cases:
             out[-1]["contessa"].append({"label": "tube 3D (Hex8 Enhanced) vs C3D8I, same mesh",
                                         "deck": "tube_bending_3d.xml", "sets": FIXED})
+    if a.baseline and out:
+        out[-1]["contessa"] += [dict(v, label=v["label"] + " (baseline)", binary=a.baseline) for v in out[-1]["contessa"]]
     if "punch" in a.cases:
         for n in a.punch:
             mesh = [f"Problem/Mesh/Elements X={n}", f"Problem/Mesh/Elements Y={n}", f"Problem/Mesh/Elements Z={max(n // 2, 1)}"]
@@ -160,6 +165,7 @@ def cases(a):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
+    p.add_argument("--baseline", help="another contessa build to run on the tube cases in the same loop (before/after)")
     p.add_argument("--ccx", default=shutil.which("ccx") or "ccx")
     p.add_argument("--repeat", type=int, default=3, help="interleaved rounds (default 3)")
     p.add_argument("--cases", nargs="+", default=["tube2d", "tube3d", "punch"])

@@ -108,7 +108,7 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
         Kinematics::template addDivergence<N>(g.gradients[q].data(), g.hoop.at(q), s.P[q], g.weightedVolume[q],
                                               internalForce);
     }
-    std::array<double, NA * ND> W{};  // K_αα⁻¹ K_αu
+    std::array<double, NA * ND> W;  // K_αα⁻¹ K_αu, written whole by the condensation (not zeroed: a residual pass never uses it)
     if (stiffness && !condensedTangent(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), stiffness, W))
       return ElementStatus::InternalSolveFailed;
     if (state) {

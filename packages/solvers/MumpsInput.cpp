@@ -34,7 +34,8 @@ bool MumpsDistributedInput::update(const model::CrsMatrix& A, MPI_Comm comm) {
     }
   }
   if (newPattern) ++generation_;
-  values_.assign(local.values.data(), local.values.data() + local.values.extent(0));
+  values_ = const_cast<double*>(local.values.data());
+  numValues_ = local.values.extent(0);
   return newPattern != 0;
 }
 
@@ -86,95 +87,136 @@ void MumpsSymmetricInput::buildPattern(const MumpsMatrixView& general) {
     auto it = std::lower_bound(byKey.begin(), byKey.end(), std::make_pair(key(i, j), std::size_t{0}));
     return it != byKey.end() && it->first == key(i, j) ? static_cast<long>(it->second) : -1;
   };
-  lower_.clear();
-  transposeOf_.clear();
+  entryA_.clear();
+  entryB_.clear();
+  lowerRows_.clear();
+  lowerColumns_.clear();
   for (std::size_t k = 0; k < numEntries; ++k) {
+    const auto entry = static_cast<long>(k);
     if (rows[k] >= cols[k]) {
-      lower_.push_back(k);
-      transposeOf_.push_back(rows[k] == cols[k] ? static_cast<long>(k) : find(cols[k], rows[k]));
+      entryA_.push_back(entry);
+      entryB_.push_back(rows[k] == cols[k] ? entry : find(cols[k], rows[k]));
     } else if (find(cols[k], rows[k]) < 0) {
-      // An upper entry without a lower partner: given to MUMPS as its transpose's position, with the
+      // An upper entry without a lower partner: given to MUMPS at its transpose's position, with the
       // lower value taken as zero (the symmetry check then asks it to be zero).
-      lower_.push_back(k);
-      transposeOf_.push_back(-2);
+      entryA_.push_back(-1);
+      entryB_.push_back(entry);
+    } else {
+      continue;
     }
+    lowerRows_.push_back(std::max(rows[k], cols[k]));
+    lowerColumns_.push_back(std::min(rows[k], cols[k]));
   }
-  lowerRows_.resize(lower_.size());
-  lowerColumns_.resize(lower_.size());
-  for (std::size_t e = 0; e < lower_.size(); ++e) {
-    lowerRows_[e] = std::max(rows[lower_[e]], cols[lower_[e]]);
-    lowerColumns_[e] = std::min(rows[lower_[e]], cols[lower_[e]]);
-  }
-  lowerValues_.assign(lower_.size(), 0.0);
   generalGeneration_ = general.patternGeneration;
-  patternDecoupled_.clear();  // the kept entries are chosen again
+  patternDecoupled_.clear();  // the roles are chosen again
 }
 
-void MumpsSymmetricInput::keepCoupledEntries() {
-  kept_.clear();
-  for (std::size_t e = 0; e < lower_.size(); ++e) {
-    const auto i = static_cast<std::size_t>(lowerRows_[e] - 1), j = static_cast<std::size_t>(lowerColumns_[e] - 1);
-    if (i == j || (!decoupled_[i] && !decoupled_[j])) kept_.push_back(e);
+void MumpsSymmetricInput::planEntries() {
+  const auto n = static_cast<std::size_t>(n_);
+  std::vector<MUMPS_INT> mumpsRow(n, 0);  // 1-based MUMPS numbering of the coupled rows
+  coupledRows_.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!decoupled_[i]) {
+      coupledRows_.push_back(static_cast<MUMPS_INT>(i));
+      mumpsRow[i] = static_cast<MUMPS_INT>(coupledRows_.size());
+    }
+  coupledOrder_ = static_cast<MUMPS_INT>(coupledRows_.size());
+  diagonalEntries_.clear();
+  pairEntries_.clear();
+  eliminatedSources_.clear();
+  rows_.clear();
+  cols_.clear();
+  eliminated_.clear();
+  for (std::size_t e = 0; e < lowerRows_.size(); ++e) {
+    const auto i = static_cast<MUMPS_INT>(lowerRows_[e] - 1), j = static_cast<MUMPS_INT>(lowerColumns_[e] - 1);
+    const bool iDecoupled = decoupled_[static_cast<std::size_t>(i)], jDecoupled = decoupled_[static_cast<std::size_t>(j)];
+    if (iDecoupled && jDecoupled) continue;  // a decoupled row's diagonal, or zero after the elimination
+    if (iDecoupled || jDecoupled) {
+      // a_ij with j decoupled (the lower entry), or a_ji with i decoupled (its transpose).
+      eliminatedSources_.push_back({jDecoupled ? entryA_[e] : entryB_[e]});
+      eliminated_.push_back(jDecoupled ? EliminatedEntry{i, j, 0.0} : EliminatedEntry{j, i, 0.0});
+      continue;
+    }
+    if (i == j) diagonalEntries_.push_back({entryA_[e], rows_.size()});
+    else pairEntries_.push_back({entryA_[e], entryB_[e], i, j, rows_.size()});
+    rows_.push_back(mumpsRow[static_cast<std::size_t>(i)]);
+    cols_.push_back(mumpsRow[static_cast<std::size_t>(j)]);
   }
-  rows_.resize(kept_.size());
-  cols_.resize(kept_.size());
-  values_.resize(kept_.size());
-  for (std::size_t c = 0; c < kept_.size(); ++c) rows_[c] = lowerRows_[kept_[c]], cols_[c] = lowerColumns_[kept_[c]];
+  values_.resize(rows_.size());
   patternDecoupled_ = decoupled_;
   ++generation_;
 }
 
-bool MumpsSymmetricInput::update(const MumpsMatrixView& general) {
-  if (general.patternGeneration != generalGeneration_) buildPattern(general);
+void MumpsSymmetricInput::measureRows(const MumpsMatrixView& general) {
   const MUMPS_INT* rows = general.rows;
   const MUMPS_INT* cols = general.columns;
   const double* v = general.values;
   const auto numEntries = static_cast<std::size_t>(general.numEntries);
   const auto n = static_cast<std::size_t>(n_);
-  std::vector<double> rowNorm(n, 0.0);
+  rowNorm_.assign(n, 0.0);
   diagonal_.assign(n, 0.0);
-  std::vector<char> offDiagonal(n, 0);
-  for (std::size_t k = 0; k < numEntries; ++k) {
-    const auto i = static_cast<std::size_t>(rows[k] - 1);
-    rowNorm[i] = std::max(rowNorm[i], std::abs(v[k]));
-    if (rows[k] == cols[k]) diagonal_[i] += v[k];
-    else if (v[k] != 0.0) offDiagonal[i] = 1;
+  offDiagonal_.assign(n, 0);
+  // Entry by entry, but summed over each run of one row's entries before they are stored (the input
+  // gives a row's entries together): a store per entry into the same row made a chain of dependent
+  // memory round trips that cost more than the arithmetic.
+  for (std::size_t k = 0; k < numEntries;) {
+    const MUMPS_INT row = rows[k];
+    double norm = 0.0, diagonal = 0.0;
+    char offDiagonal = 0;
+    for (; k < numEntries && rows[k] == row; ++k) {
+      norm = std::max(norm, std::abs(v[k]));
+      if (cols[k] == row) diagonal += v[k];
+      else offDiagonal |= static_cast<char>(v[k] != 0.0);
+    }
+    const auto i = static_cast<std::size_t>(row - 1);
+    rowNorm_[i] = std::max(rowNorm_[i], norm);
+    diagonal_[i] += diagonal;
+    offDiagonal_[i] |= offDiagonal;
   }
   decoupled_.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) decoupled_[i] = !offDiagonal[i] && diagonal_[i] != 0.0;
-  eliminated_.clear();
-  for (std::size_t e = 0; e < lower_.size(); ++e) {
-    const std::size_t k = lower_[e];
-    const long t = transposeOf_[e];
-    if (t == static_cast<long>(k)) {  // diagonal
-      lowerValues_[e] = v[k];
-      continue;
-    }
-    // The pair (i, j), i > j: a = a_ij, b = a_ji.
-    const bool upperAlone = t == -2;
-    const MUMPS_INT i = lowerRows_[e] - 1, j = lowerColumns_[e] - 1;
-    const double a = upperAlone ? 0.0 : v[k];
-    const double b = upperAlone ? v[k] : (t >= 0 ? v[static_cast<std::size_t>(t)] : 0.0);
-    lowerValues_[e] = 0.0;
-    if (decoupled_[j] && !decoupled_[i]) {
-      eliminated_.push_back({i, j, a});
-    } else if (decoupled_[i] && !decoupled_[j]) {
-      eliminated_.push_back({j, i, b});
-    } else if (!decoupled_[i] && !decoupled_[j]) {
-      if (std::abs(a - b) > kSymmetryTolerance * std::max(rowNorm[static_cast<std::size_t>(i)], rowNorm[static_cast<std::size_t>(j)]))
-        return false;
-      lowerValues_[e] = 0.5 * (a + b);
-    }
+  for (std::size_t i = 0; i < n; ++i) decoupled_[i] = !offDiagonal_[i] && diagonal_[i] != 0.0;
+}
+
+bool MumpsSymmetricInput::update(const MumpsMatrixView& general) {
+  if (general.patternGeneration != generalGeneration_) buildPattern(general);
+  measureRows(general);
+  if (decoupled_ != patternDecoupled_) planEntries();
+  const double* v = general.values;
+  const auto valueAt = [v](long entry) { return entry >= 0 ? v[entry] : 0.0; };
+  for (const auto& d : diagonalEntries_) values_[d.slot] = v[d.entry];
+  for (const auto& p : pairEntries_) {
+    const double a = valueAt(p.a), b = valueAt(p.b);
+    if (std::abs(a - b) > kSymmetryTolerance * std::max(rowNorm_[static_cast<std::size_t>(p.i)], rowNorm_[static_cast<std::size_t>(p.j)]))
+      return false;
+    values_[p.slot] = 0.5 * (a + b);
   }
-  if (decoupled_ != patternDecoupled_) keepCoupledEntries();
-  for (std::size_t c = 0; c < kept_.size(); ++c) values_[c] = lowerValues_[kept_[c]];
+  for (std::size_t k = 0; k < eliminated_.size(); ++k) eliminated_[k].value = valueAt(eliminatedSources_[k].entry);
   return true;
 }
 
-void MumpsSymmetricInput::eliminateColumns(std::vector<double>& rhs) const {
-  // A decoupled row's right-hand side is never changed here, so rhs[column] is still b_column.
-  for (const auto& e : eliminated_)
-    rhs[static_cast<std::size_t>(e.row)] -= e.value * rhs[static_cast<std::size_t>(e.column)] / diagonal_[static_cast<std::size_t>(e.column)];
+void MumpsSymmetricInput::reduce(const std::vector<double>& rhs, std::vector<double>& reduced) const {
+  std::vector<double> b = rhs;
+  // A decoupled row's right-hand side is never changed here, so b[column] is still b_column. A zero
+  // b_column (a prescribed value already met: every Newton iterate after the first) moves nothing.
+  for (const auto& e : eliminated_) {
+    const double bColumn = b[static_cast<std::size_t>(e.column)];
+    if (bColumn != 0.0) b[static_cast<std::size_t>(e.row)] -= e.value * bColumn / diagonal_[static_cast<std::size_t>(e.column)];
+  }
+  reduced.resize(coupledRows_.size());
+  for (std::size_t r = 0; r < coupledRows_.size(); ++r) reduced[r] = b[static_cast<std::size_t>(coupledRows_[r])];
+}
+
+void MumpsSymmetricInput::expand(const std::vector<double>& reduced, std::vector<double>& rhs) const {
+  for (std::size_t i = 0; i < rhs.size(); ++i)
+    if (decoupled_[i]) rhs[i] /= diagonal_[i];
+  for (std::size_t r = 0; r < coupledRows_.size(); ++r) rhs[static_cast<std::size_t>(coupledRows_[r])] = reduced[r];
+}
+
+std::vector<double> MumpsSymmetricInput::expandNullVector(const std::vector<double>& reduced) const {
+  std::vector<double> whole(static_cast<std::size_t>(n_), 0.0);
+  for (std::size_t r = 0; r < coupledRows_.size() && r < reduced.size(); ++r)
+    whole[static_cast<std::size_t>(coupledRows_[r])] = reduced[r];
+  return whole;
 }
 
 }  // namespace contessa::solvers

@@ -269,8 +269,12 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
     inputScope.reset();
     ++mumpsCounters().factorizations;
     if (symmetricNow_) ++mumpsCounters().symmetricFactorizations;
+    if (symmetricNow_) {
+      factorizeSymmetric();
+      return;
+    }
     if (!onHostAlone_) {
-      factorized_ = context(symmetricNow_).factorize(symmetricNow_ ? symmetricInput_.view() : general);
+      factorized_ = context(false).factorize(general);
       return;
     }
     // MUMPS on rank 0 alone: its verdict, and what a failure found, to every rank.
@@ -320,14 +324,18 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
         auto hv = host.getData(0);
         rhs.assign(hv.begin(), hv.end());
       }
-      if (symmetricNow_) symmetricInput_.eliminateColumns(rhs);
       ++mumpsCounters().solves;
-      if (onHostAlone_) {
+      if (symmetricNow_) {
+        std::vector<double> reduced;
+        symmetricInput_.reduce(rhs, reduced);
+        if (!reduced.empty()) ok = context(true).solve(reduced) && ok;
+        symmetricInput_.expand(reduced, rhs);
+      } else if (onHostAlone_) {
         int solved = rank_ == 0 ? static_cast<int>(context(false).solve(rhs)) : 0;
         MPI_Bcast(&solved, 1, MPI_INT, 0, comm_);
         ok = solved != 0 && ok;
       } else {
-        ok = context(symmetricNow_).solve(rhs) && ok;
+        ok = context(false).solve(rhs) && ok;
       }
       {
         auto hv = host.getDataNonConst(0);
@@ -345,6 +353,18 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
   }
 
  private:
+  // LDLᵀ of the coupled rows (MumpsSymmetricInput: one rank); a failure's null space over all rows.
+  void factorizeSymmetric() {
+    MumpsMatrixView coupled = symmetricInput_.view();
+    if (coupled.order == 0) {  // every row decoupled (prescribed): nothing for MUMPS
+      factorized_ = true;
+      return;
+    }
+    factorized_ = context(true).factorize(coupled);
+    if (!factorized_)
+      for (auto& v : failures_->nullSpace) v = symmetricInput_.expandNullVector(v);
+  }
+
   // Rank 0's failure record (count, INFOG(1), null pivots, null space of `order` values) to every rank.
   void broadcastFailures(int order) const {
     MumpsFailures& f = *failures_;
