@@ -20,10 +20,12 @@
 // MueLu runs, from data every rank has, and every rank decides alike (one reduction):
 // - a new graph, or an entry that was zero at the last fresh set-up and is nonzero now, on any rank:
 //   every rank starts over;
-// - a hierarchy whose coarse matrices A (levels 1 to the last but one: the coarsest is only factorised)
-//   held exact zeros at its fresh set-up (a cancellation; their A P skipped them, and the coarse values of
-//   a later Jacobian cannot be seen before MueLu computes them) is never re-set-up on more than one rank;
-//   on one rank MueLu's refusal is caught and the hierarchy started over.
+// - a coarse matrix A (levels 1 to the last but one: the coarsest is only factorised) that held exact
+//   zeros at the fresh set-up (cancellations; its A P skipped them, and the coarse values of a later
+//   Jacobian cannot be seen before MueLu computes them) is harmless when the kept A P already holds every
+//   entry that A's stored pattern times P gives (checked by that product, once per fresh set-up);
+//   otherwise the hierarchy is never re-set-up on more than one rank. On one rank MueLu's refusal is
+//   caught instead and the hierarchy started over.
 #include <map>
 #include <vector>
 
@@ -41,7 +43,7 @@ struct PreconditionerSetUpCounts {
   long reused = 0;           ///< re-set-ups of a kept hierarchy (aggregates and P kept)
   long newGraph = 0;         ///< started over because the matrix graph was rebuilt
   long patternGrew = 0;      ///< started over because an entry zero at the set-up is nonzero now
-  long coarseZeros = 0;      ///< started over because the hierarchy's coarse matrices held exact zeros
+  long coarseZeros = 0;      ///< started over: a coarse A's exact zeros were not covered (2+ ranks)
   long refused = 0;          ///< re-set-ups MueLu refused (one rank only), then started over
 };
 
