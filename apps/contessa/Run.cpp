@@ -258,6 +258,10 @@ void writeRunReport(const CommandLine& cl, const std::string& name, const solver
   report.linearSolverAutomatic = linearSolver.automatic;
   report.preconditionerRebuildsOnNewGraph = solvers::GraphKeyedPreconditionerFactory::freshSetUps();
   report.preconditionerRefusedReuses = solvers::GraphKeyedPreconditionerFactory::refusedReuses();
+  const auto& setUps = solvers::GraphKeyedPreconditionerFactory::counts();
+  report.preconditionerReusedSetUps = setUps.reused;
+  report.preconditionerPatternRestarts = setUps.patternGrew;
+  report.preconditionerCoarseZeroRestarts = setUps.coarseZeros;
   report.directFactorizations = solvers::mumpsCounters().factorizations;
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
   report.graphRebuilds = model.graphRebuilds();

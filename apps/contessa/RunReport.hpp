@@ -38,6 +38,9 @@ struct RunReport {
   bool linearSolverAutomatic = false;  ///< chosen by the problem's size, not named by the deck
   long preconditionerRebuildsOnNewGraph = 0;  ///< MueLu hierarchies started over on a rebuilt graph
   long preconditionerRefusedReuses = 0;       ///< MueLu re-set-ups refused, then started over
+  long preconditionerReusedSetUps = 0;        ///< MueLu re-set-ups of a kept hierarchy (aggregates, P kept)
+  long preconditionerPatternRestarts = 0;     ///< started over: an entry zero at the set-up is nonzero now
+  long preconditionerCoarseZeroRestarts = 0;  ///< started over: exact zeros in the coarse matrices, 2+ ranks
   long directFactorizations = 0;     ///< MUMPS factorisations of the run
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)

@@ -75,6 +75,27 @@ void typeMueLuParameters(Teuchos::ParameterList& list, const std::string& where)
   }
 }
 
+// On more than one rank MueLu's coarsest matrix is gathered onto one rank (a repartition of the coarse
+// levels), so that its direct solve, Amesos2 KLU2, runs on one rank: distributed over two it does not
+// solve the coarse problem exactly in this Trilinos build (docs/architecture.md refuses Amesos2 as a
+// solver on more than one rank), and the Krylov iterations per solve doubled on the 3D punch at 1.5·10^4
+// unknowns (16.3 against 8.0 on one rank; 7.6 with the repartition, bench/README.md, "Issue 23, fourth
+// round"). MueLu's heuristic moves a level onto fewer ranks when it has fewer than `repartition: min rows
+// per proc` rows per rank; set to the coarse size limit, only the levels that small move, the coarsest
+// onto one rank. ParMETIS (through Zoltan2) partitions a level that must be split anew; it needs no
+// coordinates, which MueLu's default geometric partitioner would. What the deck sets is kept.
+void completeCoarseRepartition(Teuchos::ParameterList& muelu) {
+  if (muelu.isParameter("repartition: enable")) return;
+  const auto master = MueLu::MasterList::List();
+  const int coarseSize = muelu.isType<int>("coarse: max size") ? muelu.get<int>("coarse: max size")
+                                                                : master->get<int>("coarse: max size");
+  muelu.set("repartition: enable", true);
+  if (!muelu.isParameter("repartition: start level")) muelu.set("repartition: start level", 1);
+  if (!muelu.isParameter("repartition: min rows per proc")) muelu.set("repartition: min rows per proc", coarseSize);
+  if (!muelu.isSublist("repartition: params") && !muelu.isParameter("repartition: partitioner"))
+    muelu.sublist("repartition: params").set("algorithm", std::string("parmetis"));
+}
+
 using MueLuFactory = Thyra::MueLuPreconditionerFactory<double, model::LO, model::GO, model::Node>;
 
 // The first line of a library's message that says something (Teuchos prefixes file and line, and
@@ -250,11 +271,10 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
     if (own->isType<std::string>("Preconditioner Type") && own->get<std::string>("Preconditioner Type") == "MueLu") {
       auto& muelu = own->sublist("Preconditioner Types").sublist("MueLu");
       if (!muelu.isParameter("verbosity")) muelu.set("verbosity", std::string("none"));
-      // The aggregation once per matrix graph, not once per Newton iteration (PreconditionerReuse.hpp); on
-      // one rank only: on two, MueLu 13.2 refused a re-set-up on one rank and not the other (the sliding
-      // block of tests/regression/contact_graph ended in MPI_ERR_TRUNCATE), which no rank can recover alone.
-      if (!muelu.isParameter("reuse: type") && comm->getSize() == 1) muelu.set("reuse: type", std::string(kMueLuReuseType));
       typeMueLuParameters(muelu, "Piro/Stratimikos/Preconditioner Types/MueLu");
+      // The aggregation once per matrix graph, not once per Newton iteration (PreconditionerReuse.hpp).
+      if (!muelu.isParameter("reuse: type")) muelu.set("reuse: type", std::string(kMueLuReuseType));
+      if (comm->getSize() > 1) completeCoarseRepartition(muelu);
     }
     completeBelosSolverList(*own);
     builder.setParameterList(own);

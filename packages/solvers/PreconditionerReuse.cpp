@@ -1,62 +1,220 @@
 #include "solvers/PreconditionerReuse.hpp"
 
+#include <MueLu_Factory.hpp>
+#include <MueLu_FactoryManagerBase.hpp>
+#include <MueLu_Hierarchy.hpp>
+#include <MueLu_Level.hpp>
+#include <MueLu_XpetraOperator.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraLinearOp.hpp>
+#include <Thyra_XpetraLinearOp.hpp>
+#include <Teuchos_oblackholestream.hpp>
+#include <Xpetra_Matrix.hpp>
+#include <Xpetra_MatrixFactory.hpp>
+#include <Xpetra_MatrixMatrix.hpp>
 
 namespace contessa::solvers {
 namespace {
 
-// The graph of the Tpetra matrix behind a Thyra operator; null for any other operator.
-Teuchos::RCP<const model::CrsGraph> graphOf(const Thyra::LinearOpSourceBase<double>& src) {
+using XpetraMatrix = Xpetra::Matrix<double, model::LO, model::GO, model::Node>;
+using XpetraOperator = Xpetra::Operator<double, model::LO, model::GO, model::Node>;
+using MueLuOperator = MueLu::XpetraOperator<double, model::LO, model::GO, model::Node>;
+using ThyraXpetraOp = Thyra::XpetraLinearOp<double, model::LO, model::GO, model::Node>;
+
+// The Tpetra matrix behind a Thyra operator; null for any other operator.
+Teuchos::RCP<const model::CrsMatrix> matrixOf(const Thyra::LinearOpSourceBase<double>& src) {
   using TpetraOp = Thyra::TpetraLinearOp<double, model::LO, model::GO, model::Node>;
   const auto op = Teuchos::rcp_dynamic_cast<const TpetraOp>(src.getOp());
   if (op.is_null()) return Teuchos::null;
-  const auto matrix = Teuchos::rcp_dynamic_cast<const model::CrsMatrix>(op->getConstTpetraOperator());
-  return matrix.is_null() ? Teuchos::null : matrix->getCrsGraph();
+  return Teuchos::rcp_dynamic_cast<const model::CrsMatrix>(op->getConstTpetraOperator());
 }
+
+// Whether `flag` holds on any rank of `comm` (collective).
+bool onAnyRank(bool flag, const Teuchos::Comm<int>& comm) {
+  int local = flag ? 1 : 0, global = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &local, &global);
+  return global != 0;
+}
+
+using Hierarchy = MueLu::Hierarchy<double, model::LO, model::GO, model::Node>;
+using MatrixProduct = Xpetra::MatrixMatrix<double, model::LO, model::GO, model::Node>;
+using MatrixFactory = Xpetra::MatrixFactory<double, model::LO, model::GO, model::Node>;
+
+// The factory manager a level was set up with: Hierarchy keeps them for its re-set-ups but offers them to
+// derived classes only, and a level forgets its own after the set-up. A member pointer formed through a
+// derived class may be applied to any Hierarchy.
+struct LevelManagers : Hierarchy {
+  static auto getter() { return &LevelManagers::GetLevelManager; }
+};
+
+// Whether `A` holds a stored entry of value exactly zero on this rank.
+bool holdsZeros(const XpetraMatrix& A) {
+  Teuchos::ArrayView<const model::LO> columns;
+  Teuchos::ArrayView<const double> values;
+  for (std::size_t row = 0; row < A.getNodeNumRows(); ++row) {
+    A.getLocalRowView(static_cast<model::LO>(row), columns, values);
+    for (const double v : values)
+      if (v == 0.0) return true;
+  }
+  return false;
+}
+
+// The product A P that MueLu's RAPFactory keeps on a coarse level for its re-set-ups ("AP reuse data"),
+// found through the factories that make the level's A (RebalanceAc takes RAP's); null when there is none.
+Teuchos::RCP<const XpetraMatrix> keptProductAP(MueLu::Level& level, const MueLu::FactoryManagerBase& manager) {
+  Teuchos::RCP<const MueLu::FactoryBase> factory = manager.GetFactory("A");
+  for (int depth = 0; depth < 4 && !factory.is_null(); ++depth) {
+    if (level.IsAvailable("AP reuse data", factory.get())) {
+      const auto data = level.Get<Teuchos::RCP<Teuchos::ParameterList>>("AP reuse data", factory.get());
+      return data->isType<Teuchos::RCP<XpetraMatrix>>("graph") ? data->get<Teuchos::RCP<XpetraMatrix>>("graph") : Teuchos::null;
+    }
+    const auto* made = dynamic_cast<const MueLu::Factory*>(factory.get());
+    factory = made == nullptr ? Teuchos::null : made->GetFactory("A");
+  }
+  return Teuchos::null;
+}
+
+// A level's matrix `name` on this rank; null where this rank holds no part of the level (a coarse level
+// gathered onto other ranks) or it is not kept.
+Teuchos::RCP<XpetraMatrix> levelMatrix(MueLu::Level& level, const std::string& name) {
+  if (!level.IsAvailable(name)) return Teuchos::null;
+  return Teuchos::rcp_dynamic_cast<XpetraMatrix>(level.Get<Teuchos::RCP<XpetraOperator>>(name));
+}
+
+// Whether the kept product `AP` holds every entry that A's stored pattern (zeros included) times P
+// produces, on this rank: then a zero of A that fills in later lands inside the kept pattern. Collective
+// over A's communicator (the ranks that hold the level).
+bool keptProductCoversPattern(const XpetraMatrix& A, const XpetraMatrix& P, const XpetraMatrix& AP) {
+  auto ones = MatrixFactory::Build(A.getCrsGraph());
+  ones->setAllToScalar(1.0);
+  ones->fillComplete(A.getDomainMap(), A.getRangeMap());
+  Teuchos::FancyOStream quiet(Teuchos::rcp(new Teuchos::oblackholestream()));
+  const auto full = MatrixProduct::Multiply(*ones, false, P, false, quiet);
+  if (full->getNodeNumRows() != AP.getNodeNumRows()) return false;
+  for (std::size_t row = 0; row < AP.getNodeNumRows(); ++row)
+    if (full->getNumEntriesInLocalRow(static_cast<model::LO>(row)) != AP.getNumEntriesInLocalRow(static_cast<model::LO>(row)))
+      return false;
+  return true;
+}
+
+// Whether a re-set-up of the MueLu hierarchy `prec` holds could meet a product pattern it cannot fill
+// (header): a coarse A of levels 1 to the last but one (the coarsest is only factorised; R, the other left
+// factor, is kept) holds exact zeros whose later fill-in would fall outside the kept A P. The same answer
+// on every rank of `comm` (collective); false for a preconditioner that is no MueLu hierarchy.
+bool coarseZerosMatter(const Thyra::PreconditionerBase<double>& prec, const Teuchos::Comm<int>& comm) {
+  const auto* defaultPrec = dynamic_cast<const Thyra::DefaultPreconditioner<double>*>(&prec);
+  const auto thyraOp = defaultPrec == nullptr ? Teuchos::null
+                                              : Teuchos::rcp_dynamic_cast<const ThyraXpetraOp>(defaultPrec->getUnspecifiedPrecOp());
+  const auto muelu = thyraOp.is_null() ? Teuchos::null
+                                       : Teuchos::rcp_dynamic_cast<const MueLuOperator>(thyraOp->getConstXpetraOperator());
+  if (onAnyRank(muelu.is_null(), comm)) return false;
+  const auto hierarchy = muelu->GetHierarchy();
+  // A rank left out of the coarse levels gathered onto others holds fewer levels: the count is the most
+  // any rank holds. Every branch below is taken alike on every rank (the votes), so that the ranks holding
+  // a level enter its product together; a rank that holds no part of a level votes "nothing to fear".
+  const int local = hierarchy->GetNumLevels();
+  int levels = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &local, &levels);
+  for (int level = 1; level + 1 < levels; ++level) {
+    const auto A = level < local ? levelMatrix(*hierarchy->GetLevel(level), "A") : Teuchos::null;
+    if (!onAnyRank(!A.is_null() && holdsZeros(*A), comm)) continue;
+    const bool holdsCoarse = !A.is_null() && level + 1 < local;
+    const auto P = holdsCoarse ? levelMatrix(*hierarchy->GetLevel(level + 1), "P") : Teuchos::null;
+    const auto AP = holdsCoarse ? keptProductAP(*hierarchy->GetLevel(level + 1), *((*hierarchy).*LevelManagers::getter())(level + 1))
+                                : Teuchos::null;
+    if (onAnyRank(!A.is_null() && (P.is_null() || AP.is_null()), comm)) return true;
+    const bool covered = A.is_null() || keptProductCoversPattern(*A, *P, *AP);
+    if (onAnyRank(!covered, comm)) return true;
+  }
+  return false;
+}
+
 
 }  // namespace
 
-long& GraphKeyedPreconditionerFactory::freshSetUps() {
-  static long count = 0;
-  return count;
+std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix) {
+  std::vector<std::size_t> out;
+  const auto values = matrix.getLocalMatrixHost().values;
+  for (std::size_t k = 0; k < values.extent(0); ++k)
+    if (values(k) == 0.0) out.push_back(k);
+  return out;
+}
+
+bool anyFilledIn(const model::CrsMatrix& matrix, const std::vector<std::size_t>& positions) {
+  const auto values = matrix.getLocalMatrixHost().values;
+  for (const std::size_t k : positions)
+    if (k >= values.extent(0) || values(k) != 0.0) return true;
+  return false;
+}
+
+PreconditionerSetUpCounts& GraphKeyedPreconditionerFactory::counts() {
+  static PreconditionerSetUpCounts c;
+  return c;
+}
+
+GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decide(const model::CrsMatrix* matrix,
+                                                                                  const SetUp& last) const {
+  // Each rank's reason, then the first reason any rank has (ranks agree on the graph: a rebuild is collective).
+  int reason = 0;
+  if (matrix == nullptr || last.graph.is_null() || last.graph.get() != matrix->getCrsGraph().get())
+    reason = static_cast<int>(Decision::NewGraph);
+  else if (anyFilledIn(*matrix, last.zeroEntries))
+    reason = static_cast<int>(Decision::PatternGrew);
+  else if (last.coarseZeros)
+    reason = static_cast<int>(Decision::CoarseZeros);
+  if (matrix != nullptr && matrix->getComm()->getSize() > 1) {
+    int any = 0;
+    Teuchos::reduceAll(*matrix->getComm(), Teuchos::REDUCE_MAX, 1, &reason, &any);
+    reason = any;
+  } else if (reason == static_cast<int>(Decision::CoarseZeros)) {
+    reason = 0;  // one rank: MueLu's refusal is caught and recovered alone (initializePrec)
+  }
+  return static_cast<Decision>(reason);
+}
+
+void GraphKeyedPreconditionerFactory::startOver(const Teuchos::RCP<const Source>& src,
+                                                Thyra::PreconditionerBase<double>* prec, Thyra::ESupportSolveUse use,
+                                                const model::CrsMatrix* matrix, SetUp& record) const {
+  inner_->uninitializePrec(prec, nullptr, nullptr);
+  inner_->initializePrec(src, prec, use);
+  record = SetUp{};
+  if (matrix == nullptr) return;
+  record.graph = matrix->getCrsGraph();
+  record.zeroEntries = zeroEntryPositions(*matrix);
+  if (matrix->getComm()->getSize() > 1) record.coarseZeros = coarseZerosMatter(*prec, *matrix->getComm());
 }
 
 void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const Source>& src,
                                                      Thyra::PreconditionerBase<double>* prec,
                                                      const Thyra::ESupportSolveUse use) const {
-  const auto graph = graphOf(*src);
-  auto& last = graphs_[prec];
-  // Another graph (or one this wrapper cannot see): the hierarchy is dropped and MueLu starts over.
-  const bool fresh = graph.is_null() || last.get() != graph.get();
-  if (fresh) {
-    if (!last.is_null()) ++freshSetUps();
-    inner_->uninitializePrec(prec, nullptr, nullptr);
-  }
-  last = graph;
-  if (fresh) {
-    inner_->initializePrec(src, prec, use);
+  const auto matrix = matrixOf(*src);
+  const bool known = setUps_.count(prec) != 0;
+  auto& record = setUps_[prec];
+  const Decision decision = decide(matrix.get(), record);
+  auto& c = counts();
+  if (decision != Decision::Reuse) {
+    // A preconditioner's first set-up is no restart.
+    if (known && decision == Decision::NewGraph) ++c.newGraph;
+    if (decision == Decision::PatternGrew) ++c.patternGrew;
+    if (decision == Decision::CoarseZeros) ++c.coarseZeros;
+    startOver(src, prec, use, matrix.get(), record);
     return;
   }
   try {
     inner_->initializePrec(src, prec, use);
+    ++c.reused;
   } catch (const std::exception&) {
-    // MueLu 13.2 refuses some re-set-ups of a kept hierarchy ("Level::Clear found Internal data
-    // inconsistency", e.g. at LOCA's tangent predictor after a converged increment): start over then.
-    ++refusedReuses();
-    inner_->uninitializePrec(prec, nullptr, nullptr);
-    inner_->initializePrec(src, prec, use);
+    // One rank only (decide): e.g. an exact zero of a coarse matrix at the set-up that is nonzero now.
+    ++c.refused;
+    startOver(src, prec, use, matrix.get(), record);
   }
-}
-
-long& GraphKeyedPreconditionerFactory::refusedReuses() {
-  static long count = 0;
-  return count;
 }
 
 void GraphKeyedPreconditionerFactory::uninitializePrec(Thyra::PreconditionerBase<double>* prec,
                                                        Teuchos::RCP<const Source>* src,
                                                        Thyra::ESupportSolveUse* use) const {
-  graphs_.erase(prec);
+  setUps_.erase(prec);
   inner_->uninitializePrec(prec, src, use);
 }
 

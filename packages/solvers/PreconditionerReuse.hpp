@@ -5,12 +5,29 @@
 // (MueLu's user guide, "Reuse"): with "RP", Contessa's default, the aggregates and the prolongator P and
 // restriction R of the first set-up are kept and only the coarse matrices R A P and the smoothers are
 // rebuilt from each new Jacobian; the aggregation and the prolongator smoothing are skipped (on the 3D
-// punch at 1.5·10^4 unknowns: 21 % less CPU per run, 7 % more Krylov iterations; bench/README.md). MueLu
-// then multiplies R A P along the pattern of the first set-up, so a hierarchy belongs to one matrix graph:
-// when contact rebuilds the graph (new couplings), this wrapper drops the preconditioner's hierarchy first
-// and MueLu sets up afresh. Where the graph is unchanged the values may change freely: the Krylov
-// iteration checks the true residual, so an older P costs iterations, not accuracy.
+// punch at 1.5·10^4 unknowns: 21 % less CPU per run, 7 % more Krylov iterations; bench/README.md). Where
+// the values change on an unchanged pattern an older P costs iterations, not accuracy: the Krylov
+// iteration checks the true residual.
+//
+// When a re-set-up cannot work. MueLu then multiplies A P and R (A P) into the patterns of the first
+// set-up's products, and Tpetra's sparse products (TpetraExt_MatrixMatrix_def.hpp, serial kernels) skip
+// the entries of their left factor whose value is exactly zero: the first product's pattern holds only
+// the entries that the then nonzero entries of A produce (R is kept, so its zeros stay zeros). A stored entry that was zero at the set-up and is nonzero later (a contact coupling
+// reserved in the graph that closes, a coupling that is zero by symmetry on the undeformed mesh) makes
+// the re-set-up throw ("Trying to insert a new entry ... into a static graph"), and a rebuilt graph (new
+// couplings) does too. On two ranks only the rank that holds such an entry throws, and its fallback then
+// runs collectives the other rank does not: MPI_ERR_TRUNCATE (issue 23). So the wrapper decides before
+// MueLu runs, from data every rank has, and every rank decides alike (one reduction):
+// - a new graph, or an entry that was zero at the last fresh set-up and is nonzero now, on any rank:
+//   every rank starts over;
+// - a coarse matrix A (levels 1 to the last but one: the coarsest is only factorised) that held exact
+//   zeros at the fresh set-up (cancellations; its A P skipped them, and the coarse values of a later
+//   Jacobian cannot be seen before MueLu computes them) is harmless when the kept A P already holds every
+//   entry that A's stored pattern times P gives (checked by that product, once per fresh set-up);
+//   otherwise the hierarchy is never re-set-up on more than one rank. On one rank MueLu's refusal is
+//   caught instead and the hierarchy started over.
 #include <map>
+#include <vector>
 
 #include <Thyra_PreconditionerFactoryBase.hpp>
 
@@ -18,13 +35,21 @@
 
 namespace contessa::solvers {
 
-/// The MueLu reuse Contessa sets on one rank unless the deck gives "reuse: type" (bench/README.md, "MueLu
-/// reuse"); on more ranks a re-set-up MueLu refuses on one rank only cannot be recovered (the fallback in
-/// initializePrec is per rank), so none is set there.
+/// The MueLu reuse Contessa sets unless the deck gives "reuse: type" (bench/README.md, "MueLu reuse").
 inline constexpr const char* kMueLuReuseType = "RP";
 
-/// `inner` (MueLu's factory) that starts a preconditioner over whenever the matrix it is given has another
-/// graph than the one it was last set up with. Everything else passes through.
+/// How the set-ups of a run went (process-wide; every rank counts alike).
+struct PreconditionerSetUpCounts {
+  long reused = 0;           ///< re-set-ups of a kept hierarchy (aggregates and P kept)
+  long newGraph = 0;         ///< started over because the matrix graph was rebuilt
+  long patternGrew = 0;      ///< started over because an entry zero at the set-up is nonzero now
+  long coarseZeros = 0;      ///< started over: a coarse A's exact zeros were not covered (2+ ranks)
+  long refused = 0;          ///< re-set-ups MueLu refused (one rank only), then started over
+};
+
+/// `inner` (MueLu's factory) that keeps a preconditioner's hierarchy while the Jacobians share its graph
+/// and the nonzero entries of its set-up, and starts it over otherwise (header). Everything else passes
+/// through. initializePrec is collective over the matrix's communicator.
 class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<double> {
  public:
   using Factory = Thyra::PreconditionerFactoryBase<double>;
@@ -32,10 +57,11 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
   explicit GraphKeyedPreconditionerFactory(Teuchos::RCP<Factory> inner) : inner_(std::move(inner)) {}
   const Teuchos::RCP<Factory>& inner() const { return inner_; }
 
+  static PreconditionerSetUpCounts& counts();
   /// Set-ups started over because a preconditioner met another graph than its last (a rebuild).
-  static long& freshSetUps();
-  /// Re-set-ups MueLu refused, each followed by a fresh set-up (PreconditionerReuse.cpp).
-  static long& refusedReuses();
+  static long& freshSetUps() { return counts().newGraph; }
+  /// Re-set-ups MueLu refused (one rank), each followed by a fresh set-up.
+  static long& refusedReuses() { return counts().refused; }
 
   bool isCompatible(const Source& src) const override { return inner_->isCompatible(src); }
   Teuchos::RCP<Thyra::PreconditionerBase<double>> createPrec() const override { return inner_->createPrec(); }
@@ -51,10 +77,25 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
   std::string description() const override { return inner_->description(); }
 
  private:
+  // What a preconditioner was last set up from afresh.
+  struct SetUp {
+    Teuchos::RCP<const model::CrsGraph> graph;  // held, so that a freed graph's address cannot pass for it
+    std::vector<std::size_t> zeroEntries;       // local positions of the stored entries that were exactly 0
+    bool coarseZeros = false;                   // a coarse matrix of the hierarchy held exact zeros
+  };
+  enum class Decision { Reuse, CoarseZeros, PatternGrew, NewGraph };  // ranks take the largest
+  Decision decide(const model::CrsMatrix* matrix, const SetUp& last) const;
+  void startOver(const Teuchos::RCP<const Source>& src, Thyra::PreconditionerBase<double>* prec,
+                 Thyra::ESupportSolveUse use, const model::CrsMatrix* matrix, SetUp& record) const;
+
   Teuchos::RCP<Factory> inner_;
-  // The graph each preconditioner was last set up with (held, so that a freed graph's address cannot
-  // pass for it).
-  mutable std::map<const Thyra::PreconditionerBase<double>*, Teuchos::RCP<const model::CrsGraph>> graphs_;
+  mutable std::map<const Thyra::PreconditionerBase<double>*, SetUp> setUps_;
 };
+
+/// The local positions of `matrix`'s stored entries whose value is exactly zero.
+std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix);
+
+/// Whether any of `positions` (from zeroEntryPositions on a matrix of the same graph) holds a nonzero now.
+bool anyFilledIn(const model::CrsMatrix& matrix, const std::vector<std::size_t>& positions);
 
 }  // namespace contessa::solvers

@@ -100,4 +100,77 @@ TEST(PreconditionerReuse, SetUpKeptWhileTheGraphIsUnchangedAndStartedOverOnARebu
   EXPECT_EQ(recording->uninitializations, 3);
 }
 
+// A Jacobian on `graph` with every value 1 but the entries of the rows in `zeroRows` (local rows), which
+// are 0: couplings reserved in the graph that are not active yet (an open contact pair).
+RCP<const Thyra::LinearOpSourceBase<double>> jacobianWithZeroRows(const RCP<const CrsGraph>& graph,
+                                                                  const std::vector<int>& zeroRows) {
+  auto matrix = rcp(new CrsMatrix(graph));
+  matrix->resumeFill();
+  matrix->setAllToScalar(1.0);
+  for (int row : zeroRows) {
+    Teuchos::ArrayView<const int> columns;
+    graph->getLocalRowView(row, columns);
+    std::vector<double> zeros(columns.size(), 0.0);
+    matrix->replaceLocalValues(row, columns, Teuchos::ArrayView<const double>(zeros));
+  }
+  matrix->fillComplete();
+  auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const contessa::model::Operator>(matrix));
+  return Thyra::defaultLinearOpSource(op);
+}
+
+// MueLu's re-set-up multiplies into the patterns of the first set-up's products, which hold only the
+// entries that were nonzero then: an entry that fills in later must start the hierarchy over, and on every
+// rank alike, also when only one rank holds it (before, the rank that held it failed alone: MPI_ERR_TRUNCATE).
+TEST(PreconditionerReuse, AnEntryZeroAtTheSetUpThatFillsInStartsOverOnEveryRank) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  auto recording = rcp(new RecordingFactory());
+  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording);
+  auto prec = factory.createPrec();
+  auto& counts = contessa::solvers::GraphKeyedPreconditionerFactory::counts();
+  const long grewBefore = counts.patternGrew, reusedBefore = counts.reused;
+  const auto graph = bandGraph(map, false);
+
+  // Row 2 of the last rank is zero at the set-up.
+  const bool last = comm->getRank() == comm->getSize() - 1;
+  const std::vector<int> open = last ? std::vector<int>{2} : std::vector<int>{};
+  factory.initializePrec(jacobianWithZeroRows(graph, open), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  factory.initializePrec(jacobianWithZeroRows(graph, open), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 1) << "zeros that stay zero keep the set-up";
+  EXPECT_EQ(counts.reused, reusedBefore + 1);
+  // More zeros than at the set-up: a subset of its nonzeros, still reusable.
+  factory.initializePrec(jacobianWithZeroRows(graph, {1, 2}), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 1);
+
+  // The row fills in (the pair closes) on the last rank only: every rank starts over.
+  factory.initializePrec(jacobianWithZeroRows(graph, {}), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 2) << "a filled-in entry on any rank must start the set-up over on all";
+  EXPECT_EQ(counts.patternGrew, grewBefore + 1);
+  // The new set-up has no zeros: closing nothing more, it is kept.
+  factory.initializePrec(jacobianWithZeroRows(graph, {}), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 2);
+}
+
+TEST(PreconditionerReuse, ZeroEntriesFoundAndTheirFillInSeen) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  const auto graph = bandGraph(map, false);
+  auto matrix = rcp(new CrsMatrix(graph));
+  matrix->resumeFill();
+  matrix->setAllToScalar(2.0);
+  Teuchos::ArrayView<const int> columns;
+  graph->getLocalRowView(3, columns);
+  std::vector<double> values(columns.size(), 2.0);
+  values[0] = 0.0;
+  matrix->replaceLocalValues(3, columns, Teuchos::ArrayView<const double>(values));
+  matrix->fillComplete();
+  const auto zeros = contessa::solvers::zeroEntryPositions(*matrix);
+  ASSERT_EQ(zeros.size(), 1u);
+  EXPECT_FALSE(contessa::solvers::anyFilledIn(*matrix, zeros));
+  matrix->resumeFill();
+  matrix->setAllToScalar(-1e-300);  // tiny is not zero: Tpetra's products skip only exact zeros
+  matrix->fillComplete();
+  EXPECT_TRUE(contessa::solvers::anyFilledIn(*matrix, zeros));
+}
+
 }  // namespace
