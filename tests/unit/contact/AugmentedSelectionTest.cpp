@@ -1,8 +1,9 @@
 // The facet selector's rules that the augmented Lagrangian's frictional patch test exposed
 // (docs/theory-contact.md §3 and §15, "The frictional patch test"): a node held in contact by its multiplier
 // at a positive gap past a free end stays on the end facet (the free-edge rule tests λ_N + ε_N g_N < 0, not
-// g_N < 0); a vertex or edge point shared by flat facets is no corner (the node stays on the facet it
-// overshoots least instead of touching the point along x^k − x_b); and past the free boundary, of two faces
+// g_N < 0); a vertex or edge point shared by flat facets (normals within FacetSelectorOptions::flatAngle) is
+// no corner (the node stays on the facet it overshoots least instead of touching the point along
+// x^k − x_b); and past the free boundary, of two faces
 // in reach the one overshot least is kept, not the one of smaller |g_N| (equal on coplanar faces).
 #include "contact/FacetSelector.hpp"
 
@@ -84,25 +85,29 @@ TEST(AugmentedSelection, PastTheFreeBoundaryTheFaceOvershotLeastIsKept) {
   EXPECT_EQ(selector.select({1.001, -0.01, -1e-4}, faces, 1.0).facet, 1);  // over B: B
 }
 
+// FacetSelectorOptions::flatAngle is 1e-12 (round-off); the rule is shown with a ridge of 1e-7 rad, which a
+// node can be placed in the wedge of, under flatAngle = 1e-6.
+cc::FacetSelectorOptions flatBelow(double angle) {
+  cc::FacetSelectorOptions options;
+  options.flatAngle = angle;
+  return options;
+}
+
 TEST(AugmentedSelection, AnEdgeBetweenFlatFacesIsNoRidge) {
-  // A ridge of 1e-7 rad (below FacetSelectorOptions::flatAngle = 1e-6): a node 1e-3 above it and 2e-11 past
-  // the edge over A lies outside both faces (B's projection falls 8e-11 short of B). As a ridge, the node
-  // touched the edge point along x^k − x_b, a normal 2e-8 rad off A's for this offset and arbitrary as
-  // g_N → 0; flat, it stays on A, the face it overshoots least, extended.
+  // A node 1e-3 above the 1e-7 rad ridge and 2e-11 past the edge over A lies outside both faces (B's
+  // projection falls 8e-11 short of B). As a ridge, the node touches the edge point along x^k − x_b, a
+  // normal 2e-8 rad off A's for this offset and arbitrary as g_N → 0; flat, it stays on A, the face it
+  // overshoots least, extended.
   const std::vector<Face> faces{faceA(), faceB(-1e-7)};
   const P3 node{1.0 + 2e-11, 0.5, 1e-3};
-  const cc::FacetSelector<cc::Quad4Facet> selector;
-  const auto flat = selector.select(node, faces, 1.0);
+  const auto flat = cc::FacetSelector<cc::Quad4Facet>(flatBelow(1e-6)).select(node, faces, 1.0);
   ASSERT_EQ(flat.kind, cc::SelectionKind::OnFacet);
   EXPECT_EQ(flat.facet, 0);
   EXPECT_NEAR(flat.gap, 1e-3, 1e-12);
   EXPECT_EQ(flat.normal[2], 1.0);
-  cc::FacetSelectorOptions sharp;
-  sharp.flatAngle = 0.0;  // every shared edge a ridge: the former rule
-  EXPECT_EQ(cc::FacetSelector<cc::Quad4Facet>(sharp).select(node, faces, 1.0).kind, cc::SelectionKind::AtEdge);
-  // A genuine ridge (0.1 rad) is one: the node in its wedge touches the edge.
-  const std::vector<Face> ridge{faceA(), faceB(-0.1)};
-  EXPECT_EQ(selector.select({1.0 + 2e-5, 0.5, 1e-3}, ridge, 1.0).kind, cc::SelectionKind::AtEdge);
+  // Every shared edge a ridge (the former rule), and the default's 1e-12: the node touches the edge.
+  EXPECT_EQ(cc::FacetSelector<cc::Quad4Facet>(flatBelow(0.0)).select(node, faces, 1.0).kind, cc::SelectionKind::AtEdge);
+  EXPECT_EQ(cc::FacetSelector<cc::Quad4Facet>().select(node, faces, 1.0).kind, cc::SelectionKind::AtEdge);
 }
 
 TEST(AugmentedSelection, AVertexBetweenCollinearSegmentsIsNoCorner) {
@@ -110,15 +115,10 @@ TEST(AugmentedSelection, AVertexBetweenCollinearSegmentsIsNoCorner) {
   // node 1e-3 above, 2e-11 right of the vertex, projects outside both segments.
   const std::vector<Segment> top{segment(10, 0, 1, {2.0, -1e-7}, {1.0, 0.0}), segment(11, 1, 2, {1.0, 0.0}, {0.0, 0.0})};
   const P2 node{1.0 + 2e-11, 1e-3};
-  const auto flat = cc::FacetSelector<cc::Line2Facet>().select(node, top, 1.0);
+  const auto flat = cc::FacetSelector<cc::Line2Facet>(flatBelow(1e-6)).select(node, top, 1.0);
   ASSERT_EQ(flat.kind, cc::SelectionKind::OnFacet);
   EXPECT_EQ(flat.facet, 11);  // overshot by 4e-11 in ξ; segment 10 by 1.6e-10
   EXPECT_NEAR(flat.gap, 1e-3, 1e-12);
-  cc::FacetSelectorOptions sharp;
-  sharp.flatAngle = 0.0;
-  EXPECT_EQ(cc::FacetSelector<cc::Line2Facet>(sharp).select(node, top, 1.0).kind, cc::SelectionKind::AtVertex);
-  // A genuine corner (0.1 rad) is one.
-  const std::vector<Segment> corner{segment(10, 0, 1, {2.0, -0.1}, {1.0, 0.0}), segment(11, 1, 2, {1.0, 0.0}, {0.0, 0.0})};
-  EXPECT_EQ(cc::FacetSelector<cc::Line2Facet>().select({1.0 + 2e-5, 1e-3}, corner, 1.0).kind,
-            cc::SelectionKind::AtVertex);
+  EXPECT_EQ(cc::FacetSelector<cc::Line2Facet>(flatBelow(0.0)).select(node, top, 1.0).kind, cc::SelectionKind::AtVertex);
+  EXPECT_EQ(cc::FacetSelector<cc::Line2Facet>().select(node, top, 1.0).kind, cc::SelectionKind::AtVertex);
 }
