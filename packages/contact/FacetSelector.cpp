@@ -55,24 +55,14 @@ bool flatAcross(const std::vector<Point>& normals, double angle) {
 }
 
 /// Rule 3 of both selectors: a node in contact (g_N < heldGap) past the free boundary of the master surface
-/// by at most `reach` stays on a facet there, extended (`usable`: the candidates the rule may take). Of
-/// several in reach, the one whose projection lies least far beyond it wins: the facet the node is over
-/// along the boundary (of two faces sharing an interior edge that meets the free boundary, the one on the
-/// node's side of that edge), so the choice changes only where the node crosses the edge, where both
-/// facets' extensions give the same point. Equal distances: the smaller |g_N|. Chosen by |g_N| alone, a
-/// node on the free boundary at such an edge went from one face to the other by round-off from one Newton
-/// iterate to the next (the two faces of the 3D frictional patch test: ‖f‖ stalled at 3e-6, the step cut).
+/// by at most `reach` stays on a facet there, extended (`usable`: the candidates the rule may take); of
+/// several in reach, the smaller |g_N|.
 template <class Facet>
 void keepPastFreeBoundary(const std::vector<ProjectionResult<Facet>>& projected,
                           const std::vector<MasterFacetNodes<Facet>>& candidates, const std::vector<char>& usable,
                           double reach, double heldGap, FacetSelection<Facet>& best, double& bestDistance) {
-  double leastBeyond = std::numeric_limits<double>::infinity();
   for (std::size_t c = 0; c < candidates.size(); ++c) {
     if (!usable[c] || !withinFreeEdgeReach(projected[c], candidates[c].x, reach, heldGap)) continue;
-    const double beyond = distanceBeyond(projected[c], candidates[c].x);
-    if (beyond > leastBeyond) continue;
-    if (beyond < leastBeyond) bestDistance = std::numeric_limits<double>::infinity();
-    leastBeyond = beyond;
     considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
   }
 }
