@@ -57,9 +57,10 @@ class ContactHistoryStore {
 
   /// The increment converged: the trial state becomes the committed state (ξ_n, t_Tα,n, g_T updated). The
   /// augmented Lagrangian's multipliers are carried so that the converged state stays one: λ_N is the one
-  /// the increment used (t_N = λ_N + ε_N g_N unchanged; 0 for a node that opened), λ_T the converged t_T
-  /// (the stick reference moves to ξ_{n+1}, where the trial of eq. 15.2 is λ_T). The next increment
-  /// then starts from an equilibrium, as the continuation's predictor assumes.
+  /// the increment used (t_N = λ_N + ε_N g_N unchanged; 0 for a node that opened), λ_T the trial's (the
+  /// converged t_T, the stick reference moving to ξ_{n+1}, where the trial of eq. 15.2 is λ_T; a sticking
+  /// node's trial history carries its kept reference and λ_T instead, eq. 15.4, ContactInterface). The next
+  /// increment then starts from an equilibrium, as the continuation's predictor assumes.
   void commit() {
     for (std::size_t i = 0; i < committed_.size(); ++i) {
       const double normal = trial_[i].isInContact() ? committed_[i].normalMultiplier : 0.0;

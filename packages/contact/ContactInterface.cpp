@@ -198,7 +198,14 @@ class ContactInterface final : public ContactInterfaceBase {
     tree.query(xs, hits);
     candidates.clear();
     for (int h : hits) candidates.push_back(facets[h]);
-    return selector_.select(xs, candidates, spec_.slaveFacetLengths[k]);
+    return selector_.select(xs, candidates, spec_.slaveFacetLengths[k], heldGap(k));
+  }
+  /// The gap below which the contact law holds slave node k in contact (the selector's free-edge rule): 0
+  /// for the penalty law (eq. 6); with the augmented Lagrangian −λ_N/ε_N ≥ 0, where λ_N + ε_N g_N < 0
+  /// (eq. 15.1): a node that a multiplier update has lifted out of penetration is still in contact.
+  double heldGap(std::size_t k) const {
+    if (!spec_.law.isAugmented()) return 0.0;
+    return -history_.committed(k).normalMultiplier / spec_.law.normalPenalty;
   }
   /// The selection's contact point in the facet's local node numbers; on the facet, the force fades over
   /// `freeEdgeReach` past a free boundary (ContactPoint).
@@ -305,6 +312,10 @@ class ContactInterface final : public ContactInterfaceBase {
   ContactHistory<kXi> committedHistoryOn(std::size_t k, int facet) const;
   /// Slave node k with nothing changed since the commit.
   SlaveNodeChange unchanged(std::size_t k) const;
+  /// Augmented Lagrangian with friction, at a commit: the trial history of each node that sticks and was in
+  /// contact at the last commit gets that commit's stick reference ξ_n (with g_T there) and multiplier λ_T
+  /// back, on the facet it now touches (eq. 15.4 of docs/theory-contact.md).
+  void keepStickReferences();
 
   MasterSurface<Facet> master_;
   NodeToFacetContact<Facet> element_;
@@ -581,6 +592,7 @@ void ContactInterface<Facet>::commit() {
     if (status == ContactStatus::Stick) ++counts.stick;
     if (status == ContactStatus::Slip) ++counts.slip;
   }
+  if (spec_.law.isAugmented() && !spec_.law.isFrictionless()) keepStickReferences();
   history_.commit();
   damping_.reset();
   committedIncrement_ = trialChanges_;
@@ -592,6 +604,27 @@ void ContactInterface<Facet>::commit() {
     committedSlave_ = lastSlave_;
   }
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+}
+
+template <class Facet>
+void ContactInterface<Facet>::keepStickReferences() {
+  // eq. (15.4): a sticking node's trial λ_T + ε_T ā_αβ (ξ̄ − ξ_n)^β has the same value at the converged state
+  // whether the commit moves ξ_n to ξ̄ and λ_T to t_T (as for a slipping node) or keeps both. Kept, the
+  // relative motion the Uzawa updates drive below Elastic Slip Tolerance is the node's whole motion since it
+  // stuck, not the latest increment's, which added up over the increments (6.3e-4 mm = 2.5e-3 L after the
+  // frictional patch test's 39 increments, its pressure 0.99721 … 1.00089 instead of uniform).
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const ContactHistory<kXi>& trial = history_.trial(k);
+    if (trial.status != ContactStatus::Stick || !history_.committed(k).isInContact()) continue;
+    // The commit's history as the element used it: on the facet the node now touches (committedHistoryOn).
+    const ContactHistory<kXi> reference = committedHistoryOn(k, trial.segment);
+    ContactHistory<kXi> kept = trial;
+    kept.xi = reference.xi;
+    kept.accumulatedSlip = reference.accumulatedSlip;
+    kept.tangentialMultiplier = reference.tangentialMultiplier;
+    history_.setTrial(k, kept);
+  }
 }
 
 template <class Facet>

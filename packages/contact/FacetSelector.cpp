@@ -35,14 +35,37 @@ double distanceBeyond(const ProjectionResult<Facet>& p, const std::array<typenam
   return norm(subtract(p.position, Projection<Facet>::evaluateAt(typename Facet::Point{}, x, clamped).position));
 }
 
-/// A penetrating node past a free boundary of the master surface that stays in contact with the boundary
-/// facet (FacetSelectorOptions::freeEdgeTolerance): past it by at most `reach`.
+/// A node in contact (g_N < heldGap: the penalty law's g_N < 0, or the augmented λ_N + ε_N g_N < 0 of
+/// eq. 15.1) past a free boundary of the master surface that stays in contact with the boundary facet
+/// (FacetSelectorOptions::freeEdgeTolerance): past it by at most `reach`.
 template <class Facet>
 bool withinFreeEdgeReach(const ProjectionResult<Facet>& p, const std::array<typename Facet::Point, Facet::kNodes>& x,
-                         double reach) {
-  return p.converged && p.isPenetrating() && distanceBeyond(p, x) <= reach;
+                         double reach, double heldGap) {
+  return p.converged && p.gap < heldGap && distanceBeyond(p, x) <= reach;
 }
 
+
+/// Whether unit normals at a shared vertex or edge point agree to within `angle`: the surface is flat there
+/// (FacetSelectorOptions::flatAngle).
+template <class Point>
+bool flatAcross(const std::vector<Point>& normals, double angle) {
+  for (std::size_t h = 1; h < normals.size(); ++h)
+    if (norm(subtract(normals[h], normals[0])) > angle) return false;
+  return true;
+}
+
+/// Rule 3 of both selectors: a node in contact (g_N < heldGap) past the free boundary of the master surface
+/// by at most `reach` stays on a facet there, extended (`usable`: the candidates the rule may take); of
+/// several in reach, the smaller |g_N|.
+template <class Facet>
+void keepPastFreeBoundary(const std::vector<ProjectionResult<Facet>>& projected,
+                          const std::vector<MasterFacetNodes<Facet>>& candidates, const std::vector<char>& usable,
+                          double reach, double heldGap, FacetSelection<Facet>& best, double& bestDistance) {
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (!usable[c] || !withinFreeEdgeReach(projected[c], candidates[c].x, reach, heldGap)) continue;
+    considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+  }
+}
 
 // ---- 2D node-to-segment (Line2Facet, Line3Facet) ----------------------------------------------------------
 //
@@ -51,7 +74,8 @@ bool withinFreeEdgeReach(const ProjectionResult<Facet>& p, const std::array<type
 
 template <class Facet>
 FacetSelection<Facet> selectOnSegments(const FacetSelectorOptions& options_, const typename Facet::Point& slave,
-                                       const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize) {
+                                       const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize,
+                                       double heldGap) {
   const Projection<Facet> projection(options_.projection);
   std::vector<ProjectionResult<Facet>> projected;
   projected.reserve(candidates.size());
@@ -97,6 +121,13 @@ FacetSelection<Facet> selectOnSegments(const FacetSelectorOptions& options_, con
       const Vector<2> averaged = add(pa.normal, pb.normal);
       const double side = dot(d, averaged) >= 0.0 ? 1.0 : -1.0;
       const bool aOvershootsLess = overshoot(pa.xi[0]) <= overshoot(pb.xi[0]);
+      if (flatAcross(std::vector<Vector<2>>{pa.normal, pb.normal}, options_.flatAngle)) {
+        // Collinear segments: no corner; the segment overshot least, extended (FacetSelectorOptions::flatAngle).
+        bestDistance = std::numeric_limits<double>::infinity();
+        considerOnFacet(aOvershootsLess ? pa : pb, aOvershootsLess ? candidates[a].id : candidates[b].id, best,
+                        bestDistance);
+        continue;
+      }
       bestDistance = distance;
       best.kind = SelectionKind::AtVertex;
       best.facet = aOvershootsLess ? candidates[a].id : candidates[b].id;
@@ -108,13 +139,12 @@ FacetSelection<Facet> selectOnSegments(const FacetSelectorOptions& options_, con
     }
   }
 
-  // 3. A penetrating node just past a free end of the master surface (a flush edge: the end segment
-  //    tilts as it deforms, so a node sitting on the edge projects a little outside): it stays in
+  // 3. A node in contact (g_N < heldGap) just past a free end of the master surface (a flush edge: the end
+  //    segment tilts as it deforms, so a node sitting on the edge projects a little outside): it stays in
   //    contact with that segment, extended, while it is past the end by at most freeEdgeTolerance × L_k.
   if (best.kind == SelectionKind::None)
-    for (std::size_t c = 0; c < candidates.size(); ++c)
-      if (withinFreeEdgeReach(projected[c], candidates[c].x, options_.freeEdgeTolerance * slaveSize))
-        considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+    keepPastFreeBoundary(projected, candidates, std::vector<char>(candidates.size(), 1),
+                         options_.freeEdgeTolerance * slaveSize, heldGap, best, bestDistance);
 
   // 4. Nothing inside and no corner: the node has left the master surface.
   if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
@@ -220,7 +250,8 @@ double areaJacobian(const std::array<typename Facet::Point, Facet::kNodes>& x, c
 
 template <class Facet>
 FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const typename Facet::Point& slave,
-                                    const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize) {
+                                    const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize,
+                                    double heldGap) {
   using Point = typename Facet::Point;
   const Projection<Facet> projection(options_.projection);
   const std::size_t n = candidates.size();
@@ -236,6 +267,7 @@ FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const 
 
   FacetSelection<Facet> best;
   double bestDistance = std::numeric_limits<double>::infinity();
+  std::size_t flatFace = n;  // the chosen edge or vertex is flat across: the face to stay on (flatAngle)
 
   // 1. Projections inside their face: the smaller |g_N| wins (valleys, concave corners).
   for (std::size_t c = 0; c < n; ++c)
@@ -286,6 +318,18 @@ FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const 
         }
       }
       const double averagedNorm = norm(averaged);
+      // Flat across the point: the holder whose projection overshoots its face least (FacetSelectorOptions::flatAngle).
+      flatFace = n;
+      if (flatAcross(normals, options_.flatAngle)) {
+        double least = std::numeric_limits<double>::infinity();
+        for (std::size_t h : holders) {
+          const double beyond = distanceBeyond(projected[h], candidates[h].x);
+          if (beyond < least) {
+            least = beyond;
+            flatFace = h;
+          }
+        }
+      }
       bestDistance = distance;
       best.kind = atVertex ? SelectionKind::AtVertex : SelectionKind::AtEdge;
       best.facet = candidates[holders[chosen]].id;
@@ -303,13 +347,16 @@ FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const 
       freeBoundaryDistance < bestDistance) {
     best = FacetSelection<Facet>{};
     bestDistance = std::numeric_limits<double>::infinity();
+  } else if ((best.kind == SelectionKind::AtEdge || best.kind == SelectionKind::AtVertex) && flatFace < n) {
+    best = FacetSelection<Facet>{};
+    bestDistance = std::numeric_limits<double>::infinity();
+    considerOnFacet(projected[flatFace], candidates[flatFace].id, best, bestDistance);
   }
 
-  // 3. A penetrating node just past a free boundary: it stays on the boundary face, extended.
+  // 3. A node in contact (g_N < heldGap) just past a free boundary: it stays on the boundary face, extended.
   if (best.kind == SelectionKind::None)
-    for (std::size_t c = 0; c < n; ++c)
-      if (regular[c] && withinFreeEdgeReach(projected[c], candidates[c].x, options_.freeEdgeTolerance * slaveSize))
-        considerOnFacet(projected[c], candidates[c].id, best, bestDistance);
+    keepPastFreeBoundary(projected, candidates, regular, options_.freeEdgeTolerance * slaveSize, heldGap, best,
+                         bestDistance);
 
   // 4. Nothing inside and no interior edge or vertex: the node has left the master surface.
   if (best.kind == SelectionKind::None) best.gap = std::numeric_limits<double>::infinity();
@@ -321,11 +368,11 @@ FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const 
 template <class Facet>
 FacetSelection<Facet> FacetSelector<Facet>::select(const typename Facet::Point& slave,
                                                    const std::vector<MasterFacetNodes<Facet>>& candidates,
-                                                   double slaveSize) const {
+                                                   double slaveSize, double heldGap) const {
   if constexpr (Facet::kSurfaceDim == 1)
-    return selectOnSegments<Facet>(options_, slave, candidates, slaveSize);
+    return selectOnSegments<Facet>(options_, slave, candidates, slaveSize, heldGap);
   else
-    return selectOnFaces<Facet>(options_, slave, candidates, slaveSize);
+    return selectOnFaces<Facet>(options_, slave, candidates, slaveSize, heldGap);
 }
 
 #define CONTESSA_INSTANTIATE_FACET_SELECTOR(F) template class FacetSelector<F>;

@@ -39,7 +39,7 @@ struct FacetSelectorOptions {
   /// past the boundary on the facet extended: under a valley that turned the force by the valley's angle
   /// as the node crossed the band, and a node on a line of master nodes stalled the run (issue 22).
   double insideTolerance = 0.0;
-  /// A PENETRATING node past a free boundary of the master surface stays on the boundary facet while its
+  /// A node IN CONTACT past a free boundary of the master surface stays on the boundary facet while its
   /// distance beyond that boundary, measured on the facet's extension (‖x̄(ξ̄) − x̄(clamped ξ̄)‖), is below
   /// freeEdgeTolerance × L_k, L_k being the size of the slave facets at the node (the `slaveSize` given to
   /// select); its force fades to zero over that reach (ContactPoint::freeEdgeReach, w = 1 − 3s² + 2s³), so
@@ -53,12 +53,26 @@ struct FacetSelectorOptions {
   /// value: with 1e-3 (a cut-off, then a fade) a node row exactly on a punch's edge, spreading outwards
   /// under the pressure, stalled Newton; with 1e-2 it converges slowly (9–11 iterations in an increment);
   /// from 3e-2 on in 2–4, with the punch force within 1e-5 of that at 1e-1 (docs/verification-contact.md
-  /// §6). Nodes 0.2 L_k or more past an edge (the punch at n = 18, 32, 48) stay out.
+  /// §6). Nodes 0.2 L_k or more past an edge (the punch at n = 18, 32, 48) stay out. "In contact" is the
+  /// contact law's condition (the `heldGap` given to select): g_N < 0 with the penalty law (eq. 6), and
+  /// λ_N + ε_N g_N < 0, i.e. g_N < −λ_N/ε_N, with the augmented Lagrangian (eq. 15.1 of
+  /// docs/theory-contact.md), where the multiplier holds a node in contact at a small positive gap.
   double freeEdgeTolerance = 3e-2;
   /// 3D: a projection on a face whose area Jacobian ‖ā_1 × ā_2‖ at ξ̄ is below this fraction of its value
   /// at the face centre (near the apex of a collapsed face) does not count as inside: the node is handed to
   /// a neighbour, or to the apex vertex.
   double collapsedJacobianRatio = 1e-3;
+  /// A vertex or edge point shared by facets whose unit normals there agree to within this angle (radians)
+  /// is no corner or ridge: the surface is flat across it, its closest point to a node outside both facets
+  /// by round-off is the facets' common projection, and the node stays on the facet it overshoots least,
+  /// extended (OnFacet), instead of touching the point (AtVertex, AtEdge) along x^k − x_b. That direction
+  /// is the normal only outside a genuine corner: on a flat surface, at a gap g_N that the augmented
+  /// Lagrangian drives towards 0, it tilts by (round-off offset)/g_N, and a node on a line of master nodes
+  /// went from one kind to the other from iterate to iterate (the 3D frictional patch test: ‖f‖ 1.5e-8 and
+  /// 1.8e-6 alternately, to the iteration limit). Round-off level: a node switching between two facets
+  /// treated as flat sees its force turn by up to this angle (at the edge point the force turns
+  /// continuously instead); with 1e-6 the Tet10 patch test (penalty, ‖f‖ ≤ 1e-8) stalled at ‖f‖ 1.6e-8.
+  double flatAngle = 1e-12;
   ProjectionOptions projection{};
 };
 
@@ -76,8 +90,8 @@ struct FacetSelectorOptions {
 ///    wins over an inside projection only when strictly closer. The element is then evaluated on one facet
 ///    sharing the point (2D: the one whose projection overshoots least; 3D: the one whose normal best
 ///    matches x^k − x_p), i.e. on that facet extended;
-///  - a PENETRATING node just past a free boundary (by less than freeEdgeTolerance × L_k) stays on the
-///    boundary facet, extended, its force faded (ContactPoint::freeEdgeReach);
+///  - a node in contact (g_N below `heldGap`) just past a free boundary (by less than freeEdgeTolerance × L_k)
+///    stays on the boundary facet, extended, its force faded (ContactPoint::freeEdgeReach);
 ///  - otherwise the node has left the master surface: kind None, not in contact.
 /// The 3D rules for edges and vertices (which are interior, collapsed faces) are in FacetSelector.cpp.
 template <class Facet>
@@ -86,8 +100,15 @@ class FacetSelector {
   explicit FacetSelector(FacetSelectorOptions options = {}) : options_(options) {}
 
   /// `slaveSize`: L_k, the size of the slave facets at the node (the free-edge rule's length; 0: none).
+  /// `heldGap`: the gap below which the contact law holds the node in contact, the free-edge rule's test:
+  /// 0 for the penalty law (g_N < 0, eq. 6); −λ_N/ε_N ≥ 0 for the augmented Lagrangian with the node's
+  /// multiplier λ_N ≤ 0 (λ_N + ε_N g_N < 0, eq. 15.1). Tested against the penetration alone, a node held
+  /// at a positive gap by λ_N past a flush free end was dropped at the iterate after each multiplier
+  /// update, lost its force, penetrated, was kept again: Newton cycled between the two to its iteration
+  /// limit (the frictional patch test, docs/verification-contact.md §12).
   FacetSelection<Facet> select(const typename Facet::Point& slave,
-                               const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize = 0.0) const;
+                               const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize = 0.0,
+                               double heldGap = 0.0) const;
 
   const FacetSelectorOptions& options() const { return options_; }
 

@@ -3,8 +3,11 @@
 // the consistent tangent against central differences with nonzero multipliers (2D segment, 3D face), in
 // normal contact, stick, slip and with the slip tolerance, at a penetration and at a positive gap still
 // held by λ_N. Also the history store: a Uzawa update changes the committed multipliers only, a cut-back
-// rolls them back, a commit keeps the converged tractions as the next increment's multipliers.
+// rolls them back, a commit keeps the converged tractions as the next increment's multipliers. And on an
+// interface: a node that sticks keeps its stick reference and λ_T across a commit (eq. 15.4), and the
+// element past a free end at a positive gap held by λ_N (where the selector now keeps such a node).
 #include "ElementTestTools.hpp"
+#include "InterfaceTestTools.hpp"
 
 #include <gtest/gtest.h>
 
@@ -176,4 +179,76 @@ TEST(AugmentedLagrangianHistory, UzawaUpdateIsRolledBackByACutBackAndCarriedByAC
   store.setTrial(0, open);
   store.commit();
   EXPECT_EQ(store.committed(0).normalMultiplier, 0.0);
+}
+
+// The selector keeps a node held by λ_N at a positive gap past a free end (FacetSelector, `heldGap`): the
+// element there, its force faded over ContactPoint::freeEdgeReach, against central differences (segment past
+// its end ξ = 1 by 0.01, face past its edge ξ¹ = 1 by 0.01; g_N = +0.015, held by λ_N = −40 up to 0.04).
+TEST(AugmentedLagrangianElement, TangentPastAFreeEndAtAPositiveGapMatchesCentralDifferences) {
+  const double gap = 0.015;
+  const auto point = cc::ContactPoint::projection(0.03);
+  ct::TangentCheck check{ct::kFdTolerance};
+  for (const Case& c : kCases) {
+    const cc::NodeToFacetContact<cc::Line2Facet> segment(c.law);
+    const auto g2 = segmentSlave(1.01, gap);
+    const auto h2 = withMultipliers<1>(3, {0.9}, {9.0}, {1.5});
+    const auto r2 = segment.evaluate(g2, 3, h2, kFacetLength, cc::SlipTangent::consistent(), point);
+    ASSERT_EQ(r2.status, c.expected) << c.name;
+    EXPECT_GT(r2.freeEdgeWeight, 0.0) << c.name;
+    EXPECT_LT(r2.freeEdgeWeight, 1.0) << c.name;
+    check.expectClose(r2.tangent, ct::finiteDifferenceTangent(segment, g2, 3, h2, 1e-7, kFacetLength, point),
+                      std::string("Line2 past its end ") + c.name);
+    const cc::NodeToFacetContact<cc::Quad4Facet> face(c.law);
+    const auto g3 = faceSlave({-0.3, 1.01}, gap);
+    const auto h3 = withMultipliers<2>(7, {-0.38, 0.91}, {4.0, -2.0}, {1.5, -0.8});
+    const auto r3 = face.evaluate(g3, 7, h3, kFacetLength, cc::SlipTangent::consistent(), point);
+    ASSERT_EQ(r3.status, c.expected) << c.name;
+    EXPECT_GT(r3.freeEdgeWeight, 0.0) << c.name;
+    EXPECT_LT(r3.freeEdgeWeight, 1.0) << c.name;
+    check.expectClose(r3.tangent, ct::finiteDifferenceTangent(face, g3, 7, h3, 1e-7, kFacetLength, point),
+                      std::string("Quad4 past its edge ") + c.name);
+  }
+  check.printWorst("augmented Lagrangian past a free end");
+}
+
+namespace {
+
+// Three slave nodes on y = 0 (x = 0, 1, 2; L_k = 1) under a rigid line at y = 0.5 that moves by λ (0.5, −1):
+// it touches them at λ = 0.5 and drags them along x by 0.5 per unit λ; ε_N = 1e6, constant ε_T = 1e4,
+// μ = 0.3: they stick (|t_T| ≤ 200 against μ|t_N| ≥ 3000 below).
+std::unique_ptr<cc::ContactInterfaceBase> draggedPlate() {
+  auto spec = ct::threeNodesUnderRigidLine({{-10.0, 0.5}, {10.0, 0.5}}, {0.5, -1.0});
+  spec.law.frictionCoefficient = 0.3;
+  spec.law.tangentialPenalty = 1e4;
+  spec.law.slipTolerance = 0.0;
+  spec.law.enforcement = Law::Enforcement::AugmentedLagrangian;
+  spec.law.penetrationTolerance = 1e-3;
+  spec.law.elasticSlipTolerance = 1e-4;
+  spec.law.maxAugmentations = 10;
+  return cc::makeContactInterface(spec, {1, 1, 1});
+}
+
+}  // namespace
+
+TEST(AugmentedLagrangianInterface, AStickingNodeKeepsItsStickReferenceAndMultiplierAcrossACommit) {
+  const auto plate = draggedPlate();
+  const auto sink = [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {};
+  const auto slave = ct::threeNodesOnXAxis;
+  plate->evaluate(slave, 0.51, true, sink);  // first touch at 0.5: stuck since, 0.005 of relative motion
+  plate->commit();                            // the stick reference: here
+  plate->evaluate(slave, 0.52, true, sink);   // 0.005 more
+  EXPECT_NEAR(plate->trialViolation().elasticSlip, 0.005, 1e-9);
+  plate->augment();                           // λ_T ← t_T (eq. 15.3)
+  plate->evaluate(slave, 0.52, true, sink);
+  plate->commit();
+  const std::vector<double> converged = plate->committedSlaveForce();
+  // The converged state is carried: the same positions give the same force after the commit.
+  plate->evaluate(slave, 0.52, true, sink);
+  plate->commit();
+  for (std::size_t c = 0; c < converged.size(); ++c)
+    EXPECT_NEAR(plate->committedSlaveForce()[c], converged[c], 1e-9 * std::abs(converged[1])) << c;
+  // The elastic slip the updates test is the motion since the node stuck (eq. 15.4), 0.01 at λ = 0.53, not
+  // the 0.005 since the last commit: per-increment motions below the tolerance do not add up unseen.
+  plate->evaluate(slave, 0.53, true, sink);
+  EXPECT_NEAR(plate->trialViolation().elasticSlip, 0.01, 1e-9);
 }
