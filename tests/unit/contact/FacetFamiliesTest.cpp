@@ -14,10 +14,6 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
-using cc::ContactStatus;
-using cc::Vector;
 
 namespace {
 

@@ -20,12 +20,8 @@
 #include <type_traits>
 #include <vector>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
 using cc::ContactPoint;
-using cc::ContactStatus;
 using cc::SelectionKind;
-using cc::Vector;
 
 namespace {
 

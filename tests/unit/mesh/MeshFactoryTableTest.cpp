@@ -120,8 +120,10 @@ TEST(MeshFactoryTables, EveryGeneratorsPublishedDefaultsAreItsSpecsDefaults) {
 
 // Each generator's parameters set in `list` to values that differ from each other (two members swapped
 // would change the mesh), and the spec that says the same.
-RectangleSpec changedRectangle(ParameterList& list) {
-  RectangleSpec s;
+// The rows a Box shares with a Rectangle (its x-y section), changed alike in both.
+template <class Spec>
+Spec changedSection(ParameterList& list) {
+  Spec s;
   list.set("X Origin", s.x0 = 1.0);
   list.set("Y Origin", s.y0 = -2.0);
   list.set("Length X", s.lx = 3.0);
@@ -130,23 +132,20 @@ RectangleSpec changedRectangle(ParameterList& list) {
   list.set("Elements Y", s.ny = 2);
   list.set("Bias X", s.biasX = 2.0);
   list.set("Bias Y", s.biasY = 0.75);
+  return s;
+}
+
+RectangleSpec changedRectangle(ParameterList& list) {
+  RectangleSpec s = changedSection<RectangleSpec>(list);
   list.set("Block Name", s.blockName = "plate");
   return s;
 }
 
 BoxSpec changedBox(ParameterList& list) {
-  BoxSpec s;
-  list.set("X Origin", s.x0 = 1.0);
-  list.set("Y Origin", s.y0 = -2.0);
+  BoxSpec s = changedSection<BoxSpec>(list);
   list.set("Z Origin", s.z0 = 0.25);
-  list.set("Length X", s.lx = 3.0);
-  list.set("Length Y", s.ly = 0.5);
   list.set("Length Z", s.lz = 1.5);
-  list.set("Elements X", s.nx = 3);
-  list.set("Elements Y", s.ny = 2);
   list.set("Elements Z", s.nz = 4);
-  list.set("Bias X", s.biasX = 2.0);
-  list.set("Bias Y", s.biasY = 0.75);
   list.set("Bias Z", s.biasZ = 1.25);
   list.set("Block Name", s.blockName = "brick");
   return s;
