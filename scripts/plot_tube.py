@@ -112,19 +112,26 @@ def plot_step_size(beta, fixed, out):
     plt.close(fig)
 
 
-def plot_reaction(beta, fixed, out):
-    fig, ax = plt.subplots(figsize=(7.5, 4.5))
-    ax.plot(PLATE_TRAVEL * fixed["lambda"], -fixed[FORCE_COLUMN], "-", color="tab:blue", linewidth=1.5,
-            label=f"fixed step ({int(fixed['step'][-1])} increments)")
-    ax.plot(PLATE_TRAVEL * beta["lambda"], -beta[FORCE_COLUMN], "o", color="tab:red", markersize=5,
-            markerfacecolor="none", label=f"Contact Beta ({int(beta['step'][-1])} increments)")
+def plot_against_travel(ax, fixed, beta, column, sign, labels, fixed_style, markersize, ylabel, title):
+    """`sign` x `column` of the fixed-step run (a line in `fixed_style`) and of the Contact Beta run (open
+    circles) against the plate displacement, on axes from 0."""
+    ax.plot(PLATE_TRAVEL * fixed["lambda"], sign * fixed[column], color="tab:blue", label=labels[0], **fixed_style)
+    ax.plot(PLATE_TRAVEL * beta["lambda"], sign * beta[column], "o", color="tab:red", markersize=markersize,
+            markerfacecolor="none", label=labels[1])
     ax.set_xlabel("plate displacement u (mm)")
-    ax.set_ylabel("plate force (N/mm, quarter model)")
-    ax.set_title("Tube bending: plate force vs plate displacement")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
     ax.set_xlim(0, PLATE_TRAVEL * 1.02)
     ax.set_ylim(0, None)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left")
+
+
+def plot_reaction(beta, fixed, out):
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    labels = (f"fixed step ({int(fixed['step'][-1])} increments)", f"Contact Beta ({int(beta['step'][-1])} increments)")
+    plot_against_travel(ax, fixed, beta, FORCE_COLUMN, -1, labels, {"linewidth": 1.5}, 5,
+                        "plate force (N/mm, quarter model)", "Tube bending: plate force vs plate displacement")
     fig.tight_layout()
     fig.savefig(out, dpi=150)
     plt.close(fig)
@@ -187,17 +194,9 @@ def plot_contacts(beta, fixed, out, nc):
     a1.grid(True, axis="y", alpha=0.3)
     a1.legend()
 
-    a2.plot(PLATE_TRAVEL * fixed["lambda"], fixed["active_contacts"], drawstyle="steps-post",
-            color="tab:blue", linewidth=1.2, label="fixed step")
-    a2.plot(PLATE_TRAVEL * beta["lambda"], beta["active_contacts"], "o", color="tab:red", markersize=4,
-            markerfacecolor="none", label="Contact Beta")
-    a2.set_xlabel("plate displacement u (mm)")
-    a2.set_ylabel("active contact nodes")
-    a2.set_title("Active contacts vs plate displacement")
-    a2.set_xlim(0, PLATE_TRAVEL * 1.02)
-    a2.set_ylim(0, None)
-    a2.grid(True, alpha=0.3)
-    a2.legend(loc="upper left")
+    plot_against_travel(a2, fixed, beta, "active_contacts", 1, ("fixed step", "Contact Beta"),
+                        {"drawstyle": "steps-post", "linewidth": 1.2}, 4, "active contact nodes",
+                        "Active contacts vs plate displacement")
     fig.tight_layout()
     fig.savefig(out, dpi=150)
     plt.close(fig)

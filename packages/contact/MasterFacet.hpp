@@ -5,7 +5,9 @@
 // Projection<Facet> and everything downstream only use this interface, so the 3D 4-node face is a sibling
 // traits class, not a rewrite.
 //
-// Traits interface:
+// Traits interface (FacetShape declares the dimensions and types; SegmentFacet, SquareFaceFacet and
+// TriangleFaceFacet the normal, containment, clamping and centre of each parent domain; a family adds its
+// shape functions, node layout and quadrature):
 //   kSpaceDim, kSurfaceDim (number of ξ^α), kNodes
 //   shapeFunctions(ξ)          -> H_i
 //   shapeDerivatives(ξ)        -> H_i,α           (row i, column α)
@@ -126,70 +128,122 @@ inline ClampedCoords<2> clampToTriangle(const Vector<2>& xi) {
   return c;
 }
 
-/// 2-node straight master segment in 2D (plane strain): ξ ∈ [−1, 1], H_1 = (1 − ξ)/2, H_2 = (1 + ξ)/2.
+/// What every facet family declares alike (the traits interface above): its dimensions, the types of its
+/// points and of its shape functions' derivatives, and the defaults of the flags only some families set.
+/// The families derive from it, through the domain bases below, and add their own mathematics.
+template <int SpaceDim, int SurfaceDim, int Nodes>
+struct FacetShape {
+  static constexpr int kSpaceDim = SpaceDim;
+  static constexpr int kSurfaceDim = SurfaceDim;
+  static constexpr int kNodes = Nodes;
+  using Point = Vector<SpaceDim>;
+  using SurfaceCoords = Vector<SurfaceDim>;
+  using First = Matrix<Nodes, SurfaceDim>;                                                ///< H_i,α
+  using Second = std::array<Matrix<SurfaceDim, SurfaceDim>, Nodes>;                       ///< H_i,αβ
+  using Third = std::array<std::array<Matrix<SurfaceDim, SurfaceDim>, SurfaceDim>, Nodes>;  ///< H_i,αβγ
+  static constexpr bool kCubic = false;
+  static constexpr bool kSubFacetTributary = false;
+};
+
+/// A master segment in 2D: ξ ∈ [−1, 1], the segment from its end node at ξ = −1 to the one at ξ = +1.
 ///
 /// Normal convention: eq. (5) with ā_2 := e_3, the out-of-plane unit vector, i.e.
 ///   n̄ = ā_1 × e_3 / ‖ā_1‖ = (a_1y, −a_1x) / ‖ā_1‖.
 /// When the master boundary is ordered counter-clockwise (the master body on the left of the direction
-/// node 1 → node 2), this normal points OUT of the master body, so g_N > 0 is a separated slave node and
+/// from end to end), this normal points OUT of the master body, so g_N > 0 is a separated slave node and
 /// g_N < 0 a penetrating one, as in eq. (6). (e_3 × ā_1 would be the inward normal of such a segment.)
-struct Line2Facet {
-  static constexpr int kSpaceDim = 2;
-  static constexpr int kSurfaceDim = 1;
-  static constexpr int kNodes = 2;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
+template <int Nodes>
+struct SegmentFacet : FacetShape<2, 1, Nodes> {
+  using Base = FacetShape<2, 1, Nodes>;
+  using typename Base::First;
+  using typename Base::Point;
+  using typename Base::Second;
+  using typename Base::SurfaceCoords;
+  using typename Base::Third;
 
-  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return {0.5 * (1.0 - xi[0]), 0.5 * (1.0 + xi[0])}; }
-
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& /*xi*/) {
-    Matrix<kNodes, kSurfaceDim> d;
-    d(0, 0) = -0.5;
-    d(1, 0) = 0.5;
-    return d;
-  }
-
-  /// A straight segment has H_i,11 = 0: no curvature, b̄_11 = 0.
-  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
-    return {};
-  }
-
-  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return {a[0][1], -a[0][0]}; }
-
-  static Point unitNormal(const std::array<Point, kSurfaceDim>& a) {
+  static Point areaNormal(const std::array<Point, 1>& a) { return {a[0][1], -a[0][0]}; }
+  static Point unitNormal(const std::array<Point, 1>& a) {
     const Point n = areaNormal(a);
     const double length = norm(n);
     return {n[0] / length, n[1] / length};
   }
-
   static bool contains(const SurfaceCoords& xi, double tolerance) { return std::abs(xi[0]) <= 1.0 + tolerance; }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
-  static constexpr std::array<std::array<int, 2>, 1> boundarySegments() { return {{{0, 1}}}; }
+  static ClampedCoords<1> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<1>(xi); }
+  static SurfaceCoords center() { return {0.0}; }
 
+  /// One coordinate: the k-th derivatives d^k H_i/dξ^k in the layout of the traits interface (k = 1, 2, 3).
+  static First asFirst(const Vector<Nodes>& h) {
+    First d;
+    d.entries = h;
+    return d;
+  }
+  static Second asSecond(const Vector<Nodes>& h) {
+    Second d{};
+    for (int i = 0; i < Nodes; ++i) d[i](0, 0) = h[i];
+    return d;
+  }
+  static Third asThird(const Vector<Nodes>& h) {
+    Third d{};
+    for (int i = 0; i < Nodes; ++i) d[i][0](0, 0) = h[i];
+    return d;
+  }
+};
+
+/// A master face in 3D. Normal convention: eq. (5), n̄ = ā_1 × ā_2 / ‖ā_1 × ā_2‖, which points out of the
+/// master body when the face's corners run counter-clockwise seen from outside (right-hand rule), the 3D
+/// analogue of the SegmentFacet convention.
+template <int Nodes>
+struct FaceFacet : FacetShape<3, 2, Nodes> {
+  static Vector<3> areaNormal(const std::array<Vector<3>, 2>& a) { return cross(a[0], a[1]); }
+  static Vector<3> unitNormal(const std::array<Vector<3>, 2>& a) {
+    const Vector<3> n = areaNormal(a);
+    return scaled(1.0 / norm(n), n);
+  }
+};
+
+/// A face on the square [−1, 1]² (Quad4Facet, Quad8Facet, Quad9Facet).
+template <int Nodes>
+struct SquareFaceFacet : FaceFacet<Nodes> {
+  static bool contains(const Vector<2>& xi, double tolerance) {
+    return std::abs(xi[0]) <= 1.0 + tolerance && std::abs(xi[1]) <= 1.0 + tolerance;
+  }
+  static ClampedCoords<2> clampToDomain(const Vector<2>& xi) { return clampToSquare<2>(xi); }
+  static Vector<2> center() { return {0.0, 0.0}; }
+};
+
+/// A face on the unit triangle ξ^1, ξ^2 ≥ 0, ξ^1 + ξ^2 ≤ 1, corners at (0,0), (1,0), (0,1) (Tri3Facet,
+/// Tri6Facet).
+template <int Nodes>
+struct TriangleFaceFacet : FaceFacet<Nodes> {
+  /// The unit triangle enlarged by `tolerance` across each of its three edges.
+  static bool contains(const Vector<2>& xi, double tolerance) {
+    return xi[0] >= -tolerance && xi[1] >= -tolerance && xi[0] + xi[1] <= 1.0 + tolerance;
+  }
+  static ClampedCoords<2> clampToDomain(const Vector<2>& xi) { return clampToTriangle(xi); }
+  static Vector<2> center() { return {1.0 / 3.0, 1.0 / 3.0}; }
+  static Vector<2> cornerCoords(int i) { return {i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0}; }
+};
+
+/// 2-node straight master segment in 2D (plane strain, the edges of Quad4 and Tri3): H_1 = (1 − ξ)/2,
+/// H_2 = (1 + ξ)/2. Normal convention: SegmentFacet's (the master body on the left of node 1 → node 2).
+struct Line2Facet : SegmentFacet<2> {
+  static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return {0.5 * (1.0 - xi[0]), 0.5 * (1.0 + xi[0])}; }
+  static First shapeDerivatives(const SurfaceCoords& /*xi*/) { return asFirst({-0.5, 0.5}); }
+  /// A straight segment has H_i,11 = 0: no curvature, b̄_11 = 0.
+  static Second shapeSecondDerivatives(const SurfaceCoords& /*xi*/) { return {}; }
+
+  static constexpr std::array<std::array<int, 2>, 1> boundarySegments() { return {{{0, 1}}}; }
   static constexpr int kPieces = 1;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1}}}; }
 
-  static SurfaceCoords center() { return {0.0}; }
   static SurfaceCoords nodeCoords(int i) { return {i == 0 ? -1.0 : 1.0}; }
   static constexpr bool kAffine = true;
-  static constexpr bool kCubic = false;
   static std::array<SurfaceRulePoint<1>, 2> quadrature() { return gaussRuleOnSquare<1, 2>(); }
-  static constexpr bool kSubFacetTributary = false;
 };
 
 /// 4-node bilinear master face in 3D: (ξ^1, ξ^2) ∈ [−1, 1]², nodes at (−1,−1), (1,−1), (1,1), (−1,1),
-/// H_i = (1 + ξ_i ξ)(1 + η_i η)/4 (the H_1..H_4 of eq. (26)).
-///
-/// Normal convention: eq. (5), n̄ = ā_1 × ā_2 / ‖ā_1 × ā_2‖, which points out of the master body when the
-/// face's nodes are ordered counter-clockwise seen from outside (right-hand rule), the 3D analogue of the
-/// Line2Facet convention.
-struct Quad4Facet {
-  static constexpr int kSpaceDim = 3;
-  static constexpr int kSurfaceDim = 2;
-  static constexpr int kNodes = 4;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-
+/// H_i = (1 + ξ_i ξ)(1 + η_i η)/4 (the H_1..H_4 of eq. (26)). Normal convention: FaceFacet's.
+struct Quad4Facet : SquareFaceFacet<4> {
   static constexpr std::array<double, 4> kNodeXi{-1.0, 1.0, 1.0, -1.0};
   static constexpr std::array<double, 4> kNodeEta{-1.0, -1.0, 1.0, 1.0};
 
@@ -199,8 +253,8 @@ struct Quad4Facet {
     return h;
   }
 
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
-    Matrix<kNodes, kSurfaceDim> d;
+  static First shapeDerivatives(const SurfaceCoords& xi) {
+    First d;
     for (int i = 0; i < kNodes; ++i) {
       d(i, 0) = 0.25 * kNodeXi[i] * (1.0 + kNodeEta[i] * xi[1]);
       d(i, 1) = 0.25 * kNodeEta[i] * (1.0 + kNodeXi[i] * xi[0]);
@@ -209,8 +263,8 @@ struct Quad4Facet {
   }
 
   /// Bilinear: only the mixed derivative H_i,12 = ξ_i η_i / 4 is non-zero (a warped face has b̄_12 ≠ 0).
-  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
-    std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> d{};
+  static Second shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
+    Second d{};
     for (int i = 0; i < kNodes; ++i) {
       d[i](0, 1) = 0.25 * kNodeXi[i] * kNodeEta[i];
       d[i](1, 0) = d[i](0, 1);
@@ -218,27 +272,13 @@ struct Quad4Facet {
     return d;
   }
 
-  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return cross(a[0], a[1]); }
-
-  static Point unitNormal(const std::array<Point, kSurfaceDim>& a) {
-    const Point n = areaNormal(a);
-    return scaled(1.0 / norm(n), n);
-  }
-
-  static bool contains(const SurfaceCoords& xi, double tolerance) {
-    return std::abs(xi[0]) <= 1.0 + tolerance && std::abs(xi[1]) <= 1.0 + tolerance;
-  }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
   static constexpr std::array<std::array<int, 2>, 4> boundarySegments() { return {{{0, 1}, {1, 2}, {2, 3}, {3, 0}}}; }
 
-  static SurfaceCoords center() { return {0.0, 0.0}; }
   static SurfaceCoords nodeCoords(int i) { return {kNodeXi[i], kNodeEta[i]}; }
   /// A warped face is curved (b̄_12 ≠ 0), and even a flat non-parallelogram face has x̄,12 ≠ 0.
   static constexpr bool kAffine = false;
-  static constexpr bool kCubic = false;
   /// 2 × 2 Gauss points, ξ^1 outer, ξ^2 inner (the order the 3D tributary areas have always been summed in).
   static std::array<SurfaceRulePoint<2>, 4> quadrature() { return gaussRuleOnSquare<2, 2>(); }
-  static constexpr bool kSubFacetTributary = false;
 
   /// Two triangles split along the diagonal node 0 – node 2, each counter-clockwise seen from outside.
   static constexpr int kPieces = 2;
@@ -256,112 +296,56 @@ struct QuadraticLagrange1D {
   static constexpr std::array<double, 3> second(double /*s*/) { return {1.0, 1.0, -2.0}; }
 };
 
-/// The normal of a facet of a 3D body, eq. (5): n̄ = ā_1 × ā_2 / ‖ā_1 × ā_2‖, out of the master body when
-/// the facet's corners run counter-clockwise seen from outside (as Quad4Facet).
-struct FaceNormal {
-  static Vector<3> areaNormal(const std::array<Vector<3>, 2>& a) { return cross(a[0], a[1]); }
-  static Vector<3> unitNormal(const std::array<Vector<3>, 2>& a) {
-    const Vector<3> n = areaNormal(a);
-    return scaled(1.0 / norm(n), n);
-  }
-};
-
 /// 3-node quadratic master segment in 2D (edges of Tri6, Q8, Q9): ξ ∈ [−1, 1], nodes at −1, +1 (the
 /// corners) and 0 (the mid-edge node), H_i the quadratic Lagrange polynomials. Normal convention as
 /// Line2Facet (the master body on the left of the direction node 1 → node 2). A curved segment: b̄_11 ≠ 0.
-struct Line3Facet {
-  static constexpr int kSpaceDim = 2;
-  static constexpr int kSurfaceDim = 1;
-  static constexpr int kNodes = 3;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-
+struct Line3Facet : SegmentFacet<3> {
   static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return QuadraticLagrange1D::values(xi[0]); }
+  static First shapeDerivatives(const SurfaceCoords& xi) { return asFirst(QuadraticLagrange1D::first(xi[0])); }
+  static Second shapeSecondDerivatives(const SurfaceCoords& xi) { return asSecond(QuadraticLagrange1D::second(xi[0])); }
 
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
-    Matrix<kNodes, kSurfaceDim> d;
-    d.entries = QuadraticLagrange1D::first(xi[0]);
-    return d;
-  }
-
-  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& xi) {
-    const auto h = QuadraticLagrange1D::second(xi[0]);
-    std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> d{};
-    for (int i = 0; i < kNodes; ++i) d[i](0, 0) = h[i];
-    return d;
-  }
-
-  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::areaNormal(a); }
-  static Point unitNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::unitNormal(a); }
-  static bool contains(const SurfaceCoords& xi, double tolerance) { return Line2Facet::contains(xi, tolerance); }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
   static constexpr std::array<std::array<int, 2>, 2> boundarySegments() { return {{{0, 2}, {2, 1}}}; }
 
   /// The two halves, corner → mid-edge node → corner.
   static constexpr int kPieces = 2;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 2}, {2, 1}}}; }
 
-  static SurfaceCoords center() { return {0.0}; }
   static SurfaceCoords nodeCoords(int i) { return {i == 0 ? -1.0 : i == 1 ? 1.0 : 0.0}; }
   static constexpr bool kAffine = false;
-  static constexpr bool kCubic = false;
   /// 3 Gauss points: ∫ H_i ds and ∫ H_i 2π r ds exact on a straight edge with a centred mid-edge node. There
   /// ∫ H_i ds = (1/6, 1/6, 2/3) l, all positive, and a uniform gap gives the consistent load of a uniform
   /// pressure: the slave weights are these.
   static std::array<SurfaceRulePoint<1>, 3> quadrature() { return gaussRuleOnSquare<1, 3>(); }
-  static constexpr bool kSubFacetTributary = false;
 };
 
-/// 3-node flat master face in 3D (Tet4, Wedge6 faces): the unit triangle ξ^1, ξ^2 ≥ 0, ξ^1 + ξ^2 ≤ 1, nodes
-/// at (0,0), (1,0), (0,1), H = (1 − ξ^1 − ξ^2, ξ^1, ξ^2): x̄ is affine, the projection exact in one step.
-/// Normal convention as Quad4Facet (counter-clockwise seen from outside).
-struct Tri3Facet : FaceNormal {
-  static constexpr int kSpaceDim = 3;
-  static constexpr int kSurfaceDim = 2;
-  static constexpr int kNodes = 3;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-
+/// 3-node flat master face in 3D (Tet4, Wedge6 faces): the unit triangle, nodes at its corners,
+/// H = (1 − ξ^1 − ξ^2, ξ^1, ξ^2): x̄ is affine, the projection exact in one step. Normal convention as
+/// Quad4Facet (counter-clockwise seen from outside).
+struct Tri3Facet : TriangleFaceFacet<3> {
   static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return {1.0 - xi[0] - xi[1], xi[0], xi[1]}; }
 
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& /*xi*/) {
-    Matrix<kNodes, kSurfaceDim> d;
+  static First shapeDerivatives(const SurfaceCoords& /*xi*/) {
+    First d;
     d.entries = {-1.0, -1.0, 1.0, 0.0, 0.0, 1.0};
     return d;
   }
 
-  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
-    return {};
-  }
+  static Second shapeSecondDerivatives(const SurfaceCoords& /*xi*/) { return {}; }
 
-  /// The unit triangle enlarged by `tolerance` across each of its three edges.
-  static bool contains(const SurfaceCoords& xi, double tolerance) {
-    return xi[0] >= -tolerance && xi[1] >= -tolerance && xi[0] + xi[1] <= 1.0 + tolerance;
-  }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToTriangle(xi); }
   static constexpr std::array<std::array<int, 2>, 3> boundarySegments() { return {{{0, 1}, {1, 2}, {2, 0}}}; }
 
   static constexpr int kPieces = 1;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{0, 1, 2}}}; }
 
-  static SurfaceCoords center() { return {1.0 / 3.0, 1.0 / 3.0}; }
-  static SurfaceCoords nodeCoords(int i) { return {i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0}; }
+  static SurfaceCoords nodeCoords(int i) { return cornerCoords(i); }
   static constexpr bool kAffine = true;
-  static constexpr bool kCubic = false;
   static std::array<SurfaceRulePoint<2>, 3> quadrature() { return triangleRule3(); }
-  static constexpr bool kSubFacetTributary = false;
 };
 
 /// 6-node quadratic master face in 3D (Tet10, Wedge15 faces): the unit triangle of Tri3Facet, corners 0–2,
 /// mid-edge nodes 3 (edge 0–1), 4 (1–2), 5 (2–0). With the area coordinates L = (1 − ξ^1 − ξ^2, ξ^1, ξ^2):
 /// H_corner = L_i (2 L_i − 1), H_mid = 4 L_a L_b. Total degree 2: H_i,αβ constant, H_i,αβγ = 0.
-struct Tri6Facet : FaceNormal {
-  static constexpr int kSpaceDim = 3;
-  static constexpr int kSurfaceDim = 2;
-  static constexpr int kNodes = 6;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-
+struct Tri6Facet : TriangleFaceFacet<6> {
   /// The corners of each node: a corner twice, a mid-edge node its edge's two ends.
   static constexpr std::array<std::array<int, 2>, kNodes> kEnds{{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}}};
   /// ∂L_a/∂ξ^α (row a).
@@ -377,9 +361,9 @@ struct Tri6Facet : FaceNormal {
     return h;
   }
 
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+  static First shapeDerivatives(const SurfaceCoords& xi) {
     const Vector<3> L = areaCoordinates(xi);
-    Matrix<kNodes, kSurfaceDim> d;
+    First d;
     for (int al = 0; al < kSurfaceDim; ++al) {
       for (int i = 0; i < 3; ++i) d(i, al) = (4.0 * L[i] - 1.0) * kDL[i][al];
       for (int i = 3; i < kNodes; ++i) {
@@ -391,8 +375,8 @@ struct Tri6Facet : FaceNormal {
   }
 
   /// H_i,αβ = 4 (L_a,α L_b,β + L_a,β L_b,α)/(1 + [a = b]): 4 L_i,α L_i,β at a corner.
-  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
-    std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> d{};
+  static Second shapeSecondDerivatives(const SurfaceCoords& /*xi*/) {
+    Second d{};
     for (int i = 0; i < kNodes; ++i) {
       const int a = kEnds[i][0], b = kEnds[i][1];
       const double scale = a == b ? 2.0 : 4.0;
@@ -403,8 +387,6 @@ struct Tri6Facet : FaceNormal {
     return d;
   }
 
-  static bool contains(const SurfaceCoords& xi, double tolerance) { return Tri3Facet::contains(xi, tolerance); }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToTriangle(xi); }
   static constexpr std::array<std::array<int, 2>, 6> boundarySegments() { return {{{0, 3}, {3, 1}, {1, 4}, {4, 2}, {2, 5}, {5, 0}}}; }
 
   /// Four triangles: one at each corner and the middle one of the mid-edge nodes, counter-clockwise.
@@ -413,13 +395,11 @@ struct Tri6Facet : FaceNormal {
     return {{{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}};
   }
 
-  static SurfaceCoords center() { return Tri3Facet::center(); }
   static SurfaceCoords nodeCoords(int i) {
-    const SurfaceCoords a = Tri3Facet::nodeCoords(kEnds[i][0]), b = Tri3Facet::nodeCoords(kEnds[i][1]);
+    const SurfaceCoords a = cornerCoords(kEnds[i][0]), b = cornerCoords(kEnds[i][1]);
     return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])};
   }
   static constexpr bool kAffine = false;
-  static constexpr bool kCubic = false;
   /// Exact for ∫ H_i dA on a flat face with straight edges, where it is (0, 0, 0, 1/3, 1/3, 1/3) A: no
   /// weight at the corners. The slave weights come from the four sub-triangles instead (A/12 at a corner,
   /// A/4 at a mid-edge node on such a face).
@@ -434,15 +414,7 @@ struct Tri6Facet : FaceNormal {
 /// 4 (edge 0–1), 5 (1–2), 6 (2–3), 7 (3–0), centre 8; H_i = l_a(ξ^1) l_b(η) with the quadratic Lagrange
 /// polynomials of QuadraticLagrange1D (a, b index their nodes −1, +1, 0). Its ξ²η, ξη², ξ²η² terms give
 /// non-zero H_i,112, H_i,122 (kCubic).
-struct Quad9Facet : FaceNormal {
-  static constexpr int kSpaceDim = 3;
-  static constexpr int kSurfaceDim = 2;
-  static constexpr int kNodes = 9;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-  using Second = std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes>;
-  using Third = std::array<std::array<Matrix<kSurfaceDim, kSurfaceDim>, kSurfaceDim>, kNodes>;
-
+struct Quad9Facet : SquareFaceFacet<9> {
   /// The 1D node index (0: −1, 1: +1, 2: 0) of each node along ξ^1 and along ξ^2.
   static constexpr std::array<int, kNodes> kA{0, 1, 1, 0, 2, 1, 2, 0, 2};
   static constexpr std::array<int, kNodes> kB{0, 0, 1, 1, 0, 2, 1, 2, 2};
@@ -454,10 +426,10 @@ struct Quad9Facet : FaceNormal {
     return h;
   }
 
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+  static First shapeDerivatives(const SurfaceCoords& xi) {
     const auto u = QuadraticLagrange1D::values(xi[0]), v = QuadraticLagrange1D::values(xi[1]);
     const auto du = QuadraticLagrange1D::first(xi[0]), dv = QuadraticLagrange1D::first(xi[1]);
-    Matrix<kNodes, kSurfaceDim> d;
+    First d;
     for (int i = 0; i < kNodes; ++i) {
       d(i, 0) = du[kA[i]] * v[kB[i]];
       d(i, 1) = u[kA[i]] * dv[kB[i]];
@@ -491,8 +463,6 @@ struct Quad9Facet : FaceNormal {
     return d;
   }
 
-  static bool contains(const SurfaceCoords& xi, double tolerance) { return Quad4Facet::contains(xi, tolerance); }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
   static constexpr std::array<std::array<int, 2>, 8> boundarySegments() { return {{{0, 4}, {4, 1}, {1, 5}, {5, 2}, {2, 6}, {6, 3}, {3, 7}, {7, 0}}}; }
 
   /// Four bilinear quarters, each as two triangles, counter-clockwise seen from outside.
@@ -501,7 +471,6 @@ struct Quad9Facet : FaceNormal {
     return {{{0, 4, 8}, {0, 8, 7}, {4, 1, 5}, {4, 5, 8}, {8, 5, 2}, {8, 2, 6}, {7, 8, 6}, {7, 6, 3}}};
   }
 
-  static SurfaceCoords center() { return {0.0, 0.0}; }
   static SurfaceCoords nodeCoords(int i) {
     constexpr std::array<double, 3> at{-1.0, 1.0, 0.0};
     return {at[kA[i]], at[kB[i]]};
@@ -511,7 +480,6 @@ struct Quad9Facet : FaceNormal {
   /// 3 × 3 Gauss points: on a parallelogram ∫ H_i dA = (1/36, 1/9, 4/9) A at the corners, mid-edge nodes and
   /// centre, all positive, the consistent load of a uniform pressure: the slave weights are these.
   static std::array<SurfaceRulePoint<2>, 9> quadrature() { return gaussRuleOnSquare<2, 3>(); }
-  static constexpr bool kSubFacetTributary = false;
 };
 
 /// 8-node serendipity master face in 3D (Hex20, Wedge15 faces): Quad9Facet's nodes without the centre. Its
@@ -519,15 +487,7 @@ struct Quad9Facet : FaceNormal {
 /// corner and +1/2 at a mid-edge node (which removes every ξ²η² term and keeps H_i(x_j) = δ_ij):
 /// H_corner = (1 + ξ_i ξ)(1 + η_i η)(ξ_i ξ + η_i η − 1)/4, H_mid = (1 − ξ²)(1 + η_i η)/2 or (1 + ξ_i ξ)(1 − η²)/2.
 /// The ξ²η and ξη² terms give non-zero H_i,112, H_i,122 (kCubic).
-struct Quad8Facet : FaceNormal {
-  static constexpr int kSpaceDim = 3;
-  static constexpr int kSurfaceDim = 2;
-  static constexpr int kNodes = 8;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-  using Second = std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes>;
-  using Third = std::array<std::array<Matrix<kSurfaceDim, kSurfaceDim>, kSurfaceDim>, kNodes>;
-
+struct Quad8Facet : SquareFaceFacet<8> {
   static constexpr double centreShare(int i) { return i < 4 ? -0.25 : 0.5; }
 
   static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) {
@@ -537,9 +497,9 @@ struct Quad8Facet : FaceNormal {
     return h;
   }
 
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
+  static First shapeDerivatives(const SurfaceCoords& xi) {
     const auto d9 = Quad9Facet::shapeDerivatives(xi);
-    Matrix<kNodes, kSurfaceDim> d;
+    First d;
     for (int i = 0; i < kNodes; ++i)
       for (int al = 0; al < kSurfaceDim; ++al) d(i, al) = d9(i, al) + centreShare(i) * d9(8, al);
     return d;
@@ -566,9 +526,7 @@ struct Quad8Facet : FaceNormal {
     return d;
   }
 
-  static bool contains(const SurfaceCoords& xi, double tolerance) { return Quad4Facet::contains(xi, tolerance); }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
-  static constexpr std::array<std::array<int, 2>, 8> boundarySegments() { return {{{0, 4}, {4, 1}, {1, 5}, {5, 2}, {2, 6}, {6, 3}, {3, 7}, {7, 0}}}; }
+  static constexpr std::array<std::array<int, 2>, 8> boundarySegments() { return Quad9Facet::boundarySegments(); }
 
   /// A triangle at each corner (corner and its two mid-edge nodes) and the middle quadrilateral of the
   /// mid-edge nodes as two triangles, counter-clockwise seen from outside.
@@ -577,7 +535,6 @@ struct Quad8Facet : FaceNormal {
     return {{{0, 4, 7}, {4, 1, 5}, {5, 2, 6}, {7, 6, 3}, {4, 5, 6}, {4, 6, 7}}};
   }
 
-  static SurfaceCoords center() { return {0.0, 0.0}; }
   static SurfaceCoords nodeCoords(int i) { return Quad9Facet::nodeCoords(i); }
   static constexpr bool kAffine = false;
   static constexpr bool kCubic = true;

@@ -27,15 +27,9 @@ namespace contessa::contact {
 ///   x̄(s) = h00 x_a + h01 x_b + h10 m_a + h11 m_b,   m_a = (x_b − x_p)/2,  m_b = (x_n − x_a)/2,
 /// with the cubic Hermite basis h00 = 2s³ − 3s² + 1, h10 = s³ − 2s² + s, h01 = −2s³ + 3s², h11 = s³ − s²,
 /// i.e. H_p = −h10/2, H_a = h00 − h11/2, H_b = h01 + h10/2, H_n = h11/2 (Σ H_i = 1). dx̄/ds at x_a is m_a
-/// on this segment and on the previous one alike: C¹ across every interior node. Normal convention as
-/// Line2Facet (the master body on the left of x_a → x_b).
-struct HermiteLine4Facet {
-  static constexpr int kSpaceDim = 2;
-  static constexpr int kSurfaceDim = 1;
-  static constexpr int kNodes = 4;
-  using Point = Vector<kSpaceDim>;
-  using SurfaceCoords = Vector<kSurfaceDim>;
-
+/// on this segment and on the previous one alike: C¹ across every interior node. Normal convention
+/// SegmentFacet's (the master body on the left of x_a → x_b).
+struct HermiteLine4Facet : SegmentFacet<4> {
   /// H_i as the combination of the Hermite basis (h00, h10, h01, h11) above.
   static constexpr std::array<std::array<double, 4>, kNodes> kBasis{{{0.0, -0.5, 0.0, 0.0},
                                                                     {1.0, 0.0, 0.0, -0.5},
@@ -60,47 +54,23 @@ struct HermiteLine4Facet {
   }
 
   static Vector<kNodes> shapeFunctions(const SurfaceCoords& xi) { return derivative(xi[0], 0); }
-
-  static Matrix<kNodes, kSurfaceDim> shapeDerivatives(const SurfaceCoords& xi) {
-    Matrix<kNodes, kSurfaceDim> d;
-    d.entries = derivative(xi[0], 1);
-    return d;
-  }
-
-  static std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> shapeSecondDerivatives(const SurfaceCoords& xi) {
-    const auto h = derivative(xi[0], 2);
-    std::array<Matrix<kSurfaceDim, kSurfaceDim>, kNodes> d{};
-    for (int i = 0; i < kNodes; ++i) d[i](0, 0) = h[i];
-    return d;
-  }
-
+  static First shapeDerivatives(const SurfaceCoords& xi) { return asFirst(derivative(xi[0], 1)); }
+  static Second shapeSecondDerivatives(const SurfaceCoords& xi) { return asSecond(derivative(xi[0], 2)); }
   /// Cubic in ξ: constant third derivatives (the element's second variation of ξ̄ uses them, kCubic).
-  using Third = std::array<std::array<Matrix<kSurfaceDim, kSurfaceDim>, kSurfaceDim>, kNodes>;
-  static Third shapeThirdDerivatives(const SurfaceCoords& xi) {
-    const auto h = derivative(xi[0], 3);
-    Third d{};
-    for (int i = 0; i < kNodes; ++i) d[i][0](0, 0) = h[i];
-    return d;
-  }
+  static Third shapeThirdDerivatives(const SurfaceCoords& xi) { return asThird(derivative(xi[0], 3)); }
 
-  static Point areaNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::areaNormal(a); }
-  static Point unitNormal(const std::array<Point, kSurfaceDim>& a) { return Line2Facet::unitNormal(a); }
-  static bool contains(const SurfaceCoords& xi, double tolerance) { return Line2Facet::contains(xi, tolerance); }
-  static ClampedCoords<kSurfaceDim> clampToDomain(const SurfaceCoords& xi) { return clampToSquare<kSurfaceDim>(xi); }
   /// The segment itself, x_a – x_b (the neighbours are not on its boundary).
   static constexpr std::array<std::array<int, 2>, 1> boundarySegments() { return {{{1, 2}}}; }
   /// Its chord: the projection's start points, the swept crossing test (SmoothedMaster.cpp).
   static constexpr int kPieces = 1;
   static constexpr std::array<std::array<int, kSpaceDim>, kPieces> flatPieces() { return {{{1, 2}}}; }
 
-  static SurfaceCoords center() { return {0.0}; }
   /// The neighbours sit one parameter length beyond the ends (nominally: the curve does not pass them).
   static SurfaceCoords nodeCoords(int i) { return {2.0 * i - 3.0}; }
   static constexpr bool kAffine = false;
   static constexpr bool kCubic = true;
   /// 3 Gauss points (a master facet only; slave sides are never smoothed).
   static std::array<SurfaceRulePoint<1>, 3> quadrature() { return gaussRuleOnSquare<1, 3>(); }
-  static constexpr bool kSubFacetTributary = false;
 };
 
 /// Local index (in the facet's node order) of end `end` (0: ξ = −1, 1: ξ = +1) of a 2D master segment:

@@ -38,15 +38,22 @@ const std::string& nameOf(const std::vector<std::string>& names, Enum value) {
   return names.at(static_cast<std::size_t>(value));
 }
 
+/// Declares a choice among `names` (listed in the order of Enum's values) whose default is `value`.
+template <class Enum>
+void setEnumChoice(ParameterList& step, const char* key, const std::vector<std::string>& names, Enum value,
+                   const std::string& doc) {
+  deck::setChoice(step, key, nameOf(names, value), names, doc);
+}
+
 }  // namespace
 
 void ContactBetaStepControl::addParameters(ParameterList& step) {
   const ContactBetaSettings d;  // the defaults
   deck::setPositiveInt(step, kContactsPerStep, d.beta.contactsPerStep,
                        "Contact Beta: N_c, the number of slave nodes allowed to come into contact per increment (eq. 13)");
-  deck::setChoice(step, kMode, nameOf(modeNames(), d.mode), modeNames(),
-                  "Contact Beta: Restart = the paper's Table 1 (β at the first Newton iteration, one restart); "
-                  "Predictor = β from the predicted state before the solve (no restart)");
+  setEnumChoice(step, kMode, modeNames(), d.mode,
+                "Contact Beta: Restart = the paper's Table 1 (β at the first Newton iteration, one restart); "
+                "Predictor = β from the predicted state before the solve (no restart)");
   deck::setBounded(step, kMaxGrowth, d.beta.maxGrowth, 1.0, 1e3, "Contact Beta: largest β (growth of Δλ per increment)");
   deck::setBounded(step, kMaxShrink, d.beta.maxShrink, 1e-6, 1.0, "Contact Beta: smallest β (shrink of Δλ per increment)");
   deck::setBounded(step, kRestartTolerance, d.restartTolerance, 0.0, 1.0,
@@ -55,17 +62,15 @@ void ContactBetaStepControl::addParameters(ParameterList& step) {
                    "stands when it ends between the predicted N_c-th and next event (docs/theory-load-stepping.md §11)");
   deck::setBounded(step, kNextContactFraction, d.beta.nextContactFraction, 0.0, 0.999,
                    "Contact Beta: β between β^{N_c} (0 = eq. 13 as printed) and β^{N_c+1} (closing N_c nodes, not N_c + 1)");
-  deck::setChoice(step, kCountedEvents, nameOf(continuation::countedEventsNames(), d.counted),
-                  continuation::countedEventsNames(),
-                  "Contact Beta: the status changes limited to N_c per increment (history column new_events): "
-                  "Closures (the paper) or All Status Changes (closures, openings, stick/slip changes, slip reversals)");
+  setEnumChoice(step, kCountedEvents, continuation::countedEventsNames(), d.counted,
+                "Contact Beta: the status changes limited to N_c per increment (history column new_events): "
+                "Closures (the paper) or All Status Changes (closures, openings, stick/slip changes, slip reversals)");
   step.set(kLearnEventRate, d.learnEventRate,
            "Contact Beta: correct the β^k of eq. (11) by the ratio of actual to predicted event fractions learned "
            "from the last increments (not with Next Contact Fraction = 0: eq. 13 as printed)");
-  deck::setChoice(step, kGrowthWithoutEvents, nameOf(continuation::quietGrowthNames(), d.quietGrowth),
-                  continuation::quietGrowthNames(),
-                  "Contact Beta: how the step grows while at most N_c events lie ahead: to Max Growth Factor, or by "
-                  "the Newton iterations of the last increment (towards Target Newton Iterations)");
+  setEnumChoice(step, kGrowthWithoutEvents, continuation::quietGrowthNames(), d.quietGrowth,
+                "Contact Beta: how the step grows while at most N_c events lie ahead: to Max Growth Factor, or by "
+                "the Newton iterations of the last increment (towards Target Newton Iterations)");
   step.set(kMaxCorrections, d.maxCorrections,
            "Contact Beta (f > 0): beyond the paper's one restart, how often per increment a restarted step with β "
            "far from 1 is checked again at its first iterate, and how often a converged increment with other than "

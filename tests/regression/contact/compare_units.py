@@ -8,18 +8,12 @@ units: every row's reaction_* and contact_force_* columns scaled by F, max_penet
 the counts (active_contacts, stick, slip, new_contacts) and lambda equal; |a s - b| <= rtol max(|a s|, |b|)
 + 1e-10 of the largest value of any column of that kind (the round-off of entries that are 0 in exact
 arithmetic, e.g. a symmetry cut's tangential reaction: the solves stop at 1e-9 of the forces)."""
-import argparse
-import csv
 import sys
 
-parser = argparse.ArgumentParser()
-parser.add_argument("a")
-parser.add_argument("b")
-parser.add_argument("--length", type=float, required=True)
-parser.add_argument("--force", type=float, required=True)
-parser.add_argument("--rtol", type=float, default=1e-8)
-args = parser.parse_args()
-rows_a, rows_b = list(csv.DictReader(open(args.a))), list(csv.DictReader(open(args.b)))
+import contact_results as cr
+
+args, rows_a, rows_b = cr.two_histories("a", "b", required=[("--length", float), ("--force", float)],
+                                        defaults=[("--rtol", float, 1e-8)])
 if len(rows_a) != len(rows_b) or not rows_a:
     sys.exit(f"FAIL: {len(rows_a)} rows against {len(rows_b)}")
 

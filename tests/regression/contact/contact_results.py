@@ -58,6 +58,21 @@ def required_options(positional, texts=(), numbers=(), pairs=()):
     return parser.parse_args()
 
 
+def two_histories(first, second, required=(), defaults=()):
+    """A comparison script's command line and inputs: the history CSVs `first` and `second` (positional),
+    the options `required` as (name, type) that every call gives and `defaults` as (name, type, default).
+    Returns the parsed arguments and the two histories as lists of rows (dicts of the CSV's strings)."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument(first)
+    parser.add_argument(second)
+    for name, kind in required:
+        parser.add_argument(name, type=kind, required=True)
+    for name, kind, default in defaults:
+        parser.add_argument(name, type=kind, default=default)
+    args = parser.parse_args()
+    return args, list(csv.DictReader(open(getattr(args, first)))), list(csv.DictReader(open(getattr(args, second))))
+
+
 def hertz_parser(R, E, p0_rtol, a_rtol):
     """The Hertz checks' command line, EXO HISTORY and the body's radius, Young's modulus and Poisson's
     ratio (0.3), with the default tolerances on the peak pressure and on the fitted contact half-width or

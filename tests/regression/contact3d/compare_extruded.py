@@ -11,21 +11,14 @@ in the last place of a nodal position (1.4e-14 at 100 mm) moves it by about 1e-4
 round-off of that size in ANY run (the 2D run's own plate force and support reaction differ by up to
 1.1e-5 relative). The reaction is a sum of internal forces, with no such amplification: it compares the
 two discretisations to round-off."""
-import argparse
-import csv
+import os
 import sys
 
-parser = argparse.ArgumentParser()
-parser.add_argument("two")
-parser.add_argument("three")
-parser.add_argument("--thickness", type=float, required=True)
-parser.add_argument("--node-layers", type=int, required=True)
-parser.add_argument("--force-rtol", type=float, default=1e-4)
-parser.add_argument("--reaction-rtol", type=float, default=1e-9)
-args = parser.parse_args()
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact"))
+import contact_results as cr  # noqa: E402
 
-a = list(csv.DictReader(open(args.two)))
-b = list(csv.DictReader(open(args.three)))
+args, a, b = cr.two_histories("two", "three", required=[("--thickness", float), ("--node-layers", int)],
+                              defaults=[("--force-rtol", float, 1e-4), ("--reaction-rtol", float, 1e-9)])
 failures = []
 if len(a) != len(b):
     failures.append(f"{len(a)} rows in 2D, {len(b)} in 3D")

@@ -13,10 +13,6 @@
 
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
-using cc::ContactStatus;
-using cc::Vector;
 
 namespace {
 

@@ -11,11 +11,7 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
 using cc::ContactPoint;
-using cc::ContactStatus;
-using cc::Vector;
 
 namespace {
 
@@ -62,21 +58,18 @@ TEST(ContactPoint, VertexIn2DTangentMatchesCentralDifferences) {
 // 3D: a flat face and a warped one; the edge node 1 → node 2 and the vertex node 2.
 TEST(ContactPoint, EdgeAndVertexIn3DTangentMatchCentralDifferences) {
   using Facet = cc::Quad4Facet;
-  double worst = 0.0;
-  for (const Law& law : kLaws) {
-    const cc::NodeToFacetContact<Facet> element(law.parameters);
-    const auto committed = ct::committedHistory<2>(3, {0.8, 0.1}, {0.02, -0.01});
-    for (const auto& [name, face] : {std::pair{"flat", ct::kFlatFace}, std::pair{"warped", ct::kWarpedFace}}) {
-      // Past edge 1–2 (x = 2 on the flat face), below the surface.
-      const Vector<3> edgeSlave = cc::add(cc::add(face[1], cc::scaled(0.35, cc::subtract(face[2], face[1]))),
-                                          Vector<3>{0.03, 0.01, -0.04});
-      worst = std::max(worst, checkTangent(element, {edgeSlave, face}, committed, ContactPoint::edge(1, 2, -1.0),
-                                           std::string("3D edge / ") + name + " / " + law.name));
-      const Vector<3> vertexSlave = cc::add(face[2], Vector<3>{0.03, 0.02, -0.05});
-      worst = std::max(worst, checkTangent(element, {vertexSlave, face}, committed, ContactPoint::vertex(2, -1.0),
-                                           std::string("3D vertex / ") + name + " / " + law.name));
-    }
-  }
+  const double worst = ct::worstOverLawsAndFaces([](const Law& law, const auto& element, const auto& committed,
+                                                    const std::string& name, const auto& face) {
+    // Past edge 1–2 (x = 2 on the flat face), below the surface.
+    const Vector<3> edgeSlave = cc::add(cc::add(face[1], cc::scaled(0.35, cc::subtract(face[2], face[1]))),
+                                        Vector<3>{0.03, 0.01, -0.04});
+    const double edge = checkTangent(element, {edgeSlave, face}, committed, ContactPoint::edge(1, 2, -1.0),
+                                     "3D edge / " + name + " / " + law.name);
+    const Vector<3> vertexSlave = cc::add(face[2], Vector<3>{0.03, 0.02, -0.05});
+    const double vertex = checkTangent(element, {vertexSlave, face}, committed, ContactPoint::vertex(2, -1.0),
+                                       "3D vertex / " + name + " / " + law.name);
+    return std::max(edge, vertex);
+  });
   std::printf("[ FD       ] contact point: worst relative error %.2e\n", worst);
   // The edge point moves with the node along the edge: the gap is the distance to the edge's line.
   const cc::NodeToFacetContact<Facet> element(kLaws[0].parameters);

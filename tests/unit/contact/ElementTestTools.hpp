@@ -98,13 +98,31 @@ inline const Quad4Face kWarpedFace{{{0.0, 0.0, 0.0}, {2.0, 0.1, 0.4}, {2.2, 2.0,
 template <int S>
 ContactHistory<S> committedHistory(int facet, Vector<S> xi, Vector<S> traction,
                                    ContactStatus status = ContactStatus::Stick, double slip = 0.0) {
-  ContactHistory<S> h;
-  h.segment = facet;
-  h.xi = xi;
-  h.tangentialTraction = traction;
-  h.status = status;
-  h.accumulatedSlip = slip;
-  return h;
+  return {facet, xi, traction, status, slip};  // ContactHistory's members in their declared order
+}
+
+/// `check(law, element)` for each law of `laws` (anything with a `parameters` member) with its element on
+/// Facet, in order.
+template <class Facet, class Laws, class Check>
+void forEachLaw(const Laws& laws, Check check) {
+  for (const auto& law : laws) {
+    const NodeToFacetContact<Facet> element(law.parameters);
+    check(law, element);
+  }
+}
+
+/// The 3D tangent checks past a face's boundary: `check(law, element, committed, faceName, face)` for every
+/// law of kLaws on the flat and the warped face, from a committed stick state at ξ_n = (0.8, 0.1) on facet 3
+/// with t_n = (0.02, −0.01); the worst of what `check` returns (relative errors).
+template <class Check>
+double worstOverLawsAndFaces(Check check) {
+  double worst = 0.0;
+  const auto committed = committedHistory<2>(3, {0.8, 0.1}, {0.02, -0.01});
+  forEachLaw<Quad4Facet>(kLaws, [&](const Law& law, const NodeToFacetContact<Quad4Facet>& element) {
+    for (const auto& [name, face] : {std::pair{"flat", kFlatFace}, std::pair{"warped", kWarpedFace}})
+      worst = std::max(worst, check(law, element, committed, std::string(name), face));
+  });
+  return worst;
 }
 
 /// The laws of the slip-tolerance tangent checks: ε_T = μ|t_N|/(s L) with its ∂t_T/∂t_N term, stick
@@ -234,3 +252,10 @@ Vector<N> solve(Matrix<N, N> a, Vector<N> b) {
 }
 
 }  // namespace contessa::contact::testing
+
+// The names every element test writes with: cc for the contact package, ct for this fixture, and the
+// status and vector types each of them uses.
+namespace cc = contessa::contact;
+namespace ct = contessa::contact::testing;
+using cc::ContactStatus;
+using cc::Vector;

@@ -14,10 +14,6 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
-using cc::ContactStatus;
-using cc::Vector;
 
 namespace {
 
@@ -200,8 +196,7 @@ TYPED_TEST(FacetFamilies, ConsistentTangentMatchesCentralDifferences) {
   using Facet = TypeParam;
   constexpr int M = Facet::kSurfaceDim;
   double worst = 0.0;
-  for (const LawCase& law : kLaws) {
-    const cc::NodeToFacetContact<Facet> element(law.parameters);
+  ct::forEachLaw<Facet>(kLaws, [&](const LawCase& law, const cc::NodeToFacetContact<Facet>& element) {
     for (double warp : {0.0, 0.08}) {
       const auto facet = curvedFacet<Facet>(warp);
       for (const auto& xi : samplePoints<Facet>()) {
@@ -226,6 +221,6 @@ TYPED_TEST(FacetFamilies, ConsistentTangentMatchesCentralDifferences) {
         worst = std::max(worst, error);
       }
     }
-  }
+  });
   std::printf("[ FD       ] %d-node facet: worst ‖K − K_FD‖/‖K_FD‖ = %.2e\n", Facet::kNodes, worst);
 }

@@ -12,12 +12,8 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
 using cc::CommittedApproach;
 using cc::ContactPoint;
-using cc::ContactStatus;
-using cc::Vector;
 
 namespace {
 

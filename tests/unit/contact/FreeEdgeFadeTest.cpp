@@ -14,11 +14,7 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
 using cc::ContactPoint;
-using cc::ContactStatus;
-using cc::Vector;
 
 namespace {
 
@@ -99,30 +95,28 @@ TEST(FreeEdgeFade, TangentIn2DMatchesCentralDifferences) {
 // (both ξ clamped).
 TEST(FreeEdgeFade, TangentIn3DMatchesCentralDifferences) {
   using Facet = cc::Quad4Facet;
-  double worst = 0.0;
-  for (const Law& law : kLaws) {
-    const cc::NodeToFacetContact<Facet> element(law.parameters);
-    const auto committed = ct::committedHistory<2>(3, {0.8, 0.1}, {0.02, -0.01});
-    for (const auto& [name, face] : {std::pair{"flat", ct::kFlatFace}, std::pair{"warped", ct::kWarpedFace}}) {
-      for (const double s : {0.3, 0.7}) {
-        // On the face's extension past ξ = (1 + δ, 0.3) or the corner (1 + δ, 1 + δ), 0.04 behind it; δ such
-        // that the distance past the boundary is about s·reach (‖ā_α‖ ≈ 1 on both faces; the check reads the
-        // weight back from d).
-        for (const bool corner : {false, true}) {
-          const double delta = s * kReach * (corner ? 0.5 : 1.0);
-          const Vector<2> xi{1.0 + delta, corner ? 1.0 + delta : 0.3};
-          const auto at = cc::Projection<Facet>::evaluateAt({}, face, xi);
-          const Vector<3> slave = cc::add(at.position, cc::scaled(-0.04, at.normal));
-          const auto p = cc::Projection<Facet>().project(slave, face);
-          Vector<2> clamped = p.xi;
-          for (auto& c : clamped) c = std::clamp(c, -1.0, 1.0);
-          const double d = cc::norm(cc::subtract(p.position, cc::Projection<Facet>::evaluateAt({}, face, clamped).position));
-          worst = std::max(worst, checkFadedTangent(element, {slave, face}, committed, expectedWeight(d),
-                                                    std::string("3D ") + (corner ? "corner" : "edge") + " / " + name +
-                                                        " / s = " + std::to_string(s) + " / " + law.name));
-        }
+  const double worst = ct::worstOverLawsAndFaces([](const Law& law, const auto& element, const auto& committed,
+                                                    const std::string& name, const auto& face) {
+    double faceWorst = 0.0;
+    for (const double s : {0.3, 0.7}) {
+      // On the face's extension past ξ = (1 + δ, 0.3) or the corner (1 + δ, 1 + δ), 0.04 behind it; δ such
+      // that the distance past the boundary is about s·reach (‖ā_α‖ ≈ 1 on both faces; the check reads the
+      // weight back from d).
+      for (const bool corner : {false, true}) {
+        const double delta = s * kReach * (corner ? 0.5 : 1.0);
+        const Vector<2> xi{1.0 + delta, corner ? 1.0 + delta : 0.3};
+        const auto at = cc::Projection<Facet>::evaluateAt({}, face, xi);
+        const Vector<3> slave = cc::add(at.position, cc::scaled(-0.04, at.normal));
+        const auto p = cc::Projection<Facet>().project(slave, face);
+        Vector<2> clamped = p.xi;
+        for (auto& c : clamped) c = std::clamp(c, -1.0, 1.0);
+        const double d = cc::norm(cc::subtract(p.position, cc::Projection<Facet>::evaluateAt({}, face, clamped).position));
+        faceWorst = std::max(faceWorst, checkFadedTangent(element, {slave, face}, committed, expectedWeight(d),
+                                                          std::string("3D ") + (corner ? "corner" : "edge") + " / " + name +
+                                                              " / s = " + std::to_string(s) + " / " + law.name));
       }
     }
-  }
+    return faceWorst;
+  });
   std::printf("[ FD       ] free-edge fade 3D: worst relative error %.2e\n", worst);
 }

@@ -20,12 +20,8 @@
 #include <type_traits>
 #include <vector>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
 using cc::ContactPoint;
-using cc::ContactStatus;
 using cc::SelectionKind;
-using cc::Vector;
 
 namespace {
 
@@ -97,8 +93,7 @@ TYPED_TEST(NewFacetContact, FadedElementPastTheBoundaryMatchesCentralDifferences
   using Facet = TypeParam;
   constexpr int M = Facet::kSurfaceDim;
   double worst = 0.0;
-  for (const Law& law : kLaws) {
-    const cc::NodeToFacetContact<Facet> element(law.parameters);
+  ct::forEachLaw<Facet>(kLaws, [&](const Law& law, const cc::NodeToFacetContact<Facet>& element) {
     cc::ContactHistory<M> committed = ct::committedHistory<M>(3, {}, {});
     for (int a = 0; a < M; ++a) {
       committed.xi[a] = 0.3 + 0.05 * a;
@@ -120,7 +115,7 @@ TYPED_TEST(NewFacetContact, FadedElementPastTheBoundaryMatchesCentralDifferences
         worst = std::max(worst, ct::expectTangentAtPointClose(element, g, committed, point, what));
       }
     }
-  }
+  });
   std::printf("[ FD       ] %d-node facet past its boundary: worst relative error %.2e\n", Facet::kNodes, worst);
 }
 

@@ -13,10 +13,6 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
-using cc::ContactStatus;
-using cc::Vector;
 using Mat6 = cc::Matrix<6, 6>;
 using Vec6 = Vector<6>;
 using Element = cc::NodeToFacetContact<cc::Line2Facet>;

@@ -11,10 +11,6 @@
 #include <string>
 #include <vector>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
-using cc::ContactStatus;
-using cc::Vector;
 using Facet = cc::Quad4Facet;
 using Element = cc::NodeToFacetContact<Facet>;
 using Geometry = cc::NodeToFacetGeometry<Facet>;

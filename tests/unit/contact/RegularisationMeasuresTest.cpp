@@ -20,53 +20,56 @@ cc::ContactInterfaceSpec plate(double mx) {
 
 constexpr auto slave = ct::threeNodesOnXAxis;
 
-cc::RegularisationMeasures after(double mx, double lambda) {
-  const auto interface = cc::makeContactInterface(plate(mx), {1, 1, 1});
+// The measures `spec`'s interface commits at λ after a first commit at λ = 0, with a trial state beyond it
+// (λ = 0.9) rolled back: a trial state leaves no trace.
+cc::RegularisationMeasures after(const cc::ContactInterfaceSpec& spec, double lambda) {
+  const auto interface = cc::makeContactInterface(spec, {1, 1, 1});
   const auto sink = [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {};
   interface->evaluate(slave, 0.0, true, sink);
   interface->commit();
   interface->evaluate(slave, lambda, true, sink);
   interface->commit();
-  interface->evaluate(slave, 0.9, true, sink);  // a trial state that is rolled back leaves no trace
+  interface->evaluate(slave, 0.9, true, sink);
   interface->rollback();
   return interface->committedRegularisation();
+}
+
+// What the frictional plate's nodes report: the three maxima (to 1e-12), how many slip and whether the
+// elastic slip spoils the answer.
+struct Expected {
+  double penetration, elasticSlip, slip, slippingNodes;
+  bool elasticSlipSpoils;
+};
+
+void expectMeasures(const cc::RegularisationMeasures& m, const Expected& e) {
+  EXPECT_NEAR(m.penetration, e.penetration, 1e-12);
+  EXPECT_NEAR(m.elasticSlip, e.elasticSlip, 1e-12);
+  EXPECT_NEAR(m.slip, e.slip, 1e-12);
+  EXPECT_EQ(m.slippingNodes, e.slippingNodes);
+  EXPECT_EQ(cc::elasticSlipSpoils(m), e.elasticSlipSpoils);
 }
 
 }  // namespace
 
 TEST(RegularisationMeasures, StickingNodesReportTheirSpringStretch) {
   // λ = 0.51: 0.01 of penetration; the line moved 0.5 × 0.01 along x since it touched: all three stick
-  // with that relative motion as their elastic slip (t_T = ε_T × 0.005, ε_T = μ|t_N|/0.01).
-  const auto m = after(0.5, 0.51);
-  EXPECT_NEAR(m.penetration, 0.01, 1e-12);
-  EXPECT_NEAR(m.elasticSlip, 0.005, 1e-12);
-  EXPECT_NEAR(m.slip, 0.005, 1e-12);
-  EXPECT_EQ(m.slippingNodes, 0.0);
-  EXPECT_FALSE(cc::elasticSlipSpoils(m));  // no slip to compare with
+  // with that relative motion as their elastic slip (t_T = ε_T × 0.005, ε_T = μ|t_N|/0.01); no slip to
+  // compare it with, so it does not spoil.
+  expectMeasures(after(plate(0.5), 0.51), {0.01, 0.005, 0.005, 0.0, false});
 }
 
 TEST(RegularisationMeasures, SlippingNodesReportTheStickRadius) {
   // mx = 3: a relative motion of 0.03 since the touch, beyond the stick radius 0.01: all three slip, with
   // the elastic slip μ|t_N|/ε_T = 0.01 and a slip of 0.03 (a third: the run would warn).
-  const auto m = after(3.0, 0.51);
-  EXPECT_NEAR(m.penetration, 0.01, 1e-12);
-  EXPECT_NEAR(m.elasticSlip, 0.01, 1e-12);
-  EXPECT_NEAR(m.slip, 0.03, 1e-12);
-  EXPECT_EQ(m.slippingNodes, 3.0);
+  const auto m = after(plate(3.0), 0.51);
+  expectMeasures(m, {0.01, 0.01, 0.03, 3.0, true});
   EXPECT_NEAR(m.meanSlip(), 0.03, 1e-12);
-  EXPECT_TRUE(cc::elasticSlipSpoils(m));
 }
 
 TEST(RegularisationMeasures, FrictionlessInterfacesHaveNoElasticSlip) {
   auto spec = plate(3.0);
   spec.law.frictionCoefficient = 0.0;
-  const auto interface = cc::makeContactInterface(spec, {1, 1, 1});
-  const auto sink = [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {};
-  interface->evaluate(slave, 0.0, true, sink);
-  interface->commit();
-  interface->evaluate(slave, 0.52, true, sink);
-  interface->commit();
-  const auto m = interface->committedRegularisation();
+  const auto m = after(spec, 0.52);
   EXPECT_NEAR(m.penetration, 0.02, 1e-12);
   EXPECT_EQ(m.elasticSlip, 0.0);
   EXPECT_EQ(m.slippingNodes, 0.0);  // frictionless "slip" is free sliding, not measured slip

@@ -20,11 +20,7 @@
 #include <cstdio>
 #include <string>
 
-namespace cc = contessa::contact;
-namespace ct = contessa::contact::testing;
-using cc::ContactStatus;
 using cc::HermiteLine4Facet;
-using cc::Vector;
 using Point = HermiteLine4Facet::Point;
 using Nodes = std::array<Point, 4>;
 

@@ -19,26 +19,15 @@ constexpr double kTouching = 1e-10;  // the default BetaOptions::touchingGap
 const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-cb::GapChange gap(double start, double end, bool inContact = false) {
-  cb::GapChange g;
-  g.gapStart = start;
-  g.gapEnd = end;
-  g.inContactAtStart = inContact;
-  return g;
-}
+cb::GapChange gap(double start, double end, bool inContact = false) { return {start, end, inContact}; }
 
 /// A node with β^k = b exactly: g_t = b, g_{t+Δt} = b − 1 (closing by exactly 1 over Δt). b is a
 /// dyadic fraction in every use, so b − 1 and b / 1 are exact.
 cb::GapChange closingAt(double b) { return gap(b, b - 1.0); }
 
+/// BetaOptions' members in their declared order, the event-rate scale at its default.
 cb::BetaOptions options(int nc, double fraction, double maxGrowth = 2.0, double maxShrink = 0.05) {
-  cb::BetaOptions o;
-  o.contactsPerStep = nc;
-  o.nextContactFraction = fraction;
-  o.maxGrowth = maxGrowth;
-  o.maxShrink = maxShrink;
-  o.touchingGap = kTouching;
-  return o;
+  return {nc, maxGrowth, maxShrink, fraction, kTouching};
 }
 
 /// Four candidates out of order, β^k = 0.75, 0.25, 1.5, 0.5, and three nodes that are not candidates

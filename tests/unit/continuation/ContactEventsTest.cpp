@@ -21,15 +21,7 @@ constexpr double kTouching = 1e-10;
 
 cb::SlaveNodeIncrement node(double g0, double g1, NodeStatus s0, NodeStatus s1, double f0 = std::numeric_limits<double>::quiet_NaN(),
                             double f1 = std::numeric_limits<double>::quiet_NaN(), bool reversed = false) {
-  cb::SlaveNodeIncrement n;
-  n.committedGap = g0;
-  n.trialGap = g1;
-  n.committedStatus = s0;
-  n.trialStatus = s1;
-  n.committedIndicator = f0;
-  n.trialIndicator = f1;
-  n.slipReversed = reversed;
-  return n;
+  return {g0, g1, s0, s1, f0, f1, reversed};  // SlaveNodeIncrement's members in their declared order
 }
 
 double fraction(const cb::SlaveNodeIncrement& n, CountedEvents rule = CountedEvents::AllStatusChanges) {

@@ -8,11 +8,11 @@
 
 #include <cmath>
 
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
 
 #include "../model/ModelHarness.hpp"
+#include "TestDeck.hpp"
 
 namespace {
 
@@ -23,73 +23,30 @@ using Extract = Thyra::TpetraOperatorVectorExtraction<double, model::LO, model::
 // 4 × 3 block of Neo-Hookean Q4 Enhanced on a frictionless rigid base (y = 0, pushed up into the block by
 // its Motion); step "two" changes every value, A(t) = {0, 0.5, 0.9} at t = {0, 0.25, 1}.
 deck::ProblemDefinition makeProblem() {
-  auto p = Teuchos::getParametersFromXmlString(R"XML(
-<ParameterList name="Problem">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="Rectangle"/>
-    <Parameter name="Length X" type="double" value="4.0"/>
-    <Parameter name="Length Y" type="double" value="3.0"/>
-    <Parameter name="Elements X" type="int" value="4"/>
-    <Parameter name="Elements Y" type="int" value="3"/>
-  </ParameterList>
-  <ParameterList name="Blocks"><ParameterList name="block_1">
-    <Parameter name="Element" type="string" value="Q4 Enhanced"/>
-    <Parameter name="Material" type="string" value="rubber"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Materials"><ParameterList name="rubber">
-    <Parameter name="Model" type="string" value="Neo-Hookean"/>
-    <Parameter name="Young's Modulus" type="double" value="100.0"/>
-    <Parameter name="Poisson's Ratio" type="double" value="0.3"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Dirichlet Conditions"><ParameterList name="hold">
-    <Parameter name="Node Set" type="string" value="left"/>
-    <Parameter name="Component" type="string" value="x"/>
-    <Parameter name="Value" type="double" value="0.01"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Nodal Forces"><ParameterList name="pull">
-    <Parameter name="Node Set" type="string" value="right"/>
-    <Parameter name="Component" type="string" value="x"/>
-    <Parameter name="Total Force" type="double" value="1.0"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Loads">
-    <ParameterList name="push"><Parameter name="Type" type="string" value="Pressure"/>
-      <Parameter name="Side Set" type="string" value="right"/>
-      <Parameter name="Pressure" type="double" value="2.5"/></ParameterList>
-    <ParameterList name="drag"><Parameter name="Type" type="string" value="Traction"/>
-      <Parameter name="Side Set" type="string" value="top"/>
-      <Parameter name="Traction" type="Array(double)" value="{0.3, -1.1}"/></ParameterList>
-    <ParameterList name="weight"><Parameter name="Type" type="string" value="Body Force"/>
-      <Parameter name="Force Per Volume" type="Array(double)" value="{-0.2, 0.5}"/></ParameterList>
-  </ParameterList>
-  <ParameterList name="Contact"><ParameterList name="base">
-    <Parameter name="Slave Side Set" type="string" value="bottom"/>
-    <ParameterList name="Rigid Surface">
-      <Parameter name="Points" type="Array(double)" value="{5.0, 0.0, -1.0, 0.0}"/>
-      <Parameter name="Motion" type="Array(double)" value="{0.0, 0.02}"/>
-    </ParameterList>
-    <Parameter name="Normal Penalty" type="double" value="1e4"/>
-  </ParameterList></ParameterList>
-  <ParameterList name="Load Steps">
-    <ParameterList name="one"><Parameter name="Time Period" type="double" value="0.5"/></ParameterList>
-    <ParameterList name="two">
-      <ParameterList name="Dirichlet Conditions"><Parameter name="hold" type="double" value="-0.02"/></ParameterList>
-      <ParameterList name="Loads">
-        <Parameter name="push" type="double" value="4.0"/>
-        <Parameter name="pull" type="double" value="3.0"/>
-        <Parameter name="drag" type="Array(double)" value="{1.0, 0.5}"/>
-        <Parameter name="weight" type="Array(double)" value="{0.1, 0.0}"/>
-      </ParameterList>
-      <ParameterList name="Contact"><ParameterList name="base">
-        <Parameter name="Motion" type="Array(double)" value="{0.05, 0.03}"/>
-      </ParameterList></ParameterList>
-      <ParameterList name="Amplitude">
-        <Parameter name="Times" type="Array(double)" value="{0.0, 0.25, 1.0}"/>
-        <Parameter name="Values" type="Array(double)" value="{0.0, 0.5, 0.9}"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>)XML");
-  return deck::buildProblem(*p, "", test::everyRank());
+  using test::arrayOf;
+  auto p = test::newProblem();
+  test::setGrid(p->sublist("Mesh"), "Rectangle", {4, 3}, {4.0, 3.0});
+  test::addBlock(*p, "block_1", "Q4 Enhanced", "rubber");
+  test::addMaterial(*p, "rubber", "Neo-Hookean", 100.0, 0.3);
+  test::addDirichlet(*p, "hold", "left", "x").set("Value", 0.01);
+  test::addNodalForce(*p, "pull", "right", "x", 1.0);
+  auto& loads = p->sublist("Loads");
+  loads.sublist("push").set("Type", std::string("Pressure")).set("Side Set", std::string("right")).set("Pressure", 2.5);
+  loads.sublist("drag").set("Type", std::string("Traction")).set("Side Set", std::string("top"))
+      .set("Traction", arrayOf({0.3, -1.1}));
+  loads.sublist("weight").set("Type", std::string("Body Force")).set("Force Per Volume", arrayOf({-0.2, 0.5}));
+  auto& base = p->sublist("Contact").sublist("base");
+  base.set("Slave Side Set", std::string("bottom"));
+  base.sublist("Rigid Surface").set("Points", arrayOf({5.0, 0.0, -1.0, 0.0})).set("Motion", arrayOf({0.0, 0.02}));
+  base.set("Normal Penalty", 1e4);
+  auto& steps = p->sublist("Load Steps");
+  steps.sublist("one").set("Time Period", 0.5);
+  auto& two = steps.sublist("two");
+  two.sublist("Dirichlet Conditions").set("hold", -0.02);
+  two.sublist("Loads").set("push", 4.0).set("pull", 3.0).set("drag", arrayOf({1.0, 0.5})).set("weight", arrayOf({0.1, 0.0}));
+  two.sublist("Contact").sublist("base").set("Motion", arrayOf({0.05, 0.03}));
+  two.sublist("Amplitude").set("Times", arrayOf({0.0, 0.25, 1.0})).set("Values", arrayOf({0.0, 0.5, 0.9}));
+  return test::buildOn(*p, test::everyRank());
 }
 
 // A smooth displacement field (small, the bottom pressed into the base where the base rises).

@@ -10,20 +10,20 @@ namespace contessa::mesh::test {
 /// Two meshes equal field by field, coordinates bit for bit (MeshTestSupport.hpp).
 using test_support::expectSameMesh;
 
+/// EXPECT_EQ on each of the members `fields` of a and b (a failure names the member by its place in the list).
+template <class T, class... Fields>
+void expectSameMembers(const T& a, const T& b, Fields T::*... fields) {
+  int place = 0;
+  const auto check = [&](auto field) { EXPECT_EQ(a.*field, b.*field) << "member " << place++ << " of the list"; };
+  (check(fields), ...);
+}
+
 /// Two parts equal field by field (coordinates bit for bit).
 inline void expectSameParts(const DistributedMesh& a, const DistributedMesh& b) {
-  EXPECT_EQ(a.rank, b.rank);
-  EXPECT_EQ(a.numRanks, b.numRanks);
-  EXPECT_EQ(a.numGlobalNodes, b.numGlobalNodes);
-  EXPECT_EQ(a.numGlobalElements, b.numGlobalElements);
-  EXPECT_EQ(a.globalBlockSizes, b.globalBlockSizes);
-  EXPECT_EQ(a.globalNodeSetSizes, b.globalNodeSetSizes);
-  EXPECT_EQ(a.globalSideSetSizes, b.globalSideSetSizes);
-  EXPECT_EQ(a.part.globalNodes, b.part.globalNodes);
-  EXPECT_EQ(a.part.globalElements, b.part.globalElements);
-  EXPECT_EQ(a.part.sharedWith, b.part.sharedWith);
-  EXPECT_EQ(a.nodeOwner, b.nodeOwner);
-  EXPECT_EQ(a.sideSetPositions, b.sideSetPositions);
+  using D = DistributedMesh;
+  expectSameMembers(a, b, &D::rank, &D::numRanks, &D::numGlobalNodes, &D::numGlobalElements, &D::globalBlockSizes,
+                    &D::globalNodeSetSizes, &D::globalSideSetSizes, &D::nodeOwner, &D::sideSetPositions);
+  expectSameMembers(a.part, b.part, &MeshPiece::globalNodes, &MeshPiece::globalElements, &MeshPiece::sharedWith);
   expectSameMesh(a.local(), b.local());
 }
 

@@ -80,14 +80,9 @@ void expectConsistentOwnership(const DistributedMesh& part) {
 }
 
 void expectSameSurface(const ReplicatedSurface& a, const ReplicatedSurface& b) {
-  EXPECT_EQ(a.name, b.name);
-  EXPECT_EQ(a.dimension, b.dimension);
-  EXPECT_EQ(a.nodesPerFacet, b.nodesPerFacet);
-  EXPECT_EQ(a.elements, b.elements);
-  EXPECT_EQ(a.sides, b.sides);
-  EXPECT_EQ(a.facetNodes, b.facetNodes);
-  EXPECT_EQ(a.nodes, b.nodes);
-  EXPECT_EQ(a.coordinates, b.coordinates);
+  using S = ReplicatedSurface;
+  contessa::mesh::test::expectSameMembers(a, b, &S::name, &S::dimension, &S::nodesPerFacet, &S::elements, &S::sides,
+                                          &S::facetNodes, &S::nodes, &S::coordinates);
 }
 
 // Two boxes one above the other (two blocks), maybe with the upper one's bottom side set listed

@@ -119,9 +119,11 @@ TEST(MeshFactoryTables, EveryGeneratorsPublishedDefaultsAreItsSpecsDefaults) {
 }
 
 // Each generator's parameters set in `list` to values that differ from each other (two members swapped
-// would change the mesh), and the spec that says the same.
-RectangleSpec changedRectangle(ParameterList& list) {
-  RectangleSpec s;
+// would change the mesh), and the spec that says the same. First the rows a Box shares with a Rectangle
+// (its x-y section), changed alike in both.
+template <class Spec>
+Spec changedSection(ParameterList& list) {
+  Spec s;
   list.set("X Origin", s.x0 = 1.0);
   list.set("Y Origin", s.y0 = -2.0);
   list.set("Length X", s.lx = 3.0);
@@ -130,24 +132,26 @@ RectangleSpec changedRectangle(ParameterList& list) {
   list.set("Elements Y", s.ny = 2);
   list.set("Bias X", s.biasX = 2.0);
   list.set("Bias Y", s.biasY = 0.75);
+  return s;
+}
+
+RectangleSpec changedRectangle(ParameterList& list) {
+  RectangleSpec s = changedSection<RectangleSpec>(list);
   list.set("Block Name", s.blockName = "plate");
   return s;
 }
 
+// The rows a generator that extrudes its section along z adds (Box, Hollow Cylinder Sector), changed alike.
+void changeExtrusion(ParameterList& list, double& z0, double& length, int& layers, double& bias) {
+  list.set("Z Origin", z0 = -1.0);
+  list.set("Length Z", length = 4.0);
+  list.set("Elements Z", layers = 4);
+  list.set("Bias Z", bias = 3.0);
+}
+
 BoxSpec changedBox(ParameterList& list) {
-  BoxSpec s;
-  list.set("X Origin", s.x0 = 1.0);
-  list.set("Y Origin", s.y0 = -2.0);
-  list.set("Z Origin", s.z0 = 0.25);
-  list.set("Length X", s.lx = 3.0);
-  list.set("Length Y", s.ly = 0.5);
-  list.set("Length Z", s.lz = 1.5);
-  list.set("Elements X", s.nx = 3);
-  list.set("Elements Y", s.ny = 2);
-  list.set("Elements Z", s.nz = 4);
-  list.set("Bias X", s.biasX = 2.0);
-  list.set("Bias Y", s.biasY = 0.75);
-  list.set("Bias Z", s.biasZ = 1.25);
+  BoxSpec s = changedSection<BoxSpec>(list);
+  changeExtrusion(list, s.z0, s.lz, s.nz, s.biasZ);
   list.set("Block Name", s.blockName = "brick");
   return s;
 }
@@ -169,10 +173,7 @@ AnnulusSectorSpec changedAnnulus(ParameterList& list) {
 HollowCylinderSectorSpec changedTube(ParameterList& list) {
   HollowCylinderSectorSpec s;
   s.section = changedAnnulus(list);
-  list.set("Z Origin", s.z0 = -1.0);
-  list.set("Length Z", s.length = 4.0);
-  list.set("Elements Z", s.layers = 2);
-  list.set("Bias Z", s.axialBias = 3.0);
+  changeExtrusion(list, s.z0, s.length, s.layers, s.axialBias);
   list.set("Block Name", s.section.blockName = "tube");  // a row that fills the section's member
   return s;
 }
