@@ -184,25 +184,22 @@ TEST(AugmentedLagrangianElement, TangentPastAFreeEndAtAPositiveGapMatchesCentral
   const double gap = 0.015;
   const auto point = cc::ContactPoint::projection(0.03);
   ct::TangentCheck check{ct::kFdTolerance};
+  // The element past its facet's free end or edge, held at a positive gap by its multiplier: the expected
+  // status, a weight strictly between 0 and 1, and the tangent against central differences.
+  const auto expectPastTheEnd = [&](const auto& element, const auto& geometry, int node, const auto& history,
+                                    const Case& c, const std::string& where) {
+    const auto r = element.evaluate(geometry, node, history, kFacetLength, cc::SlipTangent::consistent(), point);
+    ASSERT_EQ(r.status, c.expected) << where << c.name;
+    EXPECT_GT(r.freeEdgeWeight, 0.0) << where << c.name;
+    EXPECT_LT(r.freeEdgeWeight, 1.0) << where << c.name;
+    check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, geometry, node, history, 1e-7, kFacetLength, point),
+                      where + c.name);
+  };
   for (const Case& c : kCases) {
-    const cc::NodeToFacetContact<cc::Line2Facet> segment(c.law);
-    const auto g2 = segmentSlave(1.01, gap);
-    const auto h2 = withMultipliers<1>(3, {0.9}, {9.0}, {1.5});
-    const auto r2 = segment.evaluate(g2, 3, h2, kFacetLength, cc::SlipTangent::consistent(), point);
-    ASSERT_EQ(r2.status, c.expected) << c.name;
-    EXPECT_GT(r2.freeEdgeWeight, 0.0) << c.name;
-    EXPECT_LT(r2.freeEdgeWeight, 1.0) << c.name;
-    check.expectClose(r2.tangent, ct::finiteDifferenceTangent(segment, g2, 3, h2, 1e-7, kFacetLength, point),
-                      std::string("Line2 past its end ") + c.name);
-    const cc::NodeToFacetContact<cc::Quad4Facet> face(c.law);
-    const auto g3 = faceSlave({-0.3, 1.01}, gap);
-    const auto h3 = withMultipliers<2>(7, {-0.38, 0.91}, {4.0, -2.0}, {1.5, -0.8});
-    const auto r3 = face.evaluate(g3, 7, h3, kFacetLength, cc::SlipTangent::consistent(), point);
-    ASSERT_EQ(r3.status, c.expected) << c.name;
-    EXPECT_GT(r3.freeEdgeWeight, 0.0) << c.name;
-    EXPECT_LT(r3.freeEdgeWeight, 1.0) << c.name;
-    check.expectClose(r3.tangent, ct::finiteDifferenceTangent(face, g3, 7, h3, 1e-7, kFacetLength, point),
-                      std::string("Quad4 past its edge ") + c.name);
+    expectPastTheEnd(cc::NodeToFacetContact<cc::Line2Facet>(c.law), segmentSlave(1.01, gap), 3,
+                     withMultipliers<1>(3, {0.9}, {9.0}, {1.5}), c, "Line2 past its end ");
+    expectPastTheEnd(cc::NodeToFacetContact<cc::Quad4Facet>(c.law), faceSlave({-0.3, 1.01}, gap), 7,
+                     withMultipliers<2>(7, {-0.38, 0.91}, {4.0, -2.0}, {1.5, -0.8}), c, "Quad4 past its edge ");
   }
   check.printWorst("augmented Lagrangian past a free end");
 }

@@ -19,34 +19,18 @@ using Face = cc::MasterFacetNodes<cc::Quad4Facet>;
 using P2 = cc::Vector<2>;
 using P3 = cc::Vector<3>;
 
-Segment segment(int id, int a, int b, P2 xa, P2 xb) {
-  Segment s;
-  s.id = id;
-  s.nodes = {a, b};
-  s.x = {xa, xb};
-  return s;
-}
-
-Face face(int id, std::array<int, 4> nodes, std::array<P3, 4> x) {
-  Face f;
-  f.id = id;
-  f.nodes = nodes;
-  f.x = x;
-  return f;
-}
-
 // Faces A over [0, 1] × [0, 1] in z = 0 and B beyond the shared edge x = 1 (nodes 1, 4), B's far edge at
 // z = slope (slope < 0: a convex ridge); normals +z-ish, the master body below. Free boundary: y = 0, y = 1,
 // x = 0, x = 2.
-Face faceA() { return face(0, {0, 1, 4, 3}, {P3{0, 0, 0}, P3{1, 0, 0}, P3{1, 1, 0}, P3{0, 1, 0}}); }
-Face faceB(double slope) { return face(1, {1, 2, 5, 4}, {P3{1, 0, 0}, P3{2, 0, slope}, P3{2, 1, slope}, P3{1, 1, 0}}); }
+Face faceA() { return Face{0, {0, 1, 4, 3}, {P3{0, 0, 0}, P3{1, 0, 0}, P3{1, 1, 0}, P3{0, 1, 0}}}; }
+Face faceB(double slope) { return Face{1, {1, 2, 5, 4}, {P3{1, 0, 0}, P3{2, 0, slope}, P3{2, 1, slope}, P3{1, 1, 0}}}; }
 
 }  // namespace
 
 TEST(AugmentedSelection, NodeHeldAtAPositiveGapPastAFreeEndStaysOnTheEndSegment) {
   // The top of a block y < 0 from x = 1 to x = 0 (counter-clockwise: right to left); the node is past the
   // free end x = 1 by 0.01 (within 3e-2 of L_k = 1) and 1e-6 above the segment's extension.
-  const std::vector<Segment> top{segment(0, 0, 1, {1.0, 0.0}, {0.0, 0.0})};
+  const std::vector<Segment> top{Segment{0, {0, 1}, {P2{1.0, 0.0}, P2{0.0, 0.0}}}};
   const cc::FacetSelector<cc::Line2Facet> selector;
   const P2 node{1.01, 1e-6};
   EXPECT_EQ(selector.select(node, top, 1.0).kind, cc::SelectionKind::None);  // the penalty law: open
@@ -98,7 +82,7 @@ TEST(AugmentedSelection, AnEdgeBetweenFlatFacesIsNoRidge) {
 TEST(AugmentedSelection, AVertexBetweenCollinearSegmentsIsNoCorner) {
   // The top of a block, right to left: (2, −1e-7) → (1, 0) → (0, 0), a convex kink of 1e-7 rad at x = 1. A
   // node 1e-3 above, 2e-11 right of the vertex, projects outside both segments.
-  const std::vector<Segment> top{segment(10, 0, 1, {2.0, -1e-7}, {1.0, 0.0}), segment(11, 1, 2, {1.0, 0.0}, {0.0, 0.0})};
+  const std::vector<Segment> top{Segment{10, {0, 1}, {P2{2.0, -1e-7}, P2{1.0, 0.0}}}, Segment{11, {1, 2}, {P2{1.0, 0.0}, P2{0.0, 0.0}}}};
   const P2 node{1.0 + 2e-11, 1e-3};
   const auto flat = cc::FacetSelector<cc::Line2Facet>(flatBelow(1e-6)).select(node, top, 1.0);
   ASSERT_EQ(flat.kind, cc::SelectionKind::OnFacet);

@@ -17,20 +17,12 @@ namespace cc = contessa::contact;
 using Face = cc::MasterFacetNodes<cc::Quad4Facet>;
 using P = cc::Vector<3>;
 
-Face face(int id, std::array<int, 4> nodes, std::array<P, 4> x) {
-  Face f;
-  f.id = id;
-  f.nodes = nodes;
-  f.x = x;
-  return f;
-}
-
 // Two faces sharing the edge x = 1 (nodes 1, 4): A over [0, 1] × [0, 1] in z = 0, B beyond it, either
 // coplanar (slope 0), bent down (a convex ridge, slope < 0) or up (a valley, slope > 0). Normals +z-ish.
 std::vector<Face> twoFaces(double slope) {
   const double zb = slope;  // z of B's far edge (x = 2)
-  return {face(0, {0, 1, 4, 3}, {P{0, 0, 0}, P{1, 0, 0}, P{1, 1, 0}, P{0, 1, 0}}),
-          face(1, {1, 2, 5, 4}, {P{1, 0, 0}, P{2, 0, zb}, P{2, 1, zb}, P{1, 1, 0}})};
+  return {Face{0, {0, 1, 4, 3}, {P{0, 0, 0}, P{1, 0, 0}, P{1, 1, 0}, P{0, 1, 0}}},
+          Face{1, {1, 2, 5, 4}, {P{1, 0, 0}, P{2, 0, zb}, P{2, 1, zb}, P{1, 1, 0}}}};
 }
 
 // The exact distance from x to the union of the two (flat) faces of twoFaces(slope), signed by side.
@@ -95,9 +87,9 @@ TEST(FacetSelectorQuad4, ValleyTakesTheSmallerGap) {
 TEST(FacetSelectorQuad4, ConvexCornerUsesTheVertex) {
   // Vertex 0 at the origin; the unit cube [−1, 0]³; faces counter-clockwise seen from outside.
   const std::vector<Face> faces{
-      face(0, {0, 3, 2, 1}, {P{0, 0, 0}, P{-1, 0, 0}, P{-1, -1, 0}, P{0, -1, 0}}),   // z = 0, normal +z
-      face(1, {0, 5, 4, 3}, {P{0, 0, 0}, P{0, 0, -1}, P{-1, 0, -1}, P{-1, 0, 0}}),   // y = 0, normal +y
-      face(2, {0, 1, 6, 5}, {P{0, 0, 0}, P{0, -1, 0}, P{0, -1, -1}, P{0, 0, -1}})};  // x = 0, normal +x
+      Face{0, {0, 3, 2, 1}, {P{0, 0, 0}, P{-1, 0, 0}, P{-1, -1, 0}, P{0, -1, 0}}},   // z = 0, normal +z
+      Face{1, {0, 5, 4, 3}, {P{0, 0, 0}, P{0, 0, -1}, P{-1, 0, -1}, P{-1, 0, 0}}},   // y = 0, normal +y
+      Face{2, {0, 1, 6, 5}, {P{0, 0, 0}, P{0, -1, 0}, P{0, -1, -1}, P{0, 0, -1}}}};  // x = 0, normal +x
   for (const auto& f : faces) {
     const auto p = cc::Projection<cc::Quad4Facet>::evaluateAt(P{}, f.x, cc::Quad4Facet::center());
     EXPECT_NEAR(cc::dot(p.normal, P{1, 1, 1}), 1.0, 1e-12) << "face " << f.id;  // one of the axes
@@ -140,7 +132,7 @@ TEST(FacetSelectorQuad4, FreeBoundaryIsNotAnEdgeToContact) {
 // the edge of a punch face 70 wide (1.6 % of it, within the 0.1 in ξ of the former rule) is off; the same
 // node 1e-4 past it is on (L_k = 5.56, the punch deck's block at 18 elements).
 TEST(FacetSelectorQuad4, FreeEdgeRuleDoesNotGrowWithTheFacet) {
-  const Face punch = face(0, {0, 1, 2, 3}, {P{-10, -10, 0}, P{60, -10, 0}, P{60, 60, 0}, P{-10, 60, 0}});
+  const Face punch = Face{0, {0, 1, 2, 3}, {P{-10, -10, 0}, P{60, -10, 0}, P{60, 60, 0}, P{-10, 60, 0}}};
   const cc::FacetSelector<cc::Quad4Facet> selector;
   const double slaveSize = 100.0 / 18.0;
   EXPECT_EQ(selector.select({61.11, 20.0, -0.05}, {punch}, slaveSize).kind, cc::SelectionKind::None);
@@ -158,8 +150,8 @@ TEST(FacetSelectorQuad4, InteriorEdgesDoNotHoldANodePastTheFreeEdge) {
   for (int i = 0; i < 7; ++i)
     for (int j = 0; j < 7; ++j) {
       const double x0 = -10 + 10 * i, y0 = -10 + 10 * j;
-      faces.push_back(face(id++, {point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)},
-                           {P{x0, y0, 0}, P{x0 + 10, y0, 0}, P{x0 + 10, y0 + 10, 0}, P{x0, y0 + 10, 0}}));
+      faces.push_back(Face{id++, {point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)},
+                           {P{x0, y0, 0}, P{x0 + 10, y0, 0}, P{x0 + 10, y0 + 10, 0}, P{x0, y0 + 10, 0}}});
     }
   const cc::FacetSelector<cc::Quad4Facet> selector;
   for (const double y : {0.0, 3.0, 25.0})
@@ -179,8 +171,8 @@ TEST(FacetSelectorQuad4, InteriorEdgesDoNotHoldANodePastTheFreeEdge) {
 // A collapsed face (a triangle with its apex twice) next to a regular one, sharing the apex as a corner:
 // a node at the apex goes to the regular face, where the collapsed face has no metric.
 TEST(FacetSelectorQuad4, CollapsedApexIsHandedToTheNeighbour) {
-  const Face collapsed = face(0, {1, 2, 4, 4}, {P{1, 0, 0}, P{2, 0.5, 0}, P{1, 1, 0}, P{1, 1, 0}});
-  const Face regular = face(1, {0, 1, 4, 3}, {P{0, 0, 0}, P{1, 0, 0}, P{1, 1, 0}, P{0, 1, 0}});
+  const Face collapsed = Face{0, {1, 2, 4, 4}, {P{1, 0, 0}, P{2, 0.5, 0}, P{1, 1, 0}, P{1, 1, 0}}};
+  const Face regular = Face{1, {0, 1, 4, 3}, {P{0, 0, 0}, P{1, 0, 0}, P{1, 1, 0}, P{0, 1, 0}}};
   const cc::FacetSelector<cc::Quad4Facet> selector;
   const auto s = selector.select({1.0, 1.0, -0.01}, {collapsed, regular});
   ASSERT_EQ(s.kind, cc::SelectionKind::OnFacet);

@@ -224,11 +224,7 @@ ContactInterfaceSpec faceSpec(bool rigidMaster) {
   spec.slaveFacetLengths.assign(9, 1.0);
   spec.law.normalPenalty = kPenalty;
   if (rigidMaster) {
-    spec.rigidMaster = true;
-    const double z = -0.03;
-    spec.rigidSurface.points = {-0.2, -0.1, z, 2.3, -0.1, z, 2.3, 2.2, z, -0.2, 2.2, z};
-    spec.rigidSurface.facets = {0, 3, 2, 1};  // clockwise from +z: normal down, towards the slave
-    spec.rigidSurface.motion = {0.1, -0.05, -0.02};
+    testing::setMovingRigidPlate(spec, 2.3, 2.2);
   } else {
     // Nodes 9–11 at y = −0.2 (x = −0.1, 0.7, 2.1), 12–14 at y = 2.2: two quadrilaterals, normal down.
     spec.masterFacets = {9, 12, 13, 10, 10, 13, 14, 11};

@@ -234,11 +234,7 @@ ContactInterfaceSpec tri6Spec(bool rigidMaster, const std::vector<double>& x) {
   }
   spec.law.normalPenalty = kPenalty;
   if (rigidMaster) {
-    spec.rigidMaster = true;
-    const double z = -0.03;
-    spec.rigidSurface.points = {-0.2, -0.1, z, 1.3, -0.1, z, 1.3, 1.2, z, -0.2, 1.2, z};
-    spec.rigidSurface.facets = {0, 3, 2, 1};  // clockwise from +z: normal down, towards the slave
-    spec.rigidSurface.motion = {0.1, -0.05, -0.02};
+    testing::setMovingRigidPlate(spec, 1.3, 1.2);
   } else {
     spec.masterFacets = {9, 10, 11, 12, 13, 14};
   }

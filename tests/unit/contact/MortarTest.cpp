@@ -460,23 +460,6 @@ TEST(MortarInterface, FrictionalTangentFromAStuckStateIsTheCentralDifferenceOfTh
   expectFrictionalTangentIsTheCentralDifference(true, 0.05, ContactStatus::Slip, 1e-3);
 }
 
-// One evaluation at x and λ without a commit (the residual and tangent of a Newton iterate).
-Assembled evaluateOnly(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
-  const int n = static_cast<int>(x.size());
-  Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}, {}};
-  interface.evaluate([&](GlobalIndex node, double* p) { std::copy(&x[2 * node], &x[2 * node] + 2, p); }, lambda, true,
-                     [&](const GlobalIndex* dofs, int m, const double* r, const double* k, const double* drdl) {
-                       for (int a = 0; a < m; ++a) {
-                         if (dofs[a] < 0) continue;
-                         out.residual[dofs[a]] += r[a];
-                         out.dLambda[dofs[a]] += drdl[a];
-                         for (int b = 0; b < m; ++b)
-                           if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
-                       }
-                     });
-  return out;
-}
-
 void expectSameAssembly(const Assembled& a, const Assembled& b) {
   EXPECT_EQ(a.residual, b.residual);
   EXPECT_EQ(a.tangent, b.tangent);
@@ -501,13 +484,13 @@ TEST(MortarInterface, EvaluationsReusingThePairsDerivativesGiveWhatAFreshInterfa
       const auto x1 = slid(0.01);
       auto x2 = x1;
       x2[2 * 6 + 1] -= 0.004;  // master node 6 (deformable master) lower
-      const Assembled first = evaluateOnly(*reused, x1, 0.3);
+      const Assembled first = testing::evaluateOnly<2>(*reused, x1, 0.3);
       EXPECT_GT(*std::max_element(first.tangent.begin(), first.tangent.end()), 100.0) << "closed nodes";
-      expectSameAssembly(first, evaluateOnly(*fresh(), x1, 0.3));
-      expectSameAssembly(evaluateOnly(*reused, x1, 0.3), first);
-      expectSameAssembly(evaluateOnly(*reused, x2, 0.3), evaluateOnly(*fresh(), x2, 0.3));
-      expectSameAssembly(evaluateOnly(*reused, x1, 0.3), first);
-      expectSameAssembly(evaluateOnly(*reused, x1, 0.35), evaluateOnly(*fresh(), x1, 0.35));
+      expectSameAssembly(first, testing::evaluateOnly<2>(*fresh(), x1, 0.3));
+      expectSameAssembly(testing::evaluateOnly<2>(*reused, x1, 0.3), first);
+      expectSameAssembly(testing::evaluateOnly<2>(*reused, x2, 0.3), testing::evaluateOnly<2>(*fresh(), x2, 0.3));
+      expectSameAssembly(testing::evaluateOnly<2>(*reused, x1, 0.3), first);
+      expectSameAssembly(testing::evaluateOnly<2>(*reused, x1, 0.35), testing::evaluateOnly<2>(*fresh(), x1, 0.35));
     }
   }
 }

@@ -16,9 +16,21 @@ struct Assembled {
   ContactCounts counts;
 };
 
-// Evaluates and commits `interface` at the coordinates x (Dim per node, node-major) and load factor λ.
+// Makes spec's master the rigid plate z = −0.03 over [−0.2, xMax] × [−0.1, yMax], its normal down (towards
+// the slave faces at z = 0), moving by (0.1, −0.05, −0.02) per unit load factor: the 3D mortar tests'
+// rigid master.
+inline void setMovingRigidPlate(ContactInterfaceSpec& spec, double xMax, double yMax) {
+  spec.rigidMaster = true;
+  const double z = -0.03;
+  spec.rigidSurface.points = {-0.2, -0.1, z, xMax, -0.1, z, xMax, yMax, z, -0.2, yMax, z};
+  spec.rigidSurface.facets = {0, 3, 2, 1};  // clockwise from +z: normal down, towards the slave
+  spec.rigidSurface.motion = {0.1, -0.05, -0.02};
+}
+
+// Evaluates `interface` at the coordinates x (Dim per node, node-major) and load factor λ without a
+// commit: the residual and tangent of a Newton iterate.
 template <int Dim>
-Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+Assembled evaluateOnly(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
   const int n = static_cast<int>(x.size());
   Assembled out{std::vector<double>(n, 0.0), std::vector<double>(n * n, 0.0), std::vector<double>(n, 0.0), {}, {}};
   interface.evaluate([&](GlobalIndex node, double* p) { std::copy(&x[Dim * node], &x[Dim * node] + Dim, p); }, lambda,
@@ -31,6 +43,13 @@ Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x
                            if (dofs[b] >= 0) out.tangent[dofs[a] * n + dofs[b]] += k[a * m + b];
                        }
                      });
+  return out;
+}
+
+// Evaluates and commits `interface` at x and λ (evaluateOnly, then the committed states and counts).
+template <int Dim>
+Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+  Assembled out = evaluateOnly<Dim>(interface, x, lambda);
   interface.commit();
   out.states = interface.committedStates();
   out.counts = interface.committedCounts();
