@@ -248,6 +248,39 @@ double areaJacobian(const std::array<typename Facet::Point, Facet::kNodes>& x, c
   return norm(Facet::areaNormal(Projection<Facet>::evaluateAt(typename Facet::Point{}, x, xi).covariantBasis));
 }
 
+/// Of the faces holding an edge or vertex point, the one whose unit normal best matches the signed
+/// direction point → node, side · d / ‖d‖ (the first on a tie, and at d = 0).
+template <class Point>
+std::size_t bestMatchingNormal(const std::vector<Point>& normals, const Point& d, double side, double distance) {
+  std::size_t chosen = 0;
+  double match = -std::numeric_limits<double>::infinity();
+  for (std::size_t h = 0; h < normals.size(); ++h) {
+    const double m = distance > 0.0 ? side * dot(normals[h], d) / distance : 0.0;
+    if (m > match) {
+      match = m;
+      chosen = h;
+    }
+  }
+  return chosen;
+}
+
+/// Of the holders of a point across which the surface is flat, the candidate whose projection overshoots
+/// its face least (FacetSelectorOptions::flatAngle): the face the node stays on.
+template <class Facet>
+std::size_t leastOvershooting(const std::vector<std::size_t>& holders, const std::vector<ProjectionResult<Facet>>& projected,
+                              const std::vector<MasterFacetNodes<Facet>>& candidates) {
+  std::size_t face = candidates.size();
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t h : holders) {
+    const double beyond = distanceBeyond(projected[h], candidates[h].x);
+    if (beyond < least) {
+      least = beyond;
+      face = h;
+    }
+  }
+  return face;
+}
+
 template <class Facet>
 FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const typename Facet::Point& slave,
                                     const std::vector<MasterFacetNodes<Facet>>& candidates, double slaveSize,
@@ -307,29 +340,10 @@ FacetSelection<Facet> selectOnFaces(const FacetSelectorOptions& options_, const 
         continue;
       }
       const double side = dot(d, averaged) >= 0.0 ? 1.0 : -1.0;
-      // The face whose normal best matches the signed direction point → node.
-      std::size_t chosen = 0;
-      double match = -std::numeric_limits<double>::infinity();
-      for (std::size_t h = 0; h < holders.size(); ++h) {
-        const double m = distance > 0.0 ? side * dot(normals[h], d) / distance : 0.0;
-        if (m > match) {
-          match = m;
-          chosen = h;
-        }
-      }
+      const std::size_t chosen = bestMatchingNormal(normals, d, side, distance);
       const double averagedNorm = norm(averaged);
       // Flat across the point: the holder whose projection overshoots its face least (FacetSelectorOptions::flatAngle).
-      flatFace = n;
-      if (flatAcross(normals, options_.flatAngle)) {
-        double least = std::numeric_limits<double>::infinity();
-        for (std::size_t h : holders) {
-          const double beyond = distanceBeyond(projected[h], candidates[h].x);
-          if (beyond < least) {
-            least = beyond;
-            flatFace = h;
-          }
-        }
-      }
+      flatFace = flatAcross(normals, options_.flatAngle) ? leastOvershooting(holders, projected, candidates) : n;
       bestDistance = distance;
       best.kind = atVertex ? SelectionKind::AtVertex : SelectionKind::AtEdge;
       best.facet = candidates[holders[chosen]].id;
