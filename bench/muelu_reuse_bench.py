@@ -12,7 +12,6 @@ those started over on a new graph, on an entry that filled in since the set-up a
 coarse matrix (two or more ranks), and those MueLu refused to redo (then started over), and the plate or punch force of the last history row
 against the variant "none" (a fresh hierarchy for every Jacobian, Contessa's behaviour before the reuse).
 """
-import argparse
 import csv
 import json
 import os
@@ -20,7 +19,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from speed_bench import ROOT, run  # noqa: E402
+from speed_bench import ROOT, print_host, punch_arguments, run  # noqa: E402
 
 MUELU = "Piro/Stratimikos/Preconditioner Types/MueLu"
 SLIDING = ["Problem/Contact/strip/Search Reach=0", "Piro/LOCA/Step Size/Initial Step Size=0.05",
@@ -47,18 +46,12 @@ def last_force(history):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    p.add_argument("--punch", type=int, nargs="*", default=[12, 20])
+    p = punch_arguments(__doc__, [12, 20], 3, "/tmp/contessa-muelu-reuse-bench", 1800)
     p.add_argument("--sliding", action="store_true", help="also the sliding block (graph rebuilds)")
     p.add_argument("--reuse", nargs="+", default=["none", "tP", "RP"])
-    p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--ranks", type=int, default=1)
-    p.add_argument("--work", default="/tmp/contessa-muelu-reuse-bench")
-    p.add_argument("--timeout", type=float, default=1800)
     a = p.parse_args()
-    load = os.getloadavg()
-    print(f"host {os.uname().nodename}, {os.cpu_count()} cores, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}\n")
+    print_host()
     results = {}
     for rep in range(a.repeat):
         for label, deck, stem, sets in cases(a):

@@ -13,14 +13,13 @@ variants are interleaved over --repeat rounds. Prints per variant: the median CP
 system, /usr/bin/time) per Newton iteration (the whole process' CPU, set-up included, over the Newton
 iterations) and the Krylov iterations per linear solve (Belos; from the run's summary.json).
 """
-import argparse
 import json
 import os
 import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from speed_bench import ROOT, run  # noqa: E402
+from speed_bench import ROOT, print_host, punch_arguments, run  # noqa: E402
 
 DECK = os.path.join(ROOT, "inputs", "punch_3d.xml")
 SOLVERS = {"MUMPS": ["Piro/Stratimikos/Linear Solver Type=MUMPS"],
@@ -28,18 +27,12 @@ SOLVERS = {"MUMPS": ["Piro/Stratimikos/Linear Solver Type=MUMPS"],
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    p.add_argument("--punch", type=int, nargs="+", default=[20, 24, 28])
+    p = punch_arguments(__doc__, [20, 24, 28], 2, "/tmp/contessa-crossover-bench", 3600)
     p.add_argument("--penalty", nargs="+", default=["1e8", "1e5"])
     p.add_argument("--solvers", nargs="+", default=list(SOLVERS))
     p.add_argument("--newton", type=int, default=8, help="Newton iterations at most (default 8)")
-    p.add_argument("--repeat", type=int, default=2)
-    p.add_argument("--work", default="/tmp/contessa-crossover-bench")
-    p.add_argument("--timeout", type=float, default=3600)
     a = p.parse_args()
-    load = os.getloadavg()
-    print(f"host {os.uname().nodename}, {os.cpu_count()} cores, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}\n")
+    print_host()
     results = {}
     for rep in range(a.repeat):
         for n in a.punch:

@@ -74,6 +74,24 @@ def run(cmd, out_dir, timeout, accept=(0,), fresh=True, env=None):
     return r
 
 
+def punch_arguments(doc, punch, repeat, work, timeout):
+    """The options the 3D punch benches share: the binary, the punch sizes (elements along x and y), the
+    repetitions, the work directory and the time limit per run; the caller adds its own."""
+    p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
+    p.add_argument("--punch", type=int, nargs="*", default=punch)
+    p.add_argument("--repeat", type=int, default=repeat)
+    p.add_argument("--work", default=work)
+    p.add_argument("--timeout", type=float, default=timeout)
+    return p
+
+
+def print_host():
+    """The header line every bench prints: the host, its cores and its load (the figures depend on it)."""
+    load = os.getloadavg()
+    print(f"host {os.uname().nodename}, {os.cpu_count()} cores, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}\n")
+
+
 def contessa_cmd(binary, ranks, out_dir, sets, timers):
     cmd = ([shutil.which("mpiexec") or "mpiexec"] + MPIEXEC[1:] + [str(ranks)] if ranks > 1 else []) + [binary, DECK]
     cmd += ["--quiet", "--output-dir", out_dir] + (["--timers"] if timers else [])
