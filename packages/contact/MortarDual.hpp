@@ -6,6 +6,8 @@
 // mechanics/ShapeFunctions.hpp has a smaller dual (no division, no square root, not nestable) and contact
 // may not include mechanics (docs/architecture.md, package order), hence this one.
 #include <array>
+#include <type_traits>
+#include <vector>
 #include <cmath>
 
 namespace contessa::contact {
@@ -307,6 +309,32 @@ KernelVariables<C> rigidBodyVariables(int first, int count, const double* motion
   }
   v.motionEntry = first;
   return v;
+}
+
+/// A pair kernel's weighted gaps differentiated twice: `integrate` (the kernel on HessianDual coordinates,
+/// returning overlaps, weightedGap and mortarArea per slave slot) evaluated with every coordinate its own
+/// variable, or, given a rigid master's motion (its entries from FirstMaster on), with the master along that
+/// motion only (KernelVariables). Derivatives holds overlaps, weightedGap, mortarArea, gradient and hessian.
+template <class Derivatives, int FirstMaster, std::size_t N, class Integrate>
+Derivatives differentiatePairKernel(const std::array<double, N>& x, const double* masterMotion, Integrate integrate) {
+  constexpr int C = static_cast<int>(N);
+  const auto differentiate = [&](auto variablesTag, const KernelVariables<C>& variables) {
+    constexpr int V = decltype(variablesTag)::value;
+    // A HessianDual<36> holds 703 doubles: the seeded coordinates live on the heap.
+    std::vector<std::array<HessianDual<V>, C>> seeded(1, variables.template seed<V>(x));
+    const auto g = integrate(seeded[0]);
+    Derivatives out;
+    out.overlaps = g.overlaps;
+    for (std::size_t a = 0; a < out.weightedGap.size(); ++a) {
+      out.weightedGap[a] = g.weightedGap[a].v;
+      out.mortarArea[a] = g.mortarArea[a].v;
+      variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
+    }
+    return out;
+  };
+  if (masterMotion == nullptr) return differentiate(std::integral_constant<int, C>{}, ownVariables<C>());
+  return differentiate(std::integral_constant<int, FirstMaster + 1>{},
+                       rigidBodyVariables<C>(FirstMaster, FirstMaster, masterMotion));
 }
 
 }  // namespace contessa::contact

@@ -70,29 +70,11 @@ MortarFacetPairGaps<double> facetPairGaps(const FacetPairCoordinates<double>& x,
   return integrateFacetPair(x, referenceArea, shape);
 }
 
-namespace {
-template <int V>
-MortarFacetPairDerivatives differentiateFacetPair(const FacetPairCoordinates<double>& x, double referenceArea,
-                                                  const MortarFacetPairShape& shape,
-                                                  const KernelVariables<kN>& variables) {
-  const MortarFacetPairGaps<HessianDual<V>> g = integrateFacetPair(variables.template seed<V>(x), referenceArea, shape);
-  MortarFacetPairDerivatives out;
-  out.overlaps = g.overlaps;
-  for (int a = 0; a < kMortarFacetNodes; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v;
-    out.mortarArea[a] = g.mortarArea[a].v;
-    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
-  }
-  return out;
-}
-}  // namespace
-
 MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
                                                 const MortarFacetPairShape& shape, const double* masterMotion) {
-  constexpr int master = 3 * kMortarFacetNodes;  // the master's first coordinate
-  if (masterMotion == nullptr) return differentiateFacetPair<kN>(x, referenceArea, shape, ownVariables<kN>());
   // A rigid master: the twelve slave coordinates and the motion (MortarDual.hpp, KernelVariables).
-  return differentiateFacetPair<master + 1>(x, referenceArea, shape, rigidBodyVariables<kN>(master, master, masterMotion));
+  return differentiatePairKernel<MortarFacetPairDerivatives, 3 * kMortarFacetNodes>(
+      x, masterMotion, [&](const auto& seeded) { return integrateFacetPair(seeded, referenceArea, shape); });
 }
 
 }  // namespace contessa::contact

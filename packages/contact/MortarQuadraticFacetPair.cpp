@@ -203,35 +203,12 @@ MortarQuadraticFacetPairGaps<double> facetPairGaps(const QuadraticFacetPairCoord
   return integrateQuadraticFacetPair(x, referenceArea, shape);
 }
 
-namespace {
-template <int V>
-MortarQuadraticFacetPairDerivatives differentiateQuadraticFacetPair(const QuadraticFacetPairCoordinates<double>& x,
-                                                                    double referenceArea,
-                                                                    const MortarFacetPairShape& shape,
-                                                                    const KernelVariables<kN>& variables) {
-  // HessianDual<36> holds 703 doubles: the seeded coordinates live on the heap.
-  std::vector<QuadraticFacetPairCoordinates<HessianDual<V>>> seeded(1, variables.template seed<V>(x));
-  const MortarQuadraticFacetPairGaps<HessianDual<V>> g = integrateQuadraticFacetPair(seeded[0], referenceArea, shape);
-  MortarQuadraticFacetPairDerivatives out;
-  out.overlaps = g.overlaps;
-  for (int a = 0; a < kSlots; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v;
-    out.mortarArea[a] = g.mortarArea[a].v;
-    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
-  }
-  return out;
-}
-}  // namespace
-
 MortarQuadraticFacetPairDerivatives facetPairDerivatives(const QuadraticFacetPairCoordinates<double>& x,
                                                          double referenceArea, const MortarFacetPairShape& shape,
                                                          const double* masterMotion) {
-  constexpr int master = 3 * kQuadraticFacetNodes;  // the master's first coordinate
-  if (masterMotion == nullptr)
-    return differentiateQuadraticFacetPair<kN>(x, referenceArea, shape, ownVariables<kN>());
   // A rigid master: the slave's eighteen coordinates and the motion (MortarDual.hpp, KernelVariables).
-  return differentiateQuadraticFacetPair<master + 1>(x, referenceArea, shape,
-                                                     rigidBodyVariables<kN>(master, master, masterMotion));
+  return differentiatePairKernel<MortarQuadraticFacetPairDerivatives, 3 * kQuadraticFacetNodes>(
+      x, masterMotion, [&](const auto& seeded) { return integrateQuadraticFacetPair(seeded, referenceArea, shape); });
 }
 
 namespace {
