@@ -37,17 +37,21 @@ ReturnMappingResult<NXi> CoulombReturnMapping<NXi>::map(const ReturnMappingInput
   const double dAbsNormal = in.normalTraction > 0.0 ? 1.0 : -1.0;
 
   // ε_T of eq. (17)/(20): constant, or tied to the pressure by the elastic-slip tolerance s, so that the
-  // stick radius μ|t_N|/ε_T is s L_k and does not shrink to nothing on a nearly unloaded node.
+  // stick radius μ|t_N|/ε_T is s L_k and does not shrink to nothing on a nearly unloaded node. Tied to a
+  // frozen traction (the augmented Lagrangian's λ_N) it is a constant too: an update that doubles t_N at
+  // the unchanged iterate (λ_N + ε_N g_N with λ_N = t_N) must not double the stick spring that starts from
+  // λ_T, or the trial λ_T + 2ε_T Δξ = 3 t_T slips past μ 2|t_N| wherever |t_T| > (2/3) μ|t_N|.
+  const bool frozen = in.frozenNormalTraction < 0.0;
   double epsT = tangentialPenalty_;
   double dEpsT = 0.0;  // ∂ε_T/∂t_N
   if (slipTolerance_ > 0.0) {
     if (!(in.facetLength > 0.0))
       throw std::logic_error("CoulombReturnMapping: a slip tolerance needs the slave facet length L_k > 0");
     const double elasticSlip = slipTolerance_ * in.facetLength;  // s L_k
-    const double pressurePenalty = limit / elasticSlip;
+    const double pressurePenalty = mu * std::abs(frozen ? in.frozenNormalTraction : in.normalTraction) / elasticSlip;
     if (tangentialPenalty_ == 0.0 || pressurePenalty < tangentialPenalty_) {  // the cap ε_T,max is not active
       epsT = pressurePenalty;
-      dEpsT = mu * dAbsNormal / elasticSlip;
+      dEpsT = frozen ? 0.0 : mu * dAbsNormal / elasticSlip;
     }
   }
   out.tangentialPenalty = epsT;

@@ -13,6 +13,11 @@ struct ReturnMappingInput {
   Matrix<NXi, NXi> metric{};        ///< ā_αβ at the current contact point
   double normalTraction = 0.0;      ///< t_N,n+1 of eq. (16) (≤ 0 in contact)
   double facetLength = 0.0;         ///< L_k, slave facet length at the node (needed when the slip tolerance > 0)
+  /// The normal traction (≤ 0) that the slip tolerance's ε_T = μ|t|/(s L_k) is taken from when it is held
+  /// fixed: the augmented Lagrangian's λ_N, a constant between two multiplier updates (docs/verification-contact.md
+  /// §12, "The stick penalty of the augmented Lagrangian"). 0: ε_T follows t_N itself (the penalty law, and a
+  /// node whose λ_N is still 0).
+  double frozenNormalTraction = 0.0;
 };
 
 template <int NXi>
@@ -49,6 +54,8 @@ struct ReturnMappingResult {
 ///   ε_T = μ|t_N| / (s L_k),  capped by `tangentialPenalty` when that is > 0,
 /// so the stick radius μ|t_N|/ε_T = s L_k does not vanish with the pressure. ε_T then depends on t_N
 /// (hence on g_N), and ∂t_α/∂t_N carries ā_αβ Δξ^β ∂ε_T/∂t_N in stick (and through eq. (27) in slip).
+/// With a `frozenNormalTraction` t_f < 0 (the augmented Lagrangian's λ_N) ε_T = μ|t_f|/(s L_k) instead, a
+/// constant: ∂ε_T/∂t_N = 0, and t_N enters through the Coulomb limit μ|t_N| only.
 ///
 /// Sign convention: t_T is the traction of the stick spring, positive along the relative motion
 /// Δξ of the slave over the master; the force it exerts on the slave node is −t_α ā^α, opposed to the

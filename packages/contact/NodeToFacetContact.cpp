@@ -246,6 +246,8 @@ TangentialLaw<Facet::kSurfaceDim> applyTangentialLaw(const ContactLawParameters&
     in.metric = p.metric;
     in.normalTraction = tN;
     in.facetLength = facetLength;
+    // The augmented Lagrangian's slip-tolerance ε_T follows λ_N, constant between updates (eq. 15.2).
+    if (parameters.isAugmented()) in.frozenNormalTraction = committed.normalMultiplier;
     out.friction = returnMapping.map(in);  // eq. (20)–(23)
     out.status = out.friction.status;
     law.traction = out.friction.traction;

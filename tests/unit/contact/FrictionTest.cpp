@@ -290,6 +290,66 @@ TEST(CoulombReturnMapping, SlipToleranceLinearisationMatchesFiniteDifferences) {
   }
 }
 
+// ---- The augmented Lagrangian's stick penalty: ε_T = μ|λ_N|/(s L), frozen between updates ----------------
+
+TEST(CoulombReturnMapping, AugmentedStickPenaltyFollowsTheNormalMultiplierNotThePressure) {
+  // s = 0.005, L = 2 (s L = 0.01), μ = 0.3, λ_N = −50: ε_T = 0.3·50/0.01 = 1500 at any t_N, ∂ε_T/∂t_N = 0.
+  const cc::CoulombReturnMapping<1> map(0.0, 0.3, 0.005);
+  for (double tN : {-100.0, -50.0, -1.0}) {
+    auto in = input1L(0.0, 1e-4, 4.0, tN, 2.0);
+    in.frozenNormalTraction = -50.0;
+    const auto r = map.map(in);
+    EXPECT_DOUBLE_EQ(r.tangentialPenalty, 1500.0);
+    EXPECT_EQ(r.dTangentialPenalty_dNormalTraction, 0.0);
+  }
+  // The first update of the frictional patch test (docs/theory-contact.md §15): a penalty solve converged
+  // with t_N = −p and a stick traction τ = ε_T(p) ā Δξ = 0.7 μ p; the update sets λ_N = −p, λ_T = τ, and at
+  // the unchanged iterate t_N = λ_N + ε_N g_N = −2p. The trial λ_T + ε_T ā Δξ is 2τ = 1.4 μ p, inside
+  // μ 2p: the node sticks. ε_T following t_N doubled with it: 3τ = 2.1 μ p, slip.
+  // ā_11 = 4: the covariant component of a traction of norm τ is 2τ.
+  const double p = 50.0, tau = 0.7 * 0.3 * p, a11 = 4.0, length = 2.0;
+  const double slip = tau * length / (0.3 * p / 0.01 * a11);
+  auto afterUpdate = input1L(tau * length, slip, a11, -2.0 * p, 2.0);
+  afterUpdate.frozenNormalTraction = -p;
+  const auto frozen = map.map(afterUpdate);
+  EXPECT_EQ(frozen.status, ContactStatus::Stick);
+  EXPECT_NEAR(frozen.trialNorm, 2.0 * tau, 1e-12 * tau);
+  afterUpdate.frozenNormalTraction = 0.0;  // ε_T from t_N, as before
+  EXPECT_EQ(map.map(afterUpdate).status, ContactStatus::Slip);
+}
+
+TEST(CoulombReturnMapping, AugmentedStickPenaltyLinearisationMatchesFiniteDifferences) {
+  // ∂t/∂t_N without the ε_T(t_N) term: through μ|t_N| only (slip), nothing in stick. One and two surface
+  // coordinates, stick and slip, with the multiplier's pressure above and below the current one.
+  const double sL = 0.005 * 2.0;
+  for (double multiplier : {-80.0, -20.0}) {
+    SCOPED_TRACE(multiplier);
+    const double epsT = 0.3 * std::abs(multiplier) / sL, limit = 0.3 * 50.0;
+    const cc::CoulombReturnMapping<1> map1(0.0, 0.3, 0.005);
+    auto stick = input1L(0.2 * limit, 0.3 * limit / epsT / 2.5, 2.5, -50.0, 2.0);
+    stick.frozenNormalTraction = multiplier;
+    checkDerivatives<1>(map1, stick, ContactStatus::Stick, limit);
+    EXPECT_EQ(map1.map(stick).dTraction_dNormalTraction[0], 0.0);
+    auto slip = input1L(0.2 * limit, -3.0 * limit / epsT, 2.5, -50.0, 2.0);
+    slip.frozenNormalTraction = multiplier;
+    checkDerivatives<1>(map1, slip, ContactStatus::Slip, limit);
+
+    const cc::CoulombReturnMapping<2> map2(0.0, 0.3, 0.005);
+    cc::ReturnMappingInput<2> in;
+    in.metric(0, 0) = 2.0;
+    in.metric(0, 1) = in.metric(1, 0) = 0.4;
+    in.metric(1, 1) = 1.2;
+    in.normalTraction = -50.0;
+    in.frozenNormalTraction = multiplier;
+    in.facetLength = 2.0;
+    in.committedTraction = {0.1 * limit, -0.05 * limit};
+    in.slipIncrement = {0.1 * limit / epsT, -0.2 * limit / epsT};
+    checkDerivatives<2>(map2, in, ContactStatus::Stick, limit);
+    in.slipIncrement = {3.0 * limit / epsT, -2.0 * limit / epsT};
+    checkDerivatives<2>(map2, in, ContactStatus::Slip, limit);
+  }
+}
+
 TEST(ContactHistoryStore, RollbackRestoresTheCommittedStateExactly) {
   cc::ContactHistoryStore<1> store(3);
   cc::ContactHistory<1> h;
