@@ -11,7 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <iterator>
 #include <string>
+#include <vector>
 
 
 namespace {
@@ -244,4 +247,74 @@ TEST(AugmentedLagrangianInterface, AStickingNodeKeepsItsStickReferenceAndMultipl
   // the 0.005 since the last commit: per-increment motions below the tolerance do not add up unseen.
   plate->evaluate(slave, 0.53, true, sink);
   EXPECT_NEAR(plate->trialViolation().elasticSlip, 0.01, 1e-9);
+}
+
+// ---- Every facet family, at its projection, an edge point and a vertex ---------------------------------
+
+namespace {
+
+// A skewed, curved facet (quadratic faces are curved by the lift, linear ones stay as they are): node i at
+// an affine image of its parent coordinates, lifted by a quadratic bump (3D) or sag (2D).
+template <class Facet>
+std::array<typename Facet::Point, Facet::kNodes> curvedFacet() {
+  std::array<typename Facet::Point, Facet::kNodes> x{};
+  for (int i = 0; i < Facet::kNodes; ++i) {
+    const auto xi = Facet::nodeCoords(i);
+    if constexpr (Facet::kSurfaceDim == 1)
+      x[i] = {0.3 + 1.1 * xi[0], 0.1 * (1.0 - xi[0] * xi[0])};
+    else
+      x[i] = {0.2 + 1.1 * xi[0] + 0.25 * xi[1], -0.1 + 0.15 * xi[0] + 0.95 * xi[1],
+              0.1 * (0.5 - xi[0] * xi[0] - 0.7 * xi[1] * xi[1] + 0.3 * xi[0] * xi[1])};
+  }
+  return x;
+}
+
+template <class Facet>
+class AugmentedFacetFamilies : public ::testing::Test {};
+using AllFacetTypes = ::testing::Types<cc::Line2Facet, cc::Quad4Facet, cc::Line3Facet, cc::Tri3Facet, cc::Tri6Facet,
+                                       cc::Quad8Facet, cc::Quad9Facet>;
+TYPED_TEST_SUITE(AugmentedFacetFamilies, AllFacetTypes);
+
+}  // namespace
+
+// The augmented element with nonzero multipliers (λ_N = −40, λ_T ≠ 0; the slip-tolerance ε_T frozen at
+// μ|λ_N|/(s L_k), and the capped variant) on every facet type: at a projection inside the facet, penetrating
+// and at a positive gap held by λ_N, and at an edge point and a vertex of its boundary (the boundary-point
+// kinematics of §6.4 with the augmented traction): tangents against central differences.
+TYPED_TEST(AugmentedFacetFamilies, TangentMatchesCentralDifferencesAtEveryContactPoint) {
+  using Facet = TypeParam;
+  constexpr int M = Facet::kSurfaceDim;
+  const auto facet = curvedFacet<Facet>();
+  const auto centre = cc::Projection<Facet>::evaluateAt(typename Facet::Point{}, facet, Facet::center());
+  Vector<M> xiN{}, multiplier{};
+  for (int a = 0; a < M; ++a) {
+    xiN[a] = Facet::center()[a] + (a == 0 ? 0.02 : -0.015);
+    multiplier[a] = a == 0 ? 1.5 : -0.8;
+  }
+  const auto committed = withMultipliers<M>(3, xiN, multiplier, multiplier);
+  // Inside: the centre's normal line. On the boundary: off the first boundary segment i–j, a little past it.
+  const auto segment = Facet::boundarySegments()[0];
+  const int i = segment[0], j = segment[1];
+  const auto onEdge = cc::add(cc::scaled(0.6, facet[i]), cc::scaled(0.4, facet[j]));
+  const auto outward = cc::subtract(onEdge, centre.position);
+  std::vector<Case> cases(std::begin(kCases), std::end(kCases));
+  cases.push_back({"stick_slip_tolerance_capped", augmented(1e3, 500.0, 100.0, 1.0), ContactStatus::Stick});
+  ct::TangentCheck check{ct::kFdTolerance};
+  for (const Case& c : cases) {
+    const cc::NodeToFacetContact<Facet> element(c.law);
+    const auto expectClose = [&](const cc::NodeToFacetGeometry<Facet>& g, const cc::ContactPoint& point,
+                                 const std::string& where) {
+      const auto r = element.evaluate(g, 3, committed, kFacetLength, cc::SlipTangent::consistent(), point);
+      ASSERT_NE(r.status, ContactStatus::Open) << where << c.name;
+      check.expectClose(r.tangent, ct::finiteDifferenceTangent(element, g, 3, committed, 1e-7, kFacetLength, point),
+                        where + c.name);
+    };
+    for (const double gap : {-0.02, 0.015})
+      expectClose({cc::add(centre.position, cc::scaled(gap, centre.normal)), facet}, cc::ContactPoint::projection(),
+                  "inside g_N = " + std::to_string(gap) + " ");
+    const auto behind = cc::add(cc::add(onEdge, cc::scaled(0.05, outward)), cc::scaled(-0.02, centre.normal));
+    if constexpr (M == 2) expectClose({behind, facet}, cc::ContactPoint::edge(i, j, -1.0), "edge point ");
+    expectClose({behind, facet}, cc::ContactPoint::vertex(j, -1.0), "vertex ");
+  }
+  check.printWorst((std::to_string(Facet::kNodes) + "-node facet, augmented, every contact point").c_str());
 }
