@@ -21,17 +21,13 @@ near-null space). For each size and rank count it prints one Markdown row:
 Tools: /usr/bin/python3 (standard library), mpiexec. Times depend on the machine's load (printed).
 The global contact search alone, for 10^4–10^6 slave nodes, is build/bin/contact_search_bench.
 """
-import argparse
-import json
 import os
-import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from linear_solver_bench import MPIEXEC, ROW, difference  # noqa: E402
+from speed_bench import (ROOT, bench_arguments, history_difference, print_table_header, timed_run,  # noqa: E402
+                         work_directory)
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 DECK = os.path.join(ROOT, "inputs", "punch_3d.xml")
 PHASES = {
     "preconditioner set-up": ["iterative: preconditioner set-up"],
@@ -48,23 +44,8 @@ def unknowns(n):
 
 
 def run(contessa, n, ranks, work):
-    out = os.path.join(work, f"n{n}_np{ranks}")
-    os.makedirs(out, exist_ok=True)
-    command = ([] if ranks == 1 else MPIEXEC + [str(ranks)]) + [contessa, DECK, "--quiet", "--timers", "--output-dir", out]
-    for axis, count in (("X", n), ("Y", n), ("Z", n // 2)):
-        command += ["--set", f"Problem/Mesh/Elements {axis}={count}"]
-    p = subprocess.run(command, capture_output=True, text=True)
-    with open(os.path.join(out, "log.txt"), "w") as log:
-        log.write(p.stdout + p.stderr)
-    result = {"status": p.returncode, "out": out, "stderr": p.stderr.strip().splitlines()[-1:], "phases": {}}
-    for line in p.stdout.splitlines():
-        m = ROW.match(line)
-        if m:
-            result["phases"][m[1].strip()] = float(m[2])
-    summary = os.path.join(out, "punch_3d.summary.json")
-    if os.path.exists(summary):
-        result["summary"] = json.load(open(summary))
-    return result
+    sets = [f"Problem/Mesh/Elements {axis}={count}" for axis, count in (("X", n), ("Y", n), ("Z", n // 2))]
+    return timed_run(contessa, DECK, ranks, os.path.join(work, f"n{n}_np{ranks}"), sets)
 
 
 def last_row(history):
@@ -74,18 +55,15 @@ def last_row(history):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = bench_arguments(__doc__)
     parser.add_argument("--sizes", type=int, nargs="+", default=[40, 58, 86])
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
-    parser.add_argument("--work", default=None)
-    parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
     args = parser.parse_args()
-    work = args.work or tempfile.mkdtemp(prefix="contact3d_bench_")
-    print(f"load average {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f}; work directory {work}\n")
-    print("| n | unknowns | ranks | slave / contact nodes | punch force [N] | Newton it. | Krylov it./solve | wall [s] | per Newton it. [s] | "
-          "preconditioner set-up [s] | Krylov [s] | contact [s] | elements + assembly [s] | set-up [s] | peak memory: largest rank / sum [MiB] | "
-          "answer vs 1 rank |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    work = work_directory(args, "contact3d_bench_")
+    print_table_header(["n", "unknowns", "ranks", "slave / contact nodes", "punch force [N]", "Newton it.", "Krylov it./solve",
+                        "wall [s]", "per Newton it. [s]", "preconditioner set-up [s]", "Krylov [s]", "contact [s]",
+                        "elements + assembly [s]", "set-up [s]", "peak memory: largest rank / sum [MiB]",
+                        "answer vs 1 rank"])
     for n in args.sizes:
         reference = None
         for ranks in args.ranks:
@@ -95,7 +73,7 @@ def main():
                 print(f"| {n} | {unknowns(n)} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) |||||||||||||")
                 continue
             history = os.path.join(r["out"], "punch_3d.history.csv")
-            answer = "reference" if reference is None else difference(reference, history)
+            answer = "reference" if reference is None else history_difference(reference, history)
             reference = reference or history
             phase = {k: sum(r["phases"].get(p, 0.0) for p in v) for k, v in PHASES.items()}
             krylov = s["linear_iterations"] / max(s["linear_solves"], 1)

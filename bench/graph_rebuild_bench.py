@@ -13,15 +13,15 @@ iterations, wall seconds and peak memory (summary.json). A rebuild also costs on
 the tangent and one MUMPS analysis (the new pattern), counted in their columns. Needs scripts/build.sh
 first; about 2 minutes per run on the 2-core CI machine.
 """
-import argparse
 import json
 import os
 import re
 import subprocess
 import sys
-import tempfile
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from speed_bench import ROOT, bench_arguments, print_table_header, work_directory  # noqa: E402
+
 DECK = os.path.join(ROOT, "tests", "regression", "contact_graph", "sliding_block_3d.xml")
 REFINED = ["Problem/Mesh/base/Elements X=64", "Problem/Mesh/base/Elements Y=2", "Problem/Mesh/base/Elements Z=24",
            "Problem/Mesh/block/Elements X=16", "Problem/Mesh/block/Elements Y=4",
@@ -37,17 +37,13 @@ def phase(log, name):
 
 
 def main():
-    options = {"--reach": dict(type=float, nargs="+", default=[0.0, 0.5, 2.5]), "--ranks": dict(type=int, default=1),
-               "--work": dict(default=None), "--contessa": dict(default=os.path.join(ROOT, "build", "bin", "contessa"))}
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    for name, option in options.items():
-        parser.add_argument(name, **option)
+    parser = bench_arguments(__doc__)
+    parser.add_argument("--reach", type=float, nargs="+", default=[0.0, 0.5, 2.5])
+    parser.add_argument("--ranks", type=int, default=1)
     args = parser.parse_args()
-    work = args.work or tempfile.mkdtemp(prefix="graph_rebuild_bench_")
-    print(f"load average {os.getloadavg()[0]:.2f}; work directory {work}\n")
-    print("| Search Reach | graph entries | rebuilds | s per rebuild | MUMPS analyses | s per factorisation "
-          "| s per Jacobian element pass | Newton iterations | wall s | peak MiB |")
-    print("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    work = work_directory(args, "graph_rebuild_bench_")
+    print_table_header(["Search Reach", "graph entries", "rebuilds", "s per rebuild", "MUMPS analyses", "s per factorisation",
+                        "s per Jacobian element pass", "Newton iterations", "wall s", "peak MiB"], align="---:")
     for reach in args.reach:
         out = os.path.join(work, f"reach_{reach:g}")
         command = ([] if args.ranks == 1 else ["mpiexec", "-n", str(args.ranks), "--oversubscribe"]) + [

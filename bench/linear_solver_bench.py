@@ -23,17 +23,14 @@ Tools: /usr/bin/python3 (standard library), mpiexec. Timings depend on the machi
 prints the load average). The largest size with MUMPS needs several GiB; --skip-mumps-above N leaves
 MUMPS out above N unknowns.
 """
-import argparse
-import json
 import os
-import re
-import subprocess
 import sys
-import tempfile
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from speed_bench import (ROOT, bench_arguments, history_difference, print_table_header, timed_run,  # noqa: E402
+                         work_directory)
+
 DECK = os.path.join(ROOT, "inputs", "verification", "uniaxial_tension_3d.xml")
-COMPARE = os.path.join(ROOT, "tests", "regression", "compare_history.py")
 STRAT = "Piro/Stratimikos/"
 SOLVERS = {
     "mumps": [],
@@ -46,8 +43,6 @@ LINEAR_PHASES = {
     "muelu": ["iterative: preconditioner set-up", "iterative: Krylov iterations"],
     "ifpack2": ["iterative: preconditioner set-up", "iterative: Krylov iterations"],
 }
-ROW = re.compile(r"^  (.+?)\s+(\d+\.\d{4})\s+(\d+\.\d)\s+(\d+)$")
-MPIEXEC = ["mpiexec", "--oversubscribe", "--allow-run-as-root", "-n"]
 
 
 def overrides(n):
@@ -58,47 +53,20 @@ def overrides(n):
 
 
 def run(contessa, n, solver, ranks, work):
-    out = os.path.join(work, f"n{n}_{solver}_np{ranks}")
-    os.makedirs(out, exist_ok=True)
-    command = ([] if ranks == 1 else MPIEXEC + [str(ranks)]) + [contessa, DECK, "--quiet", "--timers", "--output-dir", out]
-    for s in overrides(n) + SOLVERS[solver]:
-        command += ["--set", s]
-    p = subprocess.run(command, capture_output=True, text=True)
-    result = {"status": p.returncode, "out": out, "stderr": p.stderr.strip().splitlines()[-1:] }
-    phases = {}
-    for line in p.stdout.splitlines():
-        m = ROW.match(line)
-        if m:
-            phases[m[1].strip()] = float(m[2])
-    result["phases"] = phases
-    summary_path = os.path.join(out, "uniaxial_tension_3d.summary.json")
-    if os.path.exists(summary_path):
-        result["summary"] = json.load(open(summary_path))
-    return result
-
-
-def difference(reference, other):
-    p = subprocess.run([sys.executable, COMPARE, reference, other, "--rtol", "1e-8", "--atol", "1e-9", "--ignore",
-                        "newton_iterations,linear_iterations,residual_norm"], capture_output=True, text=True)
-    m = re.search(r"largest difference ([0-9.e+-]+) at (.*)$", p.stdout.strip().splitlines()[-1] if p.stdout.strip() else "")
-    verdict = "agrees" if p.returncode == 0 else "DIFFERS"
-    return f"{verdict} ({m[1]} abs.)" if m else verdict
+    return timed_run(contessa, DECK, ranks, os.path.join(work, f"n{n}_{solver}_np{ranks}"), overrides(n) + SOLVERS[solver])
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = bench_arguments(__doc__)
     parser.add_argument("--sizes", type=int, nargs="+", default=[14, 31, 46])
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--solvers", nargs="+", default=["mumps", "muelu"], choices=sorted(SOLVERS))
     parser.add_argument("--skip-mumps-above", type=int, default=400000)
-    parser.add_argument("--work", default=None)
-    parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
     args = parser.parse_args()
-    work = args.work or tempfile.mkdtemp(prefix="linear_solver_bench_")
-    print(f"load average {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f}; work directory {work}\n")
-    print("| n | unknowns | solver | ranks | Newton it. | linear solves | Krylov it./solve | wall [s] | "
-          "per Newton it. [s] | linear solver [s] | peak memory: largest rank / sum [MiB] | answer vs MUMPS np1 |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    work = work_directory(args, "linear_solver_bench_")
+    print_table_header(["n", "unknowns", "solver", "ranks", "Newton it.", "linear solves", "Krylov it./solve", "wall [s]",
+                        "per Newton it. [s]", "linear solver [s]", "peak memory: largest rank / sum [MiB]",
+                        "answer vs MUMPS np1"])
     for n in args.sizes:
         unknowns = 3 * (n + 1) ** 3
         reference = None
@@ -107,7 +75,7 @@ def main():
                 print(f"| {n} | {unknowns} | {solver} | - | skipped (--skip-mumps-above {args.skip_mumps_above}) |||||||")
                 continue
             for ranks in args.ranks:
-                r = run(args.contessa, n, solver, ranks, args.work or work)
+                r = run(args.contessa, n, solver, ranks, work)
                 s = r.get("summary")
                 if r["status"] != 0 or s is None:
                     print(f"| {n} | {unknowns} | {solver} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) |||||||")
@@ -115,7 +83,7 @@ def main():
                 history = os.path.join(r["out"], "uniaxial_tension_3d.history.csv")
                 if solver == "mumps" and ranks == 1:
                     reference = history
-                answer = "reference" if history == reference else (difference(reference, history) if reference else "-")
+                answer = "reference" if history == reference else (history_difference(reference, history) if reference else "-")
                 linear = sum(r["phases"].get(p, 0.0) for p in LINEAR_PHASES[solver])
                 continuation = s["wall_seconds"]
                 per_newton = continuation / max(s["newton_iterations"], 1)

@@ -24,6 +24,7 @@ that a change of load hits every variant alike, and the minimum is printed next 
 """
 import argparse
 import csv
+import json
 import math
 import os
 import platform
@@ -37,6 +38,7 @@ import time
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 DECK = os.path.join(ROOT, "inputs", "tube_bending.xml")
+COMPARE = os.path.join(ROOT, "tests", "regression", "compare_history.py")
 STEP = "Piro/LOCA/Step Size/"
 MESH = "Problem/Mesh/"
 # The deck checks the Contact Beta answer (31 increments); the fixed-step run expects 47.
@@ -74,22 +76,77 @@ def run(cmd, out_dir, timeout, accept=(0,), fresh=True, env=None):
     return r
 
 
+def bench_arguments(doc, work=None):
+    """An argument parser with the options every bench takes: the binary to run and the work directory
+    (default `work`; None: a new temporary directory, work_directory); the caller adds its own."""
+    p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
+    p.add_argument("--work", default=work)
+    return p
+
+
 def punch_arguments(doc, punch, repeat, work, timeout):
     """The options the 3D punch benches share: the binary, the punch sizes (elements along x and y), the
     repetitions, the work directory and the time limit per run; the caller adds its own."""
-    p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
+    p = bench_arguments(doc, work)
     p.add_argument("--punch", type=int, nargs="*", default=punch)
     p.add_argument("--repeat", type=int, default=repeat)
-    p.add_argument("--work", default=work)
     p.add_argument("--timeout", type=float, default=timeout)
     return p
 
 
-def print_host():
-    """The header line every bench prints: the host, its cores and its load (the figures depend on it)."""
+def print_host(work=None):
+    """The header line every bench prints: the host, its cores and its load (the figures depend on it), and
+    the work directory when given."""
     load = os.getloadavg()
-    print(f"host {os.uname().nodename}, {os.cpu_count()} cores, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}\n")
+    where = f"; work directory {work}" if work else ""
+    print(f"host {os.uname().nodename}, {os.cpu_count()} cores, load average {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}"
+          f"{where}\n")
+
+
+def work_directory(args, prefix):
+    """The directory of --work, or a new temporary one named after the bench; printed with the host line."""
+    work = args.work or tempfile.mkdtemp(prefix=prefix)
+    print_host(work)
+    return work
+
+
+def print_table_header(columns, align="---"):
+    """The head of a Markdown table: the column names and the alignment row, one cell per column."""
+    print("| " + " | ".join(columns) + " |")
+    print("|" + "|".join([align] * len(columns)) + "|")
+
+
+def timed_run(contessa, deck, ranks, out, sets):
+    """One run of `deck` with --timers on `ranks` ranks into `out`, its log kept there (log.txt): exit status,
+    output directory, last line of stderr, seconds per phase (the largest rank's) and the run summary
+    (<deck>.summary.json) when it was written."""
+    os.makedirs(out, exist_ok=True)
+    command = ([] if ranks == 1 else MPIEXEC + [str(ranks)]) + [contessa, deck, "--quiet", "--timers", "--output-dir", out]
+    for s in sets:
+        command += ["--set", s]
+    p = subprocess.run(command, capture_output=True, text=True)
+    with open(os.path.join(out, "log.txt"), "w") as log:
+        log.write(p.stdout + p.stderr)
+    result = {"status": p.returncode, "out": out, "stderr": p.stderr.strip().splitlines()[-1:], "phases": {}}
+    for line in p.stdout.splitlines():
+        m = ROW.match(line)
+        if m:
+            result["phases"][m[1].strip()] = float(m[2])
+    summary = os.path.join(out, os.path.splitext(os.path.basename(deck))[0] + ".summary.json")
+    if os.path.exists(summary):
+        result["summary"] = json.load(open(summary))
+    return result
+
+
+def history_difference(reference, other):
+    """Whether two runs' histories agree to 1e-8 relative (compare_history.py, the solver counts left out),
+    and the largest difference."""
+    p = subprocess.run([sys.executable, COMPARE, reference, other, "--rtol", "1e-8", "--atol", "1e-9", "--ignore",
+                        "newton_iterations,linear_iterations,residual_norm"], capture_output=True, text=True)
+    m = re.search(r"largest difference ([0-9.e+-]+) at (.*)$", p.stdout.strip().splitlines()[-1] if p.stdout.strip() else "")
+    verdict = "agrees" if p.returncode == 0 else "DIFFERS"
+    return f"{verdict} ({m[1]} abs.)" if m else verdict
 
 
 def contessa_cmd(binary, ranks, out_dir, sets, timers):

@@ -8,19 +8,11 @@ checks that rows where every node slips have |F_x|/F_y = mu, and writes docs/fig
     /usr/bin/python3 docs/scripts/coulomb_study.py [--contessa build/bin/contessa] [--work DIR]
 
 A few seconds."""
-import argparse
 import os
-import subprocess
 import sys
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tests", "regression", "contact"))
-import contact_results as cr  # noqa: E402
-
-import matplotlib  # noqa: E402
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study_support import ROOT, cr, plt, run_deck, study_arguments  # noqa: E402
 
 DECK = os.path.join(ROOT, "inputs", "verification", "coulomb_block.xml")
 MU, SHEAR = 0.3, 0.002  # friction coefficient, top displacement at load factor 1 (mm)
@@ -32,19 +24,12 @@ CASES = [
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    parser.add_argument("--work", default="/tmp/contessa_coulomb_study")
-    parser.add_argument("--figures", default=os.path.join(ROOT, "docs", "figures"))
-    args = parser.parse_args()
+    args = study_arguments(__doc__, "coulomb").parse_args()
 
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(10, 3.8))
     for k, (label, sets) in enumerate(CASES):
         out = os.path.join(args.work, f"case{k}")
-        cmd = [args.contessa, DECK, "--quiet", "--output-dir", out]
-        for s in sets:
-            cmd += ["--set", s]
-        done = subprocess.run(cmd, capture_output=True, text=True)
+        done = run_deck(args.contessa, DECK, out, sets)
         rows = cr.read_history(os.path.join(out, "coulomb_block.history.csv"))
         # exit 3 for nu = 0.3: the deck's exact normal-force checks hold for nu = 0 only.
         print(f"\n{label}: exit {done.returncode}, {len(rows) - 1} increments")

@@ -9,21 +9,14 @@ prints a Markdown table and writes docs/figures/hertz_pressure.png and docs/figu
     /usr/bin/python3 docs/scripts/hertz_study.py [--contessa build/bin/contessa] [--work DIR] [--reuse]
 
 About 50 s on one core (the finest mesh takes 33 s). --reuse skips runs whose results exist in DIR."""
-import argparse
 import os
-import subprocess
 import sys
 import time
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tests", "regression", "contact"))
-import contact_results as cr  # noqa: E402
+import numpy as np
 
-import matplotlib  # noqa: E402
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study_support import ROOT, cr, plt, run_deck, study_arguments  # noqa: E402
 
 DECK = os.path.join(ROOT, "inputs", "verification", "hertz_cylinder.xml")
 R, E, NU = 10.0, 1000.0, 0.3
@@ -36,11 +29,8 @@ def run(contessa, work, label, sets, reuse):
     hist = os.path.join(out, "hertz_cylinder.history.csv")
     seconds = float("nan")
     if not (reuse and os.path.exists(exo)):
-        args = [contessa, DECK, "--quiet", "--output-dir", out]
-        for s in sets:
-            args += ["--set", s]
         start = time.time()
-        done = subprocess.run(args, capture_output=True, text=True)
+        done = run_deck(contessa, DECK, out, sets)
         seconds = time.time() - start
         # Exit 3 (the deck's own regression values are for the 160 x 100 mesh) is expected elsewhere.
         if done.returncode not in (0, 3):
@@ -51,10 +41,7 @@ def run(contessa, work, label, sets, reuse):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    parser.add_argument("--work", default="/tmp/contessa_hertz_study")
-    parser.add_argument("--figures", default=os.path.join(ROOT, "docs", "figures"))
+    parser = study_arguments(__doc__, "hertz")
     parser.add_argument("--reuse", action="store_true")
     args = parser.parse_args()
 

@@ -12,20 +12,13 @@ pairings at delta = 0.01 (1 %) to show the free-end defect (docs/verification-co
     /usr/bin/python3 docs/scripts/patch_study.py [--contessa build/bin/contessa] [--work DIR]
 
 A few seconds."""
-import argparse
 import os
-import subprocess
 import sys
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tests", "regression", "contact"))
-import contact_results as cr  # noqa: E402
+import numpy as np
 
-import matplotlib  # noqa: E402
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from study_support import ROOT, cr, plt, run_deck, study_arguments  # noqa: E402
 
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_patch.xml")
 E, NU, H, EPS_N = 1000.0, 0.3, 1.0, 1e6
@@ -51,10 +44,7 @@ def run_patch(contessa, deck, out, mesh_sets, slave, two_pass, extra_sets=()):
     sets = list(mesh_sets) + [f"Problem/Contact/interface/Slave Side Set={slave}",
                               f"Problem/Contact/interface/Master Side Set={master}",
                               f"Problem/Contact/interface/Two Pass={'true' if two_pass else 'false'}"] + list(extra_sets)
-    args = [contessa, deck, "--quiet", "--output-dir", out]
-    for s in sets:
-        args += ["--set", s]
-    done = subprocess.run(args, capture_output=True, text=True)
+    done = run_deck(contessa, deck, out, sets)
     stem = os.path.splitext(os.path.basename(deck))[0]
     hist = cr.read_history(os.path.join(out, stem + ".history.csv"))
     res = cr.Results(os.path.join(out, stem + ".exo"))
@@ -82,11 +72,7 @@ def run(contessa, work, tag, lower, upper, slave, two_pass, delta):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    parser.add_argument("--work", default="/tmp/contessa_patch_study")
-    parser.add_argument("--figures", default=os.path.join(ROOT, "docs", "figures"))
-    args = parser.parse_args()
+    args = study_arguments(__doc__, "patch").parse_args()
 
     print("delta = 0.001 mm (0.1 %). Exact p = 1.0976948 (single pass), 1.0982976 (two-pass; each pass "
           "reports half).\n")

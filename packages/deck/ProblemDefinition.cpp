@@ -8,6 +8,7 @@
 #include <Teuchos_Array.hpp>
 
 #include "common/Error.hpp"
+#include "common/ParameterTable.hpp"
 #include "deck/Axisymmetry.hpp"
 #include "deck/AutomaticPenalty.hpp"
 #include "deck/ContactLawFactory.hpp"
@@ -144,8 +145,78 @@ contact::ContactSurface gatheredSurface(const mesh::DistributedMesh& part, const
   return contact::ContactSurface::fromSurface(facets, where, revolved);
 }
 
+// The parameters every contact interface takes (its Law's own are ContactLawFactory's), as the deck gives them.
+struct InterfaceParameters {
+  enum class Discretization { NodeToSegment, Mortar };
+  enum class Smoothing { None, Hermite };
+  struct Rigid {
+    Teuchos::Array<double> points, motion;
+    Teuchos::Array<int> facets;
+  };
+  std::string slaveSet, masterSet;
+  Rigid rigid;
+  std::string law;
+  double searchReach = -1.0;
+  bool twoPass = false;
+  Discretization discretization = Discretization::NodeToSegment;
+  Smoothing smoothing = Smoothing::None;
+};
+
+const ParameterTable<InterfaceParameters::Rigid>& rigidSurfaceTable() {
+  using R = InterfaceParameters::Rigid;
+  static const auto table =
+      ParameterTable<R>()
+          .value("Points", &R::points, Teuchos::Array<double>(),
+                 "2D: x0, y0, x1, y1, ...: a polyline; the rigid body lies to the left of the direction of traversal. "
+                 "3D: x0, y0, z0, x1, y1, z1, ...: the corners of the Facets")
+          .value("Facets", &R::facets, Teuchos::Array<int>(),
+                 "3D (required): 4 point indices (0-based) per quadrilateral, counter-clockwise seen from the slave "
+                 "side, so that the normal (right-hand rule) points out of the rigid body towards the slave. "
+                 "2D: empty = consecutive points; else 2 indices per segment")
+          .value("Motion", &R::motion, Teuchos::Array<double>(),
+                 "Displacement of the rigid surface at load factor 1 (x, y[, z])");
+  return table;
+}
+
+const ParameterTable<InterfaceParameters>& interfaceTable() {
+  using S = InterfaceParameters;
+  static const auto table =
+      ParameterTable<S>("Contact Interface")
+          .text("Slave Side Set", &S::slaveSet, "",
+                "Side set whose nodes may not penetrate the master (node-to-segment in 2D, node-to-face in 3D); required")
+          .text("Master Side Set", &S::masterSet, "",
+                "Side set of a deformable master body; leave empty for a rigid master (Rigid Surface)")
+          .sublist("Rigid Surface",
+                   "A rigid master moving rigidly with the load factor: a polyline (2D) or quadrilaterals (3D)",
+                   rigidSurfaceTable(), &S::rigid)
+          .choice("Law", &S::law, ContactLawFactory::defaultLaw(), ContactLawFactory::names(),
+                  "Contact law; its parameters are listed under Contact laws below")
+          .real("Search Reach", &S::searchReach, -1.0,
+                "Matrix graph of the interface: a length >= 0 couples each slave node to the deformable master "
+                "facets within 2 x (largest master facet) + Search Reach of it, in the reference configuration at the "
+                "start and in the current one whenever a slave node meets a facet beyond its reserved ones (the graph "
+                "is then rebuilt: a line in the log, graph_rebuilds in the run summary); Search Reach is the margin "
+                "of sliding and relative deformation (per component) beyond one master facet between rebuilds: "
+                "larger, a bigger graph and fewer rebuilds. -1 = automatic: the whole master surface when slave x "
+                "master nodes <= 250000 (never rebuilt), else as 0")
+          .value("Two Pass", &S::twoPass, false,
+                 "Also enforce contact with slave and master swapped (deformable master only)")
+          .enumChoice("Discretization", &S::discretization, S::Discretization::NodeToSegment,
+                      {"Node To Segment", "Mortar"},
+                      "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: "
+                      "weighted gaps over the slave facets against every master facet they overlap (2D with Coulomb "
+                      "friction; 3D on Tri3/Quad4 faces, frictionless; penalty, single pass: passes the non-matching "
+                      "contact patch test)")
+          .enumChoice("Master Smoothing", &S::smoothing, S::Smoothing::None, {"None", "Hermite"},
+                      "None: the master surface is its facets. Hermite (2D node-to-segment, deformable 2-node "
+                      "master): each master segment is the cubic Hermite curve through its ends with the tangents of "
+                      "the neighbouring nodes, so the surface and its normal are continuous across the master nodes "
+                      "(C1); for sliding under curved bodies (docs/theory-contact.md §16)");
+  return table;
+}
+
 // What Discretization = Mortar does not do yet (docs/theory-contact.md, "Mortar"): one-line InputErrors.
-void requireMortarSupported(const ParameterList& list, int dimension, bool revolved, const contact::ContactLawParameters& law,
+void requireMortarSupported(bool twoPass, int dimension, bool revolved, const contact::ContactLawParameters& law,
                             const std::string& where) {
   const std::string what = where + "/Discretization: Mortar is implemented ";
   requireInput(!law.isAugmented(), where + "/Enforcement: Augmented Lagrangian is implemented for Node To Segment only, not "
@@ -154,7 +225,7 @@ void requireMortarSupported(const ParameterList& list, int dimension, bool revol
                where + "/Friction Coefficient: Discretization = Mortar is frictionless in 3D (penalty, no Coulomb "
                        "friction yet); set Friction Coefficient = 0 or use Discretization = Node To Segment");
   requireInput(!revolved, what + "for plane strain and 3D only, not for an axisymmetric problem; use Node To Segment");
-  requireInput(!list.get<bool>("Two Pass"), what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
+  requireInput(!twoPass, what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
 
 // What Master Smoothing = Hermite takes (contact/SmoothedMaster.hpp): one-line InputErrors.
@@ -241,25 +312,23 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   contact::ContactInterfaceSpec spec;
   spec.name = name;
   spec.dimension = mesh.dimension;
-  spec.searchReach = list.get<double>("Search Reach");
+  const InterfaceParameters in = interfaceTable().read(list);
+  spec.searchReach = in.searchReach;
   requireInput(spec.searchReach == -1.0 || spec.searchReach >= 0.0,
                where + "/Search Reach: expected a length >= 0, or -1 (automatic), got " + std::to_string(spec.searchReach));
-  spec.law = ContactLawFactory::create(list.get<std::string>("Law"), list, where);
+  spec.law = ContactLawFactory::create(in.law, list, where);
 
-  const std::string slaveSet = list.get<std::string>("Slave Side Set");
-  const std::string masterSet = list.get<std::string>("Master Side Set");
-  const auto& rigidList = list.sublist("Rigid Surface");
-  const auto& points = rigidList.get<Teuchos::Array<double>>("Points");
-  const auto& facets = rigidList.get<Teuchos::Array<int>>("Facets");
-  const auto& motion = rigidList.get<Teuchos::Array<double>>("Motion");
+  const std::string& slaveSet = in.slaveSet;
+  const std::string& masterSet = in.masterSet;
+  const auto& [points, motion, facets] = in.rigid;
   requireInput(!slaveSet.empty(), where + "/Slave Side Set: required");
   requireSideSet(mesh, slaveSet, where + "/Slave Side Set");
   const bool rigid = masterSet.empty();
   requireInput(rigid != points.empty(),
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
-  spec.mortar = list.get<std::string>("Discretization") == "Mortar";
-  if (spec.mortar) requireMortarSupported(list, mesh.dimension, revolved, spec.law, where);
+  spec.mortar = in.discretization == InterfaceParameters::Discretization::Mortar;
+  if (spec.mortar) requireMortarSupported(in.twoPass, mesh.dimension, revolved, spec.law, where);
   mesh::ReplicatedSurface slaveFacets;
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveFacets = slave.facets;
@@ -273,8 +342,8 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   if (spec.mortar && slave.nodesPerFacet == 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
   if (rigid) {
-    requireInput(!list.get<bool>("Two Pass"), where + "/Two Pass: a rigid master has no slave side of its own");
-    requireInput(list.get<std::string>("Master Smoothing") == "None",
+    requireInput(!in.twoPass, where + "/Two Pass: a rigid master has no slave side of its own");
+    requireInput(in.smoothing == InterfaceParameters::Smoothing::None,
                  where + "/Master Smoothing: Hermite smooths a deformable master's side set; a Rigid Surface is "
                          "its own polyline (use None)");
     spec.rigidMaster = true;
@@ -297,10 +366,10 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.masterFacets = master.facets;
   spec.masterFacetNodes = master.nodesPerFacet;
   if (spec.mortar) requireMortarFacets(mesh.dimension, master.nodesPerFacet, masterSet, where);
-  const bool smoothed = list.get<std::string>("Master Smoothing") == "Hermite";
+  const bool smoothed = in.smoothing == InterfaceParameters::Smoothing::Hermite;
   if (smoothed) requireSmoothingSupported(spec, where, masterSet);
   if (smoothed) smoothMaster(spec);
-  if (!list.get<bool>("Two Pass")) return {spec};
+  if (!in.twoPass) return {spec};
   // Two-pass: the same interface with slave and master swapped, each pass with its own history.
   contact::ContactInterfaceSpec swapped = spec;
   swapped.secondPass = true;
@@ -370,43 +439,7 @@ RCP<const ParameterList> regressionValidParameters() {
   return p;
 }
 
-RCP<const ParameterList> contactValidParameters() {
-  auto p = rcp(new ParameterList("Contact Interface"));
-  p->set("Slave Side Set", std::string(""), "Side set whose nodes may not penetrate the master (node-to-segment in 2D, node-to-face in 3D); required");
-  p->set("Master Side Set", std::string(""),
-         "Side set of a deformable master body; leave empty for a rigid master (Rigid Surface)");
-  auto& rigid = p->sublist("Rigid Surface", false,
-                           "A rigid master moving rigidly with the load factor: a polyline (2D) or quadrilaterals (3D)");
-  rigid.set("Points", Teuchos::Array<double>(),
-            "2D: x0, y0, x1, y1, ...: a polyline; the rigid body lies to the left of the direction of traversal. "
-            "3D: x0, y0, z0, x1, y1, z1, ...: the corners of the Facets");
-  rigid.set("Facets", Teuchos::Array<int>(),
-            "3D (required): 4 point indices (0-based) per quadrilateral, counter-clockwise seen from the slave "
-            "side, so that the normal (right-hand rule) points out of the rigid body towards the slave. "
-            "2D: empty = consecutive points; else 2 indices per segment");
-  rigid.set("Motion", Teuchos::Array<double>(), "Displacement of the rigid surface at load factor 1 (x, y[, z])");
-  setChoice(*p, "Law", ContactLawFactory::defaultLaw(), ContactLawFactory::names(),
-            "Contact law; its parameters are listed under Contact laws below");
-  p->set("Search Reach", -1.0,
-         "Matrix graph of the interface: a length >= 0 couples each slave node to the deformable master facets "
-         "within 2 x (largest master facet) + Search Reach of it, in the reference configuration at the start and "
-         "in the current one whenever a slave node meets a facet beyond its reserved ones (the graph is then "
-         "rebuilt: a line in the log, graph_rebuilds in the run summary); Search Reach is the margin of sliding "
-         "and relative deformation (per component) beyond one master facet between rebuilds: larger, a bigger "
-         "graph and fewer rebuilds. -1 = automatic: the whole master surface when slave x master nodes <= "
-         "250000 (never rebuilt), else as 0");
-  p->set("Two Pass", false, "Also enforce contact with slave and master swapped (deformable master only)");
-  setChoice(*p, "Discretization", "Node To Segment", {"Node To Segment", "Mortar"},
-            "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: weighted gaps "
-            "over the slave facets against every master facet they overlap (2D with Coulomb friction; 3D on "
-            "Tri3/Quad4 faces, frictionless; penalty, single pass: passes the non-matching contact patch test)");
-  setChoice(*p, "Master Smoothing", "None", {"None", "Hermite"},
-            "None: the master surface is its facets. Hermite (2D node-to-segment, deformable 2-node master): each "
-            "master segment is the cubic Hermite curve through its ends with the tangents of the neighbouring "
-            "nodes, so the surface and its normal are continuous across the master nodes (C1); for sliding under "
-            "curved bodies (docs/theory-contact.md §16)");
-  return p;
-}
+RCP<const ParameterList> contactValidParameters() { return interfaceTable().publish(); }
 
 RCP<const ParameterList> contactValidParameters(const std::string& law) {
   auto p = rcp(new ParameterList(*contactValidParameters()));
@@ -430,7 +463,8 @@ RCP<const ParameterList> problemValidParameters() {
   auto& out = p->sublist("Output", false, "Results files");
   out.set("Reaction Node Sets", Teuchos::Array<std::string>(),
           "Node sets whose reaction forces are summed into the history (reaction_<set>_<x|y|z>)");
-  setChoice(out, "Exodus Layout", "Single File", {"Single File", "Per Rank"},
+  const auto& layouts = mesh::exodusLayoutNames();
+  setChoice(out, "Exodus Layout", layouts[static_cast<int>(mesh::ExodusLayout::SingleFile)], layouts,
             "Single File: <name>.exo, gathered to rank 0 and written there; Per Rank: each of the N ranks writes "
             "its own piece, <name>.exo.N.r (a spatially decomposed set: ParaView opens it as one data set, "
             "SEACAS epu joins it), nothing gathered");
@@ -558,7 +592,8 @@ void readOutput(const ParameterList& output, const mesh::Mesh& mesh, ProblemDefi
     requireNodeSet(mesh, s, "Problem/Output/Reaction Node Sets");
     def.reactionNodeSets.push_back(s);
   }
-  def.exodusPerRank = output.get<std::string>("Exodus Layout") == "Per Rank";
+  def.exodusPerRank = output.get<std::string>("Exodus Layout") ==
+                      mesh::exodusLayoutNames()[static_cast<int>(mesh::ExodusLayout::PerRank)];
   const auto& checkpoint = output.sublist("Checkpoint");
   def.checkpointEvery = checkpoint.get<int>("Every N Increments");
   requireInput(def.checkpointEvery >= 0, "Problem/Output/Checkpoint/Every N Increments: expected an integer >= 0 (0: "

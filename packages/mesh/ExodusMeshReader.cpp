@@ -30,11 +30,9 @@ class Reader {
                  path() + ": not a readable Exodus file (its header gives " + std::to_string(init.num_nodes) +
                      " nodes and " + std::to_string(init.num_elem) + " elements)");
     // Before anything is allocated: a file's header can promise more than the machine holds.
-    MeshSize size;
-    size.nodes = static_cast<double>(init.num_nodes);
-    size.elements = static_cast<double>(init.num_elem);
-    size.dimension = static_cast<int>(init.num_dim);
-    size.nodesPerElement = largestNodesPerElement(init.num_elem_blk, size.dimension == 2 ? 4 : 8);
+    MeshSize size(static_cast<double>(init.num_nodes), static_cast<double>(init.num_elem),
+                  static_cast<int>(init.num_dim));
+    size.nodesPerElement = largestNodesPerElement(init.num_elem_blk, size.nodesPerElement);
     requireRunFits(size, path(), "use a coarser mesh or a machine with more memory");
     // Names longer than the library's default of 32 characters would be truncated otherwise.
     const int64_t nameLength = std::max<int64_t>(32, ex_inquire_int(id(), EX_INQ_DB_MAX_USED_NAME_LENGTH));

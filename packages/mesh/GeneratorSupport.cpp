@@ -44,15 +44,11 @@ std::string requireFits(const MeshSize& size, const std::vector<std::pair<std::s
 }
 
 std::string requireGridFits(const std::vector<std::pair<std::string, int>>& counts) {
-  MeshSize size;
-  size.nodes = 1;
-  size.elements = 1;
+  MeshSize size(1, 1, static_cast<int>(counts.size()));
   for (const auto& c : counts) {
     size.nodes *= c.second + 1.0;
     size.elements *= c.second;
   }
-  size.dimension = static_cast<int>(counts.size());
-  size.nodesPerElement = size.dimension == 2 ? 4 : 8;
   return requireFits(size, counts);
 }
 

@@ -469,11 +469,7 @@ class Reader {
       for (GlobalIndex tag : b.connectivity) used_.push_back(static_cast<std::size_t>(tag));
     std::sort(used_.begin(), used_.end());
     used_.erase(std::unique(used_.begin(), used_.end()), used_.end());
-    MeshSize size;
-    size.nodes = static_cast<double>(used_.size());
-    size.elements = static_cast<double>(mesh.numElements());
-    size.dimension = mesh.dimension;
-    size.nodesPerElement = mesh.dimension == 2 ? 4 : 8;
+    MeshSize size(static_cast<double>(used_.size()), static_cast<double>(mesh.numElements()), mesh.dimension);
     for (const auto& b : mesh.blocks) size.nodesPerElement = std::max(size.nodesPerElement, nodesPerCell(b.cellType));
     requireRunFits(size, path_, "use a coarser mesh or a machine with more memory");
 

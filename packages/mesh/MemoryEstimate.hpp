@@ -13,10 +13,14 @@ namespace contessa::mesh {
 /// The sizes that decide a run's memory. Counts are doubles: products of deck integers can exceed
 /// every integer type, and an estimate needs no exactness.
 struct MeshSize {
-  double nodes = 0;
-  double elements = 0;
-  int dimension = 2;
-  int nodesPerElement = 4;  ///< 4 (Quad4) or 8 (Hex8)
+  /// A mesh of linear cells, QUAD4 (2D) or HEX8 (3D); a reader raises nodesPerElement to its largest cell's.
+  MeshSize(double nodes, double elements, int dimension)
+      : nodes(nodes), elements(elements), dimension(dimension), nodesPerElement(dimension == 2 ? 4 : 8) {}
+
+  double nodes;
+  double elements;
+  int dimension;
+  int nodesPerElement;  ///< of the largest cell
 };
 
 /// A rough estimate of a run's memory in bytes, by part. Calibrated on 2D runs (Q4 Enhanced, MUMPS)

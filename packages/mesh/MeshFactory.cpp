@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "common/Error.hpp"
-#include "common/ParameterPublishing.hpp"
+#include "common/ParameterTable.hpp"
 #include "common/Registry.hpp"
 #include "mesh/DecomposedExodusReader.hpp"
 #include "mesh/ExodusMeshReader.hpp"
@@ -15,7 +15,6 @@
 #include "mesh/Generators.hpp"
 #include "mesh/MeshConversion.hpp"
 #include "mesh/MeshDistribution.hpp"
-#include "mesh/MeshFactoryParameters.hpp"
 
 namespace contessa::mesh {
 namespace {
@@ -34,12 +33,12 @@ auto generate(const std::string& where, F&& make) {
   }
 }
 
-// A generator's parameter table (MeshFactoryParameters.hpp), built once.
+// A mesh source's parameter table (common/ParameterTable.hpp), built once.
 template <class Spec>
 using Table = const ParameterTable<Spec>& (*)();
 
 template <class Spec, Table<Spec> table>
-RCP<ParameterList> generatorParameters() {
+RCP<ParameterList> publishedParameters() {
   return table().publish();
 }
 
@@ -266,40 +265,46 @@ const ParameterTable<SphereOctantSpec>& sphereOctantTable() {
 
 // ---- Mesh files ----
 
-RCP<ParameterList> fileParameters(const std::string& name, const std::string& what) {
-  auto p = rcp(new ParameterList(name));
-  p->set("File Name", std::string(""), what + " (relative to the deck's directory); required");
-  return p;
+// What a mesh file's list says: the file, and for an Exodus file how it is laid out.
+struct MeshFileSpec {
+  std::string fileName;
+  ExodusLayout layout = ExodusLayout::SingleFile;
+};
+
+ParameterTable<MeshFileSpec> fileTable(const std::string& name, const std::string& what) {
+  return ParameterTable<MeshFileSpec>(name).text("File Name", &MeshFileSpec::fileName, "",
+                                                 what + " (relative to the deck's directory); required");
 }
 
-// The path "File Name" gives, relative to the deck's directory.
-std::string meshPath(const ParameterList& list, const std::string& where, const std::string& directory,
+// The path File Name gives, relative to the deck's directory.
+std::string meshPath(const MeshFileSpec& spec, const std::string& where, const std::string& directory,
                      const std::string& what) {
-  std::string file = list.get<std::string>("File Name");
+  std::string file = spec.fileName;
   requireInput(!file.empty(), where + "/File Name: required (" + what + ")");
   if (file.front() != '/' && !directory.empty()) file = directory + "/" + file;
   return file;
 }
 
-// The file named by "File Name", relative to the deck's directory, which must exist.
-std::string meshFile(const ParameterList& list, const std::string& where, const std::string& directory,
+// The file named by File Name, relative to the deck's directory, which must exist.
+std::string meshFile(const MeshFileSpec& spec, const std::string& where, const std::string& directory,
                      const std::string& what) {
-  const std::string file = meshPath(list, where, directory, what);
+  const std::string file = meshPath(spec, where, directory, what);
   requireInput(std::ifstream(file).good(), where + "/File Name: mesh file '" + file + "' does not exist");
   return file;
 }
 
-RCP<ParameterList> exodusFileParameters() {
-  auto p = fileParameters("Exodus File", "Exodus II mesh file; with Layout = Per Rank the set's name without .N.r");
-  setChoice(*p, "Layout", "Single File", {"Single File", "Per Rank"},
-            "Single File: one file holding the whole mesh, partitioned with METIS; Per Rank: the "
-            "pre-split set <File Name>.N.r for a run on N ranks (r zero-padded to the digits of N, as SEACAS decomp "
-            "or nem_slice + nem_spread write it, or Contessa's Problem/Output/Exodus Layout = Per Rank), each rank "
-            "reading only its own file, as split");
-  return p;
+const ParameterTable<MeshFileSpec>& exodusFileTable() {
+  static const auto table =
+      fileTable("Exodus File", "Exodus II mesh file; with Layout = Per Rank the set's name without .N.r")
+          .enumChoice("Layout", &MeshFileSpec::layout, ExodusLayout::SingleFile, exodusLayoutNames(),
+                      "Single File: one file holding the whole mesh, partitioned with METIS; Per Rank: the "
+                      "pre-split set <File Name>.N.r for a run on N ranks (r zero-padded to the digits of N, as SEACAS "
+                      "decomp or nem_slice + nem_spread write it, or Contessa's Problem/Output/Exodus Layout = Per "
+                      "Rank), each rank reading only its own file, as split");
+  return table;
 }
 
-bool perRank(const ParameterList& list) { return list.get<std::string>("Layout") == "Per Rank"; }
+bool perRank(const MeshFileSpec& spec) { return spec.layout == ExodusLayout::PerRank; }
 
 const char* const kPerRankWhat = "the name of a per-rank Exodus II set, without .N.r";
 
@@ -318,8 +323,8 @@ std::string setsFound(const std::string& base) {
 // The whole mesh from a per-rank set (for tools and tests; a run reads its part, below): the set for
 // the communicator's rank count when present, otherwise the only set beside File Name; its files are
 // joined on the calling rank.
-Mesh joinPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm comm) {
-  const std::string base = meshPath(list, where, directory, kPerRankWhat);
+Mesh joinPerRankSet(const MeshFileSpec& spec, const std::string& where, const std::string& directory, MPI_Comm comm) {
+  const std::string base = meshPath(spec, where, directory, kPerRankWhat);
   const std::vector<int> sets = decomposedFileSets(base);
   const int ranks = ranksOf(comm).size;
   int numFiles = std::find(sets.begin(), sets.end(), ranks) != sets.end() ? ranks : 0;
@@ -330,9 +335,9 @@ Mesh joinPerRankSet(const ParameterList& list, const std::string& where, const s
 }
 
 // This rank's part of a per-rank set: its own file, base.N.r on N ranks.
-DistributedMesh readPerRankSet(const ParameterList& list, const std::string& where, const std::string& directory,
+DistributedMesh readPerRankSet(const MeshFileSpec& spec, const std::string& where, const std::string& directory,
                                MPI_Comm comm) {
-  const std::string base = meshPath(list, where, directory, kPerRankWhat);
+  const std::string base = meshPath(spec, where, directory, kPerRankWhat);
   const Ranks ranks = ranksOf(comm);
   const std::string mine = decomposedFileName(base, ranks.size, ranks.rank);
   std::exception_ptr failure;
@@ -347,20 +352,25 @@ DistributedMesh readPerRankSet(const ParameterList& list, const std::string& whe
 }
 
 Mesh createExodusFile(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm comm) {
-  if (perRank(list)) return joinPerRankSet(list, where, directory, comm);
-  return readExodusMesh(meshFile(list, where, directory, "an Exodus II mesh file"));
+  const MeshFileSpec spec = exodusFileTable().read(list);
+  if (perRank(spec)) return joinPerRankSet(spec, where, directory, comm);
+  return readExodusMesh(meshFile(spec, where, directory, "an Exodus II mesh file"));
 }
 
 DistributedMesh createExodusFilePart(const ParameterList& list, const std::string& where, const std::string& directory,
                                      MPI_Comm comm) {
-  if (perRank(list)) return readPerRankSet(list, where, directory, comm);
+  const MeshFileSpec spec = exodusFileTable().read(list);
+  if (perRank(spec)) return readPerRankSet(spec, where, directory, comm);
   return distributeMesh(comm, [&] { return createExodusFile(list, where, directory, comm); });
 }
 
-RCP<ParameterList> gmshFileParameters() { return fileParameters("Gmsh File", "Gmsh mesh file (.msh)"); }
+const ParameterTable<MeshFileSpec>& gmshFileTable() {
+  static const auto table = fileTable("Gmsh File", "Gmsh mesh file (.msh)");
+  return table;
+}
 
 Mesh createGmshFile(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm) {
-  return readGmshMesh(meshFile(list, where, directory, "a Gmsh .msh file"));
+  return readGmshMesh(meshFile(gmshFileTable().read(list), where, directory, "a Gmsh .msh file"));
 }
 
 // "Mesh File": the reader chosen by the file's extension.
@@ -370,12 +380,13 @@ const struct {
 } kReaders[] = {{".msh", &readGmshMesh}, {".exo", &readExodusMesh}, {".e", &readExodusMesh},
                 {".g", &readExodusMesh},  {".gen", &readExodusMesh}, {".ex2", &readExodusMesh}};
 
-RCP<ParameterList> meshFileParameters() {
-  return fileParameters("Mesh File", "Mesh file: .msh (Gmsh) or .exo, .e, .g, .gen, .ex2 (Exodus II)");
+const ParameterTable<MeshFileSpec>& meshFileTable() {
+  static const auto table = fileTable("Mesh File", "Mesh file: .msh (Gmsh) or .exo, .e, .g, .gen, .ex2 (Exodus II)");
+  return table;
 }
 
 Mesh createMeshFile(const ParameterList& list, const std::string& where, const std::string& directory, MPI_Comm) {
-  const std::string file = meshFile(list, where, directory, "a .msh or Exodus II mesh file");
+  const std::string file = meshFile(meshFileTable().read(list), where, directory, "a .msh or Exodus II mesh file");
   std::string known;
   for (const auto& r : kReaders) {
     const std::string ext = r.extension;
@@ -401,40 +412,40 @@ struct MeshSource {
 const Registry<RegistryRow<MeshSource>>& registry() {
   static const Registry<RegistryRow<MeshSource>> rows("mesh type", {
     {"Rectangle", "A structured rectangle of QUAD4 (2D), graded along x and y",
-     &generatorParameters<WithCells<RectangleSpec>, &rectangleTable>,
+     &publishedParameters<WithCells<RectangleSpec>, &rectangleTable>,
      &createVariant<RectangleSpec, &rectangleTable, &generateRectangle, kQuadrilaterals>,
      &createVariantPart<RectangleSpec, &rectangleTable, &generateRectangle, &generateRectanglePart, kQuadrilaterals>},
     {"Annulus Sector",
      "A ring segment of QUAD4 (2D) centred at the origin, graded through the wall and along the arc",
-     &generatorParameters<AnnulusSectorSpec, &annulusSectorTable>,
+     &publishedParameters<AnnulusSectorSpec, &annulusSectorTable>,
      &createGenerated<AnnulusSectorSpec, &annulusSectorTable, &generateAnnulusSector>,
      &createGeneratedPart<AnnulusSectorSpec, &annulusSectorTable, &generateAnnulusSectorPart>},
-    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &generatorParameters<WithCells<BoxSpec>, &boxTable>,
+    {"Box", "A structured box of HEX8 (3D), graded along x, y and z", &publishedParameters<WithCells<BoxSpec>, &boxTable>,
      &createVariant<BoxSpec, &boxTable, &generateBox, kHexahedra>,
      &createVariantPart<BoxSpec, &boxTable, &generateBox, &generateBoxPart, kHexahedra>},
     {"Hollow Cylinder Sector",
      "The Annulus Sector extruded along z into layers of HEX8 (3D); its first layer of nodes is the Annulus "
      "Sector's (same numbers, same x and y), so one layer with u_z = 0 reproduces a plane-strain 2D run",
-     &generatorParameters<HollowCylinderSectorSpec, &hollowCylinderSectorTable>,
+     &publishedParameters<HollowCylinderSectorSpec, &hollowCylinderSectorTable>,
      &createGenerated<HollowCylinderSectorSpec, &hollowCylinderSectorTable, &generateHollowCylinderSector>,
      &createGeneratedPart<HollowCylinderSectorSpec, &hollowCylinderSectorTable, &generateHollowCylinderSectorPart>},
     {"Sphere Octant",
      "One eighth of a ball on HEX8 (3D) without degenerate elements (an inner cube and three shells reaching "
      "the sphere, as a cube-sphere), for Hertz contact at its pole",
-     &generatorParameters<SphereOctantSpec, &sphereOctantTable>,
+     &publishedParameters<SphereOctantSpec, &sphereOctantTable>,
      &createGenerated<SphereOctantSpec, &sphereOctantTable, &generateSphereOctant>,
      &createGeneratedPart<SphereOctantSpec, &sphereOctantTable, &generateSphereOctantPart>},
     {"Exodus File",
      "An Exodus II mesh: element blocks of TRI3, TRI6, QUAD4, QUAD8, QUAD9 (2D) or TETRA4, TETRA10, HEX8, "
      "HEX20, HEX27, WEDGE6, WEDGE15 (3D), node sets and side sets with their names",
-     &exodusFileParameters, &createExodusFile, &createExodusFilePart},
+     &publishedParameters<MeshFileSpec, &exodusFileTable>, &createExodusFile, &createExodusFilePart},
     {"Gmsh File",
      "A Gmsh mesh (.msh) of order 1 or 2: physical volumes (2D: surfaces) become element blocks (one per "
      "cell type: a group of several is split into <group>_<type> blocks), their nodes put in the Exodus order; "
      "physical groups one dimension lower side sets and node sets, physical points and curves node sets",
-     &gmshFileParameters, &createGmshFile},
-    {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension", &meshFileParameters,
-     &createMeshFile},
+     &publishedParameters<MeshFileSpec, &gmshFileTable>, &createGmshFile},
+    {"Mesh File", "A Gmsh or Exodus II mesh, the reader chosen by the file's extension",
+     &publishedParameters<MeshFileSpec, &meshFileTable>, &createMeshFile},
   });
   return rows;
 }
@@ -443,6 +454,11 @@ const Registry<RegistryRow<MeshSource>>& registry() {
 std::string typeParameter(const std::string& where) { return (where.empty() ? "" : where + "/") + "Type"; }
 
 }  // namespace
+
+const std::vector<std::string>& exodusLayoutNames() {
+  static const std::vector<std::string> names = {"Single File", "Per Rank"};  // the order of ExodusLayout
+  return names;
+}
 
 std::vector<std::string> MeshFactory::names() { return registry().names(); }
 

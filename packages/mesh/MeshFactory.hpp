@@ -3,7 +3,7 @@
 // registry row each (MeshFactory.cpp) with the deck parameters it takes, their docs and defaults,
 // and the function that builds the mesh. The deck validates a Mesh list against validParameters
 // before create; the deck reference is generated from the same lists. A generator's parameters are one
-// table (MeshFactoryParameters.hpp) that both publishes them and reads them into its spec. Adding a mesh
+// table (common/ParameterTable.hpp) that both publishes them and reads them into its spec. Adding a mesh
 // source = one function that builds a Mesh + its parameter table + one row.
 #include <string>
 #include <vector>
@@ -14,6 +14,14 @@
 #include "mesh/Mesh.hpp"
 
 namespace contessa::mesh {
+
+/// How a set of Exodus II files holds a mesh or a run's results: one file, or the per-rank set
+/// <name>.N.r (DecomposedExodusReader.hpp).
+enum class ExodusLayout { SingleFile, PerRank };
+
+/// The deck's names of ExodusLayout, in its order: Problem/Mesh's Layout (Type = Exodus File) and
+/// Problem/Output's Exodus Layout.
+const std::vector<std::string>& exodusLayoutNames();
 
 class MeshFactory {
  public:

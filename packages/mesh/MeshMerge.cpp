@@ -24,9 +24,7 @@ Mesh mergeMeshes(const std::vector<std::pair<std::string, Mesh>>& parts) {
   }
 
   // Each part passed its own check; the merged copy and the run on it need the sum.
-  MeshSize total;
-  total.dimension = parts[0].second.dimension;
-  total.nodesPerElement = total.dimension == 2 ? 4 : 8;
+  MeshSize total(0, 0, parts[0].second.dimension);
   for (const auto& part : parts) {
     total.nodes += static_cast<double>(part.second.numNodes());
     total.elements += static_cast<double>(part.second.numElements());

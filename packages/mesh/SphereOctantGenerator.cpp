@@ -48,12 +48,8 @@ class SphereOctant {
   // The cube's (n+1)³ nodes and n³ elements, and per shell layer the 3n² + 3n + 1 nodes of the
   // cube's outer boundary and 3n² elements.
   static MeshSize size(int n, int m) {
-    MeshSize s;
-    s.nodes = (n + 1.0) * (n + 1.0) * (n + 1.0) + m * (3.0 * n * n + 3.0 * n + 1.0);
-    s.elements = static_cast<double>(n) * n * n + 3.0 * n * n * m;
-    s.dimension = 3;
-    s.nodesPerElement = 8;
-    return s;
+    return MeshSize((n + 1.0) * (n + 1.0) * (n + 1.0) + m * (3.0 * n * n + 3.0 * n + 1.0),
+                    static_cast<double>(n) * n * n + 3.0 * n * n * m, 3);
   }
 
   GlobalIndex numNodes() const { return cube_.numNodes() + m_ * boundaryCount_; }

@@ -20,12 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-MeshSize grid(double n0, double n1) {
-  MeshSize s;
-  s.nodes = (n0 + 1) * (n1 + 1);
-  s.elements = n0 * n1;
-  return s;
-}
+MeshSize grid(double n0, double n1) { return MeshSize((n0 + 1) * (n1 + 1), n0 * n1, 2); }
 
 constexpr double kKiB = 1024;
 constexpr double kGiB = 1024.0 * 1024 * 1024;
@@ -61,11 +56,7 @@ TEST(MemoryEstimate, PartsAndScaling) {
   EXPECT_DOUBLE_EQ(e.onMachine(2, 2) - e.onMachine(1, 1), e.perRank);
   EXPECT_DOUBLE_EQ(e.onMachine(1, 2), e.perRank + (e.distributed + e.factor) / 2);
   // 3D: 81 matrix entries per unknown, n^(4/3) factor.
-  MeshSize cube;
-  cube.nodes = 1e6;
-  cube.elements = 1e6;
-  cube.dimension = 3;
-  cube.nodesPerElement = 8;
+  const MeshSize cube(1e6, 1e6, 3);
   const RunMemoryEstimate c = estimateRunMemory(cube);
   EXPECT_DOUBLE_EQ(c.distributed, 100 * 81 * 3e6);
   EXPECT_NEAR(c.factor / (12 * 11 * std::pow(3e6, 4.0 / 3.0)), 1, 1e-12);

@@ -1,8 +1,9 @@
-// The generators' parameter tables (mesh/MeshFactoryParameters.hpp, used by mesh/MeshFactory.cpp): what a
+// The generators' parameter tables (common/ParameterTable.hpp, used by mesh/MeshFactory.cpp): what a
 // table publishes is what it reads. A toy spec shows every kind of row publishing its parameter (order,
 // default, doc, validator) and reading it into its own member, also through include() and a field reached
 // by a function; then every generator's published defaults make the mesh its spec's defaults make, and a
 // value given to each of its parameters reaches the member the generator reads.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,11 +15,12 @@
 #include "mesh/Generators.hpp"
 #include "mesh/MeshConversion.hpp"
 #include "mesh/MeshFactory.hpp"
-#include "mesh/MeshFactoryParameters.hpp"
+#include "common/ParameterTable.hpp"
 
 namespace {
 
 using namespace contessa::mesh;
+using contessa::ParameterTable;
 using Teuchos::ParameterList;
 using test_support::expectSameMesh;
 
@@ -118,104 +120,128 @@ TEST(MeshFactoryTables, EveryGeneratorsPublishedDefaultsAreItsSpecsDefaults) {
   expectSameMesh(create("Sphere Octant", defaults("Sphere Octant")), generateSphereOctant(SphereOctantSpec{}));
 }
 
-// Each generator's parameters set in `list` to values that differ from each other (two members swapped
-// would change the mesh), and the spec that says the same. First the rows a Box shares with a Rectangle
-// (its x-y section), changed alike in both.
+// Each generator's parameters given values that differ from each other (two members swapped would change
+// the mesh), each row with the spec member the generator reads it from: written here, apart from the
+// tables, so that a table row that fills another member than its name says is caught.
 template <class Spec>
-Spec changedSection(ParameterList& list) {
-  Spec s;
-  list.set("X Origin", s.x0 = 1.0);
-  list.set("Y Origin", s.y0 = -2.0);
-  list.set("Length X", s.lx = 3.0);
-  list.set("Length Y", s.ly = 0.5);
-  list.set("Elements X", s.nx = 3);
-  list.set("Elements Y", s.ny = 2);
-  list.set("Bias X", s.biasX = 2.0);
-  list.set("Bias Y", s.biasY = 0.75);
-  return s;
+struct Given {
+  std::string name;
+  std::function<void(ParameterList&, Spec&)> apply;  ///< sets the parameter in the list and the member alike
+};
+
+// `name` = `value`, read into `member` (a data member, or a function returning a reference to one).
+template <class Spec, class T, class Member>
+Given<Spec> given(const std::string& name, Member member, T value) {
+  return {name, [=](ParameterList& list, Spec& s) { list.set(name, std::invoke(member, s) = value); }};
 }
 
-RectangleSpec changedRectangle(ParameterList& list) {
-  RectangleSpec s = changedSection<RectangleSpec>(list);
-  list.set("Block Name", s.blockName = "plate");
-  return s;
+// The rows of a part's spec, given through the `part` member of an `Outer` spec.
+template <class Outer, class Spec>
+std::vector<Given<Outer>> within(Spec Outer::*part, const std::vector<Given<Spec>>& rows) {
+  std::vector<Given<Outer>> out;
+  for (const auto& r : rows) out.push_back({r.name, [=](ParameterList& list, Outer& o) { r.apply(list, o.*part); }});
+  return out;
+}
+
+template <class T>
+std::vector<T> operator+(std::vector<T> a, const std::vector<T>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// The x-y section a Box shares with a Rectangle, changed alike in both.
+template <class S>
+std::vector<Given<S>> sectionRows() {
+  return {given<S>("X Origin", &S::x0, 1.0),  given<S>("Y Origin", &S::y0, -2.0), given<S>("Length X", &S::lx, 3.0),
+          given<S>("Length Y", &S::ly, 0.5),  given<S>("Elements X", &S::nx, 3),  given<S>("Elements Y", &S::ny, 2),
+          given<S>("Bias X", &S::biasX, 2.0), given<S>("Bias Y", &S::biasY, 0.75)};
 }
 
 // The rows a generator that extrudes its section along z adds (Box, Hollow Cylinder Sector), changed alike.
-void changeExtrusion(ParameterList& list, double& z0, double& length, int& layers, double& bias) {
-  list.set("Z Origin", z0 = -1.0);
-  list.set("Length Z", length = 4.0);
-  list.set("Elements Z", layers = 4);
-  list.set("Bias Z", bias = 3.0);
+template <class S>
+std::vector<Given<S>> extrusionRows(double S::*z0, double S::*length, int S::*layers, double S::*bias) {
+  return {given<S>("Z Origin", z0, -1.0), given<S>("Length Z", length, 4.0), given<S>("Elements Z", layers, 4),
+          given<S>("Bias Z", bias, 3.0)};
 }
 
-BoxSpec changedBox(ParameterList& list) {
-  BoxSpec s = changedSection<BoxSpec>(list);
-  changeExtrusion(list, s.z0, s.lz, s.nz, s.biasZ);
-  list.set("Block Name", s.blockName = "brick");
+std::vector<Given<RectangleSpec>> rectangleRows() {
+  return sectionRows<RectangleSpec>() + std::vector{given<RectangleSpec>("Block Name", &RectangleSpec::blockName, "plate")};
+}
+
+std::vector<Given<BoxSpec>> boxRows() {
+  using S = BoxSpec;
+  return sectionRows<S>() + extrusionRows<S>(&S::z0, &S::lz, &S::nz, &S::biasZ) +
+         std::vector{given<S>("Block Name", &S::blockName, "brick")};
+}
+
+std::vector<Given<AnnulusSectorSpec>> annulusRows() {
+  using S = AnnulusSectorSpec;
+  return {given<S>("Inner Radius", &S::innerRadius, 50.0),
+          given<S>("Thickness", &S::thickness, 5.0),
+          given<S>("Start Angle", &S::startAngleDeg, 10.0),
+          given<S>("End Angle", &S::endAngleDeg, 80.0),
+          given<S>("Elements Through Thickness", &S::elementsThroughThickness, 3),
+          given<S>("Elements Around Arc", &S::elementsAroundArc, 7),
+          given<S>("Radial Bias", &S::radialBias, 2.0),
+          given<S>("Arc Bias", &S::arcBias, 0.5),
+          given<S>("Block Name", &S::blockName, "ring")};
+}
+
+std::vector<Given<HollowCylinderSectorSpec>> tubeRows() {
+  using S = HollowCylinderSectorSpec;
+  const auto sectionBlockName = [](S& s) -> std::string& { return s.section.blockName; };
+  return within(&S::section, annulusRows()) + extrusionRows<S>(&S::z0, &S::length, &S::layers, &S::axialBias) +
+         std::vector{given<S>("Block Name", sectionBlockName, "tube")};  // a row that fills the section's member
+}
+
+std::vector<Given<SphereOctantSpec>> ballRows() {
+  using S = SphereOctantSpec;
+  const auto center = [](int k) { return [k](S& s) -> double& { return s.center[k]; }; };
+  return {given<S>("Radius", &S::radius, 10.0),
+          given<S>("X Center", center(0), 1.0),
+          given<S>("Y Center", center(1), 2.0),
+          given<S>("Z Center", center(2), 3.0),
+          given<S>("Pole Direction", &S::poleDirection, "+x"),
+          given<S>("Elements Along Edge", &S::elementsAlongEdge, 3),
+          given<S>("Elements Through Shell", &S::elementsThroughShell, 2),
+          given<S>("Inner Cube Fraction", &S::innerCubeFraction, 0.4),
+          given<S>("Pole Bias", &S::poleBias, 2.0),
+          given<S>("Radial Bias", &S::radialBias, 0.5),
+          given<S>("Block Name", &S::blockName, "ball")};
+}
+
+// `rows` given in `list` (a type's defaults before): the spec that says the same.
+template <class Spec>
+Spec applied(ParameterList& list, const std::vector<Given<Spec>>& rows) {
+  Spec s;
+  for (const auto& r : rows) r.apply(list, s);
   return s;
 }
 
-AnnulusSectorSpec changedAnnulus(ParameterList& list) {
-  AnnulusSectorSpec s;
-  list.set("Inner Radius", s.innerRadius = 50.0);
-  list.set("Thickness", s.thickness = 5.0);
-  list.set("Start Angle", s.startAngleDeg = 10.0);
-  list.set("End Angle", s.endAngleDeg = 80.0);
-  list.set("Elements Through Thickness", s.elementsThroughThickness = 3);
-  list.set("Elements Around Arc", s.elementsAroundArc = 7);
-  list.set("Radial Bias", s.radialBias = 2.0);
-  list.set("Arc Bias", s.arcBias = 0.5);
-  list.set("Block Name", s.blockName = "ring");
-  return s;
-}
-
-HollowCylinderSectorSpec changedTube(ParameterList& list) {
-  HollowCylinderSectorSpec s;
-  s.section = changedAnnulus(list);
-  changeExtrusion(list, s.z0, s.length, s.layers, s.axialBias);
-  list.set("Block Name", s.section.blockName = "tube");  // a row that fills the section's member
-  return s;
-}
-
-SphereOctantSpec changedBall(ParameterList& list) {
-  SphereOctantSpec s;
-  list.set("Radius", s.radius = 10.0);
-  list.set("X Center", s.center[0] = 1.0);
-  list.set("Y Center", s.center[1] = 2.0);
-  list.set("Z Center", s.center[2] = 3.0);
-  list.set("Pole Direction", s.poleDirection = "+x");
-  list.set("Elements Along Edge", s.elementsAlongEdge = 3);
-  list.set("Elements Through Shell", s.elementsThroughShell = 2);
-  list.set("Inner Cube Fraction", s.innerCubeFraction = 0.4);
-  list.set("Pole Bias", s.poleBias = 2.0);
-  list.set("Radial Bias", s.radialBias = 0.5);
-  list.set("Block Name", s.blockName = "ball");
-  return s;
+// The mesh `type` makes from its defaults with `rows` given is the one `generate` makes from their spec.
+template <class Spec>
+void expectRowsReachTheirMembers(const std::string& type, const std::vector<Given<Spec>>& rows,
+                                 Mesh (*generate)(const Spec&)) {
+  ParameterList list = defaults(type);
+  const Spec spec = applied(list, rows);
+  expectSameMesh(create(type, list), generate(spec));
 }
 
 TEST(MeshFactoryTables, EachParameterReachesTheMemberItsGeneratorReads) {
-  ParameterList rectangle = defaults("Rectangle"), box = defaults("Box"), annulus = defaults("Annulus Sector"),
-                tube = defaults("Hollow Cylinder Sector"), ball = defaults("Sphere Octant");
-  const RectangleSpec rectangleSpec = changedRectangle(rectangle);
-  const BoxSpec boxSpec = changedBox(box);
-  const AnnulusSectorSpec annulusSpec = changedAnnulus(annulus);
-  const HollowCylinderSectorSpec tubeSpec = changedTube(tube);
-  const SphereOctantSpec ballSpec = changedBall(ball);
-  expectSameMesh(create("Rectangle", rectangle), generateRectangle(rectangleSpec));
-  expectSameMesh(create("Box", box), generateBox(boxSpec));
-  expectSameMesh(create("Annulus Sector", annulus), generateAnnulusSector(annulusSpec));
-  expectSameMesh(create("Hollow Cylinder Sector", tube), generateHollowCylinderSector(tubeSpec));
-  expectSameMesh(create("Sphere Octant", ball), generateSphereOctant(ballSpec));
+  expectRowsReachTheirMembers("Rectangle", rectangleRows(), &generateRectangle);
+  expectRowsReachTheirMembers("Box", boxRows(), &generateBox);
+  expectRowsReachTheirMembers("Annulus Sector", annulusRows(), &generateAnnulusSector);
+  expectRowsReachTheirMembers("Hollow Cylinder Sector", tubeRows(), &generateHollowCylinderSector);
+  expectRowsReachTheirMembers("Sphere Octant", ballRows(), &generateSphereOctant);
 }
 
 TEST(MeshFactoryTables, TheCellVariantRowsChooseTheCells) {
   ParameterList triangles = defaults("Rectangle"), tetrahedra = defaults("Box"), hex20 = defaults("Box");
-  const RectangleSpec rectangleSpec = changedRectangle(triangles);
+  const RectangleSpec rectangleSpec = applied(triangles, rectangleRows());
   triangles.set("Cell Type", std::string("Triangles"));
   triangles.set("Element Order", 2);
   expectSameMesh(create("Rectangle", triangles), withMidEdgeNodes(splitIntoSimplices(generateRectangle(rectangleSpec))));
-  const BoxSpec boxSpec = changedBox(tetrahedra);
+  const BoxSpec boxSpec = applied(tetrahedra, boxRows());
   tetrahedra.set("Cell Type", std::string("Tetrahedra"));
   expectSameMesh(create("Box", tetrahedra), splitIntoSimplices(generateBox(boxSpec)));
   hex20.set("Element Order", 2);
