@@ -82,6 +82,10 @@ const ParameterTable<Settings>& table() {
 
 void ContactBetaStepControl::addParameters(ParameterList& step) { table().publishInto(step); }
 
+continuation::CountedEvents ContactBetaStepControl::countedEvents(const ParameterList& stepSize) {
+  return table().read(stepSize).counted;
+}
+
 ContactBetaSettings ContactBetaStepControl::settings(const ParameterList& p, double finalLoadFactor) {
   ContactBetaSettings s = table().read(p);
   // Read by every method (StepSizeMethods.cpp declares them).

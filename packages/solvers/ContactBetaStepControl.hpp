@@ -19,6 +19,8 @@ class ContactBetaStepControl : public StepControl {
 
   /// Contact Beta's parameters of the Step Size list, with docs and the defaults of ContactBetaSettings.
   static void addParameters(Teuchos::ParameterList& stepSize);
+  /// Counted Events of a validated Step Size list (every method's history counts them: StepSizeMethods).
+  static continuation::CountedEvents countedEvents(const Teuchos::ParameterList& stepSize);
   /// The settings from the validated Step Size list and the stepper's Max Value.
   static continuation::ContactBetaSettings settings(const Teuchos::ParameterList& stepSize, double finalLoadFactor);
 

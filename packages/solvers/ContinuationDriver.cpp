@@ -174,7 +174,7 @@ ContinuationDriver::StepOutcome ContinuationDriver::runStep(const StepStart& sta
   auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_.evaluator, p, 0, true));
   auto bookkeeper = rcp(new IncrementBookkeeper(
       *model_.state, *model_.events, observer_, *newton, *stepControl,
-      continuation::countedEventsByName(stepSize.get<std::string>("Counted Events")), lambda0));
+      countedEvents(stepSize), lambda0));
   bookkeeper->startLoadStep(start.step, start.earlier);
   if (start.afterResume != nullptr) bookkeeper->startLoadStepAfter(start.step, *start.afterResume);
   // A checkpoint at the end of every load step but the last (the run ends there anyway).

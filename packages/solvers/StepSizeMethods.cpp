@@ -57,6 +57,10 @@ std::unique_ptr<StepControl> createStepControl(const StepControlContext& context
   return method.create ? method.create(context) : std::make_unique<StepControl>();
 }
 
+continuation::CountedEvents countedEvents(const ParameterList& stepSize) {
+  return ContactBetaStepControl::countedEvents(stepSize);
+}
+
 std::vector<std::string> stepSizeMethods() { return registry().names(); }
 
 void addStepSizeParameters(ParameterList& step) {

@@ -15,6 +15,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "continuation/ContactEvents.hpp"
+
 namespace contessa::solvers {
 
 class StepControl;
@@ -41,6 +43,10 @@ std::unique_ptr<StepControl> createStepControl(const StepControlContext& context
 
 /// Registered names: "Constant", "Adaptive", "Contact Beta".
 std::vector<std::string> stepSizeMethods();
+
+/// The status changes the history's new_events column counts, for every method: Counted Events, declared
+/// and read by Contact Beta's parameter table (which limits them to N_c per increment).
+continuation::CountedEvents countedEvents(const Teuchos::ParameterList& stepSize);
 
 /// The Step Size list: Method (one of the names), the parameters every method reads, then each method's
 /// own, with docs and defaults.
