@@ -107,7 +107,8 @@ struct LinearFacet {
 /// The parametric coordinates (ξ, η) of the facet point whose projection is p (eq. M16): the linear
 /// map's inverse for a triangle; for a quadrilateral Newton's method converged on the values, then two
 /// Newton steps in T from that root, which give its exact first (one step) and second (two steps)
-/// derivatives by the implicit function theorem.
+/// derivatives by the implicit function theorem (HessianDual takes the overload below, which applies that
+/// theorem directly).
 template <class T>
 std::array<T, 2> inverseMap(const LinearFacet<T>& facet, const std::vector<PlanePoint<T>>& projected,
                             const PlanePoint<T>& p) {
@@ -147,6 +148,72 @@ std::array<T, 2> inverseMap(const LinearFacet<T>& facet, const std::vector<Plane
     s[1] = s[1] - (j00 * fy - j10 * fx) / det;
   }
   return s;
+}
+
+/// The inverse map with its gradient and Hessian (eq. M16 differentiated): the root (ξ, η) of
+/// F(ξ; P, p) = Σ_a N_a(ξ) P_a − p = 0 is the doubles' (the same values, to the bit, as every number type
+/// gives), and its derivatives follow from the implicit function theorem at that root instead of Newton
+/// steps in HessianDual arithmetic (each a few dozen products of gradient-and-Hessian numbers). With J the
+/// map's Jacobian [F_,ξ F_,η], R = F(ξ_0; P, p) at the fixed root (linear in P and p: R'' = Σ N_a P_a'' − p'')
+/// and J_k = F_,ξk (linear in P), differentiating F(ξ(x), x) = 0 twice gives
+///     ξ' = −J⁻¹ R',
+///     ξ'' = −J⁻¹ [ R'' + Σ_k (J_k' ⊗ ξ_k' + ξ_k' ⊗ J_k') + F_,ξη (ξ' ⊗ η' + η' ⊗ ξ') ],
+/// F_,ξη = (P_0 − P_1 + P_2 − P_3)/4 for a quadrilateral (its only second derivative), 0 for a triangle.
+template <int V>
+std::array<HessianDual<V>, 2> inverseMap(const LinearFacet<HessianDual<V>>& facet,
+                                         const std::vector<PlanePoint<HessianDual<V>>>& projected,
+                                         const PlanePoint<HessianDual<V>>& p) {
+  using H = HessianDual<V>;
+  const int count = facet.count;
+  LinearFacet<double> valueFacet;
+  valueFacet.count = count;
+  std::vector<PlanePoint<double>> valueProjected(projected.size());
+  for (std::size_t a = 0; a < projected.size(); ++a) valueProjected[a] = {projected[a].x.v, projected[a].y.v};
+  const std::array<double, 2> root = inverseMap(valueFacet, valueProjected, PlanePoint<double>{p.x.v, p.y.v});
+  const auto n = valueFacet.shape(root[0], root[1]);
+  const auto dn = valueFacet.shapeDerivatives(root[0], root[1]);
+  // Per component c (x, y): R_c', R_c'', J_ck (value) and J_ck'.
+  std::array<std::array<double, V>, 2> rg{}, xg{};
+  std::array<std::array<double, H::kPacked>, 2> rh{};
+  std::array<std::array<std::array<double, V>, 2>, 2> jg{};
+  double j[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, mixed[2] = {0.0, 0.0};
+  for (int c = 0; c < 2; ++c) {
+    const H& pc = c == 0 ? p.x : p.y;
+    for (int i = 0; i < V; ++i) rg[c][i] = -pc.g[i];
+    for (int k = 0; k < H::kPacked; ++k) rh[c][k] = -pc.h[k];
+    for (int a = 0; a < count; ++a) {
+      const H& pa = c == 0 ? projected[a].x : projected[a].y;
+      for (int i = 0; i < V; ++i) {
+        rg[c][i] += n[a] * pa.g[i];
+        jg[c][0][i] += dn[0][a] * pa.g[i];
+        jg[c][1][i] += dn[1][a] * pa.g[i];
+      }
+      for (int k = 0; k < H::kPacked; ++k) rh[c][k] += n[a] * pa.h[k];
+      j[c][0] += dn[0][a] * pa.v;
+      j[c][1] += dn[1][a] * pa.v;
+    }
+    if (count == 4) {
+      const auto v = [&](int a) { return c == 0 ? projected[a].x.v : projected[a].y.v; };
+      mixed[c] = 0.25 * (v(0) - v(1) + v(2) - v(3));
+    }
+  }
+  const double det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+  const double inverse[2][2] = {{j[1][1] / det, -j[0][1] / det}, {-j[1][0] / det, j[0][0] / det}};
+  std::array<H, 2> out{H(root[0], typename H::Unset{}), H(root[1], typename H::Unset{})};
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < V; ++i) xg[k][i] = out[k].g[i] = -(inverse[k][0] * rg[0][i] + inverse[k][1] * rg[1][i]);
+  int packed = 0;
+  for (int i = 0; i < V; ++i)
+    for (int l = i; l < V; ++l, ++packed) {
+      double q[2];
+      const double cross = xg[0][i] * xg[1][l] + xg[1][i] * xg[0][l];
+      for (int c = 0; c < 2; ++c)
+        q[c] = rh[c][packed] + jg[c][0][i] * xg[0][l] + xg[0][i] * jg[c][0][l] + jg[c][1][i] * xg[1][l] +
+               xg[1][i] * jg[c][1][l] + mixed[c] * cross;
+      out[0].h[packed] = -(inverse[0][0] * q[0] + inverse[0][1] * q[1]);
+      out[1].h[packed] = -(inverse[1][0] * q[0] + inverse[1][1] * q[1]);
+    }
+  return out;
 }
 
 /// The projection plane (eq. M13): through the slave facet's centre c, normal n_0 (the slave facet's unit
