@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "contact/MortarClipping.hpp"
@@ -101,6 +102,74 @@ struct LinearFacet {
   Point3<T> unitNormal(const T& xi, const T& eta) const {
     const auto d = shapeDerivatives(xi, eta);
     return unit(cross(at(d[0]), at(d[1])));
+  }
+};
+
+/// A linear facet's map in monomials, x(ξ, η) = x_0 + ξ x_ξ + η x_η + ξη x_ξη (a triangle's x_ξη = 0), for
+/// the differentiated points and normals of eq. M17: each point costs six products of differentiated
+/// numbers (ten when twisted) instead of the shape functions' sixteen, a term without derivatives (a rigid
+/// master's edge vectors under a translation) is multiplied as a double, and where x_ξη is zero with its
+/// derivatives (a triangle; a parallelogram moving affinely, as a rigid plate does) the tangents x_,ξ and
+/// x_,η, and so the unit normal, are the same at every point of the facet: computed once per pair. The
+/// values are those of LinearFacet's formulas in doubles, to the bit (withValue), so that the weighted
+/// gaps do not depend on the number type.
+template <class T>
+struct FacetMap {
+  LinearFacet<double> valueFacet;
+  std::array<Point3<T>, 4> term;  ///< x_0, x_ξ, x_η, x_ξη
+  std::array<Point3<double>, 4> termValue{};
+  std::array<bool, 4> fixed{};  ///< the term has no derivatives: multiplied as doubles
+  bool twisted = false;         ///< x_ξη ≠ 0 or has derivatives: the tangents vary over the facet
+  Point3<T> flatNormal{};       ///< the unit normal, where not twisted
+
+  explicit FacetMap(const LinearFacet<T>& f) {
+    valueFacet.count = f.count;
+    for (int a = 0; a < f.count; ++a) valueFacet.node[a] = values(f.node[a]);
+    const auto& x = f.node;
+    if (f.count == 3) {
+      term = {x[0], x[1] - x[0], x[2] - x[0], Point3<T>{T(0.0), T(0.0), T(0.0)}};
+    } else {
+      term = {times(x[0] + x[1] + x[2] + x[3], 0.25), times(x[1] + x[2] - x[0] - x[3], 0.25),
+              times(x[2] + x[3] - x[0] - x[1], 0.25), times(x[0] + x[2] - x[1] - x[3], 0.25)};
+    }
+    for (int k = 0; k < 4; ++k) {
+      termValue[k] = values(term[k]);
+      fixed[k] = hasNoDerivatives(term[k].x) && hasNoDerivatives(term[k].y) && hasNoDerivatives(term[k].z);
+    }
+    const Point3<double>& c = termValue[3];
+    twisted = !(fixed[3] && c.x == 0.0 && c.y == 0.0 && c.z == 0.0);
+    if (!twisted) flatNormal = unit(cross(term[1], term[2]));
+  }
+  /// The point's and the normal's values (LinearFacet's formulas in doubles).
+  Point3<double> valueAt(const std::array<double, 2>& s) const { return valueFacet.at(valueFacet.shape(s[0], s[1])); }
+  Point3<double> valueNormal(const std::array<double, 2>& s) const { return valueFacet.unitNormal(s[0], s[1]); }
+  /// Term k times s.
+  Point3<T> scaledTerm(int k, const T& s) const {
+    if (!fixed[k]) return times(term[k], s);
+    const Point3<double>& v = termValue[k];
+    return {s * v.x, s * v.y, s * v.z};
+  }
+  /// The point at (ξ, η) (eq. M16's x_s(ξ) or x_m(η)).
+  Point3<T> at(const std::array<T, 2>& s) const {
+    const Point3<double> value = valueFacet.at(valueFacet.shape(valueOf(s[0]), valueOf(s[1])));
+    if constexpr (std::is_same_v<T, double>) {
+      return value;
+    } else {
+      Point3<T> x = term[0] + scaledTerm(1, s[0]) + scaledTerm(2, s[1]);
+      if (twisted) x = x + scaledTerm(3, s[0] * s[1]);
+      return {withValue(x.x, value.x), withValue(x.y, value.y), withValue(x.z, value.z)};
+    }
+  }
+  /// The unit normal x_,ξ × x_,η / ‖·‖ at (ξ, η) (LinearFacet::unitNormal's value).
+  Point3<T> unitNormal(const std::array<T, 2>& s) const {
+    const Point3<double> value = valueFacet.unitNormal(valueOf(s[0]), valueOf(s[1]));
+    if constexpr (std::is_same_v<T, double>) {
+      return value;
+    } else {
+      Point3<T> n = flatNormal;
+      if (twisted) n = unit(cross(term[1] + scaledTerm(3, s[1]), term[2] + scaledTerm(3, s[0])));
+      return {withValue(n.x, value.x), withValue(n.y, value.y), withValue(n.z, value.z)};
+    }
   }
 };
 
@@ -255,11 +324,28 @@ double facetDiameter(const LinearFacet<T>& f) {
 /// rigid plane) has its centre far to the side of a tilted slave facet that it touches.
 template <class T>
 bool facing(const LinearFacet<T>& slave, const LinearFacet<T>& master, const ProjectionPlane<T>& plane, double size) {
-  const Point3<double> n0 = values(plane.normal), nm = values(unit(master.centreNormal()));
+  // On the values alone (the same numbers as T's values, without differentiating them).
+  const auto valuesOf = [](const LinearFacet<T>& f) {
+    LinearFacet<double> out;
+    out.count = f.count;
+    for (int a = 0; a < f.count; ++a) out.node[a] = values(f.node[a]);
+    return out;
+  };
+  const LinearFacet<double> s = valuesOf(slave), m = valuesOf(master);
+  const Point3<double> n0 = values(plane.normal), nm = unit(m.centreNormal());
   const double cosine = dot(n0, nm);
   if (cosine > -kMortarMinFacing) return false;
-  const double distance = dot(values(master.centre() - slave.centre()), nm) / cosine;
+  const double distance = dot(m.centre() - s.centre(), nm) / cosine;
   return std::abs(distance) <= size;
+}
+
+/// Twice a polygon's signed area on the values alone (twiceSignedArea's value, not differentiated): for
+/// the tests that only read it.
+template <class T>
+double twiceSignedAreaValue(const std::vector<PlanePoint<T>>& polygon) {
+  std::vector<PlanePoint<double>> v(polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i) v[i] = {valueOf(polygon[i].x), valueOf(polygon[i].y)};
+  return twiceSignedArea(v);
 }
 
 }  // namespace contessa::contact::mortar3d
