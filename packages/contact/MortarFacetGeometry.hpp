@@ -160,6 +160,11 @@ struct FacetMap {
       return {withValue(x.x, value.x), withValue(x.y, value.y), withValue(x.z, value.z)};
     }
   }
+  /// The normal has no derivatives (a triangle's or a parallelogram's moving by a translation, as a rigid
+  /// plate does): a product with it is one of doubles (the same numbers, bar the signs of zeros).
+  bool fixedNormal() const {
+    return !twisted && hasNoDerivatives(flatNormal.x) && hasNoDerivatives(flatNormal.y) && hasNoDerivatives(flatNormal.z);
+  }
   /// The unit normal x_,ξ × x_,η / ‖·‖ at (ξ, η) (LinearFacet::unitNormal's value).
   Point3<T> unitNormal(const std::array<T, 2>& s) const {
     const Point3<double> value = valueFacet.unitNormal(valueOf(s[0]), valueOf(s[1]));

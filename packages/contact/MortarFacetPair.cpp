@@ -53,6 +53,9 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
   const PlanePoint<T> c = vertexCentroid(clip);
   const T measure = referenceArea / (0.5 * slaveArea2);
   const FacetMap<T> slaveMap(slave), masterMap(master);
+  // A master normal without derivatives (FacetMap::fixedNormal): its value at every Gauss point is
+  // LinearFacet's formula's, and the gap's derivatives are those of the products with the constant.
+  const bool fixedNormal = masterMap.fixedNormal();
   std::array<double, kMortarFacetNodes> weightedGap{}, mortarArea{};
   std::array<T, kMortarFacetNodes> differentiated{};  // the weighted gaps' derivatives (T not double)
   for (std::size_t i = 0; i < clip.size(); ++i) {
@@ -71,8 +74,10 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
         mortarArea[a] = mortarArea[a] + weight * ns[a];
       }
       if constexpr (!std::is_same_v<T, double>) {
+        const Point3<double> normal = masterMap.valueNormal(etaValue);
         const std::array<T, kMortarFacetNodes> nodeShape = slave.shape(xi[0], xi[1]);
-        const T gap = dot(slaveMap.at(xi) - masterMap.at(eta), masterMap.unitNormal(eta));
+        const Point3<T> d = slaveMap.at(xi) - masterMap.at(eta);
+        const T gap = fixedNormal ? d.x * normal.x + d.y * normal.y + d.z * normal.z : dot(d, masterMap.unitNormal(eta));
         const T weightedG = withValue(q.weight * triangleMeasure, weight) * gap;
         for (int a = 0; a < slave.count; ++a) differentiated[a] = differentiated[a] + nodeShape[a] * weightedG;
       }
