@@ -447,21 +447,29 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
       for (int j = 0; j < old; ++j) grown[i * n + j] = hessian[i * old + j];
     hessian.swap(grown);
   };
-  grow(w.hessian);
-  grow(w.slipHessian);
+  // The slip increments' derivatives only where assemble reads them (2D friction; 3D mortar is frictionless).
+  const bool slips = kDim == 2 && frictional();
+  if (n != old) {
+    grow(w.hessian);
+    if (slips) grow(w.slipHessian);
+  }
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
-  w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
+  if (slips) w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
   constexpr int m = Layout::kCoordinates;
   for (int i = 0; i < m; ++i) {
     if (at[i / kDim] < 0) continue;
     const int gi = kDim * at[i / kDim] + i % kDim;
     w.gradient[gi] += g.gradient[end][i];
-    if constexpr (kDim == 2) w.slipGradient[gi] += g.slipGradient[end][i];
+    if constexpr (kDim == 2) {
+      if (slips) w.slipGradient[gi] += g.slipGradient[end][i];
+    }
     for (int j = 0; j < m; ++j) {
       if (at[j / kDim] < 0) continue;
       const int gj = kDim * at[j / kDim] + j % kDim;
       w.hessian[gi * n + gj] += g.hessian[end][i * m + j];
-      if constexpr (kDim == 2) w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+      if constexpr (kDim == 2) {
+        if (slips) w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+      }
     }
   }
 }
