@@ -244,6 +244,32 @@ HessianDual<N> operator/(double a, const HessianDual<N>& b) {
   return r;
 }
 
+/// Whether a number carries no derivative: a double always; a HessianDual whose gradient and Hessian are
+/// zero (a rigid body's edge vectors under a translation, a parallelogram's twist), which a kernel may then
+/// multiply as a double.
+inline bool hasNoDerivatives(double) { return true; }
+template <int N>
+bool hasNoDerivatives(const HessianDual<N>& x) {
+  for (double d : x.g)
+    if (d != 0.0) return false;
+  for (double d : x.h)
+    if (d != 0.0) return false;
+  return true;
+}
+template <class T, int N>
+bool hasNoDerivatives(const Dual<T, N>&) {
+  return false;  // not looked into: multiplied as it is
+}
+
+/// x with its value replaced by `value` (a double is `value` itself): a kernel that differentiates a
+/// quantity through a cheaper formula keeps the value of the formula its doubles use, to the bit.
+inline double withValue(double, double value) { return value; }
+template <class T>
+T withValue(T x, double value) {
+  x.v = value;
+  return x;
+}
+
 /// The independent variable x_i of N: value x, gradient e_i, Hessian 0.
 template <int N>
 HessianDual<N> hessianVariable(double x, int i) {

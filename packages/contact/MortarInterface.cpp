@@ -212,6 +212,7 @@ class MortarInterface final : public ContactInterfaceBase {
     std::array<double, Layout::kCoordinates> x{};  ///< the slave entries (the master's set per facet)
     std::vector<int> facets;
     std::vector<typename Layout::Gaps> values;  ///< per facet
+    std::vector<std::array<double, Layout::kCoordinates>> inputs;  ///< per facet: the pair's coordinates
   };
   const SegmentPairs& segmentPairs(std::size_t segment, const NodePosition& position, const Facets& facets,
                                    const BoundingBoxTree<kDim>& tree) const;
@@ -356,15 +357,26 @@ auto MortarInterface<F>::segmentPairs(std::size_t segment, const NodePosition& p
   }
   for (int a = Layout::kFirstMaster + Layout::kMasterNodes; a < Layout::kCoordinates / kDim; ++a)
     if (sp.pair.used[a]) position(sp.pair.nodes[a], &sp.x[kDim * a]);
+  // A pair whose coordinates are those of the last evaluation to the bit (Contact Beta's look-ahead and the
+  // evaluation at the same iterate) keeps its values: identical inputs, identical values. Not with
+  // friction, whose values depend on the committed positions too.
+  const std::vector<int> facetsBefore = std::move(sp.facets);
+  const std::vector<std::array<double, Layout::kCoordinates>> inputsBefore = std::move(sp.inputs);
+  const std::vector<typename Layout::Gaps> valuesBefore = std::move(sp.values);
   sp.facets.clear();
+  sp.inputs.clear();
+  sp.values.clear();
   tree.queryBox(box, sp.facets);
   std::sort(sp.facets.begin(), sp.facets.end());  // the same summation order on every rank and every call
-  sp.values.clear();
   for (int f : sp.facets) {
     PairNodes pair = sp.pair;
     std::array<double, Layout::kCoordinates> x = sp.x;
     setMaster(pair, x, facets[f]);
-    sp.values.push_back(pairValues(x, pair, f));
+    const auto before = std::lower_bound(facetsBefore.begin(), facetsBefore.end(), f);
+    const std::size_t i = static_cast<std::size_t>(before - facetsBefore.begin());
+    const bool same = !frictional() && before != facetsBefore.end() && *before == f && inputsBefore[i] == x;
+    sp.values.push_back(same ? valuesBefore[i] : pairValues(x, pair, f));
+    sp.inputs.push_back(x);
   }
   return sp;
 }
@@ -447,21 +459,29 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
       for (int j = 0; j < old; ++j) grown[i * n + j] = hessian[i * old + j];
     hessian.swap(grown);
   };
-  grow(w.hessian);
-  grow(w.slipHessian);
+  // The slip increments' derivatives only where assemble reads them (2D friction; 3D mortar is frictionless).
+  const bool slips = kDim == 2 && frictional();
+  if (n != old) {
+    grow(w.hessian);
+    if (slips) grow(w.slipHessian);
+  }
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
-  w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
+  if (slips) w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
   constexpr int m = Layout::kCoordinates;
   for (int i = 0; i < m; ++i) {
     if (at[i / kDim] < 0) continue;
     const int gi = kDim * at[i / kDim] + i % kDim;
     w.gradient[gi] += g.gradient[end][i];
-    if constexpr (kDim == 2) w.slipGradient[gi] += g.slipGradient[end][i];
+    if constexpr (kDim == 2) {
+      if (slips) w.slipGradient[gi] += g.slipGradient[end][i];
+    }
     for (int j = 0; j < m; ++j) {
       if (at[j / kDim] < 0) continue;
       const int gj = kDim * at[j / kDim] + j % kDim;
       w.hessian[gi * n + gj] += g.hessian[end][i * m + j];
-      if constexpr (kDim == 2) w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+      if constexpr (kDim == 2) {
+        if (slips) w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+      }
     }
   }
 }
