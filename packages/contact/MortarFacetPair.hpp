@@ -33,9 +33,10 @@ using FacetPairCoordinates = std::array<T, kMortarFacetPairCoordinates>;
 struct MortarFacetPairShape {
   int slaveNodes = 4;
   int masterNodes = 4;
-  /// A 6-node slave face's four flat pieces' reference areas, each piece's own dA_0 / dA
+  /// A quadratic slave face's flat pieces' reference measures (a triangle piece's area, a 4-node piece's
+  /// three Jacobian coefficients: mortarFacetPieceMeasures), each piece's own dA_0 / dA
   /// (MortarQuadraticFacetPair.hpp, eq. M20); unused for 3- and 4-node faces.
-  std::array<double, 4> slavePieceAreas{};
+  std::array<double, 12> slavePieceAreas{};
 };
 
 /// Weighted gaps of the slave facet's nodes and their mortar areas ∫ N_a dA_0 over the overlap.

@@ -53,25 +53,27 @@ struct MortarPairLayout<3> {
   using Derivatives = MortarFacetPairDerivatives;
   using Gaps = MortarFacetPairGaps<double>;
 };
-/// 3D pairs with a 6-node triangle on a side (MortarQuadraticFacetPair.hpp): s0–s5 m0–m5.
+/// 3D pairs with a quadratic face on a side (MortarQuadraticFacetPair.hpp), Slots nodes per side: 6 (a
+/// Tri6: s0–s5 m0–m5), 8 (a Quad8) or 9 (a Quad9).
+template <int Slots>
 struct QuadraticMortarPairLayout {
-  static constexpr int kCoordinates = kQuadraticFacetPairCoordinates;
-  static constexpr int kFirstMaster = kQuadraticFacetNodes;
-  static constexpr int kMasterNodes = kQuadraticFacetNodes;
-  using Derivatives = MortarQuadraticFacetPairDerivatives;
-  using Gaps = MortarQuadraticFacetPairGaps<double>;
+  static constexpr int kCoordinates = 3 * 2 * Slots;
+  static constexpr int kFirstMaster = Slots;
+  static constexpr int kMasterNodes = Slots;
+  using Derivatives = MortarQuadraticPairDerivatives<Slots>;
+  using Gaps = MortarQuadraticFacetPairGaps<double, Slots>;
 };
-/// A master facet type whose interface takes the quadratic pair kernel (a Tri6 slave or master side):
-/// the same facets to MasterSurface, which reads only the type's constants.
-template <class Facet>
+/// A master facet type whose interface takes the quadratic pair kernel of Slots slots (a quadratic slave
+/// or master side): the same facets to MasterSurface, which reads only the type's constants.
+template <class Facet, int Slots = kQuadraticFacetNodes>
 struct QuadraticPairs : Facet {};
 template <class Facet>
 struct PairLayoutOf {
   using type = MortarPairLayout<Facet::kSpaceDim>;
 };
-template <class Facet>
-struct PairLayoutOf<QuadraticPairs<Facet>> {
-  using type = QuadraticMortarPairLayout;
+template <class Facet, int Slots>
+struct PairLayoutOf<QuadraticPairs<Facet, Slots>> {
+  using type = QuadraticMortarPairLayout<Slots>;
 };
 
 /// The weighted gap of one slave node, g̃_k = Σ over its slave segments and the master segments they meet
@@ -122,10 +124,12 @@ class MortarInterface final : public ContactInterfaceBase {
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
         trialTraction_(spec_.slaveNodes.size(), 0.0),
         committedTraction_(spec_.slaveNodes.size(), 0.0) {
-    const bool quadratic = Layout::kFirstMaster == kQuadraticFacetNodes;
-    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && perFacet_ == 6));
-    // A 6-node slave face has four measures, its flat pieces' (deck/ProblemDefinition, MortarQuadraticFacetPair).
-    const std::size_t measures = perFacet_ == 6 ? 4 : 1;
+    const int slots = Layout::kFirstMaster;
+    const bool quadratic = kDim == 3 && slots >= kQuadraticFacetNodes;
+    const int nodes = static_cast<int>(perFacet_);
+    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && nodes >= 6 && nodes <= slots));
+    // A quadratic slave face has its flat pieces' measures (deck/ProblemDefinition, MortarQuadraticFacetPair).
+    const std::size_t measures = static_cast<std::size_t>(kDim == 3 ? mortarFaceMeasures(nodes) : 1);
     if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() * measures != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
     if (kDim == 3 && frictional())
@@ -268,10 +272,9 @@ template <class F>
 typename MortarInterface<F>::PairNodes MortarInterface<F>::pairNodes(std::size_t segment) const {
   PairNodes pair;
   pair.segment = segment;
-  if (perFacet_ == 6) {
-    for (std::size_t i = 0; i < 4; ++i) pair.shape.slavePieceAreas[i] = spec_.slaveFacetMeasures[4 * segment + i];
-    pair.referenceMeasure = spec_.slaveFacetMeasures[4 * segment] + spec_.slaveFacetMeasures[4 * segment + 1] +
-                            spec_.slaveFacetMeasures[4 * segment + 2] + spec_.slaveFacetMeasures[4 * segment + 3];
+  if (kDim == 3 && perFacet_ >= 6) {  // the pieces' measures; referenceMeasure is a linear face's only
+    const std::size_t measures = static_cast<std::size_t>(mortarFaceMeasures(static_cast<int>(perFacet_)));
+    for (std::size_t i = 0; i < measures; ++i) pair.shape.slavePieceAreas[i] = spec_.slaveFacetMeasures[measures * segment + i];
   } else {
     pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
   }
@@ -806,16 +809,29 @@ void MortarInterface<F>::restoreMaster(const StateRecord& table) {
   committedMaster_ = trialMaster_ = std::move(facets);
 }
 
+namespace {
+/// The interface of a pair layout of Slots slots, by the master's facet type.
+template <int Slots>
+std::unique_ptr<ContactInterfaceBase> makeQuadraticMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
+  const int master = spec.nodesPerFacet();
+  if (master == 3) return std::make_unique<MortarInterface<QuadraticPairs<Tri3Facet, Slots>>>(std::move(spec), std::move(evaluatesSlave));
+  if (master == 4) return std::make_unique<MortarInterface<QuadraticPairs<Quad4Facet, Slots>>>(std::move(spec), std::move(evaluatesSlave));
+  if (master == 6) return std::make_unique<MortarInterface<QuadraticPairs<Tri6Facet, Slots>>>(std::move(spec), std::move(evaluatesSlave));
+  if constexpr (Slots >= 8)
+    if (master == 8) return std::make_unique<MortarInterface<QuadraticPairs<Quad8Facet, Slots>>>(std::move(spec), std::move(evaluatesSlave));
+  if constexpr (Slots >= 9)
+    if (master == 9) return std::make_unique<MortarInterface<QuadraticPairs<Quad9Facet, Slots>>>(std::move(spec), std::move(evaluatesSlave));
+  throw std::logic_error("MortarInterface '" + spec.label() + "': master facets of 3, 4, 6, 8 or 9 nodes expected");
+}
+}  // namespace
+
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
   if (spec.dimension == 2) return std::make_unique<MortarInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
-  const bool quadratic = spec.slaveNodesPerFacet() == 6 || spec.nodesPerFacet() == 6;
-  if (spec.nodesPerFacet() == 6)
-    return std::make_unique<MortarInterface<QuadraticPairs<Tri6Facet>>>(std::move(spec), std::move(evaluatesSlave));
-  if (spec.nodesPerFacet() == 3)
-    return quadratic ? std::unique_ptr<ContactInterfaceBase>(std::make_unique<MortarInterface<QuadraticPairs<Tri3Facet>>>(std::move(spec), std::move(evaluatesSlave)))
-                     : std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
-  if (quadratic)
-    return std::make_unique<MortarInterface<QuadraticPairs<Quad4Facet>>>(std::move(spec), std::move(evaluatesSlave));
+  const int slots = quadraticPairSlots(spec.slaveNodesPerFacet(), spec.nodesPerFacet());
+  if (slots == 9) return makeQuadraticMortarInterface<9>(std::move(spec), std::move(evaluatesSlave));
+  if (slots == 8) return makeQuadraticMortarInterface<8>(std::move(spec), std::move(evaluatesSlave));
+  if (slots == 6) return makeQuadraticMortarInterface<6>(std::move(spec), std::move(evaluatesSlave));
+  if (spec.nodesPerFacet() == 3) return std::make_unique<MortarInterface<Tri3Facet>>(std::move(spec), std::move(evaluatesSlave));
   return std::make_unique<MortarInterface<Quad4Facet>>(std::move(spec), std::move(evaluatesSlave));
 }
 

@@ -1,78 +1,119 @@
 #pragma once
-// The 3D mortar integral of a facet pair with a 6-node triangle on either side (Tet10 and Wedge15 faces;
-// the other side Tri3, Quad4 or Tri6): theory-contact.md §13, "Quadratic faces" (eq. M18–M20).
+// The 3D mortar integral of a facet pair with a quadratic face on either side: a 6-node triangle (Tet10 and
+// Wedge15 faces), an 8-node serendipity quadrilateral (Hex20, Wedge15) or a 9-node Lagrange one (Hex27);
+// the other side Tri3, Quad4 or quadratic: theory-contact.md §13, "Quadratic faces" (eq. M18–M20).
 //
-// Segmentation on flat pieces (Puso, Laursen & Solberg 2008 §3): a Tri6 is cut into its four flat
-// triangles (corner–mid–mid three times and the middle one, Tri6Facet::flatPieces); each slave piece is
-// projected, clipped and triangulated against each master piece exactly as a linear facet pair
-// (MortarFacetPair.hpp, eq. M13–M15). A Gauss point maps back to the pieces' local coordinates and from
-// them, affinely, to the parent coordinates ξ of the slave face and η of the master face. There the
-// quadratic geometry is evaluated, x_s(ξ) = Σ N_a(ξ) x_a, x_m(η), n_m(η), so that the nodal forces are the
-// consistent loads ∫ N_a p dA of the face the element sees (a Tri6's corners take none of a uniform
-// pressure), and the gap g = (x_s − x_m) · n_m is weighted with the pieces' linear functions Φ_a (eq. M18:
-// on each flat piece the hat functions of its three nodes), which are non-negative — a positive gap
-// everywhere gives a positive weighted gap, which the quadratic N_a and the modified quadratic bases of
-// Popp et al. 2012, negative in parts of the face, do not — and whose nodal areas ∫ Φ_a dA are A/12 at a
-// corner and A/4 at a mid-edge node of a flat face (the standard basis gives 0 at a corner: a penalty
-// pressure ε g̃_a / A_a could not be formed). Φ is a partition of unity, so Σ_a Φ_a p_a reproduces a
-// uniform pressure.
+// Segmentation on flat pieces (Puso, Laursen & Solberg 2008 §3): a quadratic face is cut into flat pieces
+// through its nodes — a Tri6 into its four triangles (corner–mid–mid three times and the middle one,
+// Tri6Facet::flatPieces), a Quad8 into its four corner triangles and the quadrilateral of its mid-edge
+// nodes (Quad8Facet::tributaryPieces), a Quad9 into its four quarters (corner, mid, centre, mid) — and each
+// slave piece is projected, clipped and triangulated against each master piece exactly as a linear facet
+// pair (MortarFacetPair.hpp, eq. M13–M15; a 4-node piece as a Quad4). A Gauss point maps back to the
+// pieces' local coordinates and from them, affinely, to the parent coordinates ξ of the slave face and η
+// of the master face. There the quadratic geometry is evaluated, x_s(ξ) = Σ N_a(ξ) x_a, x_m(η), n_m(η),
+// so that the nodal forces are the consistent loads ∫ N_a p dA of the face the element sees (a Tri6's
+// corners take none of a uniform pressure, a Quad8's corners −A/12), and the gap g = (x_s − x_m) · n_m is
+// weighted with the pieces' linear (3-node piece) or bilinear (4-node piece) functions Φ_a (eq. M18),
+// which are non-negative — a positive gap everywhere gives a positive weighted gap, which the quadratic
+// N_a and the modified quadratic bases of Popp et al. 2012, negative in parts of the face, do not — and
+// whose nodal areas ∫ Φ_a dA are positive at every node (flat faces: Tri6 A/12 and A/4, Quad8 A/24 and
+// 5A/24, Quad9 A/16, A/8 and A/4 at a corner, a mid-edge node, the centre); a standard basis gives 0 at a
+// Tri6 corner and −A/12 at a Quad8 corner, where a penalty pressure ε g̃_a / A_a could not be formed. Φ is
+// a partition of unity, so Σ_a Φ_a p_a reproduces a uniform pressure.
 //
 // As MortarFacetPair, written once on the number type and differentiated twice with nested dual numbers
-// over the pair's 36 coordinates (6 slave and 6 master nodes).
+// over the pair's coordinates: Slots node slots per side (6 when the larger face is a Tri6, 8 a Quad8,
+// 9 a Quad9; a smaller face leaves the last slots unused).
 #include <array>
 
 #include "contact/MortarFacetPair.hpp"  // MortarFacetPairShape
 
 namespace contessa::contact {
 
-/// Node slots per side of a quadratic pair (a Tri6's six; Tri3 and Quad4 sides leave the last unused).
+/// Node slots per side of a pair whose larger face is a Tri6 (the Tri3 and Quad4 sides leave the last
+/// unused); the 8- and 9-slot layouts take Quad8 and Quad9 faces.
 constexpr int kQuadraticFacetNodes = 6;
+/// The most nodes a mortar face has (a Quad9) and the most reference measures of its flat pieces (a Quad9's
+/// four 4-node pieces, three each: mortarFaceMeasures).
+constexpr int kMaxMortarFaceNodes = 9;
+constexpr int kMaxMortarFaceMeasures = 12;
 constexpr int kQuadraticFacetPairCoordinates = 3 * 2 * kQuadraticFacetNodes;
-template <class T>
-using QuadraticFacetPairCoordinates = std::array<T, kQuadraticFacetPairCoordinates>;
+template <class T, int Slots = kQuadraticFacetNodes>
+using QuadraticFacetPairCoordinates = std::array<T, 3 * 2 * Slots>;
 
-template <class T>
+template <class T, int Slots = kQuadraticFacetNodes>
 struct MortarQuadraticFacetPairGaps {
   bool overlaps = false;
-  std::array<T, kQuadraticFacetNodes> weightedGap{};  ///< g̃_a = ∫ Φ_a g dA_0 (eq. M19)
-  std::array<T, kQuadraticFacetNodes> mortarArea{};   ///< ∫ Φ_a dA_0 over the overlap
+  std::array<T, Slots> weightedGap{};  ///< g̃_a = ∫ Φ_a g dA_0 (eq. M19)
+  std::array<T, Slots> mortarArea{};   ///< ∫ Φ_a dA_0 over the overlap
 };
 
 /// The integral over the overlap. The measure is the reference one, as the linear kernel's A_0 / A_projected
-/// (eq. M17): for a 6-node slave face per flat piece, shape.slavePieceAreas (mortarFacetPieceAreas) over the
-/// current piece's area; for a 3- or 4-node slave face referenceArea (its area, a Quad4's |d_1 × d_2| / 2)
-/// over the current one.
-template <class T>
-MortarQuadraticFacetPairGaps<T> integrateQuadraticFacetPair(const QuadraticFacetPairCoordinates<T>& x,
-                                                            double referenceArea, const MortarFacetPairShape& shape);
+/// (eq. M17): for a quadratic slave face per flat piece (shape.slavePieceAreas, mortarFacetPieceMeasures), a
+/// triangle's reference area over its current one, a 4-node piece's reference Jacobian J_0(l) over its
+/// current one J(l) at the point (eq. M20); for a 3- or 4-node slave face referenceArea (its area, a Quad4's
+/// |d_1 × d_2| / 2) over the current one.
+template <class T, int Slots>
+MortarQuadraticFacetPairGaps<T, Slots> integrateQuadraticFacetPair(const QuadraticFacetPairCoordinates<T, Slots>& x,
+                                                                   double referenceArea, const MortarFacetPairShape& shape);
 
-struct MortarQuadraticFacetPairDerivatives {
-  static constexpr int kCoordinates = kQuadraticFacetPairCoordinates;
+template <int Slots>
+struct MortarQuadraticPairDerivatives {
+  static constexpr int kCoordinates = 3 * 2 * Slots;
   bool overlaps = false;
-  std::array<double, kQuadraticFacetNodes> weightedGap{};
-  std::array<double, kQuadraticFacetNodes> mortarArea{};
-  std::array<std::array<double, kCoordinates>, kQuadraticFacetNodes> gradient{};
-  std::array<std::array<double, kCoordinates * kCoordinates>, kQuadraticFacetNodes> hessian{};  ///< row-major
+  std::array<double, Slots> weightedGap{};
+  std::array<double, Slots> mortarArea{};
+  std::array<std::array<double, kCoordinates>, Slots> gradient{};
+  std::array<std::array<double, kCoordinates * kCoordinates>, Slots> hessian{};  ///< row-major
 };
+using MortarQuadraticFacetPairDerivatives = MortarQuadraticPairDerivatives<kQuadraticFacetNodes>;
 
-/// The pair's weighted gaps (values only); overloads of MortarFacetPair's on the quadratic layout.
-MortarQuadraticFacetPairGaps<double> facetPairGaps(const QuadraticFacetPairCoordinates<double>& x,
-                                                   double referenceArea, const MortarFacetPairShape& shape);
-/// The pair's weighted gaps differentiated twice; with masterMotion (a rigid master's ∂x/∂λ, its 18
+/// The pair's weighted gaps (values only); overloads of MortarFacetPair's on the quadratic layouts (6, 8
+/// and 9 slots).
+MortarQuadraticFacetPairGaps<double, 6> facetPairGaps(const QuadraticFacetPairCoordinates<double, 6>& x,
+                                                      double referenceArea, const MortarFacetPairShape& shape);
+MortarQuadraticFacetPairGaps<double, 8> facetPairGaps(const QuadraticFacetPairCoordinates<double, 8>& x,
+                                                      double referenceArea, const MortarFacetPairShape& shape);
+MortarQuadraticFacetPairGaps<double, 9> facetPairGaps(const QuadraticFacetPairCoordinates<double, 9>& x,
+                                                      double referenceArea, const MortarFacetPairShape& shape);
+/// The pair's weighted gaps differentiated twice; with masterMotion (a rigid master's ∂x/∂λ, its 3 × Slots
 /// entries) only along that motion in the master's coordinates (MortarFacetPair.hpp says why).
-MortarQuadraticFacetPairDerivatives facetPairDerivatives(const QuadraticFacetPairCoordinates<double>& x,
-                                                         double referenceArea, const MortarFacetPairShape& shape,
-                                                         const double* masterMotion = nullptr);
+MortarQuadraticPairDerivatives<6> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 6>& x,
+                                                       double referenceArea, const MortarFacetPairShape& shape,
+                                                       const double* masterMotion = nullptr);
+MortarQuadraticPairDerivatives<8> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 8>& x,
+                                                       double referenceArea, const MortarFacetPairShape& shape,
+                                                       const double* masterMotion = nullptr);
+MortarQuadraticPairDerivatives<9> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 9>& x,
+                                                       double referenceArea, const MortarFacetPairShape& shape,
+                                                       const double* masterMotion = nullptr);
 
-/// A face's nodes (3, 4 or 6 of them, Tri6 ordered as Tri6Facet: corners, then mid-edge 0–1, 1–2, 2–0).
-using MortarFaceNodes = std::array<std::array<double, 3>, kQuadraticFacetNodes>;
+/// The node slots a pair of faces of these node counts takes (6, 8 or 9: the larger face's, a Quad8 with
+/// a Quad9 9).
+constexpr int quadraticPairSlots(int slaveNodes, int masterNodes) {
+  return slaveNodes > masterNodes ? slaveNodes : masterNodes;
+}
+/// The flat pieces of a face of `nodes` nodes (1 for a Tri3 or Quad4, 4 for a Tri6 or Quad9, 5 for a
+/// Quad8).
+constexpr int mortarFacePieces(int nodes) { return nodes == 6 || nodes == 9 ? 4 : nodes == 8 ? 5 : 1; }
+/// The reference measures the deck stores per slave face (InterfaceSpec::slaveFacetMeasures): one for a
+/// linear face (its area); for a quadratic face a triangle piece's area and a 4-node piece's three Jacobian
+/// coefficients (eq. M20): 4 for a Tri6, 4 + 3 for a Quad8, 4 × 3 for a Quad9.
+constexpr int mortarFaceMeasures(int nodes) { return nodes == 6 ? 4 : nodes == 8 ? 7 : nodes == 9 ? 12 : 1; }
+
+/// A face's nodes (3, 4, 6, 8 or 9 of them; Tri6 ordered as Tri6Facet: corners, then mid-edge 0–1, 1–2,
+/// 2–0; Quad8 and Quad9 as Quad9Facet: corners, mid-edge 0–1, 1–2, 2–3, 3–0, then the centre).
+using MortarFaceNodes = std::array<std::array<double, 3>, kMaxMortarFaceNodes>;
 /// A slave face's reference measure for the kernels: the summed areas of its flat pieces (a Tri3's area,
-/// a Quad4's |d_1 × d_2| / 2, a Tri6's four triangles).
+/// a Quad4's |d_1 × d_2| / 2, a quadratic face's pieces').
 double mortarFacetReferenceArea(const MortarFaceNodes& x, int nodes);
-/// A 6-node face's four flat pieces' areas (Tri6Facet::flatPieces order; a 3- or 4-node face's area first).
-std::array<double, 4> mortarFacetPieceAreas(const MortarFaceNodes& x, int nodes);
+/// A quadratic face's reference measures, mortarFaceMeasures(nodes) of them in the kernel's order of its
+/// pieces: a triangle piece's area; a 4-node piece's projected Jacobian J(l) = (x_,l1 × x_,l2) · n_0 =
+/// j_0 + j_1 l_1 + j_2 l_2 on [−1, 1]² as (j_0, j_1, j_2) (affine in l for a bilinear piece). A 3- or 4-node
+/// face's area first.
+std::array<double, kMaxMortarFaceMeasures> mortarFacetPieceMeasures(const MortarFaceNodes& x, int nodes);
 /// Its nodes' mortar areas ∫ Φ_a dA_0 over the whole face (the A_a of p_a = ε_N ⟨−g̃_a⟩ / A_a), integrated
 /// as the kernel does on the flat pieces.
-std::array<double, kQuadraticFacetNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes);
+std::array<double, kMaxMortarFaceNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes);
 
 }  // namespace contessa::contact

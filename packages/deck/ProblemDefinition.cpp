@@ -245,20 +245,23 @@ void smoothMaster(contact::ContactInterfaceSpec& spec) {
 }
 
 // Whether a side set's facets are ones the mortar kernels integrate: 2-node segments in 2D (MortarSegment),
-// 3-node triangles and 4-node quadrilaterals in 3D (MortarFacetPair), 6-node triangles on their flat pieces
-// (MortarQuadraticFacetPair); not yet 8- and 9-node quadrilaterals.
+// 3-node triangles and 4-node quadrilaterals in 3D (MortarFacetPair), 6-, 8- and 9-node faces on their flat
+// pieces (MortarQuadraticFacetPair); not 3-node segments in 2D.
 void requireMortarFacets(int dimension, int nodesPerFacet, const std::string& set, const std::string& where) {
-  const bool supported = dimension == 2 ? nodesPerFacet == 2 : (nodesPerFacet == 3 || nodesPerFacet == 4 || nodesPerFacet == 6);
+  const bool supported = dimension == 2 ? nodesPerFacet == 2
+                                        : (nodesPerFacet == 3 || nodesPerFacet == 4 || nodesPerFacet == 6 ||
+                                           nodesPerFacet == 8 || nodesPerFacet == 9);
   requireInput(supported, where + "/Discretization: Mortar takes " +
-                           (dimension == 2 ? std::string("2-node segments") : std::string("3-, 4- or 6-node faces")) +
+                           (dimension == 2 ? std::string("2-node segments") : std::string("3-, 4-, 6-, 8- or 9-node faces")) +
                            "; side set '" + set + "' has " + std::to_string(nodesPerFacet) +
                            "-node sides (use Node To Segment)");
 }
 
 // The reference measure of each slave facet, the mortar's dΓ_0 (InterfaceSpec::slaveFacetMeasures): a
 // segment's length (2D), a triangle's area, a quadrilateral's |d_1 × d_2| / 2 (its diagonals': the area
-// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp); a 6-node triangle
-// has four, its flat pieces' areas (MortarQuadraticFacetPair.hpp, eq. M20).
+// of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp); a quadratic face
+// (6, 8 or 9 nodes) has its flat pieces' (a triangle's area, a 4-node piece's three Jacobian
+// coefficients: MortarQuadraticFacetPair.hpp, eq. M20).
 std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& facets, int perFacet,
                                        const SurfaceCoordinates& coordinates) {
   std::vector<double> out;
@@ -267,11 +270,11 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
     return std::array<double, 3>{b[0] - a[0], b[1] - a[1], a.size() > 2 ? b[2] - a[2] : 0.0};
   };
   for (std::size_t f = 0; f + perFacet <= facets.size(); f += static_cast<std::size_t>(perFacet)) {
-    if (perFacet == 6) {  // a Tri6: its four flat pieces' areas, four measures (MortarQuadraticFacetPair, eq. M20)
+    if (perFacet >= 6) {  // a quadratic face: its flat pieces' areas (MortarQuadraticFacetPair, eq. M20)
       contact::MortarFaceNodes x{};
-      for (int a = 0; a < 6; ++a) std::copy_n(at(f + a).begin(), 3, x[a].begin());
-      const auto pieces = contact::mortarFacetPieceAreas(x, perFacet);
-      out.insert(out.end(), pieces.begin(), pieces.end());
+      for (int a = 0; a < perFacet; ++a) std::copy_n(at(f + a).begin(), 3, x[a].begin());
+      const auto pieces = contact::mortarFacetPieceMeasures(x, perFacet);
+      out.insert(out.end(), pieces.begin(), pieces.begin() + contact::mortarFaceMeasures(perFacet));
       continue;
     }
     if (perFacet == 2) {
@@ -287,18 +290,20 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
   return out;
 }
 
-// The slave nodes' areas A_a of a mortar interface on 6-node triangles: ∫ Φ_a dA_0 with the flat pieces'
-// linear functions (MortarQuadraticFacetPair.hpp, eq. M18), integrated as the kernel does, so that
-// p_a = ε_N ⟨−g̃_a⟩ / A_a is the pressure of a uniform gap to round-off (the node-to-facet areas of 6-node
-// faces are the same sub-triangle shares, but scaled to the curved face's area).
+// The slave nodes' areas A_a of a mortar interface on quadratic faces: ∫ Φ_a dA_0 with the flat pieces'
+// linear or bilinear functions (MortarQuadraticFacetPair.hpp, eq. M18), integrated as the kernel does, so
+// that p_a = ε_N ⟨−g̃_a⟩ / A_a is the pressure of a uniform gap to round-off (the node-to-facet areas of
+// 6- and 8-node faces are the same sub-facet shares, but scaled to the curved face's area; a 9-node face's
+// are its consistent loads, A/36 at a corner, not the quarters' A/16).
 std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& spec, const SurfaceCoordinates& coordinates) {
   std::vector<double> out(spec.slaveNodes.size(), 0.0);
   const auto& nodes = spec.slaveNodes;
-  for (std::size_t f = 0; f + 6 <= spec.slaveFacets.size(); f += 6) {
+  const std::size_t perFacet = static_cast<std::size_t>(spec.slaveFacetNodes);
+  for (std::size_t f = 0; f + perFacet <= spec.slaveFacets.size(); f += perFacet) {
     contact::MortarFaceNodes x{};
-    for (int a = 0; a < 6; ++a) std::copy_n(coordinates.at(spec.slaveFacets[f + a]).begin(), 3, x[a].begin());
-    const auto areas = contact::mortarFacetNodeAreas(x, 6);
-    for (int a = 0; a < 6; ++a)
+    for (std::size_t a = 0; a < perFacet; ++a) std::copy_n(coordinates.at(spec.slaveFacets[f + a]).begin(), 3, x[a].begin());
+    const auto areas = contact::mortarFacetNodeAreas(x, spec.slaveFacetNodes);
+    for (std::size_t a = 0; a < perFacet; ++a)
       out[static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), spec.slaveFacets[f + a]) - nodes.begin())] += areas[a];
   }
   return out;
@@ -339,7 +344,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   }
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
-  if (spec.mortar && slave.nodesPerFacet == 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
+  if (spec.mortar && mesh.dimension == 3 && slave.nodesPerFacet >= 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
   if (rigid) {
     requireInput(!in.twoPass, where + "/Two Pass: a rigid master has no slave side of its own");
