@@ -264,6 +264,8 @@ void writeRunReport(const CommandLine& cl, const std::string& name, const solver
   report.preconditionerCoarseZeroRestarts = setUps.coarseZeros;
   report.directFactorizations = solvers::mumpsCounters().factorizations;
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
+  report.reusedFactorizations = solvers::mumpsCounters().reusedFactorizations;
+  report.preconditionerUnchangedSetUps = setUps.unchanged;
   report.graphRebuilds = model.graphRebuilds();
   report.graphRebuildSeconds = model.graphRebuildSeconds();
   report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -135,6 +135,8 @@ std::string summaryJson(const RunReport& r) {
       << "  \"preconditioner_coarse_zero_restarts\": " << r.preconditionerCoarseZeroRestarts << ",\n"
       << "  \"direct_factorizations\": " << r.directFactorizations << ",\n"
       << "  \"symmetric_factorizations\": " << r.symmetricFactorizations << ",\n"
+      << "  \"reused_factorizations\": " << r.reusedFactorizations << ",\n"
+      << "  \"preconditioner_unchanged_setups\": " << r.preconditionerUnchangedSetUps << ",\n"
       << "  \"graph_rebuilds\": " << r.graphRebuilds << ",\n"
       << "  \"graph_rebuild_seconds\": " << number(r.graphRebuildSeconds) << ",\n"
       << "  \"wall_seconds\": " << number(r.wallSeconds) << ",\n"

@@ -43,6 +43,8 @@ struct RunReport {
   long preconditionerCoarseZeroRestarts = 0;  ///< started over: exact zeros in the coarse matrices, 2+ ranks
   long directFactorizations = 0;     ///< MUMPS factorisations of the run
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
+  long reusedFactorizations = 0;     ///< Jacobians equal to the last factorised one: no factorisation
+  long preconditionerUnchangedSetUps = 0;  ///< MueLu set-ups skipped: the values as at the last set-up
   int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)
   double graphRebuildSeconds = 0;    ///< their total time
   std::vector<long long> peakBytesPerRank;  ///< rank 0 only (gathered)

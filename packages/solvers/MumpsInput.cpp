@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -37,6 +38,23 @@ bool MumpsDistributedInput::update(const model::CrsMatrix& A, MPI_Comm comm) {
   values_ = const_cast<double*>(local.values.data());
   numValues_ = local.values.extent(0);
   return newPattern != 0;
+}
+
+bool MumpsUnchangedMatrix::matches(const MumpsMatrixView& local, MPI_Comm comm) const {
+  const auto count = static_cast<std::size_t>(local.numEntries);
+  int sameHere = generation_ >= 0 && local.patternGeneration == generation_ && count == values_.size() &&
+                 (count == 0 || std::memcmp(local.values, values_.data(), count * sizeof(double)) == 0);
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  if (size == 1) return sameHere != 0;
+  int same = 0;
+  MPI_Allreduce(&sameHere, &same, 1, MPI_INT, MPI_MIN, comm);
+  return same != 0;
+}
+
+void MumpsUnchangedMatrix::remember(const MumpsMatrixView& local) {
+  generation_ = local.patternGeneration;
+  values_.assign(local.values, local.values + local.numEntries);
 }
 
 void MumpsHostInput::update(const MumpsMatrixView& local, MPI_Comm comm) {

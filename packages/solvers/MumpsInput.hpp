@@ -47,6 +47,26 @@ class MumpsDistributedInput {
   std::size_t numValues_ = 0;
 };
 
+/// Whether a matrix is, bit for bit, the one of the last factorisation, so that its factors still
+/// serve. LOCA's tangent predictor asks for the Jacobian at the converged state, which is the last
+/// Newton iteration's whenever the contact set did not change in that iteration and the solid is linear
+/// (the punch: 3 of its 7 Jacobians; bench/README.md, "Issue 23, fifth round"); a factorisation costs
+/// 10^2 to 10^4 times the comparison. Holds a copy of the values (8 bytes per stored entry).
+class MumpsUnchangedMatrix {
+ public:
+  /// Collective over `comm`: true on every rank when every rank's `local` has the pattern generation and
+  /// the values remembered last.
+  bool matches(const MumpsMatrixView& local, MPI_Comm comm) const;
+  /// Remembers `local`'s pattern generation and values (before it is factorised).
+  void remember(const MumpsMatrixView& local);
+  /// Forgets them (a failed factorisation: nothing to reuse).
+  void forget() { generation_ = -1; }
+
+ private:
+  long generation_ = -1;
+  std::vector<double> values_;
+};
+
 /// The whole matrix on rank 0, for MUMPS run there alone (`Reproducible`): the ranks' triplets gathered in
 /// rank order. MUMPS on several ranks adds the contributions of the other ranks' fronts, in the
 /// factorisation and in the forward solve, in the order their messages arrive, so its answer changes in

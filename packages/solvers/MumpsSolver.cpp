@@ -263,10 +263,23 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
     }
     std::optional<timers::Scope> inputScope(std::in_place, timers::Phase::MumpsInput);
     input_.update(*A, comm_);
+    // The last factors serve a matrix equal to the one they came from (MumpsUnchangedMatrix).
+    if (factorized_ && lastFactorized_.matches(input_.view(), comm_)) {
+      ++mumpsCounters().reusedFactorizations;
+      return;
+    }
+    lastFactorized_.remember(input_.view());
     if (onHostAlone_) hostInput_.update(input_.view(), comm_);
     const MumpsMatrixView general = onHostAlone_ ? hostInput_.view() : input_.view();
     symmetricNow_ = exploitSymmetry_ && symmetricInput_.update(general);
     inputScope.reset();
+    factorize(general);
+    if (!factorized_) lastFactorized_.forget();
+  }
+
+  // Factorises `general` (symmetric or not, on every rank or on rank 0 alone); sets factorized_ alike on
+  // every rank.
+  void factorize(const MumpsMatrixView& general) {
     ++mumpsCounters().factorizations;
     if (symmetricNow_) ++mumpsCounters().symmetricFactorizations;
     if (symmetricNow_) {
@@ -400,6 +413,7 @@ class MumpsLinearOpWithSolve : public Thyra::LinearOpWithSolveBase<double> {
   int rank_ = 0;
   MumpsDistributedInput input_;
   MumpsHostInput hostInput_;
+  MumpsUnchangedMatrix lastFactorized_;
   mutable MumpsSymmetricInput symmetricInput_;
   mutable std::unique_ptr<MumpsContext> generalContext_, symmetricContext_;
   RCP<const Map> hostMap_;

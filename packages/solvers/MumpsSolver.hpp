@@ -55,6 +55,7 @@ struct MumpsCounters {
   long factorizations = 0;
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   long solves = 0;
+  long reusedFactorizations = 0;  ///< matrices equal to the last factorised one: its factors served
 };
 MumpsCounters& mumpsCounters();
 

@@ -1,5 +1,7 @@
 #include "solvers/PreconditionerReuse.hpp"
 
+#include <cstring>
+
 #include <MueLu_Factory.hpp>
 #include <MueLu_FactoryManagerBase.hpp>
 #include <MueLu_Hierarchy.hpp>
@@ -141,6 +143,22 @@ std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix) {
   return out;
 }
 
+std::uint64_t valuesHash(const model::CrsMatrix& matrix) {
+  // Each value's bits mixed by splitmix64's finaliser into a running sum weighted by position, so that
+  // moved and changed values alike change the hash.
+  const auto values = matrix.getLocalMatrixHost().values;
+  std::uint64_t hash = 0x9e3779b97f4a7c15ULL ^ values.extent(0);
+  for (std::size_t k = 0; k < values.extent(0); ++k) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &values(k), sizeof bits);
+    bits ^= k * 0x9e3779b97f4a7c15ULL;
+    bits = (bits ^ (bits >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    bits = (bits ^ (bits >> 27)) * 0x94d049bb133111ebULL;
+    hash = (hash ^ (bits ^ (bits >> 31))) * 0x100000001b3ULL;
+  }
+  return hash;
+}
+
 bool anyFilledIn(const model::CrsMatrix& matrix, const std::vector<std::size_t>& positions) {
   const auto values = matrix.getLocalMatrixHost().values;
   for (const std::size_t k : positions)
@@ -153,22 +171,24 @@ PreconditionerSetUpCounts& GraphKeyedPreconditionerFactory::counts() {
   return c;
 }
 
-GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decide(const model::CrsMatrix* matrix,
-                                                                                  const SetUp& last) const {
+GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decide(
+    const Teuchos::RCP<const model::CrsMatrix>& matrix, std::uint64_t hash, const SetUp& last) const {
   // Each rank's reason, then the first reason any rank has (ranks agree on the graph: a rebuild is collective).
-  int reason = 0;
-  if (matrix == nullptr || last.graph.is_null() || last.graph.get() != matrix->getCrsGraph().get())
+  int reason = static_cast<int>(Decision::Reuse);
+  if (matrix.is_null() || last.graph.is_null() || last.graph.get() != matrix->getCrsGraph().get())
     reason = static_cast<int>(Decision::NewGraph);
   else if (anyFilledIn(*matrix, last.zeroEntries))
     reason = static_cast<int>(Decision::PatternGrew);
+  else if (last.matrix.get() == matrix.get() && last.valuesHash == hash)
+    reason = static_cast<int>(Decision::Unchanged);
   else if (last.coarseZeros)
     reason = static_cast<int>(Decision::CoarseZeros);
-  if (matrix != nullptr && matrix->getComm()->getSize() > 1) {
+  if (!matrix.is_null() && matrix->getComm()->getSize() > 1) {
     int any = 0;
     Teuchos::reduceAll(*matrix->getComm(), Teuchos::REDUCE_MAX, 1, &reason, &any);
     reason = any;
   } else if (reason == static_cast<int>(Decision::CoarseZeros)) {
-    reason = 0;  // one rank: MueLu's refusal is caught and recovered alone (initializePrec)
+    reason = static_cast<int>(Decision::Reuse);  // one rank: MueLu's refusal is caught and recovered alone (initializePrec)
   }
   return static_cast<Decision>(reason);
 }
@@ -191,24 +211,32 @@ void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const So
   const auto matrix = matrixOf(*src);
   const bool known = setUps_.count(prec) != 0;
   auto& record = setUps_[prec];
-  const Decision decision = decide(matrix.get(), record);
+  const std::uint64_t hash = matrix.is_null() ? 0 : valuesHash(*matrix);
+  const Decision decision = decide(matrix, hash, record);
   auto& c = counts();
+  if (decision == Decision::Unchanged) {
+    ++c.unchanged;
+    return;
+  }
   if (decision != Decision::Reuse) {
     // A preconditioner's first set-up is no restart.
     if (known && decision == Decision::NewGraph) ++c.newGraph;
     if (decision == Decision::PatternGrew) ++c.patternGrew;
     if (decision == Decision::CoarseZeros) ++c.coarseZeros;
     startOver(src, prec, use, matrix.get(), record);
-    return;
+  } else {
+    try {
+      record.matrix = Teuchos::null;  // until the re-set-up is done
+      inner_->initializePrec(src, prec, use);
+      ++c.reused;
+    } catch (const std::exception&) {
+      // One rank only (decide): e.g. an exact zero of a coarse matrix at the set-up that is nonzero now.
+      ++c.refused;
+      startOver(src, prec, use, matrix.get(), record);
+    }
   }
-  try {
-    inner_->initializePrec(src, prec, use);
-    ++c.reused;
-  } catch (const std::exception&) {
-    // One rank only (decide): e.g. an exact zero of a coarse matrix at the set-up that is nonzero now.
-    ++c.refused;
-    startOver(src, prec, use, matrix.get(), record);
-  }
+  record.matrix = matrix;
+  record.valuesHash = hash;
 }
 
 void GraphKeyedPreconditionerFactory::uninitializePrec(Thyra::PreconditionerBase<double>* prec,

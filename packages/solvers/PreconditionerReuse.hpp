@@ -26,6 +26,13 @@
 //   entry that A's stored pattern times P gives (checked by that product, once per fresh set-up);
 //   otherwise the hierarchy is never re-set-up on more than one rank. On one rank MueLu's refusal is
 //   caught instead and the hierarchy started over.
+// - the same matrix with the same values as at the last set-up (fresh or reused) on every rank: nothing is
+//   redone, the hierarchy and its smoothers are those of these very values. LOCA's tangent predictor
+//   asks for the Jacobian at the converged state, which equals the last Newton iteration's when the
+//   contact set did not change and the solid is linear (the 3D punch: 3 of 8 set-ups). The values are
+//   recognised by a 64-bit hash (valuesHash): a collision, were one to happen, would keep an older
+//   preconditioner, which costs Krylov iterations and never accuracy.
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -45,6 +52,7 @@ struct PreconditionerSetUpCounts {
   long patternGrew = 0;      ///< started over because an entry zero at the set-up is nonzero now
   long coarseZeros = 0;      ///< started over: a coarse A's exact zeros were not covered (2+ ranks)
   long refused = 0;          ///< re-set-ups MueLu refused (one rank only), then started over
+  long unchanged = 0;        ///< set-ups skipped: the matrix and its values as at the last set-up
 };
 
 /// `inner` (MueLu's factory) that keeps a preconditioner's hierarchy while the Jacobians share its graph
@@ -82,9 +90,12 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
     Teuchos::RCP<const model::CrsGraph> graph;  // held, so that a freed graph's address cannot pass for it
     std::vector<std::size_t> zeroEntries;       // local positions of the stored entries that were exactly 0
     bool coarseZeros = false;                   // a coarse matrix of the hierarchy held exact zeros
+    // The matrix and the hash of its values at the last set-up, fresh or reused.
+    Teuchos::RCP<const model::CrsMatrix> matrix;
+    std::uint64_t valuesHash = 0;
   };
-  enum class Decision { Reuse, CoarseZeros, PatternGrew, NewGraph };  // ranks take the largest
-  Decision decide(const model::CrsMatrix* matrix, const SetUp& last) const;
+  enum class Decision { Unchanged, Reuse, CoarseZeros, PatternGrew, NewGraph };  // ranks take the largest
+  Decision decide(const Teuchos::RCP<const model::CrsMatrix>& matrix, std::uint64_t hash, const SetUp& last) const;
   void startOver(const Teuchos::RCP<const Source>& src, Thyra::PreconditionerBase<double>* prec,
                  Thyra::ESupportSolveUse use, const model::CrsMatrix* matrix, SetUp& record) const;
 
@@ -94,6 +105,9 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
 
 /// The local positions of `matrix`'s stored entries whose value is exactly zero.
 std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix);
+
+/// A 64-bit hash of `matrix`'s stored values on this rank (their bits, in storage order).
+std::uint64_t valuesHash(const model::CrsMatrix& matrix);
 
 /// Whether any of `positions` (from zeroEntryPositions on a matrix of the same graph) holds a nonzero now.
 bool anyFilledIn(const model::CrsMatrix& matrix, const std::vector<std::size_t>& positions);

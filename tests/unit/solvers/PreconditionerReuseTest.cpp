@@ -151,6 +151,50 @@ TEST(PreconditionerReuse, AnEntryZeroAtTheSetUpThatFillsInStartsOverOnEveryRank)
   EXPECT_EQ(recording->uninitializations, 2);
 }
 
+// The same Jacobian with the same values as at the last set-up (LOCA's tangent predictor at a converged
+// state the last Newton iteration already had) is not set up again; new values on one rank only are, on
+// every rank.
+TEST(PreconditionerReuse, UnchangedValuesOfTheSameMatrixSkipTheSetUpOnEveryRankAlike) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  auto recording = rcp(new RecordingFactory());
+  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording);
+  auto prec = factory.createPrec();
+  auto& counts = contessa::solvers::GraphKeyedPreconditionerFactory::counts();
+  const long unchangedBefore = counts.unchanged, reusedBefore = counts.reused;
+  auto matrix = rcp(new CrsMatrix(bandGraph(map, false)));
+  matrix->resumeFill();
+  matrix->setAllToScalar(3.0);
+  matrix->fillComplete();
+  auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const contessa::model::Operator>(matrix));
+  const auto source = Thyra::defaultLinearOpSource(op);
+  factory.initializePrec(source, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  factory.initializePrec(source, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->initializations, 1) << "the values of the set-up: nothing to redo";
+  EXPECT_EQ(counts.unchanged, unchangedBefore + 1);
+
+  // Another matrix object with equal values is set up (its hierarchy would point at the other matrix).
+  factory.initializePrec(jacobianOn(matrix->getCrsGraph(), 3.0), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->initializations, 2);
+  factory.initializePrec(source, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->initializations, 3);
+
+  // One value of the last rank changed in place: every rank re-sets-up.
+  matrix->resumeFill();
+  if (comm->getRank() == comm->getSize() - 1) {
+    Teuchos::ArrayView<const int> columns;
+    matrix->getCrsGraph()->getLocalRowView(4, columns);
+    std::vector<double> values(columns.size(), 3.0);
+    values[0] = 3.0 + 1e-15;
+    matrix->replaceLocalValues(4, columns, Teuchos::ArrayView<const double>(values));
+  }
+  matrix->fillComplete();
+  factory.initializePrec(source, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->initializations, 4) << "a changed value on any rank must re-set-up on all";
+  EXPECT_EQ(counts.reused, reusedBefore + 3);
+  EXPECT_EQ(recording->uninitializations, 1);
+}
+
 TEST(PreconditionerReuse, ZeroEntriesFoundAndTheirFillInSeen) {
   auto comm = Tpetra::getDefaultComm();
   auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
