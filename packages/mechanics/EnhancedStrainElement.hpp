@@ -93,12 +93,13 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     PointStates s;
     Alpha solution = alpha;
     for (int m = 0; m < NA; ++m) solution[m] += shift[m];
-    ElementStatus status = solveLocal(g, Fc, material, solution, s);
+    const bool tangent = stiffness != nullptr;
+    ElementStatus status = solveLocal(g, Fc, material, tangent, solution, s);
     if (status != ElementStatus::Ok && shift != Alpha{}) {
       // The prediction overshot (an inadmissible start or no convergence): start where we would
       // without it.
       solution = alpha;
-      status = solveLocal(g, Fc, material, solution, s);
+      status = solveLocal(g, Fc, material, tangent, solution, s);
     }
     if (status != ElementStatus::Ok) return status;
 
@@ -334,15 +335,18 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     return solveDenseInPlace<NA, 1>(Kaa.data(), step.data());
   }
 
-  /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F,
-  /// P, A there.
+  /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F
+  /// and P there, and A too when `tangent` (a Jacobian evaluation). Without `tangent` (a residual) A is
+  /// evaluated only where a Newton step needs it, not at the iterate that passes the convergence test:
+  /// that saves one of the law's tangents per residual evaluation (issue 23, fifth round), and P is the
+  /// same either way (the same F), so the iterates are too.
   ElementStatus solveLocal(const Geometry& g, const std::array<Matrix<MD>, Q>& Fc, const Material& material,
-                           Alpha& alpha, PointStates& s) const {
+                           bool tangent, Alpha& alpha, PointStates& s) const {
     Alpha step{};
     double previousNorm = HUGE_VAL;
     for (int iter = 0; iter < kMaxLocalIterations; ++iter) {
       for (int q = 0; q < Q; ++q) s.F[q] = enhancedGradient(g, q, Fc[q], alpha);
-      if (!material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), s.A.data())) {
+      if (!material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), tangent ? s.A.data() : nullptr)) {
         // Inadmissible at the starting guess: the deformation (or the start) is bad. After a Newton
         // step: the step overshot, so halve it and try again.
         if (iter == 0) return ElementStatus::InadmissibleDeformation;
@@ -363,7 +367,9 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
       if (rNorm <= kResidualTolerance * scale ||
           (rNorm <= kStagnationTolerance * scale && rNorm > 0.5 * previousNorm))
         return ElementStatus::Ok;
-      // Newton step K_αα Δα = −R_α.
+      // Newton step K_αα Δα = −R_α (A at this α first, if the residual pass has not evaluated it).
+      if (!tangent && !material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), s.A.data()))
+        return ElementStatus::InternalSolveFailed;  // cannot happen: P was admissible at this F
       std::array<double, NA * NA> Kaa{};
       for (int m = 0; m < NA; ++m) step[m] = -R[m];
       if (!localNewtonStep(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), Kaa, step))
