@@ -93,12 +93,13 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     PointStates s;
     Alpha solution = alpha;
     for (int m = 0; m < NA; ++m) solution[m] += shift[m];
-    ElementStatus status = solveLocal(g, Fc, material, solution, s);
+    const bool tangent = stiffness != nullptr;
+    ElementStatus status = solveLocal(g, Fc, material, tangent, solution, s);
     if (status != ElementStatus::Ok && shift != Alpha{}) {
       // The prediction overshot (an inadmissible start or no convergence): start where we would
       // without it.
       solution = alpha;
-      status = solveLocal(g, Fc, material, solution, s);
+      status = solveLocal(g, Fc, material, tangent, solution, s);
     }
     if (status != ElementStatus::Ok) return status;
 
@@ -264,19 +265,33 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
       const double inverse = 1.0 / Kaa[m * NA + m];
       for (int c = 0; c < ND; ++c) W[m * ND + c] = Y[m * ND + c] * inverse;
     }
-    // Whole rows (fixed-length loops, which the compiler vectorises: a triangle's variable-length ones
-    // cost more instructions than the operations they save), then the upper triangle mirrored, so that
-    // K is exactly symmetric.
-    for (int r = 0; r < ND; ++r)
-      for (int c = r; c < ND; ++c) K[r * ND + c] = K[c * ND + r] = Ke[r * NE + c];
-    for (int r = 0; r < ND; ++r)
-      for (int m = 0; m < NA; ++m) {
-        const double y = Y[m * ND + r];
-        for (int c = 0; c < ND; ++c) K[r * ND + c] -= y * W[m * ND + c];
-      }
+    schurRowBlocks(Ke, Y, W, K, std::make_integer_sequence<int, N>{});
     mirrorUpperTriangle<ND>(K, ND);
     backSubstitute<NA, ND>(Kaa.data(), W.data());
     return true;
+  }
+
+  /// K_rc = Ke_rc − Σ_m Y_mr W_mc over the row block of node a (rows D·a .. D·a + D − 1), columns from
+  /// D·a on: the blocks b ≥ a, which mirrorUpperTriangle completes. `a` is a template parameter so
+  /// that every column loop has a length known at compile time and vectorises (whole rows cost 5 184
+  /// multiply-adds for Hex8 Enhanced, these 2 916; a run-time start cost more instructions than the
+  /// operations it saved, issue 23 third round).
+  template <int a>
+  static void schurRowBlock(const std::array<double, NE * NE>& Ke, const std::array<double, NA * ND>& Y,
+                            const std::array<double, NA * ND>& W, double* K) {
+    for (int r = D * a; r < D * a + D; ++r) {
+      double* row = K + r * ND;
+      for (int c = D * a; c < ND; ++c) row[c] = Ke[r * NE + c];
+      for (int m = 0; m < NA; ++m) {
+        const double y = Y[m * ND + r];
+        for (int c = D * a; c < ND; ++c) row[c] -= y * W[m * ND + c];
+      }
+    }
+  }
+  template <int... a>
+  static void schurRowBlocks(const std::array<double, NE * NE>& Ke, const std::array<double, NA * ND>& Y,
+                             const std::array<double, NA * ND>& W, double* K, std::integer_sequence<int, a...>) {
+    (schurRowBlock<a>(Ke, Y, W, K), ...);
   }
 
   static Matrix<MD> compatibleGradient(const Geometry& g, int q, const double* u) {
@@ -320,15 +335,18 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     return solveDenseInPlace<NA, 1>(Kaa.data(), step.data());
   }
 
-  /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F,
-  /// P, A there.
+  /// Local Newton on R_α(u, α) = 0 from `alpha`; on success `alpha` is the solution and `s` holds F
+  /// and P there, and A too when `tangent` (a Jacobian evaluation). Without `tangent` (a residual) A is
+  /// evaluated only where a Newton step needs it, not at the iterate that passes the convergence test:
+  /// that saves one of the law's tangents per residual evaluation (issue 23, fifth round), and P is the
+  /// same either way (the same F), so the iterates are too.
   ElementStatus solveLocal(const Geometry& g, const std::array<Matrix<MD>, Q>& Fc, const Material& material,
-                           Alpha& alpha, PointStates& s) const {
+                           bool tangent, Alpha& alpha, PointStates& s) const {
     Alpha step{};
     double previousNorm = HUGE_VAL;
     for (int iter = 0; iter < kMaxLocalIterations; ++iter) {
       for (int q = 0; q < Q; ++q) s.F[q] = enhancedGradient(g, q, Fc[q], alpha);
-      if (!material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), s.A.data())) {
+      if (!material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), tangent ? s.A.data() : nullptr)) {
         // Inadmissible at the starting guess: the deformation (or the start) is bad. After a Newton
         // step: the step overshot, so halve it and try again.
         if (iter == 0) return ElementStatus::InadmissibleDeformation;
@@ -349,7 +367,9 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
       if (rNorm <= kResidualTolerance * scale ||
           (rNorm <= kStagnationTolerance * scale && rNorm > 0.5 * previousNorm))
         return ElementStatus::Ok;
-      // Newton step K_αα Δα = −R_α.
+      // Newton step K_αα Δα = −R_α (A at this α first, if the residual pass has not evaluated it).
+      if (!tangent && !material.firstPiolaKirchhoffAtPoints(Q, s.F.data(), s.P.data(), s.A.data()))
+        return ElementStatus::InternalSolveFailed;  // cannot happen: P was admissible at this F
       std::array<double, NA * NA> Kaa{};
       for (int m = 0; m < NA; ++m) step[m] = -R[m];
       if (!localNewtonStep(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), Kaa, step))

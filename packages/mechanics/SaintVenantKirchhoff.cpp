@@ -39,18 +39,29 @@ bool SaintVenantKirchhoff::stress(const Matrix<D>& F, Matrix<D>& P, Tangent<D>* 
     }
   if (A) {
     // A_iJkL = δ_ik S_JL + F_iM ℂ_MJNL F_kN, ℂ_MJNL = λ δ_MJ δ_NL + μ (δ_MN δ_JL + δ_ML δ_JN),
-    // i.e. the geometric term plus λ F_iJ F_kL + μ ((F Fᵀ)_ik δ_JL + F_iL F_kJ).
-    Matrix<D> b{};
-    for (int i = 0; i < D; ++i)
-      for (int k = 0; k < D; ++k)
-        for (int M = 0; M < D; ++M) b[D * i + k] += F[D * i + M] * F[D * k + M];
+    // i.e. the geometric term plus λ F_iJ F_kL + μ ((F Fᵀ)_ik δ_JL + F_iL F_kJ). The two products of
+    // F are written for every entry (runs of D over L, which vectorise), the two Kronecker terms added
+    // to the D³ entries they touch only: about 3 operations per entry instead of a branch-laden 10.
+    Matrix<D> lambdaF, muF;
+    for (int n = 0; n < D * D; ++n) {
+      lambdaF[n] = lambda * F[n];
+      muF[n] = mu * F[n];
+    }
+    Tangent<D>& a = *A;
     for (int i = 0; i < D; ++i)
       for (int J = 0; J < D; ++J)
         for (int k = 0; k < D; ++k)
           for (int L = 0; L < D; ++L)
-            (*A)[((D * i + J) * D + k) * D + L] =
-                (i == k ? S[D * J + L] : 0.0) + lambda * F[D * i + J] * F[D * k + L] +
-                mu * ((J == L ? b[D * i + k] : 0.0) + F[D * i + L] * F[D * k + J]);
+            a[((D * i + J) * D + k) * D + L] = lambdaF[D * i + J] * F[D * k + L] + muF[D * i + L] * F[D * k + J];
+    for (int i = 0; i < D; ++i)
+      for (int k = 0; k < D; ++k) {
+        double muB = 0.0;  // μ (F Fᵀ)_ik
+        for (int M = 0; M < D; ++M) muB += muF[D * i + M] * F[D * k + M];
+        for (int J = 0; J < D; ++J) a[((D * i + J) * D + k) * D + J] += muB;
+      }
+    for (int i = 0; i < D; ++i)
+      for (int J = 0; J < D; ++J)
+        for (int L = 0; L < D; ++L) a[((D * i + J) * D + i) * D + L] += S[D * J + L];
   }
   return true;
 }

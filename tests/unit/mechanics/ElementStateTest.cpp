@@ -2,6 +2,8 @@
 // element states carried from evaluation to evaluation, and the enhanced element's warm start (its
 // local solve starts from α + dα/du (u − u_α)). The warm start must save local iterations without
 // changing the converged α beyond round-off, and the tangent must stay the derivative of the force.
+#include <algorithm>
+
 #include "MechanicsTestUtilities.hpp"
 
 namespace contessa::mechanics::test {
@@ -25,21 +27,33 @@ class CountingMaterial final : public Material {
  public:
   explicit CountingMaterial(const Material& law) : law_(law) {}
   bool firstPiolaKirchhoff(const Tensor2& F, Tensor2& P, Tensor4* A) const override {
-    ++calls;
+    count(F.data(), A != nullptr);
     return law_.firstPiolaKirchhoff(F, P, A);
   }
   bool firstPiolaKirchhoffAtPoints(int n, const Matrix<2>* F, Matrix<2>* P, Tangent<2>* A) const override {
-    ++calls;
+    count(F[0].data(), A != nullptr);
     return law_.firstPiolaKirchhoffAtPoints(n, F, P, A);
   }
   bool firstPiolaKirchhoffAtPoints(int n, const Matrix<3>* F, Matrix<3>* P, Tangent<3>* A) const override {
-    ++calls;
+    count(F[0].data(), A != nullptr);
     return law_.firstPiolaKirchhoffAtPoints(n, F, P, A);
   }
+  /// Local iterations: evaluations at a new F. A residual evaluation asks for P alone and adds A at the
+  /// same F only where a Newton step needs it: that second call is not an iteration.
   mutable int calls = 0;
+  mutable int tangents = 0;  ///< calls that asked for A
 
  private:
+  void count(const double* F0, bool withTangent) const {
+    tangents += withTangent ? 1 : 0;
+    const bool sameF = withTangent && lastWithoutTangent_ && std::equal(F0, F0 + 4, lastF_);
+    if (!sameF) ++calls;
+    lastWithoutTangent_ = !withTangent;
+    std::copy(F0, F0 + 4, lastF_);
+  }
   const Material& law_;
+  mutable bool lastWithoutTangent_ = false;
+  mutable double lastF_[4] = {};
 };
 
 class ElementState : public ElementMaterial {
@@ -170,6 +184,8 @@ TEST_P(WarmStart, SmallChangeAfterAJacobianConvergesInOneLocalIteration) {
   auto warm = state;
   ASSERT_EQ(kernel->evaluate(*geometry, 0, u1.data(), warm.data(), counting, f.data(), nullptr), ElementStatus::Ok);
   const int warmIterations = counting.calls;
+  // Converged at its first check: a residual evaluation that needs no Newton step evaluates no tangent.
+  EXPECT_EQ(counting.tangents, 0);
   // Without the warm-start data (α of u0 only), as before: one Newton step and a check.
   std::vector<double> alphaOnly(kernel->numStateValues(), 0.0);
   std::copy(state.begin(), state.begin() + na, alphaOnly.begin());
