@@ -50,7 +50,8 @@ ContactInterfaceBase::ContactInterfaceBase(ContactInterfaceSpec spec, std::vecto
       trialChanges_(spec_.slaveNodes.size()),
       committedIncrement_(spec_.slaveNodes.size()),
       trialForce_(spec_.dimension, 0.0),
-      committedForce_(spec_.dimension, 0.0) {
+      committedForce_(spec_.dimension, 0.0),
+      deckNormalPenalty_(spec_.law.normalPenalty) {
   spec_.law.validate();
   if (spec_.slaveFacetLengths.size() != spec_.slaveNodes.size() || spec_.slaveAreas.size() != spec_.slaveNodes.size())
     throw std::logic_error("ContactInterface '" + spec_.label() + "': one area and facet length per slave node expected");
@@ -89,13 +90,21 @@ void ContactInterfaceBase::readSlaveRows(const StateRecord& table, StateTableRea
       table.fail("id", "no row for slave node " + std::to_string(k) + " of interface '" + spec_.label() + "'");
 }
 
+void ContactInterfaceBase::setPenaltyGrowth(double growth) {
+  if (growth == growth_) return;
+  growth_ = growth;
+  spec_.law.normalPenalty = deckNormalPenalty_ * growth;
+  lawChanged();
+}
+
 AugmentationViolation ContactInterfaceBase::trialViolation() const {
   AugmentationViolation v;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     const SlaveNodeState& s = trialOutput_[k];
     if (!evaluatesSlave_[k] || s.status == ContactStatus::Open) continue;
     const double length = spec_.slaveFacetLengths[k];
-    if (std::isfinite(s.gap)) v.penetration = std::max(v.penetration, -s.gap / length);
+    // A node in contact at g_N > 0 (held there by λ_N) violates g_N t_N = 0 as a penetration does.
+    if (std::isfinite(s.gap)) v.penetration = std::max(v.penetration, std::abs(s.gap) / length);
     v.elasticSlip = std::max(v.elasticSlip, s.elasticSlip / length);
   }
   return v;
@@ -136,6 +145,7 @@ class ContactInterface final : public ContactInterfaceBase {
     spec_.law.validate();
     element_ = NodeToFacetContact<Facet>(spec_.law);
   }
+  void lawChanged() override { element_ = NodeToFacetContact<Facet>(spec_.law); }
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) override;
   std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const override;
   std::vector<TunnellingNode> tunnellingNodes() const override;
@@ -594,6 +604,7 @@ void ContactInterface<Facet>::commit() {
   }
   if (spec_.law.isAugmented() && !spec_.law.isFrictionless()) keepStickReferences();
   history_.commit();
+  commitPenaltyGrowth();
   damping_.reset();
   committedIncrement_ = trialChanges_;
   committedOutput_ = trialOutput_;
@@ -630,6 +641,7 @@ void ContactInterface<Facet>::keepStickReferences() {
 template <class Facet>
 void ContactInterface<Facet>::rollback() {
   history_.rollback();
+  rollbackPenaltyGrowth();
   damping_.reset();
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;

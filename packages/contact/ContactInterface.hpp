@@ -49,9 +49,12 @@ struct SlaveNodeChange {
 /// Augmented Lagrangian: the owned slave nodes' largest violations at the latest trial evaluation, each
 /// over the slave facet length L_k of its node (the tolerances' unit, ContactLawParameters).
 struct AugmentationViolation {
-  double penetration = 0;  ///< max −g_N/L_k over the nodes in contact
+  /// max |g_N|/L_k over the nodes in contact: a penetration −g_N, or a positive gap g_N at which λ_N < 0
+  /// still holds the node (eq. 15.1: λ_N + ε_N g_N < 0), both violations of g_N t_N = 0 (eq. 15)
+  double penetration = 0;
   double elasticSlip = 0;  ///< max ‖t_T − λ_T‖/(ε_T L_k) over the sticking nodes
 };
+
 
 /// A slave node that passed through the master surface in the current increment (tunnelling).
 struct TunnellingNode {
@@ -126,6 +129,16 @@ class ContactInterfaceBase {
   virtual void augment() {}
   /// The owned slave nodes' violations at the latest trial evaluation (for the augmentation test).
   AugmentationViolation trialViolation() const;
+  /// Augmented Lagrangian: the normal penalty from now on is the deck's times `growth` ≥ 1 (penalty growth,
+  /// docs/theory-contact.md eq. 15.5); the multipliers are left as they are, so call it only where the problem
+  /// changes anyway (with an update). State like the multipliers: kept by a commit, undone by a cut-back.
+  void setPenaltyGrowth(double growth);
+  double penaltyGrowth() const { return growth_; }
+  /// A restarted run: the growth of the restart file's increment (committed too).
+  void restorePenaltyGrowth(double growth) {
+    setPenaltyGrowth(growth);
+    committedGrowth_ = growth;
+  }
 
   // The restart file's state of the committed configuration, by name (docs/architecture.md, "Checkpoint
   // and restart"; common/StateRecord.hpp).
@@ -175,6 +188,11 @@ class ContactInterfaceBase {
   ContactInterfaceBase(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
 
   std::vector<SlaveNodeChange> owned(const std::vector<SlaveNodeChange>& all) const;
+  /// spec_.law has changed its normal penalty (penalty growth): the element is to be built again.
+  virtual void lawChanged() {}
+  /// The growth of the increment is kept (commit) or forgotten (rollback).
+  void commitPenaltyGrowth() { committedGrowth_ = growth_; }
+  void rollbackPenaltyGrowth() { setPenaltyGrowth(committedGrowth_); }
 
   ContactInterfaceSpec spec_;
   std::vector<char> evaluatesSlave_;
@@ -183,6 +201,10 @@ class ContactInterfaceBase {
   std::vector<double> trialForce_, committedForce_;
   ContactCounts committedCounts_;
   bool frozen_ = false;
+
+ private:
+  double deckNormalPenalty_ = 0.0;  ///< spec_.law's before any growth
+  double growth_ = 1.0, committedGrowth_ = 1.0;
 };
 
 /// The interface of spec.dimension (2: Line2Facet segments, 3: Quad4Facet faces).

@@ -117,6 +117,9 @@ class ContactAssembly {
   std::string outside_;                  ///< the first of them, in words
   bool frozen_ = false;
   std::vector<int> augmentations_;  ///< per interface: multiplier updates in the current increment
+  /// Per interface: the gap violation (over L) at its last update in the increment (+∞ before the first),
+  /// which decides penalty growth (grownPenalty).
+  std::vector<double> lastViolation_;
   std::vector<char> augmentationWarned_;
   /// The largest Newton update at which an unconverged iterate's violations are trusted for an update.
   double earlyUpdateBound() const;
