@@ -40,6 +40,15 @@ struct ContactLawParameters {
   bool hasSlipTolerance() const { return slipTolerance > 0.0; }
   bool isAugmented() const { return enforcement == Enforcement::AugmentedLagrangian; }
 
+  /// The most the augmented Lagrangian grows a frictionless interface's normal penalty over the deck's
+  /// (model::grownPenalty; docs/theory-contact.md eq. 15.5). With friction it does not grow.
+  static constexpr double kMaxPenaltyGrowth = 30.0;
+  /// ε_N as far as the run may take it: the deck's, times kMaxPenaltyGrowth where the augmented
+  /// Lagrangian grows it.
+  double largestNormalPenalty() const {
+    return isAugmented() && isFrictionless() ? kMaxPenaltyGrowth * normalPenalty : normalPenalty;
+  }
+
   /// Throws InputError naming the offending parameter.
   void validate() const {
     requireInput(normalPenalty > 0.0,

@@ -60,15 +60,20 @@ void warnSoftAugmentedPenalty(const contact::ContactInterfaceSpec& spec, const T
   if (!spec.law.isAugmented()) return;
   const std::string set = list.get<std::string>(spec.secondPass ? "Master Side Set" : "Slave Side Set");
   const double stiffness = largestStiffnessOverSize(mesh, blocks, set);  // collective
-  const double penalty = spec.law.normalPenalty;
+  // A frictionless interface's penalty grows at its first update, by up to kMaxPenaltyGrowth (theory-contact
+  // eq. 15.5): what counts is the penalty after that growth.
+  const double penalty = spec.law.largestNormalPenalty();
+  const double growth = penalty / spec.law.normalPenalty;
   if (!(penalty < 0.1 * stiffness) || mesh.rank != 0) return;
+  char grown[64] = "";
+  if (growth > 1.0) std::snprintf(grown, sizeof grown, " (%.3g times it once grown)", growth);
   std::fprintf(stderr,
-               "contessa: warning: contact interface '%s': Problem/Contact/%s/Normal Penalty %.3g is below a tenth of "
-               "E'/h = %.3g under side set '%s': each augmented Lagrangian update removes only %.0f %% of a "
+               "contessa: warning: contact interface '%s': Problem/Contact/%s/Normal Penalty %.3g%s is below a tenth "
+               "of E'/h = %.3g under side set '%s': each augmented Lagrangian update removes only %.0f %% of a "
                "penetration and nodes held off the surface by their multipliers make the contact set chatter (give "
                "at least %.3g)\n",
-               spec.label().c_str(), spec.name.c_str(), penalty, stiffness, set.c_str(),
-               100.0 * penalty / (penalty + stiffness), 0.1 * stiffness);
+               spec.label().c_str(), spec.name.c_str(), spec.law.normalPenalty, grown, stiffness, set.c_str(),
+               100.0 * penalty / (penalty + stiffness), 0.1 * stiffness / growth);
   std::fflush(stderr);
 }
 

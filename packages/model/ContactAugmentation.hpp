@@ -1,9 +1,11 @@
 #pragma once
 // What the Newton solve of an increment needs of the augmented Lagrangian (docs/theory-contact.md §15): at an
 // iterate, whether the contact multipliers are to be updated and the same load factor solved again (Uzawa).
-// No Trilinos, no contact types.
+// No Trilinos; of the contact package only the law's parameters (the growth's bound).
 #include <algorithm>
 #include <cmath>
+
+#include "contact/ContactLawParameters.hpp"
 
 namespace contessa::model {
 
@@ -22,7 +24,7 @@ constexpr double kGrowthReduction = 0.25;
 constexpr double kGrowthTarget = 1.0 / 30.0;
 /// The bound: 100 or 1000 times the deck's penalty left the stick patch test with tolerances of 1e-12
 /// unsolvable (3D: Newton stalls at ‖f‖ 3.7e-10 at the initial state), 30 solves it (theory §15).
-constexpr double kMaxGrowth = 30.0;
+constexpr double kMaxGrowth = contact::ContactLawParameters::kMaxPenaltyGrowth;
 inline double grownPenalty(double growth, double violation, double tolerance, double lastViolation) {
   const bool converging = violation <= kGrowthReduction * lastViolation && lastViolation < HUGE_VAL;
   if (!(tolerance > 0.0) || !(violation > tolerance) || converging) return growth;
