@@ -14,6 +14,7 @@
 
 #include "contact/MortarInterface.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
+#include "MortarQuadraticTestTools.hpp"
 #include "MortarTestTools.hpp"
 
 namespace contessa::contact {
@@ -152,47 +153,11 @@ std::array<Point, 6> unevenMaster() {
   return m;
 }
 
+// The Hessian's columns of a slave corner, a slave mid-edge node and two master nodes.
 void expectDerivativesAreCentralDifferences(const QuadraticFacetPairCoordinates<double>& x,
                                             const MortarFacetPairShape& shape, double referenceArea) {
-  const MortarQuadraticFacetPairDerivatives d = facetPairDerivatives(x, referenceArea, shape);
-  ASSERT_TRUE(d.overlaps);
-  const auto plain = facetPairGaps(x, referenceArea, shape);
-  const double h = 1e-6;
-  std::array<double, 6> scale{}, gradientError{};
-  for (int j = 0; j < kM; ++j) {
-    auto plus = x, minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto gp = facetPairGaps(plus, referenceArea, shape), gm = facetPairGaps(minus, referenceArea, shape);
-    for (int a = 0; a < shape.slaveNodes; ++a) {
-      const double fd = (gp.weightedGap[a] - gm.weightedGap[a]) / (2 * h);
-      scale[a] = std::max(scale[a], std::abs(d.gradient[a][j]));
-      gradientError[a] = std::max(gradientError[a], std::abs(fd - d.gradient[a][j]));
-    }
-  }
-  // The Hessian's columns of a slave corner, a slave mid-edge node and two master nodes (each a few
-  // seconds of nested duals).
-  std::array<double, 6> hessianScale{}, hessianError{};
-  for (int j : {1, 11, 3 * shape.slaveNodes == 18 ? 20 : 18, 3 * 6 + 3 * (shape.masterNodes - 1) + 2}) {
-    auto plus = x, minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto dp = facetPairDerivatives(plus, referenceArea, shape), dm = facetPairDerivatives(minus, referenceArea, shape);
-    for (int a = 0; a < shape.slaveNodes; ++a)
-      for (int i = 0; i < kM; ++i) {
-        const double fd = (dp.gradient[a][i] - dm.gradient[a][i]) / (2 * h);
-        hessianScale[a] = std::max(hessianScale[a], std::abs(d.hessian[a][i * kM + j]));
-        hessianError[a] = std::max(hessianError[a], std::abs(fd - d.hessian[a][i * kM + j]));
-        EXPECT_NEAR(d.hessian[a][i * kM + j], d.hessian[a][j * kM + i], 1e-12) << "a Hessian is symmetric";
-      }
-  }
-  for (int a = 0; a < shape.slaveNodes; ++a) {
-    EXPECT_NEAR(d.weightedGap[a], plain.weightedGap[a], 1e-17);
-    EXPECT_GT(scale[a], 1e-3) << a;  // derivatives that are there
-    EXPECT_GT(hessianScale[a], 1e-4) << a;
-    EXPECT_LT(gradientError[a], 1e-8 * scale[a]) << "slave node " << a;
-    EXPECT_LT(hessianError[a], 1e-7 * hessianScale[a]) << "slave node " << a;
-  }
+  testing::expectDerivativesAreCentralDifferences<kQuadraticFacetNodes>(
+      x, shape, referenceArea, {1, 11, 3 * shape.slaveNodes == 18 ? 20 : 18, 3 * 6 + 3 * (shape.masterNodes - 1) + 2});
 }
 
 TEST(MortarQuadraticFacetPair, GradientAndHessianOfTri6OnTri6CutByTheClipAreCentralDifferences) {

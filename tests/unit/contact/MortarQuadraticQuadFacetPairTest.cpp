@@ -15,6 +15,7 @@
 
 #include "contact/MortarInterface.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
+#include "MortarQuadraticTestTools.hpp"
 #include "MortarTestTools.hpp"
 
 namespace contessa::contact {
@@ -251,45 +252,7 @@ Face unevenMaster(int nodes) {
 template <int Slots>
 void expectDerivativesAreCentralDifferences(const QuadraticFacetPairCoordinates<double, Slots>& x,
                                             const MortarFacetPairShape& shape, const std::vector<int>& hessianColumns) {
-  constexpr int kM = 6 * Slots;
-  const auto d = facetPairDerivatives(x, 0.6, shape);
-  ASSERT_TRUE(d.overlaps);
-  const auto plain = facetPairGaps(x, 0.6, shape);
-  const double h = 1e-6;
-  std::array<double, Slots> scale{}, gradientError{};
-  for (int j = 0; j < kM; ++j) {
-    auto plus = x, minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto gp = facetPairGaps(plus, 0.6, shape), gm = facetPairGaps(minus, 0.6, shape);
-    for (int a = 0; a < shape.slaveNodes; ++a) {
-      const double fd = (gp.weightedGap[a] - gm.weightedGap[a]) / (2 * h);
-      scale[a] = std::max(scale[a], std::abs(d.gradient[a][j]));
-      gradientError[a] = std::max(gradientError[a], std::abs(fd - d.gradient[a][j]));
-    }
-  }
-  // A few Hessian columns (each a pair of nested-dual evaluations over 48 or 54 coordinates).
-  std::array<double, Slots> hessianScale{}, hessianError{};
-  for (int j : hessianColumns) {
-    auto plus = x, minus = x;
-    plus[j] += h;
-    minus[j] -= h;
-    const auto dp = facetPairDerivatives(plus, 0.6, shape), dm = facetPairDerivatives(minus, 0.6, shape);
-    for (int a = 0; a < shape.slaveNodes; ++a)
-      for (int i = 0; i < kM; ++i) {
-        const double fd = (dp.gradient[a][i] - dm.gradient[a][i]) / (2 * h);
-        hessianScale[a] = std::max(hessianScale[a], std::abs(d.hessian[a][i * kM + j]));
-        hessianError[a] = std::max(hessianError[a], std::abs(fd - d.hessian[a][i * kM + j]));
-        EXPECT_NEAR(d.hessian[a][i * kM + j], d.hessian[a][j * kM + i], 1e-12) << "a Hessian is symmetric";
-      }
-  }
-  for (int a = 0; a < shape.slaveNodes; ++a) {
-    EXPECT_NEAR(d.weightedGap[a], plain.weightedGap[a], 1e-17);
-    EXPECT_GT(scale[a], 1e-3) << a;  // derivatives that are there
-    EXPECT_GT(hessianScale[a], 1e-4) << a;
-    EXPECT_LT(gradientError[a], 1e-8 * scale[a]) << "slave node " << a;
-    EXPECT_LT(hessianError[a], 1e-7 * hessianScale[a]) << "slave node " << a;
-  }
+  testing::expectDerivativesAreCentralDifferences<Slots>(x, shape, 0.6, hessianColumns);
 }
 
 TEST(MortarQuadraticQuadFacetPair, GradientAndHessianOfQuad8OnQuad8CutByTheClipAreCentralDifferences) {

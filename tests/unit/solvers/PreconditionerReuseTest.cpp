@@ -58,22 +58,38 @@ RCP<const CrsGraph> bandGraph(const RCP<const Map>& map, bool wide) {
   return graph;
 }
 
-// A Jacobian on `graph` with the values `scale` (new values, same graph: a later Newton iteration).
-RCP<const Thyra::LinearOpSourceBase<double>> jacobianOn(const RCP<const CrsGraph>& graph, double scale) {
+// A matrix on `graph` with every value `scale`.
+RCP<CrsMatrix> uniformMatrix(const RCP<const CrsGraph>& graph, double scale) {
   auto matrix = rcp(new CrsMatrix(graph));
   matrix->resumeFill();
   matrix->setAllToScalar(scale);
   matrix->fillComplete();
+  return matrix;
+}
+
+// What the factory is given: the matrix as a Thyra linear-operator source.
+RCP<const Thyra::LinearOpSourceBase<double>> sourceOf(const RCP<const CrsMatrix>& matrix) {
   auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const contessa::model::Operator>(matrix));
   return Thyra::defaultLinearOpSource(op);
 }
 
+// A Jacobian on `graph` with the values `scale` (new values, same graph: a later Newton iteration).
+RCP<const Thyra::LinearOpSourceBase<double>> jacobianOn(const RCP<const CrsGraph>& graph, double scale) {
+  return sourceOf(uniformMatrix(graph, scale));
+}
+
+// The reuse wrapper over a recording factory, one preconditioner of it, and 6 rows on each rank.
+struct ReuseOnSixRowsPerRank {
+  RCP<const Teuchos::Comm<int>> comm = Tpetra::getDefaultComm();
+  RCP<const Map> map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  RCP<RecordingFactory> recording = rcp(new RecordingFactory());
+  contessa::solvers::GraphKeyedPreconditionerFactory factory{recording};
+  RCP<Thyra::PreconditionerBase<double>> prec = factory.createPrec();
+};
+
 TEST(PreconditionerReuse, SetUpKeptWhileTheGraphIsUnchangedAndStartedOverOnARebuild) {
-  auto comm = Tpetra::getDefaultComm();
-  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
-  auto recording = rcp(new RecordingFactory());
-  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording);
-  auto prec = factory.createPrec();
+  ReuseOnSixRowsPerRank setting;
+  auto& [comm, map, recording, factory, prec] = setting;
   const long freshBefore = contessa::solvers::GraphKeyedPreconditionerFactory::freshSetUps();
 
   const auto first = bandGraph(map, false);
@@ -122,11 +138,8 @@ RCP<const Thyra::LinearOpSourceBase<double>> jacobianWithZeroRows(const RCP<cons
 // entries that were nonzero then: an entry that fills in later must start the hierarchy over, and on every
 // rank alike, also when only one rank holds it (before, the rank that held it failed alone: MPI_ERR_TRUNCATE).
 TEST(PreconditionerReuse, AnEntryZeroAtTheSetUpThatFillsInStartsOverOnEveryRank) {
-  auto comm = Tpetra::getDefaultComm();
-  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
-  auto recording = rcp(new RecordingFactory());
-  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording);
-  auto prec = factory.createPrec();
+  ReuseOnSixRowsPerRank setting;
+  auto& [comm, map, recording, factory, prec] = setting;
   auto& counts = contessa::solvers::GraphKeyedPreconditionerFactory::counts();
   const long grewBefore = counts.patternGrew, reusedBefore = counts.reused;
   const auto graph = bandGraph(map, false);
@@ -155,19 +168,12 @@ TEST(PreconditionerReuse, AnEntryZeroAtTheSetUpThatFillsInStartsOverOnEveryRank)
 // state the last Newton iteration already had) is not set up again; new values on one rank only are, on
 // every rank.
 TEST(PreconditionerReuse, UnchangedValuesOfTheSameMatrixSkipTheSetUpOnEveryRankAlike) {
-  auto comm = Tpetra::getDefaultComm();
-  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
-  auto recording = rcp(new RecordingFactory());
-  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording);
-  auto prec = factory.createPrec();
+  ReuseOnSixRowsPerRank setting;
+  auto& [comm, map, recording, factory, prec] = setting;
   auto& counts = contessa::solvers::GraphKeyedPreconditionerFactory::counts();
   const long unchangedBefore = counts.unchanged, reusedBefore = counts.reused;
-  auto matrix = rcp(new CrsMatrix(bandGraph(map, false)));
-  matrix->resumeFill();
-  matrix->setAllToScalar(3.0);
-  matrix->fillComplete();
-  auto op = Thyra::createConstLinearOp(Teuchos::rcp_implicit_cast<const contessa::model::Operator>(matrix));
-  const auto source = Thyra::defaultLinearOpSource(op);
+  auto matrix = uniformMatrix(bandGraph(map, false), 3.0);
+  const auto source = sourceOf(matrix);
   factory.initializePrec(source, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
   factory.initializePrec(source, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
   EXPECT_EQ(recording->initializations, 1) << "the values of the set-up: nothing to redo";
