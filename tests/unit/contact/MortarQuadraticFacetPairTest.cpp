@@ -244,31 +244,6 @@ std::vector<double> unevenTri6Face() {
   return x;
 }
 
-// The largest |(r(x + h e_j) − r(x − h e_j)) / 2h − K_ij| over the columns of `nodes` (all three
-// components; a Tri6 pair's nested duals take a second an evaluation, so not every column), and the
-// largest |K_ij| there in *scale.
-double tangentColumnsError(const testing::Assembled& a, const std::vector<double>& x, bool rigid,
-                           const std::vector<int>& nodes, double* scale) {
-  const int n = static_cast<int>(x.size());
-  const double h = 1e-7;
-  double error = 0;
-  *scale = 0;
-  for (int node : nodes)
-    for (int c = 0; c < 3; ++c) {
-      const int j = 3 * node + c;
-      auto plus = x, minus = x;
-      plus[j] += h;
-      minus[j] -= h;
-      const auto rp = testing::assemble<3>(*tri6Interface(rigid), plus, 0.3).residual;
-      const auto rm = testing::assemble<3>(*tri6Interface(rigid), minus, 0.3).residual;
-      for (int i = 0; i < n; ++i) {
-        *scale = std::max(*scale, std::abs(a.tangent[i * n + j]));
-        error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
-      }
-    }
-  return error;
-}
-
 TEST(MortarInterfaceTri6, TangentAndLoadDerivativeAreCentralDifferencesOfTheResidual) {
   for (bool rigid : {false, true}) {
     const auto x = unevenTri6Face();  // the rigid plane at z = −0.03: 0.017 to 0.043 into it
@@ -277,7 +252,9 @@ TEST(MortarInterfaceTri6, TangentAndLoadDerivativeAreCentralDifferencesOfTheResi
     // Slave corners 0 and 8, slave mid-edge nodes 1 and 4 (4 on both facets), master corner 9, mid-edge 13.
     double scale = 0;
     const std::vector<int> columns = rigid ? std::vector<int>{0, 1, 4, 8} : std::vector<int>{0, 1, 4, 8, 9, 13};
-    const double error = tangentColumnsError(a, x, rigid, columns, &scale);
+    const double error = testing::tangentColumnsCentralDifferenceError(
+        a.tangent, x, [&](const std::vector<double>& y) { return testing::assemble<3>(*tri6Interface(rigid), y, 0.3).residual; },
+        testing::nodeColumns<3>(columns), &scale);
     EXPECT_GT(scale, 10.0) << rigid;
     EXPECT_LT(error, 1e-6 * scale) << rigid;
     if (!rigid) continue;

@@ -377,30 +377,6 @@ std::vector<double> unevenFaces(int nodes) {
   return x;
 }
 
-// The largest |(r(x + h e_j) − r(x − h e_j)) / 2h − K_ij| over the columns of `nodes` (all three
-// components), and the largest |K_ij| there in *scale.
-double tangentColumnsError(int faceType, const testing::Assembled& a, const std::vector<double>& x, bool rigid,
-                           const std::vector<int>& nodes, double* scale) {
-  const int n = static_cast<int>(x.size());
-  const double h = 1e-7;
-  double error = 0;
-  *scale = 0;
-  for (int node : nodes)
-    for (int c = 0; c < 3; ++c) {
-      const int j = 3 * node + c;
-      auto plus = x, minus = x;
-      plus[j] += h;
-      minus[j] -= h;
-      const auto rp = testing::assemble<3>(*quadInterface(faceType, rigid), plus, 0.3).residual;
-      const auto rm = testing::assemble<3>(*quadInterface(faceType, rigid), minus, 0.3).residual;
-      for (int i = 0; i < n; ++i) {
-        *scale = std::max(*scale, std::abs(a.tangent[i * n + j]));
-        error = std::max(error, std::abs((rp[i] - rm[i]) / (2 * h) - a.tangent[i * n + j]));
-      }
-    }
-  return error;
-}
-
 TEST(MortarInterfaceQuad8Quad9, TangentAndLoadDerivativeAreCentralDifferencesOfTheResidual) {
   for (int nodes : {8, 9})
     for (bool rigid : {false, true}) {
@@ -413,7 +389,10 @@ TEST(MortarInterfaceQuad8Quad9, TangentAndLoadDerivativeAreCentralDifferencesOfT
       std::vector<int> columns = nodes == 8 ? std::vector<int>{0, 11} : std::vector<int>{0, 8};
       if (!rigid) columns.insert(columns.end(), {slaves, slaves + 5});
       double scale = 0;
-      const double error = tangentColumnsError(nodes, a, x, rigid, columns, &scale);
+      const double error = testing::tangentColumnsCentralDifferenceError(
+          a.tangent, x,
+          [&](const std::vector<double>& y) { return testing::assemble<3>(*quadInterface(nodes, rigid), y, 0.3).residual; },
+          testing::nodeColumns<3>(columns), &scale);
       EXPECT_GT(scale, 10.0) << nodes << " " << rigid;
       EXPECT_LT(error, 1e-6 * scale) << nodes << " " << rigid;
       if (!rigid) continue;
