@@ -1,7 +1,10 @@
 // The blocks of inputs/verification/contact_patch_3d.xml (lower [0,1] x [0,0.5] x [0,1] under upper
 // [0,1] x [0.5,1] x [0,1], no shared nodes) as Gmsh second-order hexahedra with centre nodes (HEX27, QUAD9
-// contact faces) on NON-MATCHING faces: the lower block 3 x 1 x 3 cells, the upper 2 x 1 x 2 (the mortar
-// patch test 3/2 of docs/verification-contact.md §9.2). Physical groups as contact_patch_hex27.geo.
+// contact faces) on NON-MATCHING faces: the lower block 3 x 1 x 3 cells, graded along x and z (progression
+// 1.3), the upper 2 x 1 x 2 uniform (the mortar patch test 3/2 of docs/verification-contact.md §9.2). The
+// grading keeps the two sides' quarter lines apart: on uniform 3 and 2 cells both faces have one at 0.5,
+// where Newton stalls (theory-contact §13.2, "Matching quadratic faces"). Physical groups as
+// contact_patch_hex27.geo.
 //   gmsh -3 -format msh41 contact_patch_hex27_non_matching.geo -o contact_patch_hex27_non_matching.msh
 SetFactory("OpenCASCADE");
 Box(1) = {0, 0, 0, 1, 0.5, 1};
@@ -29,7 +32,7 @@ For v In {1 : 2}
   EndFor
   Physical Volume(Sprintf(names(v - 1))) = {v};
 EndFor
-Transfinite Curve{:} = 4;
+Transfinite Curve{:} = 4 Using Progression 1.3;
 upperCurves() = Abs(Boundary{ Boundary{ Volume{2}; } });
 Transfinite Curve{upperCurves()} = 3;
 edgesY() = Curve In BoundingBox{-e, -e, -e, 1 + e, 1 + e, 1 + e};
