@@ -141,6 +141,9 @@ void MumpsSymmetricInput::buildPattern(const MumpsMatrixView& general) {
   entryB_.clear();
   lowerRows_.clear();
   lowerColumns_.clear();
+  const std::size_t lowerEstimate = numEntries / 2 + static_cast<std::size_t>(n_);  // the lower half and the diagonal
+  for (auto* v : {&entryA_, &entryB_}) v->reserve(lowerEstimate);
+  for (auto* v : {&lowerRows_, &lowerColumns_}) v->reserve(lowerEstimate);
   for (std::size_t k = 0; k < numEntries; ++k) {
     const auto entry = static_cast<long>(k);
     if (rows[k] >= cols[k]) {
