@@ -23,8 +23,9 @@ Cases (the meshes are the same node for node):
   1 mm in two increments, node-to-surface penalty contact (punch_input). Per-iteration figures compare
   best here: the two codes' contact algorithms take different numbers of iterations.
 
-With --baseline, another Contessa build runs every tube case too, in the same interleaved loop (a row
-"(baseline)" per case): a before/after pair measured under the same load as the CalculiX run.
+With --baseline, another Contessa build runs every tube and punch case too, in the same interleaved loop
+(a row "(baseline)" per case): a before/after pair measured under the same load as the CalculiX run.
+`--punch-solvers Automatic` lets Contessa choose (MUMPS up to 15 000 unknowns in 3D, then Belos + MueLu).
 
 Tools: /usr/bin/python3 (standard library), /usr/bin/time, ccx.
 """
@@ -159,13 +160,16 @@ def cases(a):
                  "sets": mesh + [f"Piro/Stratimikos/Linear Solver Type={s}"] + ([] if a.punch_converge else [FIRST_ATTEMPT]) +
                  (["Piro/Stratimikos/Preconditioner Type=MueLu"] if s == "Belos" else [])}
                 for s in a.punch_solvers]})
+            if a.baseline:
+                out[-1]["contessa"] += [dict(v, label=v["label"] + " (baseline)", binary=a.baseline)
+                                        for v in out[-1]["contessa"]]
     return out
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--contessa", default=os.path.join(ROOT, "build", "bin", "contessa"))
-    p.add_argument("--baseline", help="another contessa build to run on the tube cases in the same loop (before/after)")
+    p.add_argument("--baseline", help="another contessa build to run on every case in the same loop (before/after)")
     p.add_argument("--ccx", default=shutil.which("ccx") or "ccx")
     p.add_argument("--repeat", type=int, default=3, help="interleaved rounds (default 3)")
     p.add_argument("--cases", nargs="+", default=["tube2d", "tube3d", "punch"])

@@ -172,6 +172,37 @@ TEST(MumpsSymmetricInput, RoundOffPassesAndARealAsymmetryIsRefused) {
   EXPECT_TRUE(input.update(t.view()));
 }
 
+// The triplets in column-major order, columns descending: no row's entries together, none in order.
+Triplets columnMajorDescending(const Triplets& t) {
+  std::vector<std::size_t> order(t.values.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&t](std::size_t p, std::size_t q) {
+    return t.cols[p] != t.cols[q] ? t.cols[p] > t.cols[q] : t.rows[p] > t.rows[q];
+  });
+  Triplets u;
+  for (const std::size_t k : order) {
+    u.rows.push_back(t.rows[k]);
+    u.cols.push_back(t.cols[k]);
+    u.values.push_back(t.values[k]);
+  }
+  return u;
+}
+
+TEST(MumpsSymmetricInput, EntriesInAnyOrderFindTheirTransposes) {
+  // The pattern pairs each a_ij with its a_ji wherever the two stand in the input (the rows grouped and
+  // ordered by column inside MumpsSymmetricInput): the same solution, and an asymmetry still refused.
+  Dense a = stiffnessWithPrescribedRow();
+  Triplets t = columnMajorDescending(triplets(a));
+  MumpsSymmetricInput input;
+  ASSERT_TRUE(input.update(t.view()));
+  const std::vector<double> b = {1.0, -2.0, 0.3, 0.7, -1.1};
+  const std::vector<double> expected = solveDense(a, b), x = solveThrough(input, b);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_NEAR(x[i], expected[i], 1e-13) << "row " << i;
+  a[4][3] = -0.5 + 1e-3;  // a_43 no longer a_34
+  t = columnMajorDescending(triplets(a));
+  EXPECT_FALSE(MumpsSymmetricInput().update(t.view()));
+}
+
 TEST(MumpsSymmetricInput, AnEmptyRowWithoutDiagonalStaysInTheMatrix) {
   // Row 1 has no value at all: singular, which MUMPS' null-pivot check must still see; it is not
   // "decoupled" (no x_j = b_j / a_jj to take), so nothing is divided by its zero diagonal.
