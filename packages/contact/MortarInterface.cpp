@@ -462,11 +462,12 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
   if (!g.overlaps) return;
   w.overlaps = true;
   w.value += g.weightedGap[end];
-  // The slip increments' derivatives only where assemble reads them (friction, and a kernel that has them:
-  // after a commit, with the committed positions).
+  // The slip increments' derivatives only where assemble reads them (friction), sized whenever it does and
+  // summed where the kernel has them (with the committed positions: always once evaluate has recorded them).
+  const bool sized = frictional() && Layout::kSlipEntries > 0;
   bool slips = false;
   if constexpr (Layout::kSlipEntries > 0) {
-    slips = frictional() && !g.slipGradient.empty();
+    slips = sized && !g.slipGradient.empty();
     for (int a = 0; a < kSlipDim && slips; ++a)
       for (int c = 0; c < Layout::kSlipEntries; ++c) w.slip[a] += basis[a][c] * slipEntry(g, end, c);
   }
@@ -508,10 +509,10 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
   };
   if (n != old) {
     grow(w.hessian);
-    for (int a = 0; a < kSlipDim && slips; ++a) grow(w.slipHessian[a]);
+    for (int a = 0; a < kSlipDim && sized; ++a) grow(w.slipHessian[a]);
   }
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
-  for (int a = 0; a < kSlipDim && slips; ++a) w.slipGradient[a].resize(static_cast<std::size_t>(n), 0.0);
+  for (int a = 0; a < kSlipDim && sized; ++a) w.slipGradient[a].resize(static_cast<std::size_t>(n), 0.0);
   constexpr int m = Layout::kCoordinates;
   // Support index of each kernel coordinate (−1: unused).
   std::array<int, m> to{};
