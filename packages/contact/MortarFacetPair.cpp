@@ -24,11 +24,38 @@ LinearFacet<T> facetOf(const FacetPairCoordinates<T>& x, int first, int count) {
   return f;
 }
 
+/// The committed position Σ N_a X_a of the facet point with shape values n (X_a: the committed nodes
+/// first…first + count − 1, constants).
+template <class T>
+Point3<T> committedPoint(const FacetPairCommitted& then, int first, int count, const std::array<T, kMortarFacetNodes>& n) {
+  Point3<T> p{T(0.0), T(0.0), T(0.0)};
+  for (int a = 0; a < count; ++a) {
+    const double* X = &then[3 * (first + a)];
+    p = p + Point3<T>{n[a] * X[0], n[a] * X[1], n[a] * X[2]};
+  }
+  return p;
+}
+
+/// eq. M9′ at a Gauss point: the relative motion over the increment of the slave point ξ and the master
+/// point η it sees (both material points moved from their committed positions), less its part along the
+/// master's unit normal (that part is the gap's change): the tangential slip, a 3-vector.
+template <class T>
+Point3<T> tangentialSlip(const FacetMap<T>& slaveMap, const FacetMap<T>& masterMap, const LinearFacet<T>& slave,
+                         const LinearFacet<T>& master, const std::array<T, 2>& xi, const std::array<T, 2>& eta,
+                         const FacetPairCommitted& then) {
+  const Point3<T> slaveMotion = slaveMap.at(xi) - committedPoint(then, 0, slave.count, slave.shape(xi[0], xi[1]));
+  const Point3<T> masterMotion =
+      masterMap.at(eta) - committedPoint(then, kMortarFacetNodes, master.count, master.shape(eta[0], eta[1]));
+  const Point3<T> motion = slaveMotion - masterMotion;
+  const Point3<T> n = masterMap.unitNormal(eta);
+  return motion - times(n, dot(motion, n));
+}
+
 }  // namespace
 
 template <class T>
 MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, double referenceArea,
-                                          const MortarFacetPairShape& shape) {
+                                          const MortarFacetPairShape& shape, const FacetPairCommitted* committed) {
   MortarFacetPairGaps<T> out;
   const LinearFacet<T> slave = facetOf(x, 0, shape.slaveNodes), master = facetOf(x, kMortarFacetNodes, shape.masterNodes);
   const ProjectionPlane<T> plane(slave);
@@ -81,6 +108,16 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
         const T weightedG = withValue(q.weight * triangleMeasure, weight) * gap;
         for (int a = 0; a < slave.count; ++a) differentiated[a] = differentiated[a] + nodeShape[a] * weightedG;
       }
+      if (committed != nullptr) {  // eq. M9′: Δũ_a += w N_a(ξ) u_T, in T (values and derivatives alike)
+        const Point3<T> u = tangentialSlip(slaveMap, masterMap, slave, master, xi, eta, *committed);
+        const std::array<T, kMortarFacetNodes> nodeShape = slave.shape(xi[0], xi[1]);
+        const T w = withValue(q.weight * triangleMeasure, weight);
+        for (int a = 0; a < slave.count; ++a) {
+          const T wa = w * nodeShape[a];
+          std::array<T, 3>& slip = out.weightedSlip[a];
+          slip = {slip[0] + wa * u.x, slip[1] + wa * u.y, slip[2] + wa * u.z};
+        }
+      }
     }
   }
   for (int a = 0; a < slave.count; ++a) {
@@ -91,14 +128,47 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
 }
 
 MortarFacetPairGaps<double> facetPairGaps(const FacetPairCoordinates<double>& x, double referenceArea,
-                                          const MortarFacetPairShape& shape) {
-  return integrateFacetPair(x, referenceArea, shape);
+                                          const MortarFacetPairShape& shape, const FacetPairCommitted* committed) {
+  return integrateFacetPair(x, referenceArea, shape, committed);
 }
 
+namespace {
+/// The pair with its slip increments (friction) differentiated over `variables`: as
+/// differentiatePairKernel (MortarDual.hpp), plus Δũ_a's three components.
+template <int V>
+MortarFacetPairDerivatives differentiateWithSlip(const FacetPairCoordinates<double>& x, double referenceArea,
+                                                 const MortarFacetPairShape& shape, const FacetPairCommitted& committed,
+                                                 const KernelVariables<kN>& variables) {
+  std::vector<std::array<HessianDual<V>, kN>> seeded(1, variables.template seed<V>(x));  // large: on the heap
+  const auto g = integrateFacetPair(seeded[0], referenceArea, shape, &committed);
+  MortarFacetPairDerivatives out;
+  out.overlaps = g.overlaps;
+  out.slipGradient.resize(3 * kMortarFacetNodes);
+  out.slipHessian.resize(3 * kMortarFacetNodes);
+  for (int a = 0; a < kMortarFacetNodes; ++a) {
+    out.weightedGap[a] = g.weightedGap[a].v;
+    out.mortarArea[a] = g.mortarArea[a].v;
+    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
+    for (int c = 0; c < 3; ++c) {
+      out.weightedSlip[a][c] = g.weightedSlip[a][c].v;
+      variables.extract(g.weightedSlip[a][c], out.slipGradient[3 * a + c], out.slipHessian[3 * a + c]);
+    }
+  }
+  return out;
+}
+}  // namespace
+
 MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
-                                                const MortarFacetPairShape& shape, const double* masterMotion) {
+                                                const MortarFacetPairShape& shape, const double* masterMotion,
+                                                const FacetPairCommitted* committed) {
+  constexpr int kFirstMaster = 3 * kMortarFacetNodes;
+  if (committed != nullptr) {
+    if (masterMotion == nullptr) return differentiateWithSlip<kN>(x, referenceArea, shape, *committed, ownVariables<kN>());
+    return differentiateWithSlip<kFirstMaster + 1>(x, referenceArea, shape, *committed,
+                                                   rigidBodyVariables<kN>(kFirstMaster, kFirstMaster, masterMotion));
+  }
   // A rigid master: the twelve slave coordinates and the motion (MortarDual.hpp, KernelVariables).
-  return differentiatePairKernel<MortarFacetPairDerivatives, 3 * kMortarFacetNodes>(
+  return differentiatePairKernel<MortarFacetPairDerivatives, kFirstMaster>(
       x, masterMotion, [&](const auto& seeded) { return integrateFacetPair(seeded, referenceArea, shape); });
 }
 

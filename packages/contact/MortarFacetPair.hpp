@@ -18,6 +18,7 @@
 // of its nodes' averaged normals: a pair then depends on its own eight nodes only (theory-contact §13
 // discusses what this changes on curved faces).
 #include <array>
+#include <vector>
 
 namespace contessa::contact {
 
@@ -39,12 +40,20 @@ struct MortarFacetPairShape {
   std::array<double, 12> slavePieceAreas{};
 };
 
+/// The committed positions of the pair's slave and master nodes, in the layout of FacetPairCoordinates:
+/// where the material points were at the last converged state, the start of the slip increments (eq. M9′).
+using FacetPairCommitted = std::array<double, kMortarFacetPairCoordinates>;
+
 /// Weighted gaps of the slave facet's nodes and their mortar areas ∫ N_a dA_0 over the overlap.
 template <class T>
 struct MortarFacetPairGaps {
   bool overlaps = false;
   std::array<T, kMortarFacetNodes> weightedGap{};
   std::array<T, kMortarFacetNodes> mortarArea{};
+  /// Weighted slip increments Δũ_a = ∫ N_a (I − n_m ⊗ n_m)(Δx_s(ξ) − Δx_m(η)) dA_0 (eq. M9′), a 3-vector
+  /// in the master's tangent plane at each Gauss point, when the committed positions are given (friction),
+  /// else 0. The interface takes its components in the slave node's tangent basis (MortarSlipBasis.hpp).
+  std::array<std::array<T, 3>, kMortarFacetNodes> weightedSlip{};
 };
 
 /// The integral over the overlap (eq. M13–M17). The measure is the slave facet's reference area: the
@@ -52,7 +61,8 @@ struct MortarFacetPairGaps {
 /// are per reference area and a uniform gap g gives g̃_a = g A_a exactly (the patch test).
 template <class T>
 MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, double referenceArea,
-                                          const MortarFacetPairShape& shape);
+                                          const MortarFacetPairShape& shape,
+                                          const FacetPairCommitted* committed = nullptr);
 
 /// Weighted gaps with their gradient and Hessian with respect to the 24 coordinates.
 struct MortarFacetPairDerivatives {
@@ -62,17 +72,24 @@ struct MortarFacetPairDerivatives {
   std::array<double, kMortarFacetNodes> mortarArea{};
   std::array<std::array<double, kCoordinates>, kMortarFacetNodes> gradient{};
   std::array<std::array<double, kCoordinates * kCoordinates>, kMortarFacetNodes> hessian{};  ///< row-major
+  /// With committed positions (friction): Δũ_a's components c (index 3 a + c), their gradients and
+  /// Hessians; empty without (a frictionless pair carries no slip derivatives).
+  std::array<std::array<double, 3>, kMortarFacetNodes> weightedSlip{};
+  std::vector<std::array<double, kCoordinates>> slipGradient;
+  std::vector<std::array<double, kCoordinates * kCoordinates>> slipHessian;
 };
 
 /// The pair's weighted gaps (values only).
 MortarFacetPairGaps<double> facetPairGaps(const FacetPairCoordinates<double>& x, double referenceArea,
-                                          const MortarFacetPairShape& shape = {});
+                                          const MortarFacetPairShape& shape = {},
+                                          const FacetPairCommitted* committed = nullptr);
 /// The pair's weighted gaps differentiated twice (MortarDual.hpp's HessianDual). With `masterMotion` (a
 /// rigid master: ∂x/∂λ of its twelve coordinates, entries 12–23), the master is differentiated along that
 /// motion only: entry 12 holds the derivatives along it, entries 13–23 are zero (as 2D's
 /// segmentPairDerivatives).
 MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
                                                 const MortarFacetPairShape& shape = {},
-                                                const double* masterMotion = nullptr);
+                                                const double* masterMotion = nullptr,
+                                                const FacetPairCommitted* committed = nullptr);
 
 }  // namespace contessa::contact

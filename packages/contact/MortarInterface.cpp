@@ -15,6 +15,7 @@
 #include "contact/MortarFacetPair.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
 #include "contact/MortarSegment.hpp"
+#include "contact/MortarSlipBasis.hpp"
 
 namespace contessa::contact {
 
@@ -44,6 +45,8 @@ struct MortarPairLayout<2> {
   static constexpr int kMasterNodes = 2;
   using Derivatives = MortarPairDerivatives;
   using Gaps = MortarPairGaps<double>;
+  using Committed = SegmentPairCommitted;
+  static constexpr int kSlipEntries = 1;  ///< the kernel's slip: along the master's tangent (eq. M9)
 };
 template <>
 struct MortarPairLayout<3> {
@@ -52,6 +55,8 @@ struct MortarPairLayout<3> {
   static constexpr int kMasterNodes = kMortarFacetNodes;
   using Derivatives = MortarFacetPairDerivatives;
   using Gaps = MortarFacetPairGaps<double>;
+  using Committed = FacetPairCommitted;
+  static constexpr int kSlipEntries = 3;  ///< the kernel's slip: a 3-vector (eq. M9′)
 };
 /// 3D pairs with a quadratic face on a side (MortarQuadraticFacetPair.hpp), Slots nodes per side: 6 (a
 /// Tri6: s0–s5 m0–m5), 8 (a Quad8) or 9 (a Quad9).
@@ -62,6 +67,8 @@ struct QuadraticMortarPairLayout {
   static constexpr int kMasterNodes = Slots;
   using Derivatives = MortarQuadraticPairDerivatives<Slots>;
   using Gaps = MortarQuadraticFacetPairGaps<double, Slots>;
+  using Committed = FacetPairCommitted;   // unused: no friction on quadratic faces
+  static constexpr int kSlipEntries = 0;  ///< no slip increments (frictionless only)
 };
 /// A master facet type whose interface takes the quadratic pair kernel of Slots slots (a quadratic slave
 /// or master side): the same facets to MasterSurface, which reads only the type's constants.
@@ -76,6 +83,21 @@ struct PairLayoutOf<QuadraticPairs<Facet, Slots>> {
   using type = QuadraticMortarPairLayout<Slots>;
 };
 
+/// The kernels' slip increments: entry c of slave end a's (2D: the scalar along t_m; 3D: component c of
+/// the 3-vector), its gradient and its Hessian.
+inline double slipEntry(const MortarPairGaps<double>& g, int a, int) { return g.weightedSlip[a]; }
+inline double slipEntry(const MortarFacetPairGaps<double>& g, int a, int c) { return g.weightedSlip[a][c]; }
+inline double slipEntry(const MortarPairDerivatives& g, int a, int) { return g.weightedSlip[a]; }
+inline double slipEntry(const MortarFacetPairDerivatives& g, int a, int c) { return g.weightedSlip[a][c]; }
+inline const double* slipGradientOf(const MortarPairDerivatives& g, int a, int) { return g.slipGradient[a].data(); }
+inline const double* slipGradientOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipGradient[3 * a + c].data(); }
+inline const double* slipHessianOf(const MortarPairDerivatives& g, int a, int) { return g.slipHessian[a].data(); }
+inline const double* slipHessianOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipHessian[3 * a + c].data(); }
+
+/// A 2D traction's restart field is its one component (the files' scalar); a 3D one's its two.
+inline double& tractionField(Vector<1>& t) { return t[0]; }
+inline Vector<2>& tractionField(Vector<2>& t) { return t; }
+
 /// The weighted gap of one slave node, g̃_k = Σ over its slave segments and the master segments they meet
 /// (eq. M5), with, when asked, its gradient and Hessian over its support: the nodes it depends on.
 template <int kDim>
@@ -87,9 +109,9 @@ struct NodeWeightedGap {
   std::vector<double> dPositiondLambda;  ///< kDim per support node: a rigid point's motion, else 0
   std::vector<double> gradient;          ///< ∂g̃_k/∂x over the support's coordinates
   std::vector<double> hessian;           ///< ∂²g̃_k/∂x², row-major
-  double slip = 0;                       ///< Δũ_k, eq. (M9) (friction only)
-  std::vector<double> slipGradient;      ///< ∂Δũ_k/∂x
-  std::vector<double> slipHessian;       ///< ∂²Δũ_k/∂x², row-major
+  Vector<kDim - 1> slip{};               ///< Δũ_kα in the node's tangent basis, eq. (M9), (M9′) (friction only)
+  std::array<std::vector<double>, kDim - 1> slipGradient;  ///< ∂Δũ_kα/∂x
+  std::array<std::vector<double>, kDim - 1> slipHessian;   ///< ∂²Δũ_kα/∂x², row-major
 
   /// The support index of `node`, added (with its DOF ids and ∂x/∂λ) when new.
   int indexOf(GlobalIndex node, const GlobalIndex* nodeDofs, const double* motion) {
@@ -115,6 +137,9 @@ class MortarInterface final : public ContactInterfaceBase {
   using Layout = typename PairLayoutOf<MasterFacetType>::type;
   using Facets = std::vector<MasterFacetNodes<MasterFacetType>>;
   using WeightedGap = NodeWeightedGap<kDim>;
+  static constexpr int kSlipDim = kDim - 1;  ///< tangential components (1 in 2D, 2 in 3D)
+  using Traction = Vector<kSlipDim>;
+  using SlipBasis = MortarSlipBasis<kSlipDim, (Layout::kSlipEntries > 0 ? Layout::kSlipEntries : 1)>;
 
  public:
   MortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave)
@@ -122,8 +147,8 @@ class MortarInterface final : public ContactInterfaceBase {
         perFacet_(static_cast<std::size_t>(spec_.slaveNodesPerFacet())),
         master_(spec_),
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
-        trialTraction_(spec_.slaveNodes.size(), 0.0),
-        committedTraction_(spec_.slaveNodes.size(), 0.0) {
+        trialTraction_(spec_.slaveNodes.size(), Traction{}),
+        committedTraction_(spec_.slaveNodes.size(), Traction{}) {
     const int slots = Layout::kFirstMaster;
     const bool quadratic = kDim == 3 && slots >= kQuadraticFacetNodes;
     const int nodes = static_cast<int>(perFacet_);
@@ -132,8 +157,8 @@ class MortarInterface final : public ContactInterfaceBase {
     const std::size_t measures = static_cast<std::size_t>(kDim == 3 ? mortarFaceMeasures(nodes) : 1);
     if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() * measures != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
-    if (kDim == 3 && frictional())
-      throw std::logic_error("MortarInterface '" + spec_.label() + "': 3D mortar is frictionless (the deck refuses first)");
+    if (Layout::kSlipEntries == 0 && frictional())
+      throw std::logic_error("MortarInterface '" + spec_.label() + "': quadratic 3D mortar is frictionless (the deck refuses first)");
     segmentsAt_.resize(spec_.slaveNodes.size());
     for (std::size_t s = 0; s < spec_.slaveFacets.size() / perFacet_; ++s)
       for (std::size_t a = 0; a < perFacet_; ++a)
@@ -153,7 +178,7 @@ class MortarInterface final : public ContactInterfaceBase {
   void setFrictionCoefficient(double mu) override {
     spec_.law.frictionCoefficient = mu;
     spec_.law.validate();
-    friction_ = CoulombReturnMapping<1>(spec_.law.tangentialPenalty, mu, spec_.law.slipTolerance);
+    friction_ = CoulombReturnMapping<kSlipDim>(spec_.law.tangentialPenalty, mu, spec_.law.slipTolerance);
   }
   void evaluate(const NodePosition& position, double loadFactor, bool updateTrial, const Sink& sink) override;
   std::vector<SlaveNodeChange> changesAt(const NodePosition& position, double loadFactor) const override;
@@ -195,10 +220,12 @@ class MortarInterface final : public ContactInterfaceBase {
   WeightedGap weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
                               const BoundingBoxTree<kDim>& tree, bool derivatives) const;
   /// The committed positions of a pair's slave and master nodes (friction); false before any commit.
-  bool committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const;
+  bool committedPair(const PairNodes& pair, int facet, typename Layout::Committed& out) const;
+  /// Slave node k's tangent basis at the slave positions `x` (MortarSlipBasis.hpp; 2D: the identity).
+  SlipBasis slipBasis(std::size_t k, const std::vector<Vector<kDim>>& x) const;
   /// Coulomb's return mapping (CoulombReturnMapping, eq. 17–23) on slave node k's weighted slip increment
-  /// per tributary length Δũ_k / A_k, with its pressure p_k (eq. M10).
-  ReturnMappingResult<1> tangentialTraction(std::size_t k, const WeightedGap& w, double pressure) const;
+  /// per tributary length Δũ_k / A_k, with its pressure p_k (eq. M10, M10′).
+  ReturnMappingResult<kSlipDim> tangentialTraction(std::size_t k, const WeightedGap& w, double pressure) const;
   void recordPositions(const NodePosition& position, const Facets& facets);
   PairNodes pairNodes(std::size_t segment) const;
   /// The master facet's nodes and coordinates into the pair's.
@@ -223,15 +250,22 @@ class MortarInterface final : public ContactInterfaceBase {
   const typename Layout::Derivatives& pairDerivatives(const std::array<double, Layout::kCoordinates>& x,
                                                       const PairNodes& pair, int facet) const;
   void addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
-               int facet) const;
+               int facet, const SlipBasis& basis) const;
+  /// A pair's slip increments' derivatives into node k's components (`to`: the support index of each of
+  /// the kernel's coordinates, −1 where unused).
+  template <class Derivatives, class Support>
+  void addSlipDerivatives(WeightedGap& w, int end, const Derivatives& g, const SlipBasis& basis, const Support& to) const;
   /// Node k's term: residual −p ∇g̃, tangent (ε/A) ∇g̃ ⊗ ∇g̃ − p ∇²g̃ (eq. M7–M8), and with friction
   /// t_T ∇Δũ and its derivative (eq. M11–M12); adds the force on the slave nodes to `force`.
-  void assemble(std::size_t k, const WeightedGap& w, double pressure, const ReturnMappingResult<1>* tangential,
+  void assemble(std::size_t k, const WeightedGap& w, double pressure, const ReturnMappingResult<kSlipDim>* tangential,
                 const Sink& sink, std::vector<double>& force) const;
+  /// The friction's terms of node k (eq. M11–M12): t_α ∇Δũ_α and its derivative, added.
+  void addTangential(std::size_t k, const WeightedGap& w, const ReturnMappingResult<kSlipDim>& tangential,
+                     std::vector<double>& residual, std::vector<double>& tangent) const;
   /// Node k's state; with friction and a closed node, `tangential` receives the return mapping's result.
   SlaveNodeState stateOf(std::size_t k, const WeightedGap& w, bool frozenOpen,
-                         ReturnMappingResult<1>* tangential = nullptr) const;
-  SlaveNodeChange changeOf(std::size_t k, const SlaveNodeState& trial, const ReturnMappingResult<1>* tangential) const;
+                         ReturnMappingResult<kSlipDim>* tangential = nullptr) const;
+  SlaveNodeChange changeOf(std::size_t k, const SlaveNodeState& trial, const ReturnMappingResult<kSlipDim>* tangential) const;
   SlaveNodeChange unchanged(std::size_t k) const {
     SlaveNodeChange c;
     c.committedGap = c.trialGap = committedOutput_[k].gap;
@@ -242,8 +276,9 @@ class MortarInterface final : public ContactInterfaceBase {
   std::size_t perFacet_;  ///< nodes per slave facet
   MasterSurface<MasterFacetType> master_;
   std::vector<std::vector<SegmentEnd>> segmentsAt_;  ///< per slave node: its slave segments
-  CoulombReturnMapping<1> friction_;
-  std::vector<double> trialTraction_, committedTraction_;  ///< t_T per slave node (eq. 22), along t_m
+  CoulombReturnMapping<kSlipDim> friction_;
+  /// t_Tα per slave node (eq. 22): 2D along t_m, 3D in the node's basis at the last commit (slipBasis).
+  std::vector<Traction> trialTraction_, committedTraction_;
   std::vector<char> keepsSlave_;
   // The positions at the last evaluation and at the last commit (friction: the slip increments' start):
   // slave nodes (kept ones), and the master facets as MasterSurface gives them (a rigid one moved).
@@ -253,7 +288,7 @@ class MortarInterface final : public ContactInterfaceBase {
   /// committed positions), and the last evaluation that used them.
   struct CachedPair {
     std::array<double, Layout::kCoordinates> x{};
-    SegmentPairCommitted committed{};
+    typename Layout::Committed committed{};
     bool withCommitted = false;
     std::array<double, Layout::kCoordinates> motion{};  ///< a rigid master's ∂x/∂λ (its entries)
     typename Layout::Derivatives derivatives;
@@ -329,14 +364,14 @@ void MortarInterface<F>::setMaster(PairNodes& pair, std::array<double, Layout::k
 template <class F>
 auto MortarInterface<F>::pairValues(const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
                                     int facet) const -> typename Layout::Gaps {
-  if constexpr (kDim == 2) {
-    SegmentPairCommitted then{};
-    const SegmentPairCommitted* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
+  typename Layout::Committed then{};
+  const typename Layout::Committed* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
+  if constexpr (kDim == 2)
     return segmentPairGaps(x, pair.referenceMeasure, pair.neighbours, committed);
-  } else {
-    (void)facet;
+  else if constexpr (Layout::kSlipEntries > 0)
+    return facetPairGaps(x, pair.referenceMeasure, pair.shape, committed);
+  else
     return facetPairGaps(x, pair.referenceMeasure, pair.shape);
-  }
 }
 
 template <class F>
@@ -391,9 +426,8 @@ auto MortarInterface<F>::pairDerivatives(
   // Every slave node of a pair needs its derivatives: differentiated once per evaluation, and not again
   // while its inputs stay the same (pairDerivatives_).
   CachedPair& cached = pairDerivatives_[std::make_pair(pair.segment, facet)];
-  SegmentPairCommitted then{};
-  bool withCommitted = false;
-  if constexpr (kDim == 2) withCommitted = frictional() && committedPair(pair, facet, then);
+  typename Layout::Committed then{};
+  const bool withCommitted = frictional() && committedPair(pair, facet, then);
   // A rigid master is differentiated along its motion only (MortarDual.hpp, KernelVariables).
   std::array<double, Layout::kCoordinates> motion{};
   const double* rigidMotion = nullptr;
@@ -413,6 +447,9 @@ auto MortarInterface<F>::pairDerivatives(
   if constexpr (kDim == 2)
     cached.derivatives =
         segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, withCommitted ? &then : nullptr, rigidMotion);
+  else if constexpr (Layout::kSlipEntries > 0)
+    cached.derivatives =
+        facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion, withCommitted ? &then : nullptr);
   else
     cached.derivatives = facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion);
   return cached.derivatives;
@@ -420,12 +457,20 @@ auto MortarInterface<F>::pairDerivatives(
 
 template <class F>
 void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x,
-                                 const PairNodes& pair, int facet) const {
+                                 const PairNodes& pair, int facet, const SlipBasis& basis) const {
   const typename Layout::Derivatives& g = pairDerivatives(x, pair, facet);
   if (!g.overlaps) return;
   w.overlaps = true;
   w.value += g.weightedGap[end];
-  if constexpr (kDim == 2) w.slip += g.weightedSlip[end];
+  // The slip increments' derivatives only where assemble reads them (friction), sized whenever it does and
+  // summed where the kernel has them (with the committed positions: always once evaluate has recorded them).
+  const bool sized = frictional() && Layout::kSlipEntries > 0;
+  bool slips = false;
+  if constexpr (Layout::kSlipEntries > 0) {
+    slips = sized && !g.slipGradient.empty();
+    for (int a = 0; a < kSlipDim && slips; ++a)
+      for (int c = 0; c < Layout::kSlipEntries; ++c) w.slip[a] += basis[a][c] * slipEntry(g, end, c);
+  }
   const auto masterDofs = master_.dofs(facet);
   const auto masterMotion = master_.dPositiondLambda(facet);
   constexpr int kPairNodes = Layout::kCoordinates / kDim;
@@ -462,39 +507,67 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
       for (int j = 0; j < old; ++j) grown[i * n + j] = hessian[i * old + j];
     hessian.swap(grown);
   };
-  // The slip increments' derivatives only where assemble reads them (2D friction; 3D mortar is frictionless).
-  const bool slips = kDim == 2 && frictional();
   if (n != old) {
     grow(w.hessian);
-    if (slips) grow(w.slipHessian);
+    for (int a = 0; a < kSlipDim && sized; ++a) grow(w.slipHessian[a]);
   }
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
-  if (slips) w.slipGradient.resize(static_cast<std::size_t>(n), 0.0);
+  for (int a = 0; a < kSlipDim && sized; ++a) w.slipGradient[a].resize(static_cast<std::size_t>(n), 0.0);
   constexpr int m = Layout::kCoordinates;
+  // Support index of each kernel coordinate (−1: unused).
+  std::array<int, m> to{};
+  for (int i = 0; i < m; ++i) to[i] = at[i / kDim] < 0 ? -1 : kDim * at[i / kDim] + i % kDim;
   for (int i = 0; i < m; ++i) {
-    if (at[i / kDim] < 0) continue;
-    const int gi = kDim * at[i / kDim] + i % kDim;
-    w.gradient[gi] += g.gradient[end][i];
-    if constexpr (kDim == 2) {
-      if (slips) w.slipGradient[gi] += g.slipGradient[end][i];
-    }
-    for (int j = 0; j < m; ++j) {
-      if (at[j / kDim] < 0) continue;
-      const int gj = kDim * at[j / kDim] + j % kDim;
-      w.hessian[gi * n + gj] += g.hessian[end][i * m + j];
-      if constexpr (kDim == 2) {
-        if (slips) w.slipHessian[gi * n + gj] += g.slipHessian[end][i * m + j];
+    if (to[i] < 0) continue;
+    w.gradient[to[i]] += g.gradient[end][i];
+    for (int j = 0; j < m; ++j)
+      if (to[j] >= 0) w.hessian[to[i] * n + to[j]] += g.hessian[end][i * m + j];
+  }
+  if constexpr (Layout::kSlipEntries > 0) {
+    if (slips) addSlipDerivatives(w, end, g, basis, to);
+  }
+}
+
+template <class F>
+template <class Derivatives, class Support>
+void MortarInterface<F>::addSlipDerivatives(WeightedGap& w, int end, const Derivatives& g, const SlipBasis& basis,
+                                            const Support& to) const {
+  // Δũ_kα = e_α · Δũ_k: the basis is a constant of the increment (MortarSlipBasis.hpp), so the components'
+  // derivatives are the basis' combinations of the kernel's.
+  constexpr int m = Layout::kCoordinates;
+  const int n = w.size();
+  for (int c = 0; c < Layout::kSlipEntries; ++c) {
+    const double* gradient = slipGradientOf(g, end, c);
+    const double* hessian = slipHessianOf(g, end, c);
+    for (int a = 0; a < kSlipDim; ++a) {
+      const double e = basis[a][c];
+      if (e == 0.0) continue;
+      for (int i = 0; i < m; ++i) {
+        if (to[i] < 0) continue;
+        w.slipGradient[a][to[i]] += e * gradient[i];
+        for (int j = 0; j < m; ++j)
+          if (to[j] >= 0) w.slipHessian[a][to[i] * n + to[j]] += e * hessian[i * m + j];
       }
     }
   }
 }
 
 template <class F>
-bool MortarInterface<F>::committedPair(const PairNodes& pair, int facet, SegmentPairCommitted& out) const {
-  if constexpr (kDim != 2) {
-    return false;  // 3D mortar is frictionless: no slip increments
+bool MortarInterface<F>::committedPair(const PairNodes& pair, int facet, typename Layout::Committed& out) const {
+  if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
+  if constexpr (kDim == 3) {
+    if constexpr (Layout::kSlipEntries == 0) return false;  // quadratic faces: frictionless
+    // FacetPairCoordinates' layout: the slave facet's nodes, then the master facet's.
+    out.fill(0.0);
+    for (std::size_t a = 0; a < perFacet_; ++a) {
+      const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
+      std::copy(xs.begin(), xs.end(), &out[kDim * a]);
+    }
+    const auto& master = committedMaster_[facet].x;
+    for (std::size_t b = 0; b < master.size(); ++b)
+      std::copy(master[b].begin(), master[b].end(), &out[kDim * (Layout::kFirstMaster + b)]);
+    return true;
   } else {
-    if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
     for (int a = 0; a < 2; ++a) {
       const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
       const Vector<kDim>& xm = committedMaster_[facet].x[a];
@@ -519,21 +592,45 @@ void MortarInterface<F>::recordPositions(const NodePosition& position, const Fac
 }
 
 template <class F>
-ReturnMappingResult<1> MortarInterface<F>::tangentialTraction(std::size_t k, const WeightedGap& w,
-                                                              double pressure) const {
-  ReturnMappingInput<1> in;
-  in.committedTraction[0] = committedTraction_[k];
-  in.slipIncrement[0] = w.slip / spec_.slaveAreas[k];  // a length: Δũ_k is a slip times a length
-  in.metric(0, 0) = 1.0;                               // along the unit tangent t_m
+auto MortarInterface<F>::tangentialTraction(std::size_t k, const WeightedGap& w, double pressure) const
+    -> ReturnMappingResult<kSlipDim> {
+  ReturnMappingInput<kSlipDim> in;
+  in.committedTraction = committedTraction_[k];
+  for (int a = 0; a < kSlipDim; ++a) {
+    in.slipIncrement[a] = w.slip[a] / spec_.slaveAreas[k];  // a length: Δũ_k is a slip times an area
+    in.metric(a, a) = 1.0;  // components along orthonormal tangents (2D t_m; 3D the node's basis)
+  }
   in.normalTraction = -pressure;
   in.facetLength = spec_.slaveFacetLengths[k];
   return friction_.map(in);
 }
 
 template <class F>
+auto MortarInterface<F>::slipBasis(std::size_t k, const std::vector<Vector<kDim>>& x) const -> SlipBasis {
+  SlipBasis basis{};
+  if constexpr (kDim == 2 || Layout::kSlipEntries == 0) {
+    basis[0][0] = 1.0;  // 2D: the kernel's slip is the component along t_m already
+  } else {
+    if (x.empty()) return basis;  // no positions yet: no slip increments either
+    // n_k: the normalised sum of the unit normals of node k's slave facets (MortarSlipBasis.hpp).
+    Vector<3> normal{};
+    for (const SegmentEnd& se : segmentsAt_[k]) {
+      std::vector<Vector<3>> corners;
+      for (std::size_t a = 0; a < perFacet_; ++a) corners.push_back(x[slaveIndex(spec_.slaveFacets[perFacet_ * se.segment + a])]);
+      normal = add(normal, linearFacetNormal(corners));
+    }
+    const double length = norm(normal);
+    if (!(length > 0.0)) return basis;
+    basis = tangentBasis(scaled(1.0 / length, normal));
+  }
+  return basis;
+}
+
+template <class F>
 auto MortarInterface<F>::weightedGap(std::size_t k, const NodePosition& position, const Facets& facets,
                                      const BoundingBoxTree<kDim>& tree, bool derivatives) const -> WeightedGap {
   WeightedGap w;
+  const SlipBasis basis = frictional() ? slipBasis(k, committedSlave_) : SlipBasis{};
   if (derivatives) {  // slave node k first: the assembly reads the slave node from the first DOFs
     const GlobalIndex node = spec_.slaveNodes[k];
     GlobalIndex dofs[kDim];
@@ -542,8 +639,10 @@ auto MortarInterface<F>::weightedGap(std::size_t k, const NodePosition& position
     w.indexOf(node, dofs, still);
     w.gradient.assign(kDim, 0.0);
     w.hessian.assign(kDim * kDim, 0.0);
-    w.slipGradient.assign(kDim, 0.0);
-    w.slipHessian.assign(kDim * kDim, 0.0);
+    for (int a = 0; a < kSlipDim; ++a) {
+      w.slipGradient[a].assign(kDim, 0.0);
+      w.slipHessian[a].assign(kDim * kDim, 0.0);
+    }
   }
   for (const SegmentEnd& se : segmentsAt_[k]) {
     const SegmentPairs& sp = segmentPairs(se.segment, position, facets, tree);
@@ -553,20 +652,22 @@ auto MortarInterface<F>::weightedGap(std::size_t k, const NodePosition& position
         w.overlaps = w.overlaps || g.overlaps;
         if (!g.overlaps) continue;
         w.value += g.weightedGap[se.end];
-        if constexpr (kDim == 2) w.slip += g.weightedSlip[se.end];
+        if constexpr (Layout::kSlipEntries > 0)
+          for (int a = 0; a < kSlipDim; ++a)
+            for (int c = 0; c < Layout::kSlipEntries; ++c) w.slip[a] += basis[a][c] * slipEntry(g, se.end, c);
         continue;
       }
       PairNodes pair = sp.pair;
       std::array<double, Layout::kCoordinates> x = sp.x;
       setMaster(pair, x, facets[sp.facets[i]]);
-      addPair(w, se.end, x, pair, sp.facets[i]);
+      addPair(w, se.end, x, pair, sp.facets[i], basis);
     }
   }
   return w;
 }
 template <class F>
 SlaveNodeState MortarInterface<F>::stateOf(std::size_t k, const WeightedGap& w, bool frozenOpen,
-                                        ReturnMappingResult<1>* tangential) const {
+                                        ReturnMappingResult<kSlipDim>* tangential) const {
   SlaveNodeState out;
   // The gap shown and counted: g̃_k / A_k, so that the pressure is −ε_N times it, as t_N = ε_N g_N (eq. 16).
   out.gap = w.overlaps ? w.value / spec_.slaveAreas[k] : std::numeric_limits<double>::infinity();
@@ -575,10 +676,10 @@ SlaveNodeState MortarInterface<F>::stateOf(std::size_t k, const WeightedGap& w, 
     out.status = ContactStatus::Slip;  // frictionless: free sliding, as node-to-segment reports it
     out.pressure = -spec_.law.normalPenalty * out.gap;
     if (frictional()) {
-      const ReturnMappingResult<1> t = tangentialTraction(k, w, out.pressure);
+      const ReturnMappingResult<kSlipDim> t = tangentialTraction(k, w, out.pressure);
       out.status = t.status;
-      out.slip += std::abs(w.slip / spec_.slaveAreas[k]);
-      out.elasticSlip = t.tangentialPenalty > 0.0 ? std::abs(t.traction[0]) / t.tangentialPenalty : 0.0;
+      out.slip += norm(w.slip) / spec_.slaveAreas[k];
+      out.elasticSlip = t.tangentialPenalty > 0.0 ? norm(t.traction) / t.tangentialPenalty : 0.0;
       if (tangential != nullptr) *tangential = t;
     }
   }
@@ -587,17 +688,17 @@ SlaveNodeState MortarInterface<F>::stateOf(std::size_t k, const WeightedGap& w, 
 
 template <class F>
 SlaveNodeChange MortarInterface<F>::changeOf(std::size_t k, const SlaveNodeState& trial,
-                                          const ReturnMappingResult<1>* tangential) const {
+                                          const ReturnMappingResult<kSlipDim>* tangential) const {
   SlaveNodeChange c = unchanged(k);
   c.trialGap = trial.gap;
   c.trialStatus = trial.status;
   c.trialFacet = trial.status == ContactStatus::Open ? -1 : 0;
   if (tangential == nullptr || committedOutput_[k].status == ContactStatus::Open) return c;
-  // Coulomb indicators (eq. 19, 21) along t_m: the committed traction is "driven the other way" when its
-  // sign is the opposite of the trial traction's.
+  // Coulomb indicators (eq. 19, 21) in the node's tangent components: the committed traction is "driven
+  // the other way" when it points against the trial traction (2D: the opposite sign).
   const double mu = spec_.law.frictionCoefficient;
-  const bool opposite = committedTraction_[k] * tangential->trialTraction[0] < 0.0;
-  const double committedNorm = std::abs(committedTraction_[k]);
+  const bool opposite = dot(committedTraction_[k], tangential->trialTraction) < 0.0;
+  const double committedNorm = norm(committedTraction_[k]);
   c.committedIndicator = (opposite ? -committedNorm : committedNorm) - mu * committedOutput_[k].pressure;
   c.trialIndicator = tangential->trialIndicator;
   c.slipReversed = opposite && committedOutput_[k].status == ContactStatus::Slip && trial.status == ContactStatus::Slip;
@@ -605,8 +706,32 @@ SlaveNodeChange MortarInterface<F>::changeOf(std::size_t k, const SlaveNodeState
 }
 
 template <class F>
+void MortarInterface<F>::addTangential(std::size_t k, const WeightedGap& w, const ReturnMappingResult<kSlipDim>& tangential,
+                                       std::vector<double>& residual, std::vector<double>& tangent) const {
+  // eq. M11–M12 (M11′–M12′ in 3D): r_T = t_α ∇Δũ_kα; t_α depends on Δũ_kβ / A_k and on t_N = ε_N g̃_k / A_k.
+  const int n = w.size();
+  const double area = spec_.slaveAreas[k];
+  const double stiffness = spec_.law.normalPenalty / area;
+  std::vector<double> dTraction(static_cast<std::size_t>(n));  // ∂t_α/∂x
+  for (int a = 0; a < kSlipDim; ++a) {
+    const double t = tangential.traction[a];
+    const double dNormal = tangential.dTraction_dNormalTraction[a] * stiffness;
+    const std::vector<double>& ga = w.slipGradient[a];
+    for (int j = 0; j < n; ++j) {
+      double d = tangential.dTraction_dSlipIncrement(a, 0) / area * w.slipGradient[0][j];
+      for (int b = 1; b < kSlipDim; ++b) d += tangential.dTraction_dSlipIncrement(a, b) / area * w.slipGradient[b][j];
+      dTraction[j] = d + dNormal * w.gradient[j];
+    }
+    for (int i = 0; i < n; ++i) {
+      residual[i] += t * ga[i];
+      for (int j = 0; j < n; ++j) tangent[i * n + j] += ga[i] * dTraction[j] + t * w.slipHessian[a][i * n + j];
+    }
+  }
+}
+
+template <class F>
 void MortarInterface<F>::assemble(std::size_t k, const WeightedGap& w, double pressure,
-                               const ReturnMappingResult<1>* tangential, const Sink& sink,
+                               const ReturnMappingResult<kSlipDim>* tangential, const Sink& sink,
                                std::vector<double>& force) const {
   const int n = w.size();
   const double area = spec_.slaveAreas[k];
@@ -618,18 +743,7 @@ void MortarInterface<F>::assemble(std::size_t k, const WeightedGap& w, double pr
     for (int j = 0; j < n; ++j)
       tangent[i * n + j] = stiffness * w.gradient[i] * w.gradient[j] - pressure * w.hessian[i * n + j];
   }
-  if (tangential != nullptr) {
-    // eq. M11–M12: r_T = t_T ∇Δũ_k; t_T depends on Δũ_k / A_k and on t_N = ε_N g̃_k / A_k.
-    const double t = tangential->traction[0];
-    const double dSlip = tangential->dTraction_dSlipIncrement(0, 0) / area;
-    const double dNormal = tangential->dTraction_dNormalTraction[0] * stiffness;
-    for (int i = 0; i < n; ++i) {
-      residual[i] += t * w.slipGradient[i];
-      for (int j = 0; j < n; ++j)
-        tangent[i * n + j] += w.slipGradient[i] * (dSlip * w.slipGradient[j] + dNormal * w.gradient[j]) +
-                              t * w.slipHessian[i * n + j];
-    }
-  }
+  if (tangential != nullptr) addTangential(k, w, *tangential, residual, tangent);
   // A rigid master moves as X + λ · motion: ∂r/∂λ = K[:, rigid] · motion.
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) dLambda[i] += tangent[i * n + j] * w.dPositiondLambda[j];
@@ -653,7 +767,7 @@ void MortarInterface<F>::evaluate(const NodePosition& position, double loadFacto
     const bool frozenOpen = frozen_ && committedOutput_[k].status == ContactStatus::Open &&
                             !(committedOutput_[k].gap <= kTouchingGap);
     WeightedGap w = weightedGap(k, position, facets, tree, false);
-    ReturnMappingResult<1> tangential;
+    ReturnMappingResult<kSlipDim> tangential;
     SlaveNodeState out = stateOf(k, w, frozenOpen, &tangential);
     const bool closed = out.status != ContactStatus::Open;
     if (closed) {
@@ -663,7 +777,7 @@ void MortarInterface<F>::evaluate(const NodePosition& position, double loadFacto
     }
     if (updateTrial) {
       trialOutput_[k] = out;
-      trialTraction_[k] = closed && frictional() ? tangential.traction[0] : 0.0;
+      trialTraction_[k] = closed && frictional() ? tangential.traction : Traction{};
       trialChanges_[k] = changeOf(k, out, closed && frictional() ? &tangential : nullptr);
     }
   }
@@ -681,7 +795,7 @@ std::vector<SlaveNodeChange> MortarInterface<F>::changesAt(const NodePosition& p
   std::vector<SlaveNodeChange> out;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
-    ReturnMappingResult<1> tangential;
+    ReturnMappingResult<kSlipDim> tangential;
     const SlaveNodeState state = stateOf(k, weightedGap(k, position, facets, tree, false), false, &tangential);
     const bool frictionalClosed = frictional() && state.status != ContactStatus::Open;
     out.push_back(changeOf(k, state, frictionalClosed ? &tangential : nullptr));
@@ -707,6 +821,13 @@ void MortarInterface<F>::commit() {
   committedForce_ = trialForce_;
   committedCounts_ = counts;
   committedTraction_ = trialTraction_;
+  // 3D: the tractions into the nodes' bases at the new committed positions (MortarSlipBasis.hpp).
+  if constexpr (kDim == 3 && Layout::kSlipEntries > 0) {
+    if (frictional() && !trialSlave_.empty() && !committedSlave_.empty())
+      for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
+        if (evaluatesSlave_[k])
+          committedTraction_[k] = transportTraction(committedTraction_[k], slipBasis(k, committedSlave_), slipBasis(k, trialSlave_));
+  }
   if (!trialSlave_.empty()) committedSlave_ = trialSlave_;
   if (!trialMaster_.empty()) committedMaster_ = trialMaster_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
@@ -726,8 +847,8 @@ namespace {
 // A mortar slave node's fields in the restart file: its change over the last increment, its output, its
 // tangential traction and its committed position (NaN when no friction kept it: the slip increments'
 // start, eq. M9).
-template <class Change, class Output, class Position, class Fields>
-void mortarSlaveFields(Change& c, Output& o, double& traction, Position& position, Fields& field) {
+template <class Change, class Output, class Traction, class Position, class Fields>
+void mortarSlaveFields(Change& c, Output& o, Traction& traction, Position& position, Fields& field) {
   slaveChangeFields(c, field);
   slaveOutputFields(o, field);
   field("tangential_traction", traction);
@@ -743,11 +864,11 @@ void MortarInterface<F>::saveCommittedSlaves(StateRecord& table) const {
     rows.beginRow(static_cast<std::int64_t>(k));
     SlaveNodeChange c = committedIncrement_[k];
     SlaveNodeState o = committedOutput_[k];
-    double traction = committedTraction_[k];
+    Traction traction = committedTraction_[k];
     Vector<kDim> x;
     x.fill(std::numeric_limits<double>::quiet_NaN());
     if (!committedSlave_.empty()) x = committedSlave_[k];
-    mortarSlaveFields(c, o, traction, x, rows);
+    mortarSlaveFields(c, o, tractionField(traction), x, rows);
   }
   rows.finish();
 }
@@ -760,9 +881,9 @@ void MortarInterface<F>::restoreSlaves(const StateRecord& table) {
   readSlaveRows(table, rows, [&](std::size_t k) {
     SlaveNodeChange c;
     SlaveNodeState o;
-    double traction = 0;
+    Traction traction{};
     Vector<kDim> x{};
-    mortarSlaveFields(c, o, traction, x, rows);
+    mortarSlaveFields(c, o, tractionField(traction), x, rows);
     // Every row's position: a node's neighbour may be owned by another rank.
     known[k] = std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
     positions[k] = x;

@@ -1,13 +1,14 @@
 #pragma once
 // Mortar (segment-to-segment) contact of one interface, penalty; 2D frictionless or Coulomb, 3D
-// frictionless (theory-contact.md §13): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over
+// frictionless or Coulomb on linear faces, frictionless on quadratic ones (theory-contact.md §13): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over
 // its slave facets (2D, MortarSegment.hpp: segmented along the averaged nodal normals; 3D,
 // MortarFacetPair.hpp: the facets projected on the slave facet's plane and clipped; the gap along the
 // master's normal in both), the pressure p_k = ε_N ⟨−g̃_k⟩ / A_k (A_k its reference tributary length or
 // area, as the node-to-facet force uses) and the contact energy Σ_k ε_N ⟨−g̃_k⟩² / (2 A_k), whose gradient is the residual and whose
 // Hessian, with the exact second derivatives of g̃_k, the tangent. With friction, the weighted slip
-// increment Δũ_k (eq. M9) goes through node-to-segment's return mapping (CoulombReturnMapping) and adds
-// t_T ∇Δũ_k and its linearisation (eq. M11–M12). Behind the same ContactInterfaceBase as node-to-segment:
+// increment Δũ_k (eq. M9; in 3D a 2-vector in the node's tangent basis, eq. M9′, MortarSlipBasis.hpp) goes
+// through node-to-segment's return mapping (CoulombReturnMapping<kDim − 1>) and adds t_Tα ∇Δũ_kα and its
+// linearisation (eq. M11–M12, M11′–M12′). Behind the same ContactInterfaceBase as node-to-segment:
 // the owner of slave node k assembles node k's term (its weighted gap's whole support: the slave nodes
 // within two segments in 2D, of its facets in 3D, and the master nodes under its facets), and Contact Beta counts events on the
 // slave nodes' weighted gaps and stick/slip states.
@@ -18,8 +19,8 @@
 
 namespace contessa::contact {
 
-/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles (3- or 6-node) and quadrilaterals; 3D frictionless
-/// only: a logic_error otherwise, the deck refuses first).
+/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles (3- or 6-node) and quadrilaterals; friction on
+/// 2D segments and 3- and 4-node faces only: a logic_error otherwise, the deck refuses first).
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
 
 /// The spec whose reservation (CouplingReservation) holds every master node a mortar slave node's term can

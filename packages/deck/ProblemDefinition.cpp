@@ -205,7 +205,7 @@ const ParameterTable<InterfaceParameters>& interfaceTable() {
                       {"Node To Segment", "Mortar"},
                       "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: "
                       "weighted gaps over the slave facets against every master facet they overlap (2D with Coulomb "
-                      "friction; 3D on Tri3/Quad4 faces, frictionless; penalty, single pass: passes the non-matching "
+                      "friction; 3D on Tri3/Quad4 faces with Coulomb friction, on Tri6/Quad8/Quad9 faces frictionless; penalty, single pass: passes the non-matching "
                       "contact patch test)")
           .enumChoice("Master Smoothing", &S::smoothing, S::Smoothing::None, {"None", "Hermite"},
                       "None: the master surface is its facets. Hermite (2D node-to-segment, deformable 2-node "
@@ -216,16 +216,22 @@ const ParameterTable<InterfaceParameters>& interfaceTable() {
 }
 
 // What Discretization = Mortar does not do yet (docs/theory-contact.md, "Mortar"): one-line InputErrors.
-void requireMortarSupported(bool twoPass, int dimension, bool revolved, const contact::ContactLawParameters& law,
-                            const std::string& where) {
+void requireMortarSupported(bool twoPass, bool revolved, const contact::ContactLawParameters& law, const std::string& where) {
   const std::string what = where + "/Discretization: Mortar is implemented ";
   requireInput(!law.isAugmented(), where + "/Enforcement: Augmented Lagrangian is implemented for Node To Segment only, not "
                                           "with Discretization = Mortar; use Enforcement = Penalty");
-  requireInput(dimension == 2 || law.isFrictionless(),
-               where + "/Friction Coefficient: Discretization = Mortar is frictionless in 3D (penalty, no Coulomb "
-                       "friction yet); set Friction Coefficient = 0 or use Discretization = Node To Segment");
   requireInput(!revolved, what + "for plane strain and 3D only, not for an axisymmetric problem; use Node To Segment");
   requireInput(!twoPass, what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
+}
+
+// 3D mortar's Coulomb friction is on 3- and 4-node faces (MortarFacetPair.hpp, eq. M9′); the quadratic
+// faces' pairs (MortarQuadraticFacetPair) have no slip increments yet: a one-line InputError.
+void requireMortarFrictionFaces(int dimension, int nodesPerFacet, const contact::ContactLawParameters& law,
+                                const std::string& sideSet, const std::string& where) {
+  requireInput(dimension == 2 || law.isFrictionless() || nodesPerFacet <= 4,
+               where + "/Friction Coefficient: Discretization = Mortar has Coulomb friction in 3D on 3- and 4-node "
+                       "faces only, not on the " + std::to_string(nodesPerFacet) + "-node faces of '" + sideSet +
+                       "'; set Friction Coefficient = 0 or use Discretization = Node To Segment");
 }
 
 // What Master Smoothing = Hermite takes (contact/SmoothedMaster.hpp): one-line InputErrors.
@@ -333,13 +339,14 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
   spec.mortar = in.discretization == InterfaceParameters::Discretization::Mortar;
-  if (spec.mortar) requireMortarSupported(in.twoPass, mesh.dimension, revolved, spec.law, where);
+  if (spec.mortar) requireMortarSupported(in.twoPass, revolved, spec.law, where);
   mesh::ReplicatedSurface slaveFacets;
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveFacets = slave.facets;
   spec.slaveFacetNodes = slave.nodesPerFacet;
   if (spec.mortar) {
     requireMortarFacets(mesh.dimension, slave.nodesPerFacet, slaveSet, where);
+    requireMortarFrictionFaces(mesh.dimension, slave.nodesPerFacet, spec.law, slaveSet, where);
     spec.slaveFacetMeasures = slaveFacetMeasures(slave.facets, slave.nodesPerFacet, coordinates);
   }
   spec.slaveNodes = slave.nodes;
@@ -371,6 +378,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.masterFacets = master.facets;
   spec.masterFacetNodes = master.nodesPerFacet;
   if (spec.mortar) requireMortarFacets(mesh.dimension, master.nodesPerFacet, masterSet, where);
+  if (spec.mortar) requireMortarFrictionFaces(mesh.dimension, master.nodesPerFacet, spec.law, masterSet, where);
   const bool smoothed = in.smoothing == InterfaceParameters::Smoothing::Hermite;
   if (smoothed) requireSmoothingSupported(spec, where, masterSet);
   if (smoothed) smoothMaster(spec);

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <stdexcept>
 #include <cmath>
 #include <vector>
 
@@ -304,13 +303,6 @@ TEST(MortarInterface3D, TangentAndLoadDerivativeAreCentralDifferencesWithAMoving
       a.dLambda, lambda, [&](double mu) { return assemble(*faceInterface(true), x, mu).residual; }, &dScale);
   EXPECT_GT(dScale, 1.0);
   EXPECT_LT(dError, 1e-6 * dScale);
-}
-
-TEST(MortarInterface3D, FrictionIsRefusedIn3D) {
-  ContactInterfaceSpec spec = faceSpec(false);
-  spec.law.frictionCoefficient = 0.3;
-  spec.law.tangentialPenalty = 1e3;
-  EXPECT_THROW(makeMortarInterface(spec, std::vector<char>(9, 1)), std::logic_error);
 }
 
 TEST(MortarInterface3D, TheSlaveNeighboursAreThoseOfTheNodesFacets) {
