@@ -15,6 +15,9 @@ near-null space). For each size and rank count it prints one Markdown row:
   elements and their scatter), element kernels + assembly, set-up (deck, mesh, partition, graph):
   `contessa --timers`, the largest rank per phase;
 - peak memory per rank (the summary's VmHWM: largest rank and the sum over ranks);
+- MueLu's set-ups from the summary: started over (on a new graph, a filled-in entry, a coarse matrix's zeros,
+  a refused re-set-up; the first set-up not counted) / reused (aggregates and P kept) / skipped (values
+  unchanged);
 - the 2-rank answer against one rank's (compare_history.py, 1e-8 relative on every history column but
   the solver counts).
 
@@ -48,6 +51,13 @@ def run(contessa, n, ranks, work):
     return timed_run(contessa, DECK, ranks, os.path.join(work, f"n{n}_np{ranks}"), sets)
 
 
+def setups(summary):
+    """MueLu's set-ups of the run: started over / reused / skipped (the summary's counts)."""
+    restarts = sum(summary.get(f"preconditioner_{k}", 0) for k in
+                   ("new_graph_setups", "pattern_restarts", "coarse_zero_restarts", "refused_reuses"))
+    return f"{restarts} / {summary.get('preconditioner_reused_setups', 0)} / {summary.get('preconditioner_unchanged_setups', 0)}"
+
+
 def last_row(history):
     lines = open(history).read().splitlines()
     header = lines[0].split(",")
@@ -63,14 +73,14 @@ def main():
     print_table_header(["n", "unknowns", "ranks", "slave / contact nodes", "punch force [N]", "Newton it.", "Krylov it./solve",
                         "wall [s]", "per Newton it. [s]", "preconditioner set-up [s]", "Krylov [s]", "contact [s]",
                         "elements + assembly [s]", "set-up [s]", "peak memory: largest rank / sum [MiB]",
-                        "answer vs 1 rank"])
+                        "MueLu set-ups started over / reused / skipped", "answer vs 1 rank"])
     for n in args.sizes:
         reference = None
         for ranks in args.ranks:
             r = run(args.contessa, n, ranks, work)
             s = r.get("summary")
             if r["status"] != 0 or s is None:
-                print(f"| {n} | {unknowns(n)} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) |||||||||||||")
+                print(f"| {n} | {unknowns(n)} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) ||||||||||||||")
                 continue
             history = os.path.join(r["out"], "punch_3d.history.csv")
             answer = "reference" if reference is None else history_difference(reference, history)
@@ -84,7 +94,8 @@ def main():
             print(f"| {n} | {unknowns(n)} | {ranks} | {slaves} / {contacts} | {force:.1f} | {s['newton_iterations']} | {krylov:.1f} | "
                   f"{s['wall_seconds']:.1f} | {s['wall_seconds'] / max(s['newton_iterations'], 1):.2f} | "
                   f"{phase['preconditioner set-up']:.1f} | {phase['Krylov iterations']:.1f} | {phase['contact']:.2f} | {phase['elements + assembly']:.1f} | "
-                  f"{phase['set-up']:.1f} | {memory['max'] / 2**20:.0f} / {sum(memory['per_rank']) / 2**20:.0f} | {answer} |",
+                  f"{phase['set-up']:.1f} | {memory['max'] / 2**20:.0f} / {sum(memory['per_rank']) / 2**20:.0f} | "
+                  f"{setups(s)} | {answer} |",
                   flush=True)
 
 

@@ -8,6 +8,7 @@
 #include <MueLu_Level.hpp>
 #include <MueLu_XpetraOperator.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
 #include <Thyra_TpetraLinearOp.hpp>
 #include <Thyra_XpetraLinearOp.hpp>
@@ -133,14 +134,79 @@ bool coarseZerosMatter(const Thyra::PreconditionerBase<double>& prec, const Teuc
 }
 
 
+// With the deck's MueLu "verbosity" at medium or above, MueLu times each of its factories in Teuchos timers
+// named "MueLu: ..." (aggregation, prolongator smoothing, the products R A P, repartitioning, smoothers,
+// the coarse factorisation) but prints only their total. Their sums over the run so far, least, mean and
+// largest over the ranks, are printed after each set-up: the last table is the run's set-up phase by phase
+// (bench/README.md, "Issue 23, sixth round"). Collective over `comm`.
+bool mueLuTimersRequested(const Teuchos::ParameterList* muelu) {
+  if (muelu == nullptr || !muelu->isType<std::string>("verbosity")) return false;
+  const std::string level = muelu->get<std::string>("verbosity");
+  return level == "medium" || level == "high" || level == "extreme" || level == "test";
+}
+
+void printMueLuTimers(const Teuchos::Comm<int>& comm) {
+  Teuchos::TimeMonitor::summarize(Teuchos::ptrFromRef(comm), std::cout, false, true, false, Teuchos::Union, "MueLu: ", true);
+}
+
 }  // namespace
 
-std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix) {
+std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix, const std::vector<char>& skipRows) {
   std::vector<std::size_t> out;
-  const auto values = matrix.getLocalMatrixHost().values;
-  for (std::size_t k = 0; k < values.extent(0); ++k)
-    if (values(k) == 0.0) out.push_back(k);
+  const auto local = matrix.getLocalMatrixHost();
+  const auto& rowStart = local.graph.row_map;
+  for (std::size_t row = 0; row + 1 < rowStart.extent(0); ++row) {
+    if (row < skipRows.size() && skipRows[row]) continue;
+    for (std::size_t k = rowStart(row); k < rowStart(row + 1); ++k)
+      if (local.values(k) == 0.0) out.push_back(k);
+  }
   return out;
+}
+
+std::vector<std::uint64_t> rowValueHashes(const model::CrsMatrix& matrix) {
+  const auto local = matrix.getLocalMatrixHost();
+  const auto& rowStart = local.graph.row_map;
+  std::vector<std::uint64_t> out(rowStart.extent(0) > 0 ? rowStart.extent(0) - 1 : 0);
+  for (std::size_t row = 0; row < out.size(); ++row) {
+    std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a over the values' bits
+    for (std::size_t k = rowStart(row); k < rowStart(row + 1); ++k) {
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &local.values(k), sizeof bits);
+      hash = (hash ^ bits) * 0x100000001b3ULL;
+    }
+    out[row] = hash;
+  }
+  return out;
+}
+
+void flagChangedRows(const std::vector<std::uint64_t>& before, const std::vector<std::uint64_t>& now,
+                     std::vector<char>& rows) {
+  if (before.size() != now.size()) return;
+  if (rows.size() != now.size()) rows.assign(now.size(), 0);
+  for (std::size_t row = 0; row < now.size(); ++row)
+    if (before[row] != now[row]) rows[row] = 1;
+}
+
+ZerosFilledInRows::ZerosFilledInRows(const model::CrsMatrix& matrix, const std::vector<char>& rows, double fill)
+    : values_(matrix.getLocalMatrixHost().values) {
+  const auto local = matrix.getLocalMatrixHost();
+  const auto& rowStart = local.graph.row_map;
+  const auto& columns = local.graph.entries;
+  const auto& rowMap = *matrix.getRowMap();
+  const auto& columnMap = *matrix.getColMap();
+  for (std::size_t row = 0; row < rows.size() && row + 1 < rowStart.extent(0); ++row) {
+    if (!rows[row]) continue;
+    const model::GO globalRow = rowMap.getGlobalElement(static_cast<model::LO>(row));
+    for (std::size_t k = rowStart(row); k < rowStart(row + 1); ++k)
+      if (values_(k) == 0.0 && columnMap.getGlobalElement(columns(k)) != globalRow) {  // never a zero pivot made tiny
+        values_(k) = fill;
+        filled_.push_back(k);
+      }
+  }
+}
+
+ZerosFilledInRows::~ZerosFilledInRows() {
+  for (const std::size_t k : filled_) values_(k) = 0.0;
 }
 
 std::uint64_t valuesHash(const model::CrsMatrix& matrix) {
@@ -196,12 +262,23 @@ GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decid
 void GraphKeyedPreconditionerFactory::startOver(const Teuchos::RCP<const Source>& src,
                                                 Thyra::PreconditionerBase<double>* prec, Thyra::ESupportSolveUse use,
                                                 const model::CrsMatrix* matrix, SetUp& record) const {
+  // Volatile rows are known for the graph they were seen on only.
+  std::vector<char> volatileRows;
+  if (matrix != nullptr && record.graph.get() == matrix->getCrsGraph().get()) volatileRows = std::move(record.volatileRows);
   inner_->uninitializePrec(prec, nullptr, nullptr);
-  inner_->initializePrec(src, prec, use);
+  if (matrix == nullptr) {
+    inner_->initializePrec(src, prec, use);
+    record = SetUp{};
+    return;
+  }
+  {
+    const ZerosFilledInRows filled(*matrix, volatileRows, kPatternFill);
+    inner_->initializePrec(src, prec, use);
+  }
   record = SetUp{};
-  if (matrix == nullptr) return;
   record.graph = matrix->getCrsGraph();
-  record.zeroEntries = zeroEntryPositions(*matrix);
+  record.zeroEntries = zeroEntryPositions(*matrix, volatileRows);
+  record.volatileRows = std::move(volatileRows);
   if (matrix->getComm()->getSize() > 1) record.coarseZeros = coarseZerosMatter(*prec, *matrix->getComm());
 }
 
@@ -213,6 +290,11 @@ void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const So
   auto& record = setUps_[prec];
   const std::uint64_t hash = matrix.is_null() ? 0 : valuesHash(*matrix);
   const Decision decision = decide(matrix, hash, record);
+  std::vector<std::uint64_t> rowHashes;
+  if (!matrix.is_null() && decision != Decision::Unchanged) {
+    rowHashes = rowValueHashes(*matrix);
+    if (decision != Decision::NewGraph) flagChangedRows(record.rowHashes, rowHashes, record.volatileRows);
+  }
   auto& c = counts();
   if (decision == Decision::Unchanged) {
     ++c.unchanged;
@@ -237,6 +319,8 @@ void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const So
   }
   record.matrix = matrix;
   record.valuesHash = hash;
+  record.rowHashes = std::move(rowHashes);
+  if (!matrix.is_null() && mueLuTimersRequested(inner_->getParameterList().get())) printMueLuTimers(*matrix->getComm());
 }
 
 void GraphKeyedPreconditionerFactory::uninitializePrec(Thyra::PreconditionerBase<double>* prec,

@@ -26,6 +26,16 @@
 //   entry that A's stored pattern times P gives (checked by that product, once per fresh set-up);
 //   otherwise the hierarchy is never re-set-up on more than one rank. On one rank MueLu's refusal is
 //   caught instead and the hierarchy started over.
+// - rows whose values changed between two set-ups on one graph (contact rows: a linear solid's other rows
+//   never change) are "volatile": at a fresh set-up their exact zeros (off the diagonal) hold a tiny value
+//   (kPatternFill) while MueLu runs, so that the products' patterns already hold every entry those rows
+//   can fill in later, and a later fill-in there needs no new set-up. The zeros are restored before the
+//   solve: the linear system is the Jacobian as assembled, and the tiny values change no sum of the set-up
+//   (they are 10^-250 against entries of 10^-20 and more). On the 3D punch on 2 ranks, the pattern
+//   restart at LOCA's predictor after the first increment (an edge row whose tangential couplings fill in)
+//   is a reused set-up since (bench/README.md, "Issue 23, sixth round"). Rows that never changed keep their
+//   zeros out of the products: filled in everywhere, the uniform mesh's structural zeros (couplings that
+//   cancel between neighbouring elements) would make P and A P denser at every set-up.
 // - the same matrix with the same values as at the last set-up (fresh or reused) on every rank: nothing is
 //   redone, the hierarchy and its smoothers are those of these very values. LOCA's tangent predictor
 //   asks for the Jacobian at the converged state, which equals the last Newton iteration's when the
@@ -44,6 +54,10 @@ namespace contessa::solvers {
 
 /// The MueLu reuse Contessa sets unless the deck gives "reuse: type" (bench/README.md, "MueLu reuse").
 inline constexpr const char* kMueLuReuseType = "RP";
+
+/// The value a volatile row's exact zeros hold while MueLu sets up (header): nonzero for Tpetra's products,
+/// and below the rounding of any sum it enters.
+inline constexpr double kPatternFill = 1e-250;
 
 /// How the set-ups of a run went (process-wide; every rank counts alike).
 struct PreconditionerSetUpCounts {
@@ -89,6 +103,9 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
   struct SetUp {
     Teuchos::RCP<const model::CrsGraph> graph;  // held, so that a freed graph's address cannot pass for it
     std::vector<std::size_t> zeroEntries;       // local positions of the stored entries that were exactly 0
+                                                // and not filled for the set-up (outside volatile rows)
+    std::vector<std::uint64_t> rowHashes;       // each local row's values at the last set-up, fresh or reused
+    std::vector<char> volatileRows;             // local rows whose values changed between set-ups on this graph
     bool coarseZeros = false;                   // a coarse matrix of the hierarchy held exact zeros
     // The matrix and the hash of its values at the last set-up, fresh or reused.
     Teuchos::RCP<const model::CrsMatrix> matrix;
@@ -103,8 +120,32 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
   mutable std::map<const Thyra::PreconditionerBase<double>*, SetUp> setUps_;
 };
 
-/// The local positions of `matrix`'s stored entries whose value is exactly zero.
-std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix);
+/// The local positions of `matrix`'s stored entries whose value is exactly zero; with `skipRows` (one flag
+/// per local row), those outside the flagged rows only.
+std::vector<std::size_t> zeroEntryPositions(const model::CrsMatrix& matrix, const std::vector<char>& skipRows = {});
+
+/// A 64-bit hash of each local row's stored values.
+std::vector<std::uint64_t> rowValueHashes(const model::CrsMatrix& matrix);
+
+/// Flags in `rows` (sized to `now` when empty) the rows whose hash differs between `before` and `now`;
+/// nothing when the two differ in length (another graph).
+void flagChangedRows(const std::vector<std::uint64_t>& before, const std::vector<std::uint64_t>& now,
+                     std::vector<char>& rows);
+
+/// Writes `fill` into the exact zeros off the diagonal of the flagged local rows of `matrix` for its lifetime
+/// and the zeros back at its end (header: a volatile row's couplings in MueLu's product patterns).
+class ZerosFilledInRows {
+ public:
+  ZerosFilledInRows(const model::CrsMatrix& matrix, const std::vector<char>& rows, double fill);
+  ~ZerosFilledInRows();
+  ZerosFilledInRows(const ZerosFilledInRows&) = delete;
+  ZerosFilledInRows& operator=(const ZerosFilledInRows&) = delete;
+  std::size_t count() const { return filled_.size(); }
+
+ private:
+  model::CrsMatrix::local_matrix_host_type::values_type values_;
+  std::vector<std::size_t> filled_;
+};
 
 /// A 64-bit hash of `matrix`'s stored values on this rank (their bits, in storage order).
 std::uint64_t valuesHash(const model::CrsMatrix& matrix);

@@ -6,6 +6,7 @@
 
 #include <Thyra_DefaultLinearOpSource.hpp>
 #include <Thyra_DefaultPreconditioner.hpp>
+#include <Thyra_TpetraLinearOp.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_Core.hpp>
 
@@ -199,6 +200,72 @@ TEST(PreconditionerReuse, UnchangedValuesOfTheSameMatrixSkipTheSetUpOnEveryRankA
   EXPECT_EQ(recording->initializations, 4) << "a changed value on any rank must re-set-up on all";
   EXPECT_EQ(counts.reused, reusedBefore + 3);
   EXPECT_EQ(recording->uninitializations, 1);
+}
+
+// The exact zeros that the inner factory sees in the matrix it sets up from (what MueLu's products skip).
+class ZeroCountingFactory : public RecordingFactory {
+ public:
+  mutable std::vector<std::size_t> zerosSeen;
+  void initializePrec(const RCP<const Thyra::LinearOpSourceBase<double>>& src, Thyra::PreconditionerBase<double>* prec,
+                      const Thyra::ESupportSolveUse use) const override {
+    using TpetraOp = Thyra::TpetraLinearOp<double, contessa::model::LO, GO, contessa::model::Node>;
+    const auto op = Teuchos::rcp_dynamic_cast<const TpetraOp>(src->getOp(), true);
+    const auto matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(op->getConstTpetraOperator(), true);
+    zerosSeen.push_back(contessa::solvers::zeroEntryPositions(*matrix).size());
+    RecordingFactory::initializePrec(src, prec, use);
+  }
+};
+
+// A row whose values changed between two set-ups (a contact row) is volatile: at the next fresh set-up its
+// zeros hold a tiny value while the inner factory sets up, so that a later fill-in there is inside the
+// products' patterns and keeps the set-up; the zeros are restored afterwards, and a row that never changed
+// keeps its zeros (and a fill-in there still starts over).
+TEST(PreconditionerReuse, ZerosOfRowsThatChangedAreFilledForAFreshSetUpSoThatTheirFillInIsReused) {
+  auto comm = Tpetra::getDefaultComm();
+  auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  auto counting = rcp(new ZeroCountingFactory());
+  contessa::solvers::GraphKeyedPreconditionerFactory factory{counting};
+  auto prec = factory.createPrec();
+  auto& counts = contessa::solvers::GraphKeyedPreconditionerFactory::counts();
+  const auto graph = bandGraph(map, false);
+  // Row 2 holds [0 0 0] (an open pair), rows 3 and 4 [0 1 1] (a coupling zero at first). Row 3's zero fills
+  // in (a fresh set-up; row 3 is volatile now) and is zero again (reused); row 4's fills in (a fresh set-up,
+  // which fills row 3's zero for MueLu), and row 3's next fill-in is reused.
+  auto jacobian = [&](double row2, double row3Middle, double row4) {  // the rows' first entries
+    auto matrix = rcp(new CrsMatrix(graph));
+    matrix->resumeFill();
+    matrix->setAllToScalar(1.0);
+    for (auto [row, values] : {std::pair<int, std::vector<double>>{2, {0.0, row2, 0.0}}, {3, {row3Middle, 1.0, 1.0}},
+                               {4, {row4, 1.0, 1.0}}}) {
+      Teuchos::ArrayView<const int> columns;
+      graph->getLocalRowView(row, columns);
+      std::vector<double> v(columns.size());
+      for (std::size_t k = 0; k < v.size(); ++k) v[k] = values[k];
+      matrix->replaceLocalValues(row, columns, Teuchos::ArrayView<const double>(v));
+    }
+    matrix->fillComplete();
+    return matrix;
+  };
+  const long grewBefore = counts.patternGrew;
+  auto set = [&](const RCP<CrsMatrix>& m) { factory.initializePrec(sourceOf(m), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED); };
+  set(jacobian(0.0, 0.0, 0.0));  // fresh: 3 + 1 + 1 zeros on each rank, no volatile row yet
+  EXPECT_EQ(counting->zerosSeen.back(), 5u);
+  set(jacobian(0.0, 2.0, 0.0));  // row 3's zero fills in: start over; rows 3 changed -> volatile
+  EXPECT_EQ(counts.patternGrew, grewBefore + 1);
+  EXPECT_EQ(counting->uninitializations, 2);
+  EXPECT_EQ(counting->zerosSeen.back(), 4u) << "row 3 holds no zero at this set-up: nothing to fill";
+  set(jacobian(0.0, 0.0, 0.0));  // row 3 back to zero: a subset of the set-up's nonzeros, reused
+  EXPECT_EQ(counting->uninitializations, 2);
+  const auto fourth = jacobian(0.0, 0.0, 5.0);  // row 4 (never changed) fills in: start over, row 3's zero filled
+  set(fourth);
+  EXPECT_EQ(counts.patternGrew, grewBefore + 2);
+  EXPECT_EQ(counting->zerosSeen.back(), 3u) << "the volatile row 3's zero must hold the fill while MueLu sets up";
+  EXPECT_EQ(contessa::solvers::zeroEntryPositions(*fourth).size(), 4u) << "the zeros must be restored after the set-up";
+  set(jacobian(0.0, 7.0, 5.0));  // row 3 fills in again: inside the patterns now, reused
+  EXPECT_EQ(counts.patternGrew, grewBefore + 2) << "a fill-in of a volatile row must keep the set-up";
+  EXPECT_EQ(counting->uninitializations, 3);
+  set(jacobian(3.0, 7.0, 5.0));  // row 2's diagonal (never changed, not filled) fills in: start over
+  EXPECT_EQ(counting->uninitializations, 4) << "a fill-in of a row not filled at the set-up must start over";
 }
 
 TEST(PreconditionerReuse, ZeroEntriesFoundAndTheirFillInSeen) {
