@@ -51,23 +51,43 @@ T twiceSignedArea(const std::vector<PlanePoint<T>>& polygon) {
 /// times |b − a|. A vertex within `snap` (a length) of the line counts as on the left: edges lying on each
 /// other (two bodies cut alike, the patch test's boundary) then add no crossing of two parallel lines,
 /// whose derivative would be ill-conditioned, and the answer does not switch by round-off.
+///
+/// A subject edge within the band (both ends snapped) lies **on** the line: its ends are kept and are the
+/// polygon's own way in and out of the half-plane, so the edges from them to vertices beyond the line add
+/// no crossing. Two neighbouring clip polygons that share the line then agree on the edge: the one it lies
+/// just outside of keeps it (snapped in), the one it lies just inside of keeps only the segment (no area).
+/// With crossings there, the second integrated a sliver of the offset's width that the first had already
+/// counted — the overlap A + L |d| for an offset d within the band, a kink at d = 0 whose one-sided
+/// derivatives ±g L alternated between Newton's iterates (theory-contact.md §13.2, "Coincident piece edges").
 template <class T>
 std::vector<PlanePoint<T>> clipConvexPolygon(std::vector<PlanePoint<T>> subject,
                                              const std::vector<PlanePoint<T>>& clip, double snap) {
+  std::vector<int> side;  // −1 beyond the band outside, 0 within it, +1 beyond it inside
   for (std::size_t e = 0; e < clip.size() && !subject.empty(); ++e) {
     const PlanePoint<T>& a = clip[e];
     const PlanePoint<T> edge = clip[(e + 1) % clip.size()] - a;
     const double tolerance = snap * std::hypot(valueOf(edge.x), valueOf(edge.y));
+    const std::size_t n = subject.size();
+    std::vector<T> d(n, T(0.0));
+    side.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      d[i] = planeCross(edge, subject[i] - a);
+      const double v = valueOf(d[i]);
+      side[i] = v < -tolerance ? -1 : (v > tolerance ? 1 : 0);
+    }
+    const auto onLine = [&](std::size_t i, std::size_t j) { return side[i] == 0 && side[j] == 0; };
     std::vector<PlanePoint<T>> kept;
-    kept.reserve(subject.size() + 2);
-    for (std::size_t i = 0; i < subject.size(); ++i) {
-      const PlanePoint<T>& p = subject[(i + subject.size() - 1) % subject.size()];
-      const PlanePoint<T>& q = subject[i];
-      const T dp = planeCross(edge, p - a), dq = planeCross(edge, q - a);
-      const bool pInside = valueOf(dp) >= -tolerance, qInside = valueOf(dq) >= -tolerance;
-      // A crossing needs one end strictly beyond the snap band and the other inside it: d_P − d_Q ≠ 0.
-      if (pInside != qInside) kept.push_back(p + scaled(q - p, dp / (dp - dq)));
-      if (qInside) kept.push_back(q);
+    kept.reserve(n + 2);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t p = (i + n - 1) % n, q = i;
+      const PlanePoint<T>& P = subject[p];
+      const PlanePoint<T>& Q = subject[q];
+      // A crossing needs one end outside beyond the band and the other not, d_P − d_Q ≠ 0, and not an end
+      // of an edge lying on the line (that end is the crossing).
+      const bool crossing = (side[p] < 0) != (side[q] < 0) &&
+                            !(side[q] == 0 && onLine(q, (q + 1) % n)) && !(side[p] == 0 && onLine((p + n - 1) % n, p));
+      if (crossing) kept.push_back(P + scaled(Q - P, d[p] / (d[p] - d[q])));
+      if (side[q] >= 0) kept.push_back(Q);
     }
     subject.swap(kept);
   }

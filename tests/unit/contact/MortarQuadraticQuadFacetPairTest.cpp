@@ -231,6 +231,58 @@ TEST(MortarQuadraticQuadFacetPair, AUniformPressureLoadsTheSlaveNodesConsistentl
               {c9, c9, c9, c9, m9, m9, m9, m9, 4.0 / 9.0});
 }
 
+// A flat square slave face [0, 0.5]² at z = 0 under a flat master of the same faces at z = gap, shifted by d
+// along x: the slave's own face and its two neighbours (matching faces, as the 2 × 2 patch's at the
+// solution), so that every slave piece edge across x lies on a master piece edge at d = 0 (the Quad8's
+// diagonals and x = 0, 0.25, 0.5; the Quad9's x = 0, 0.25, 0.5). The summed weighted gaps, mortar areas and
+// the gaps' derivative along the shift.
+struct ShiftedMatching {
+  double area = 0, weightedGap = 0, derivative = 0;  // summed over the slave nodes and the three masters
+};
+ShiftedMatching shiftedMatching(int nodes, double gap, double d) {
+  const Point a{0, 0, 0}, b{0.5, 0, 0}, c{0.5, 0.5, 0}, e{0, 0.5, 0};
+  const Face slave = nodes == 8 ? quad8(a, b, c, e) : quad9(a, b, c, e);
+  const MortarFacetPairShape shape = shapeOf(slave, nodes);
+  ShiftedMatching out;
+  for (double offset : {-0.5, 0.0, 0.5}) {
+    const auto at = [&](const Point& p) { return Point{p[0] + offset + d, p[1], gap}; };
+    const Face master = reversed(nodes == 8 ? quad8(at(a), at(b), at(c), at(e)) : quad9(at(a), at(b), at(c), at(e)));
+    const auto add = [&](const auto& g) {
+      for (int k = 0; k < nodes; ++k) {
+        out.area += g.mortarArea[k], out.weightedGap += g.weightedGap[k];
+        for (int m = 0; m < nodes; ++m) out.derivative += g.gradient[k][3 * nodes + 3 * m];  // ∂/∂(master x)
+      }
+    };
+    if (nodes == 8)
+      add(facetPairDerivatives(pairOf<8>(slave, master), 0.0, shape));
+    else
+      add(facetPairDerivatives(pairOf<9>(slave, master), 0.0, shape));
+  }
+  return out;
+}
+
+TEST(MortarQuadraticQuadFacetPair, MatchingMastersShiftedAcrossTheSlavePieceEdgesKeepTheWeightedGapsSmooth) {
+  // The coincident piece edges of theory-contact §13.2: a slave vertex within the clip's snap band of a
+  // master piece edge is on it in both master pieces that share the edge (MortarClipping.hpp). The sum over
+  // the masters is then the whole slave face, A g, on both sides of d = 0, and its derivative along the shift
+  // is zero, as its central difference across d = 0. When the vertex counted inside the neighbouring piece,
+  // a sliver of the offset's width was integrated twice: area A + L |d| (L = 1.5 on the Quad8, 1 on the
+  // Quad9), a kink at d = 0 whose one-sided derivatives ±g L alternated between Newton's iterates.
+  const double gap = -1e-3, A = 0.25;
+  for (int nodes : {8, 9}) {
+    for (double d : {-3e-7, -1e-7, -1e-8, 0.0, 1e-8, 1e-7, 3e-7}) {
+      const ShiftedMatching m = shiftedMatching(nodes, gap, d);
+      EXPECT_NEAR(m.area, A, 1e-14) << nodes << " d " << d;
+      EXPECT_NEAR(m.weightedGap, gap * A, 1e-16) << nodes << " d " << d;
+      EXPECT_NEAR(m.derivative, 0.0, 1e-16) << nodes << " d " << d;
+    }
+    const double h = 1e-7;
+    const double centralDifference =
+        (shiftedMatching(nodes, gap, h).weightedGap - shiftedMatching(nodes, gap, -h).weightedGap) / (2 * h);
+    EXPECT_NEAR(centralDifference, shiftedMatching(nodes, gap, 0.5 * h).derivative, 1e-11) << nodes;
+  }
+}
+
 // A curved, warped slave under a tilted, curved master that covers part of it (the clip cuts its pieces).
 Face unevenSlave(int nodes) {
   Face s = slaveFace(nodes);
