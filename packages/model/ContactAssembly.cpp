@@ -363,11 +363,12 @@ bool ContactAssembly::augment(double lambda, const AugmentationPoint& at) {
     if (augmentations_[i] < law.maxAugmentations) {
       // The multipliers take the tractions of the penalties they were computed with; the grown penalties
       // apply from the next evaluation (the update changes the problem either way).
-      // Frictionless only: with friction the grown penalty moved Cattaneo–Mindlin's stick zone 2.3 % off
-      // (theory-contact.md §15, "Penalty growth").
-      const double growth = law.isFrictionless() ? grownPenalty(interface.penaltyGrowth(), all[0],
-                                                                law.penetrationTolerance, lastViolation_[i])
-                                                 : interface.penaltyGrowth();
+      // With friction not at the increment's first update, only where the update before it measured a slow
+      // Uzawa rate (theory-contact.md §15, "Penalty growth with friction").
+      const bool grows = law.isFrictionless() || lastViolation_[i] < HUGE_VAL;
+      const double growth = grows ? grownPenalty(interface.penaltyGrowth(), all[0], law.penetrationTolerance,
+                                                 lastViolation_[i])
+                                  : interface.penaltyGrowth();
       interface.augment();
       interface.setPenaltyGrowth(growth);
       lastViolation_[i] = all[0];
