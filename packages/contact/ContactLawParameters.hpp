@@ -40,11 +40,12 @@ struct ContactLawParameters {
   bool hasSlipTolerance() const { return slipTolerance > 0.0; }
   bool isAugmented() const { return enforcement == Enforcement::AugmentedLagrangian; }
 
-  /// The most the augmented Lagrangian grows a frictionless interface's normal penalty over the deck's
-  /// (model::grownPenalty; docs/theory-contact.md eq. 15.5). With friction it does not grow.
+  /// The most the augmented Lagrangian grows an interface's normal penalty over the deck's
+  /// (model::grownPenalty; docs/theory-contact.md eq. 15.5). With friction it grows only where an update has
+  /// measured a slow Uzawa rate (model::ContactAssembly::augment), which the run cannot promise at its start.
   static constexpr double kMaxPenaltyGrowth = 30.0;
-  /// ε_N as far as the run may take it: the deck's, times kMaxPenaltyGrowth where the augmented
-  /// Lagrangian grows it.
+  /// ε_N as far as the run may take it for certain: the deck's, times kMaxPenaltyGrowth where the augmented
+  /// Lagrangian grows it at its first update (frictionless); with friction the deck's.
   double largestNormalPenalty() const {
     return isAugmented() && isFrictionless() ? kMaxPenaltyGrowth * normalPenalty : normalPenalty;
   }

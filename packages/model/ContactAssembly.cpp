@@ -323,7 +323,23 @@ void ContactAssembly::commit() {
 }
 
 void ContactAssembly::rollback() {
+  // A penalty grown in the rejected attempt is kept where no slave node of the interface (on any rank) was
+  // in contact at the increment's start: that start (t_N = 0 everywhere) is then an equilibrium with any
+  // penalty, and the next attempt need not find the same growth again (theory-contact.md §15, "What the
+  // Hertz sphere's cost is"). Elsewhere the growth is rolled back with the multipliers.
+  std::vector<double> grown(interfaces_.size());
+  std::vector<int> touching(interfaces_.size(), 0), anyTouching(interfaces_.size(), 0);
+  for (std::size_t i = 0; i < interfaces_.size(); ++i) {
+    grown[i] = interfaces_[i]->penaltyGrowth();
+    for (const auto& state : interfaces_[i]->committedStates())
+      if (state.status != contact::ContactStatus::Open) touching[i] = 1;
+  }
+  if (!interfaces_.empty())
+    Teuchos::reduceAll(*layout_.comm(), Teuchos::REDUCE_MAX, static_cast<int>(touching.size()), touching.data(),
+                       anyTouching.data());
   for (auto& c : interfaces_) c->rollback();
+  for (std::size_t i = 0; i < interfaces_.size(); ++i)
+    if (!anyTouching[i] && grown[i] > interfaces_[i]->penaltyGrowth()) interfaces_[i]->restorePenaltyGrowth(grown[i]);
   augmentations_.assign(interfaces_.size(), 0);
   lastViolation_.assign(interfaces_.size(), HUGE_VAL);
 }
@@ -363,11 +379,12 @@ bool ContactAssembly::augment(double lambda, const AugmentationPoint& at) {
     if (augmentations_[i] < law.maxAugmentations) {
       // The multipliers take the tractions of the penalties they were computed with; the grown penalties
       // apply from the next evaluation (the update changes the problem either way).
-      // Frictionless only: with friction the grown penalty moved Cattaneo–Mindlin's stick zone 2.3 % off
-      // (theory-contact.md §15, "Penalty growth").
-      const double growth = law.isFrictionless() ? grownPenalty(interface.penaltyGrowth(), all[0],
-                                                                law.penetrationTolerance, lastViolation_[i])
-                                                 : interface.penaltyGrowth();
+      // With friction not at the increment's first update, only where the update before it measured a slow
+      // Uzawa rate (theory-contact.md §15, "Penalty growth with friction").
+      const bool grows = law.isFrictionless() || lastViolation_[i] < HUGE_VAL;
+      const double growth = grows ? grownPenalty(interface.penaltyGrowth(), all[0], law.penetrationTolerance,
+                                                 lastViolation_[i])
+                                  : interface.penaltyGrowth();
       interface.augment();
       interface.setPenaltyGrowth(growth);
       lastViolation_[i] = all[0];
