@@ -6,7 +6,7 @@ Cases (--case, default both):
   2d  the fixed-step tube (inputs/tube_bending.xml, Method=Constant, 47 increments; 102 slave nodes on the
       outer arc against the rigid plate), frictionless and with Friction Coefficient = 0.2;
   3d  the extruded tube (inputs/tube_bending_3d.xml) on the registered 4 x 50 section, one layer (102 slave
-      nodes on QUAD4 faces), the deck's Contact Beta (N_c = 4), frictionless (3D mortar is frictionless);
+      nodes on QUAD4 faces), the deck's Contact Beta (N_c = 4), frictionless (the 3D mortar cost figures predate 3D mortar friction);
   block
       the 3D block on a rigid base (inputs/verification/coulomb_block_3d.xml made frictionless, as the
       registered mortar3d_rigid_block test: 25 slave nodes on 4 x 4 QUAD4 faces pressed on one rigid
