@@ -518,6 +518,11 @@ SlaveNodeChange ContactInterface<Facet>::changeOf(std::size_t k, double gap, con
   c.trialGap = gap;
   c.trialStatus = result != nullptr ? result->status : ContactStatus::Open;
   c.trialFacet = result != nullptr ? result->trial.segment : -1;
+  if (result != nullptr) {
+    c.trialContactKind = result->pastFreeEdge ? 3 : static_cast<int>(result->point.kind);
+    c.trialContactNodes[0] = result->point.nodes[0];
+    c.trialContactNodes[1] = result->point.nodes[1];
+  }
   const double mu = spec_.law.frictionCoefficient;
   if (result == nullptr || mu == 0.0 || !committed.isInContact() || result->status == ContactStatus::Open) return c;
   // Coulomb indicators (eq. 19, 21) in the facet's metric: ‖t‖² = t_α ā^αβ t_β; the committed traction is

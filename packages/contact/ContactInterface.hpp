@@ -44,6 +44,11 @@ struct SlaveNodeChange {
   double trialIndicator = std::numeric_limits<double>::quiet_NaN();
   bool slipReversed = false;  ///< slipping in both states, in opposite directions
   int trialFacet = -1;        ///< the master facet the trial state was evaluated on (−1: none)
+  /// Where on trialFacet the trial state touches (ContactPoint): its kind as an int (0 the projection,
+  /// 1 a vertex, 2 an edge point, 3 the projection past a free edge, faded) and the vertex's or the edge's
+  /// nodes, local in the facet (−1: none).
+  int trialContactKind = 0;
+  int trialContactNodes[2] = {-1, -1};
 };
 
 /// Augmented Lagrangian: the owned slave nodes' largest violations at the latest trial evaluation, each

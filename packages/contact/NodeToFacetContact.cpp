@@ -150,11 +150,14 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluate(
   if (!fade) return out;
   const double w = fade->weight;
   out.freeEdgeWeight = w;
+  out.pastFreeEdge = true;
   if (w == 0.0) {  // past the reach: open
     Result open;
     open.projection = out.projection;
+    open.point = out.point;
     open.gap = out.gap;
     open.freeEdgeWeight = 0.0;
+    open.pastFreeEdge = true;
     open.trial = out.trial;
     open.trial.tangentialTraction = {};
     open.trial.status = ContactStatus::Open;
@@ -185,6 +188,7 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUn
                            ", not on facet " + std::to_string(facet) + "; map it with transferHistory first");
 
   Result out;
+  out.point = point;
   // eq. (1)–(5): closest point, ā_α, ā_αβ, n̄, g_N (robust start and fallback on a curved facet).
   out.projection = Projection<Facet>().project(x.slave, x.master);
   const auto& p = out.projection;

@@ -94,11 +94,17 @@ struct NodeToFacetResult {
   static constexpr int kDofs = Facet::kSpaceDim * (1 + Facet::kNodes);
 
   ProjectionResult<Facet> projection{};        ///< ξ̄, ā_α, ā_αβ, n̄, g_N on the facet (unclamped)
+  /// Where the node touches the facet, as given to evaluate: each kind (and each vertex or edge) is its own
+  /// smooth branch of the residual; a switch between them is a kink (the Jacobian check's SlaveNodeChange).
+  ContactPoint point{};
   double gap = 0.0;                            ///< g_N of the contact law: the projection's, or at the vertex/edge
   ContactStatus status = ContactStatus::Open;  ///< Open, Stick or Slip at this iterate
   double normalTraction = 0.0;                 ///< t_N = ε_N g_N, eq. (16), times freeEdgeWeight
   Vector<kSurfaceDim> tangentialTraction{};    ///< t_Tα, covariant, eq. (22), times freeEdgeWeight
   double freeEdgeWeight = 1.0;                 ///< w of the fade past a free edge (ContactPoint); 1 on the facet
+  /// ξ̄ past a free edge, the fade applied: w is C1 only (w'' jumps from 0 to −6/reach² at the edge), so
+  /// crossing the edge is a kink of the residual's second derivative (the Jacobian check tells it apart).
+  bool pastFreeEdge = false;
   ReturnMappingResult<kSurfaceDim> friction{}; ///< trial state of eq. (20)–(23), when evaluated
   Vector<kDofs> residual{};                    ///< r_c = t_N ∂g_N/∂u + t_Tα ∂ξ̄^α/∂u
   Matrix<kDofs, kDofs> tangent{};              ///< K_c = ∂r_c/∂u

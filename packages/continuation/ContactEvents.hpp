@@ -34,6 +34,13 @@ struct SlaveNodeIncrement {
   /// The master facet the trial state was evaluated on (−1: none). A node moving to another facet is
   /// no event, but a kink of the residual (the Jacobian check keeps it out of its differences).
   int trialFacet = -1;
+  /// Where on trialFacet the trial state touches: 0 its projection, 1 a vertex, 2 an edge point
+  /// (contact::ContactPoint::Kind), 3 its projection past a free edge (the force faded), with the vertex's
+  /// or the edge's nodes local in the facet (−1: none). A switch between them (a node exactly under an edge
+  /// or a vertex of coplanar facets that a step tilts into a ridge or a valley; a node on a free edge that a
+  /// step leaves behind it) is a kink too.
+  int trialContactKind = 0;
+  int trialContactNodes[2] = {-1, -1};
 
   bool inContactAtCommit() const { return committedStatus != NodeStatus::Open; }
 };

@@ -9,10 +9,12 @@
 //   e_ij = |W_ij − D_ij| / max(|W_ij|, τ · max_k |W_ik|),   τ = rowFloor,
 // D_ij = (f_i(x + h_j e_j) − f_i(x − h_j e_j)) / (2 h_j),   h_j = η · max(|x_j|, ‖x‖_∞, 1),  η = step,
 // W is the derivative with every contact node's status (open, stick, slip, slip reversed, the master
-// facet it is evaluated on) held: where
+// facet it is evaluated on, and where on it the node touches: its projection, an edge point or a vertex,
+// which edge or vertex) held: where
 // the status of some node changes on one side of ±h_j (the residual's kink: a contact opening or
-// closing, stick turning to slip), D_ij is the one-sided difference on the other side (second order,
-// with a half step added there); where it changes
+// closing, stick turning to slip, a node touching an edge point instead of a face), D_ij is the one-sided
+// difference on the other side (second order, with a half step added there, which must keep the statuses
+// too: a node that round-off moves between two coplanar faces and back is no smooth side); where it changes
 // on both sides, h_j shrinks by 1e-2 twice (τ grows as 1/h_j with it, as the noise does), and a column that still straddles kinks is not compared
 // (counted and named in the report: its entries have no derivative to check at this state).
 // Where the residual bends within h_j (h_j |f''| / 2 above 1e-4 of an entry's scale, from the second
@@ -40,6 +42,11 @@ struct JacobianComparison {
   long residualEvaluations = 0;
   long nonSmoothColumns = 0;      ///< columns with a contact status change on both sides at every step tried
   GO firstNonSmoothColumn = -1;
+  /// Of the columns not compared, those where some node's status (open, stick, slip, slip reversed), its
+  /// master facet, or its contact point on the facet (projection, edge, vertex: ContactPoint) changes.
+  long nonSmoothFor[3] = {0, 0, 0};
+  long oneSidedColumns = 0;       ///< columns differenced on one side: the other side changes a contact state
+  long oneSidedFor[3] = {0, 0, 0};  ///< of those, the changes (status, facet, contact point) as above
   long retriedColumns = 0;        ///< columns differenced again at a shorter step because the residual bends within h
   long bentColumns = 0;           ///< of those, the ones whose differences changed: compared at the shorter step
   double seconds = 0;

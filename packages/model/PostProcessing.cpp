@@ -161,14 +161,16 @@ std::vector<std::pair<std::string, contact::RegularisationMeasures>> PostProcess
 
 namespace {
 // Every rank needs every slave node's change to sort the β^k of eq. (12): gather them all, as
-// continuation::SlaveNodeIncrement (8 numbers each), in rank order.
+// continuation::SlaveNodeIncrement (11 numbers each), in rank order.
 std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const std::vector<contact::SlaveNodeChange>& local) {
-  constexpr int kFields = 8;
+  constexpr int kFields = 11;
   std::vector<double> packed;
   for (const auto& c : local) {
     packed.insert(packed.end(), {c.committedGap, c.trialGap, static_cast<double>(static_cast<int>(c.committedStatus)),
                                  static_cast<double>(static_cast<int>(c.trialStatus)), c.committedIndicator,
-                                 c.trialIndicator, c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet)});
+                                 c.trialIndicator, c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet),
+                                 static_cast<double>(c.trialContactKind), static_cast<double>(c.trialContactNodes[0]),
+                                 static_cast<double>(c.trialContactNodes[1])});
   }
   const int size = comm.getSize();
   std::vector<int> counts(size), offsets(size + 1, 0);
@@ -191,6 +193,9 @@ std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const 
     n.trialIndicator = all[i + 5];
     n.slipReversed = all[i + 6] != 0.0;
     n.trialFacet = static_cast<int>(all[i + 7]);
+    n.trialContactKind = static_cast<int>(all[i + 8]);
+    n.trialContactNodes[0] = static_cast<int>(all[i + 9]);
+    n.trialContactNodes[1] = static_cast<int>(all[i + 10]);
     out.push_back(n);
   }
   return out;

@@ -21,7 +21,10 @@ if proc.returncode != (int(sys.argv[3]) if sep > 3 else 0):
 pattern = re.compile(r"^jacobian check, increment (\d+) \(load factor \S+\): worst relative error (\S+) at row node "
                      r"\d+ [xyz], column node \d+ [xyz] \(.+\), W = \S+, FD = \S+; norm-wise \|\|W - W_FD\|\|/\|\|W\|\| = ([^;\s]+)"
                      r"(?:; (\d+) column\(s\) not compared \(a contact status changes within ±h on both sides, first: "
-                     r"node \d+ [xyz]\))?(?:; \d+ column\(s\) differenced with a shorter step \(the residual bends "
+                     r"node \d+ [xyz]; status \d+, facet \d+, contact point \d+\))?"
+                     r"(?:; \d+ column\(s\) differenced on one side \(a contact status changes on the other: "
+                     r"status \d+, facet \d+, contact point \d+\))?"
+                     r"(?:; \d+ column\(s\) differenced with a shorter step \(the residual bends "
                      r"within h\))? \((\d+) residuals, \S+ s\)$")
 found = []
 for line in proc.stdout.splitlines():
