@@ -72,10 +72,10 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   /// kMaxLocalIterations or K_αα is singular.
   ElementStatus evaluate(const ElementGeometry& geometry, int element, const double* u, double* state,
                          const Material& material, double* internalForce, double* stiffness) const override {
-#if CONTESSA_KERNEL_AVX2FMA
+#if CONTESSA_KERNEL_AVX2
     if constexpr (kDispatched)
-      if (kernelIsa() == KernelIsa::Avx2Fma)
-        return evaluateAvx2Fma(geometry, element, u, state, material, internalForce, stiffness);
+      if (kernelIsa() == KernelIsa::Avx2)
+        return evaluateAvx2(geometry, element, u, state, material, internalForce, stiffness);
 #endif
     return evaluateHere(geometry, element, u, state, material, internalForce, stiffness);
   }
@@ -128,7 +128,7 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   // but Q4 Enhanced 8 477 → 10 246 (its 12 × 12 blocks are too small for the halving to outweigh the
   // mirroring and the triangular loops), so 3D only; the revolved 2D kinematics never takes it.
   static constexpr bool kSymmetricPathPays = D == 3 && !Kinematics::kHoop;
-  // Hex8 Enhanced (3D, planar) is also compiled for AVX2 + FMA and chosen at run time (KernelIsa.hpp):
+  // Hex8 Enhanced (3D, planar) is also compiled for AVX2 and chosen at run time (KernelIsa.hpp):
   // about 4× the 2D kernel's work per element, and the largest phase of the 3D tube (issue 23, sixth
   // round). The 2D kernels stay in the generic instruction set only.
   static constexpr bool kDispatched = D == 3 && !Kinematics::kHoop;
@@ -188,9 +188,9 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
     return ElementStatus::Ok;
   }
 
-#if CONTESSA_KERNEL_AVX2FMA
-  /// evaluateHere compiled for AVX2 + FMA, with every call but the law's inlined (KernelIsa.hpp).
-  CONTESSA_TARGET_AVX2FMA ElementStatus evaluateAvx2Fma(const ElementGeometry& geometry, int element, const double* u,
+#if CONTESSA_KERNEL_AVX2
+  /// evaluateHere compiled for AVX2, with every call but the law's inlined (KernelIsa.hpp).
+  CONTESSA_TARGET_AVX2 ElementStatus evaluateAvx2(const ElementGeometry& geometry, int element, const double* u,
                                                         double* state, const Material& material, double* internalForce,
                                                         double* stiffness) const {
     return evaluateHere(geometry, element, u, state, material, internalForce, stiffness);

@@ -15,7 +15,7 @@ KernelIsa initialIsa() {
   if (asked && *asked && std::strcmp(asked, "avx2") != 0)
     std::fprintf(stderr, "contessa: warning: CONTESSA_KERNEL_ISA=%s is neither generic nor avx2; choosing by the processor\n",
                  asked);
-  return avx2FmaAvailable() ? KernelIsa::Avx2Fma : KernelIsa::Generic;
+  return avx2Available() ? KernelIsa::Avx2 : KernelIsa::Generic;
 }
 
 std::atomic<KernelIsa>& chosen() {
@@ -25,9 +25,9 @@ std::atomic<KernelIsa>& chosen() {
 
 }  // namespace
 
-bool avx2FmaAvailable() {
-#if CONTESSA_KERNEL_AVX2FMA
-  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+bool avx2Available() {
+#if CONTESSA_KERNEL_AVX2
+  static const bool available = __builtin_cpu_supports("avx2");
   return available;
 #else
   return false;
@@ -37,7 +37,7 @@ bool avx2FmaAvailable() {
 KernelIsa kernelIsa() { return chosen().load(std::memory_order_relaxed); }
 
 bool setKernelIsa(KernelIsa isa) {
-  if (isa == KernelIsa::Avx2Fma && !avx2FmaAvailable()) return false;
+  if (isa == KernelIsa::Avx2 && !avx2Available()) return false;
   chosen().store(isa, std::memory_order_relaxed);
   return true;
 }

@@ -1,7 +1,7 @@
-// The dispatched Hex8 Enhanced kernel (KernelIsa.hpp): its generic x86-64 code and its AVX2 + FMA code
-// give the same force, tangent and internal variables to round-off, and each passes the tangent check
-// by central differences of its own force, so that both are tested on a processor that runs the AVX2
-// one by default.
+// The dispatched Hex8 Enhanced kernel (KernelIsa.hpp): its generic x86-64 code and its AVX2 code give
+// the same force, tangent and internal variables bit for bit (no fused multiply-adds, the same order of
+// every sum), and each passes the tangent check by central differences of its own force, so that both
+// are tested on a processor that runs the AVX2 one by default.
 #include "MechanicsTestUtilities.hpp"
 #include "mechanics/KernelIsa.hpp"
 
@@ -39,27 +39,25 @@ Evaluation evaluateUnder(KernelIsa isa, const ElementKernel& kernel, const Mater
 
 class DispatchedKernel : public ElementMaterial {};
 
-TEST_P(DispatchedKernel, GenericAndAvx2FmaAgreeAndBothMatchCentralDifferences) {
-  if (!avx2FmaAvailable()) GTEST_SKIP() << "this processor (or build) has no AVX2 + FMA";
+TEST_P(DispatchedKernel, GenericAndAvx2GiveTheSameBitsAndBothMatchCentralDifferences) {
+  if (!avx2Available()) GTEST_SKIP() << "this processor (or build) has no AVX2";
   for (const auto& X : sampleElementsOf(*kernel)) {
     const auto u = brickDeformation(X, 1.0);
     const Evaluation generic = evaluateUnder(KernelIsa::Generic, *kernel, *material, X, u);
-    const Evaluation avx2 = evaluateUnder(KernelIsa::Avx2Fma, *kernel, *material, X, u);
+    const Evaluation avx2 = evaluateUnder(KernelIsa::Avx2, *kernel, *material, X, u);
     ASSERT_GT(maxAbs(generic.alpha), 1e-3) << "the enhanced modes are not exercised";
     for (const Evaluation* e : {&generic, &avx2}) {
       EXPECT_LT(maxAbsDifference(e->K, e->Kfd) / maxAbs(e->K), 1e-6);
     }
-    // A fused a·b + c is rounded once instead of twice: the last bits differ, nothing more.
-    const double df = maxAbsDifference(generic.f, avx2.f) / maxAbs(generic.f);
-    const double dK = maxAbsDifference(generic.K, avx2.K) / maxAbs(generic.K);
-    const double da = maxAbsDifference(generic.alpha, avx2.alpha) / maxAbs(generic.alpha);
-    std::printf("[measure] %s / %s generic against AVX2 + FMA: force %.1e, tangent %.1e, alpha %.1e\n",
-                GetParam().element.c_str(), GetParam().material.c_str(), df, dK, da);
-    EXPECT_LT(df, 1e-13);
-    EXPECT_LT(dK, 1e-13);
-    EXPECT_LT(da, 1e-13);
-    // Different code really ran: with fused multiply-adds the tangent cannot come out bit for bit.
-    EXPECT_NE(generic.K, avx2.K);
+    // The same bits: a fused a·b + c (rounded once) would move the last bits, and with them contact
+    // statuses that sit on a knife edge (issue 23, sixth round: edges_ring_jacobian_3d_friction).
+    std::printf("[measure] %s / %s generic against AVX2: force %.1e, tangent %.1e, alpha %.1e\n",
+                GetParam().element.c_str(), GetParam().material.c_str(),
+                maxAbsDifference(generic.f, avx2.f), maxAbsDifference(generic.K, avx2.K),
+                maxAbsDifference(generic.alpha, avx2.alpha));
+    EXPECT_EQ(generic.f, avx2.f);
+    EXPECT_EQ(generic.K, avx2.K);
+    EXPECT_EQ(generic.alpha, avx2.alpha);
   }
 }
 
@@ -71,12 +69,12 @@ std::vector<Case> dispatchedCases() {
 
 INSTANTIATE_TEST_SUITE_P(Hex8EnhancedAllLaws, DispatchedKernel, ::testing::ValuesIn(dispatchedCases()), caseName);
 
-TEST(KernelIsa, Avx2FmaIsRefusedWhereUnavailableAndGenericAlwaysAccepted) {
+TEST(KernelIsa, Avx2IsRefusedWhereUnavailableAndGenericAlwaysAccepted) {
   const KernelIsa before = kernelIsa();
   EXPECT_TRUE(setKernelIsa(KernelIsa::Generic));
   EXPECT_EQ(kernelIsa(), KernelIsa::Generic);
-  EXPECT_EQ(setKernelIsa(KernelIsa::Avx2Fma), avx2FmaAvailable());
-  EXPECT_EQ(kernelIsa(), avx2FmaAvailable() ? KernelIsa::Avx2Fma : KernelIsa::Generic);
+  EXPECT_EQ(setKernelIsa(KernelIsa::Avx2), avx2Available());
+  EXPECT_EQ(kernelIsa(), avx2Available() ? KernelIsa::Avx2 : KernelIsa::Generic);
   setKernelIsa(before);
 }
 
