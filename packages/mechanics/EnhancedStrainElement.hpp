@@ -22,6 +22,7 @@
 
 #include "mechanics/DenseSolve.hpp"
 #include "mechanics/EnhancedStrain.hpp"
+#include "mechanics/KernelIsa.hpp"
 #include "mechanics/Kinematics.hpp"
 #include "mechanics/ShapeKernel.hpp"
 #include "mechanics/SolidOperators.hpp"
@@ -71,54 +72,12 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   /// kMaxLocalIterations or K_αα is singular.
   ElementStatus evaluate(const ElementGeometry& geometry, int element, const double* u, double* state,
                          const Material& material, double* internalForce, double* stiffness) const override {
-    const auto& set = static_cast<const GeometrySet&>(geometry);
-    if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
-    const Geometry& g = set[element];
-    std::array<Matrix<MD>, Q> Fc;  // I + GRAD u, fixed during the local solve
-    for (int q = 0; q < Q; ++q) Fc[q] = compatibleGradient(g, q, u);
-
-    Alpha alpha{}, shift{};
-    if (state) {
-      std::copy(state + kStateAlpha, state + kStateAlpha + NA, alpha.begin());
-      // Warm start: α moves with u like dα/du (from the last tangent), so predict it to first order.
-      // Exactly α when u has not changed since α was converged (a Jacobian after its residual).
-      const double* uAlpha = state + kStateDisplacement;
-      const double* dAlphadU = state + kStateSensitivity;
-      for (int c = 0; c < ND; ++c) {
-        const double du = u[c] - uAlpha[c];
-        if (du == 0.0) continue;
-        for (int m = 0; m < NA; ++m) shift[m] += dAlphadU[m * ND + c] * du;
-      }
-    }
-    PointStates s;
-    Alpha solution = alpha;
-    for (int m = 0; m < NA; ++m) solution[m] += shift[m];
-    const bool tangent = stiffness != nullptr;
-    ElementStatus status = solveLocal(g, Fc, material, tangent, solution, s);
-    if (status != ElementStatus::Ok && shift != Alpha{}) {
-      // The prediction overshot (an inadmissible start or no convergence): start where we would
-      // without it.
-      solution = alpha;
-      status = solveLocal(g, Fc, material, tangent, solution, s);
-    }
-    if (status != ElementStatus::Ok) return status;
-
-    if (internalForce) {
-      std::fill(internalForce, internalForce + ND, 0.0);
-      for (int q = 0; q < Q; ++q)
-        Kinematics::template addDivergence<N>(g.gradients[q].data(), g.hoop.at(q), s.P[q], g.weightedVolume[q],
-                                              internalForce);
-    }
-    std::array<double, NA * ND> W;  // K_αα⁻¹ K_αu, written whole by the condensation (not zeroed: a residual pass never uses it)
-    if (stiffness && !condensedTangent(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), stiffness, W))
-      return ElementStatus::InternalSolveFailed;
-    if (state) {
-      std::copy(solution.begin(), solution.end(), state + kStateAlpha);
-      std::copy(u, u + ND, state + kStateDisplacement);
-      if (stiffness)
-        for (int k = 0; k < NA * ND; ++k) state[kStateSensitivity + k] = -W[k];  // dα/du = −K_αα⁻¹ K_αu
-    }
-    return ElementStatus::Ok;
+#if CONTESSA_KERNEL_AVX2
+    if constexpr (kDispatched)
+      if (kernelIsa() == KernelIsa::Avx2)
+        return evaluateAvx2(geometry, element, u, state, material, internalForce, stiffness);
+#endif
+    return evaluateHere(geometry, element, u, state, material, internalForce, stiffness);
   }
 
   ElementStatus averageCauchyStress(const ElementGeometry& geometry, int element, const double* u,
@@ -169,8 +128,74 @@ class EnhancedStrainElement final : public ShapeKernel<Shape, Kinematics::kHoop>
   // but Q4 Enhanced 8 477 → 10 246 (its 12 × 12 blocks are too small for the halving to outweigh the
   // mirroring and the triangular loops), so 3D only; the revolved 2D kinematics never takes it.
   static constexpr bool kSymmetricPathPays = D == 3 && !Kinematics::kHoop;
+  // Hex8 Enhanced (3D, planar) is also compiled for AVX2 and chosen at run time (KernelIsa.hpp):
+  // about 4× the 2D kernel's work per element, and the largest phase of the 3D tube (issue 23, sixth
+  // round). The 2D kernels stay in the generic instruction set only.
+  static constexpr bool kDispatched = D == 3 && !Kinematics::kHoop;
   static constexpr double kStagnationTolerance = 1e-9;
   static constexpr double kStepTolerance = 1e-14;
+
+  /// The evaluation itself, in the instruction set of the code around it (evaluate dispatches).
+  ElementStatus evaluateHere(const ElementGeometry& geometry, int element, const double* u, double* state,
+                             const Material& material, double* internalForce, double* stiffness) const {
+    const auto& set = static_cast<const GeometrySet&>(geometry);
+    if (!set.valid(element)) return ElementStatus::InadmissibleDeformation;
+    const Geometry& g = set[element];
+    std::array<Matrix<MD>, Q> Fc;  // I + GRAD u, fixed during the local solve
+    for (int q = 0; q < Q; ++q) Fc[q] = compatibleGradient(g, q, u);
+
+    Alpha alpha{}, shift{};
+    if (state) {
+      std::copy(state + kStateAlpha, state + kStateAlpha + NA, alpha.begin());
+      // Warm start: α moves with u like dα/du (from the last tangent), so predict it to first order.
+      // Exactly α when u has not changed since α was converged (a Jacobian after its residual).
+      const double* uAlpha = state + kStateDisplacement;
+      const double* dAlphadU = state + kStateSensitivity;
+      for (int c = 0; c < ND; ++c) {
+        const double du = u[c] - uAlpha[c];
+        if (du == 0.0) continue;
+        for (int m = 0; m < NA; ++m) shift[m] += dAlphadU[m * ND + c] * du;
+      }
+    }
+    PointStates s;
+    Alpha solution = alpha;
+    for (int m = 0; m < NA; ++m) solution[m] += shift[m];
+    const bool tangent = stiffness != nullptr;
+    ElementStatus status = solveLocal(g, Fc, material, tangent, solution, s);
+    if (status != ElementStatus::Ok && shift != Alpha{}) {
+      // The prediction overshot (an inadmissible start or no convergence): start where we would
+      // without it.
+      solution = alpha;
+      status = solveLocal(g, Fc, material, tangent, solution, s);
+    }
+    if (status != ElementStatus::Ok) return status;
+
+    if (internalForce) {
+      std::fill(internalForce, internalForce + ND, 0.0);
+      for (int q = 0; q < Q; ++q)
+        Kinematics::template addDivergence<N>(g.gradients[q].data(), g.hoop.at(q), s.P[q], g.weightedVolume[q],
+                                              internalForce);
+    }
+    std::array<double, NA * ND> W;  // K_αα⁻¹ K_αu, written whole by the condensation (not zeroed: a residual pass never uses it)
+    if (stiffness && !condensedTangent(g, s, kSymmetricPathPays && material.tangentIsSymmetric(), stiffness, W))
+      return ElementStatus::InternalSolveFailed;
+    if (state) {
+      std::copy(solution.begin(), solution.end(), state + kStateAlpha);
+      std::copy(u, u + ND, state + kStateDisplacement);
+      if (stiffness)
+        for (int k = 0; k < NA * ND; ++k) state[kStateSensitivity + k] = -W[k];  // dα/du = −K_αα⁻¹ K_αu
+    }
+    return ElementStatus::Ok;
+  }
+
+#if CONTESSA_KERNEL_AVX2
+  /// evaluateHere compiled for AVX2, with every call but the law's inlined (KernelIsa.hpp).
+  CONTESSA_TARGET_AVX2 ElementStatus evaluateAvx2(const ElementGeometry& geometry, int element, const double* u,
+                                                        double* state, const Material& material, double* internalForce,
+                                                        double* stiffness) const {
+    return evaluateHere(geometry, element, u, state, material, internalForce, stiffness);
+  }
+#endif
 
   static bool computeGeometry(const double* X, Geometry& g) {
     ReferenceGeometry<Shape, Kinematics::kHoop> reference;
