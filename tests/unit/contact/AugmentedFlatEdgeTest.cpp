@@ -17,6 +17,7 @@
 // the unperturbed branch on at least one side of a step of the check's size: the tangent is right, the
 // check's difference crosses a kink (docs/verification-contact.md §12, "The Jacobian check at a flat edge").
 #include "ElementTestTools.hpp"
+#include "FlatEdgeFaces.hpp"
 
 #include "contact/FacetSelector.hpp"
 
@@ -27,19 +28,12 @@
 
 namespace {
 
-using Face = cc::MasterFacetNodes<cc::Quad4Facet>;
-using P3 = Vector<3>;
-
-// The upper block's bottom in the 3D patch test, y = 0 here, outward normal −y (towards the lower block):
-// face A = facet 1 over x ∈ [0.5, 1], z ∈ [0, 0.5]; face B = facet 3 over z ∈ [0.5, 1]. They share the
-// edge z = 0.5 from node 21 (x = 0.5) to node 26 (x = 1, on the free boundary); `lift` moves node 26 in y.
-Face faceA(double lift) {
-  return Face{1, {20, 25, 26, 21}, {P3{0.5, 0, 0}, P3{1, 0, 0}, P3{1, lift, 0.5}, P3{0.5, 0, 0.5}}};
-}
-Face faceB(double lift) {
-  return Face{3, {21, 26, 27, 22}, {P3{0.5, 0, 0.5}, P3{1, lift, 0.5}, P3{1, 0, 1}, P3{0.5, 0, 1}}};
-}
-constexpr int kNode26OnA = 2, kNode26OnB = 1;  // node 26's place in each face
+using flat_edge::Face;
+using flat_edge::faceA;
+using flat_edge::faceB;
+using flat_edge::P3;
+// Node 26 is the shared edge's free end (FlatEdgeFaces.hpp).
+constexpr int kNode26OnA = flat_edge::kFreeEndOnA, kNode26OnB = flat_edge::kFreeEndOnB;
 
 // Slave node 11 where the check met it: 3.3e-3 of the face short of the free end x = 1, on the shared edge
 // z = 0.5, penetrating by 5e-6 mm (y > 0 is inside the upper block).

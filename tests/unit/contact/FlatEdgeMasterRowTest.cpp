@@ -15,6 +15,7 @@
 // difference at the check's step is off by more than the check's bound, the second-order one (with the
 // half step, what the check uses) is not.
 #include "ElementTestTools.hpp"
+#include "FlatEdgeFaces.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,18 +23,12 @@
 
 namespace {
 
-using Face = cc::MasterFacetNodes<cc::Quad4Facet>;
-using P3 = Vector<3>;
-
-// The upper block's bottom in the patch, y = 0 here, outward normal −y: face A over x ∈ [0.5, 1],
-// z ∈ [0, 0.5]; face B over z ∈ [0.5, 1]. The vertex (1, 0, 0.5) — Exodus node 27 — at `lift` in y.
-Face faceA(double lift) {
-  return Face{1, {20, 25, 26, 21}, {P3{0.5, 0, 0}, P3{1, 0, 0}, P3{1, lift, 0.5}, P3{0.5, 0, 0.5}}};
-}
-Face faceB(double lift) {
-  return Face{3, {21, 26, 27, 22}, {P3{0.5, 0, 0.5}, P3{1, lift, 0.5}, P3{1, 0, 1}, P3{0.5, 0, 1}}};
-}
-constexpr int kVertexOnA = 2, kVertexOnB = 1;  // the vertex's place in each face
+using flat_edge::Face;
+using flat_edge::faceA;
+using flat_edge::faceB;
+using flat_edge::P3;
+// The vertex (1, 0, 0.5), Exodus node 27: the shared edge's free end (FlatEdgeFaces.hpp).
+constexpr int kVertexOnA = flat_edge::kFreeEndOnA, kVertexOnB = flat_edge::kFreeEndOnB;
 
 // Slave node 12 just inside the free end x = 1, on the shared edge z = 0.5, penetrating as in the run:
 // by 5e-6 mm with the penalty law (t_N = −1 MPa), by 1e-6 mm with the augmented one (λ_N = −1 MPa on top).

@@ -181,21 +181,8 @@ struct Face {
   }
 };
 
-std::vector<double> faceCoordinates(double penetration) {
-  std::vector<double> x;
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) x.insert(x.end(), {double(i), double(j), 0.0});
-  for (double y : {-0.2, 2.2})
-    for (double xm : {-0.1, 0.7, 2.1}) x.insert(x.end(), {xm, y, -penetration});
-  return x;
-}
-
-// Every node moved a little: warped facets, clip edges inside the slave facets.
-std::vector<double> unevenFace() {
-  std::vector<double> x = faceCoordinates(0.02);
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.013 * std::sin(1.7 * double(i) + 0.4);
-  return x;
-}
+using testing::faceCoordinates;
+using testing::unevenFace;
 
 // The uneven face with its slave nodes slid by `slide` along (1, 0.6) (a little more for higher nodes) and
 // the master by −0.2 slide along x.

@@ -111,4 +111,23 @@ double loadDerivativeCentralDifferenceError(const std::vector<double>& dLambda, 
   return error;
 }
 
+// The 3 × 3-node slave face on z = 0 (nodes 0–8, unit facets) under two master quadrilaterals (nodes 9–14
+// at y = −0.2 and 2.2, x = −0.1, 0.7, 2.1) at z = −penetration: the coordinates of MortarFacetPairTest's
+// and MortarFriction3DTest's face.
+inline std::vector<double> faceCoordinates(double penetration) {
+  std::vector<double> x;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) x.insert(x.end(), {double(i), double(j), 0.0});
+  for (double y : {-0.2, 2.2})
+    for (double xm : {-0.1, 0.7, 2.1}) x.insert(x.end(), {xm, y, -penetration});
+  return x;
+}
+
+// That face with every node moved a little: warped facets, clip edges inside the slave facets.
+inline std::vector<double> unevenFace() {
+  std::vector<double> x = faceCoordinates(0.02);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] += 0.013 * std::sin(1.7 * double(i) + 0.4);
+  return x;
+}
+
 }  // namespace contessa::contact::testing
