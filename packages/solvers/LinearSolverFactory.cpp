@@ -7,6 +7,7 @@
 #include <Stratimikos_MueLuHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_AbstractFactoryStd.hpp>
+#include <Ifpack2_Parameters.hpp>
 #include <Thyra_Ifpack2PreconditionerFactory.hpp>
 #include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
 #include <Thyra_MueLuPreconditionerFactory.hpp>
@@ -37,41 +38,68 @@ void registerSolvers(Stratimikos::DefaultLinearSolverBuilder& builder) {
   Stratimikos::enableMueLu<model::LO, model::GO, model::Node>(builder, "MueLu");
 }
 
+// A text value of parameter `name` converted to the type of `expected` (int, double or bool; other types
+// are left as they are); a value that does not convert is an InputError naming the parameter.
+void typeTextParameter(Teuchos::ParameterList& list, const std::string& name, const Teuchos::ParameterEntry& expected,
+                       const std::string& where) {
+  if (!list.isType<std::string>(name)) return;
+  const std::string text = list.get<std::string>(name);
+  std::size_t used = 0;
+  bool ok = false;
+  try {
+    if (expected.isType<int>()) {
+      const int value = std::stoi(text, &used);
+      ok = used == text.size();
+      if (ok) list.set(name, value);
+    } else if (expected.isType<double>()) {
+      const double value = std::stod(text, &used);
+      ok = used == text.size();
+      if (ok) list.set(name, value);
+    } else if (expected.isType<bool>()) {
+      ok = text == "true" || text == "false";
+      if (ok) list.set(name, text == "true");
+    } else {
+      return;
+    }
+  } catch (const std::exception&) {
+  }
+  if (!ok) throw InputError(where + "/" + name + ": expected " + expected.getAny(false).typeName() + ", got '" + text + "'");
+}
+
+// The sublists MueLu hands to Ifpack2 (its smoothers and a relaxation or Chebyshev coarse solver): their
+// values given by --set are typed by Ifpack2's own list of parameters. A name Ifpack2 does not know is left
+// for the smoother to judge (a coarse direct solver's parameters are Amesos2's).
+void typeIfpack2Parameters(Teuchos::ParameterList& list, const std::string& where) {
+  static const Teuchos::ParameterList valid = [] {
+    Teuchos::ParameterList all;
+    Ifpack2::getValidParameters(all);
+    return all;
+  }();
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string name = list.name(it);
+    if (!list.isSublist(name) && valid.isParameter(name)) typeTextParameter(list, name, valid.getEntry(name), where);
+  }
+}
+
 // MueLu does not type its parameters for Stratimikos: a value given by --set arrives as text. Each
 // text value of a parameter MueLu knows as a number or a flag is converted to that type (MueLu's own
-// list of parameters); a value that does not convert is an InputError naming the parameter.
+// list of parameters), and likewise inside the smoother and coarse-solver sublists by Ifpack2's list; a
+// value that does not convert is an InputError naming the parameter.
 void typeMueLuParameters(Teuchos::ParameterList& list, const std::string& where) {
+  static const std::array<const char*, 4> kIfpack2Sublists = {"smoother: params", "smoother: pre params",
+                                                              "smoother: post params", "coarse: params"};
   const auto master = MueLu::MasterList::List();
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string name = list.name(it);
-    if (list.isSublist(name)) continue;  // "level 1", "smoother: params", ...: MueLu checks them
+    if (list.isSublist(name)) {  // "level 1", "repartition: params", ...: MueLu checks them
+      for (const char* sublist : kIfpack2Sublists)
+        if (name == sublist) typeIfpack2Parameters(list.sublist(name), where + "/" + name);
+      continue;
+    }
     if (!master->isParameter(name))
       throw InputError(where + "/" + name + ": not a MueLu parameter (MueLu's user guide lists them, e.g. 'smoother: type', "
                        "'coarse: max size', 'aggregation: drop tol')");
-    if (!list.isType<std::string>(name)) continue;
-    const std::string text = list.get<std::string>(name);
-    const auto& expected = master->getEntry(name);
-    std::size_t used = 0;
-    bool ok = false;
-    try {
-      if (expected.isType<int>()) {
-        const int value = std::stoi(text, &used);
-        ok = used == text.size();
-        if (ok) list.set(name, value);
-      } else if (expected.isType<double>()) {
-        const double value = std::stod(text, &used);
-        ok = used == text.size();
-        if (ok) list.set(name, value);
-      } else if (expected.isType<bool>()) {
-        ok = text == "true" || text == "false";
-        if (ok) list.set(name, text == "true");
-      } else {
-        continue;
-      }
-    } catch (const std::exception&) {
-    }
-    if (!ok)
-      throw InputError(where + "/" + name + ": expected " + expected.getAny(false).typeName() + ", got '" + text + "'");
+    typeTextParameter(list, name, master->getEntry(name), where);
   }
 }
 
