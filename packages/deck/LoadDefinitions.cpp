@@ -88,6 +88,15 @@ void readBodyForce(const ParameterList& list, const std::string& where, const me
   load.blocks.assign(blocks.begin(), blocks.end());
   if (load.blocks.empty())
     for (const auto& block : mesh.blocks) load.blocks.push_back(block.name);
+  // The body-force kernel integrates over QUAD4 and HEX8 cells only (mechanics/DistributedLoads.hpp): another
+  // cell is bad input, refused here in one line on every rank, not by the model's assembly (exit 1, an MPI abort).
+  for (const auto& name : load.blocks) {
+    const mesh::CellType type = mesh.block(name).cellType;
+    requireInput(type == mesh::CellType::Quad4 || type == mesh::CellType::Hex8,
+                 where + "/Blocks: block '" + name + "' has " + mesh::exodusCellName(type) +
+                     " cells; a Body Force acts on QUAD4 and HEX8 cells only" +
+                     (blocks.empty() ? " (an empty Blocks list means every block)" : ""));
+  }
   load.vector = readVector(list, "Force Per Volume", mesh.dimension, where);
 }
 
