@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""calculix_punch.py RESULTS.exo A D E NU WORKDIR [--ccx PATH]
+"""calculix_punch.py RESULTS.exo A D E NU WORKDIR [--ccx PATH] [--plane-strain]
 
 CalculiX's answer (ccx 2.20, Debian's calculix-ccx) to the rigid flat punch of flat_punch_axisymmetric.xml
 on the identical mesh: the QUAD8 block of the Contessa results file RESULTS.exo (its nodes and cells; the
@@ -10,7 +10,9 @@ those nodes' reactions over the full circumference).
 
 CalculiX's axisymmetric reactions are not per full circumference; the script does not assume its convention:
 a second run on the same mesh pushes the whole top by D (uniaxial stress, exact: F = E D / H pi R^2 on the
-whole circumference) and scales the punch's reactions by that run's exact over computed force (printed)."""
+whole circumference) and scales the punch's reactions by that run's exact over computed force (printed).
+With --plane-strain the section is a plane-strain body of unit thickness instead: CPE8 elements, the exact
+uniaxial force E / (1 - NU^2) D / H R per unit thickness."""
 import os
 import re
 import subprocess
@@ -21,6 +23,8 @@ import numpy as np
 
 exo, a, d, E, nu, work = sys.argv[1], *map(float, sys.argv[2:6]), sys.argv[6]
 ccx = sys.argv[sys.argv.index("--ccx") + 1] if "--ccx" in sys.argv else "ccx"
+plane_strain = "--plane-strain" in sys.argv
+element = "CPE8" if plane_strain else "CAX8"
 ds = netCDF4.Dataset(exo)
 x = np.asarray(ds.variables["coordx"][:])
 y = np.asarray(ds.variables["coordy"][:])
@@ -46,7 +50,7 @@ def node_set(name, nodes):
 def deck(pushed):
     text = ["*NODE"]
     text += [f"{n}, {x[n - 1]:.17g}, {y[n - 1]:.17g}" for n in ids]
-    text.append("*ELEMENT, TYPE=CAX8, ELSET=EALL")
+    text.append(f"*ELEMENT, TYPE={element}, ELSET=EALL")
     text += [f"{e + 1}, " + ", ".join(str(n) for n in c) for e, c in enumerate(cells)]
     text += [node_set("AXIS", axis), node_set("BOTTOM", bottom), node_set("PUSHED", pushed)]
     text += ["*MATERIAL, NAME=M", "*ELASTIC", f"{E:.17g}, {nu:.17g}", "*SOLID SECTION, ELSET=EALL, MATERIAL=M",
@@ -67,9 +71,10 @@ def total_force(job, pushed):
 
 
 R, H = x[ids - 1].max(), ytop - ybottom
-exact_uniaxial = E * d / H * np.pi * R * R
+exact_uniaxial = E / (1 - nu * nu) * d / H * R if plane_strain else E * d / H * np.pi * R * R
 scale = exact_uniaxial / total_force("uniaxial", top)
 force = total_force("punch", punch) * scale
-print(f"CalculiX CAX8: {len(cells)} cells, {len(ids)} nodes, {len(punch)} top nodes at x <= {a:g} pushed by {d:g}")
-print(f"scale to the full circumference {scale:.9g} (2 pi = {2 * np.pi:.9g})")
+print(f"CalculiX {element}: {len(cells)} cells, {len(ids)} nodes, {len(punch)} top nodes at x <= {a:g} pushed by {d:g}")
+print(f"scale to the full circumference {scale:.9g} (2 pi = {2 * np.pi:.9g})" if not plane_strain else
+      f"scale to unit thickness {scale:.9g}")
 print(f"punch force {force:.9g}")

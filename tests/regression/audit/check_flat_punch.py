@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""check_flat_punch.py RESULTS A D E NU [--calculix WORKDIR [--ccx PATH]]
+"""check_flat_punch.py RESULTS A D E NU [--calculix WORKDIR [--ccx PATH]] [--plane-strain]
 
 The rigid flat punch of flat_punch_axisymmetric.xml (radius A pressed D, frictionless, axisymmetric; RESULTS is
 the run's <name>: RESULTS.exo and RESULTS.history.csv). Checks at the last step:
@@ -12,7 +12,9 @@ the run's <name>: RESULTS.exo and RESULTS.history.csv). Checks at the last step:
   - with --calculix: the force against CalculiX's solution of the mixed problem on the identical mesh
     (calculix_punch.py; exit 77, skipped, without ccx), within 1e-5 (measured 2.0e-7: the augmented
     Lagrangian leaves a penetration of 1.4e-9 against D = 0.01, and CalculiX's axisymmetric elements, expanded
-    into a 2-degree wedge, miss the exact uniaxial force by 2.6e-7)."""
+    into a 2-degree wedge, miss the exact uniaxial force by 2.6e-7).
+With --plane-strain (the deck's section as a plane-strain body, Element = Q8) only the comparison with CalculiX
+(CPE8; measured 2.6e-8) and the equilibrium are checked: Boussinesq's axisymmetric profile does not apply."""
 import csv
 import os
 import shutil
@@ -34,10 +36,11 @@ force = -float(row["contact_force_punch_y"])
 reaction = float(row["reaction_bottom_y"])
 ok = True
 rel = abs(reaction - force) / force
-print(f"punch force {force:.9g} (2 a E* d on a half-space: {2 * a * E / (1 - nu * nu) * d:.6g}), "
-      f"bottom reaction {reaction:.9g}: relative {rel:.1e} (<= 1e-8)")
+half_space = "" if "--plane-strain" in sys.argv else f" (2 a E* d on a half-space: {2 * a * E / (1 - nu * nu) * d:.6g})"
+print(f"punch force {force:.9g}{half_space}, bottom reaction {reaction:.9g}: relative {rel:.1e} (<= 1e-8)")
 ok &= rel <= 1e-8
 
+plane_strain = "--plane-strain" in sys.argv
 ds = netCDF4.Dataset(results + ".exo")
 nodal = names(ds, "name_nod_var")
 x = np.asarray(ds.variables["coordx"][:])
@@ -47,8 +50,9 @@ body = ds.dimensions["num_nodes"].size
 inner = np.where((np.abs(y) < 1e-12) & (x > 1e-12) & (x <= 0.5 * a))[0]
 exact = force / (2 * np.pi * a * np.sqrt(a * a - x[inner] ** 2))
 ratio = p[inner] / exact
-print(f"p / Boussinesq at {len(inner)} top nodes 0 < r <= a/2: {ratio.min():.4f} to {ratio.max():.4f} (within 3 %)")
-ok &= len(inner) >= 5 and np.all(np.abs(ratio - 1) <= 0.03)
+print(("(not checked in plane strain) " if plane_strain else "") + f"p / Boussinesq at {len(inner)} top nodes 0 < r <= a/2: {ratio.min():.4f} to {ratio.max():.4f} (within 3 %)")
+if not plane_strain:
+    ok &= len(inner) >= 5 and np.all(np.abs(ratio - 1) <= 0.03)
 
 if "--calculix" in sys.argv:
     work = sys.argv[sys.argv.index("--calculix") + 1]
@@ -58,7 +62,7 @@ if "--calculix" in sys.argv:
         sys.exit(77)
     here = os.path.dirname(os.path.abspath(__file__))
     out = subprocess.run([sys.executable, os.path.join(here, "calculix_punch.py"), results + ".exo", str(a), str(d),
-                          str(E), str(nu), work, "--ccx", ccx], check=True, capture_output=True, text=True).stdout
+                          str(E), str(nu), work, "--ccx", ccx] + (["--plane-strain"] if plane_strain else []), check=True, capture_output=True, text=True).stdout
     print(out, end="")
     reference = float(out.split("punch force")[-1])
     rel = abs(force - reference) / reference
