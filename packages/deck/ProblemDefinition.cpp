@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include <Teuchos_Array.hpp>
@@ -315,6 +316,26 @@ std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& sp
   return out;
 }
 
+// A revolved 3-node edge weighs its corner on the axis by ∫ H_i 2πr ds = 0 (user guide, "Contact on quadratic
+// axisymmetric sections"): that slave node carries no contact force, and its contact_pressure is not a
+// pressure. Said once per interface, so that no one reads Hertz's p0 off it.
+void warnWeightlessAxisNodes(const contact::ContactSurface& slave, const SurfaceCoordinates& coordinates,
+                             const std::string& set, const std::string& where) {
+  std::size_t count = 0;
+  GlobalIndex first = -1;
+  for (std::size_t k = 0; k < slave.nodes.size(); ++k)  // r within round-off of the axis
+    if (std::abs(coordinates.at(slave.nodes[k])[0]) <= 1e-9 * slave.facetLengths[k] && count++ == 0)
+      first = slave.nodes[k];
+  if (count == 0) return;
+  std::fprintf(stderr,
+               "contessa: warning: %s/Slave Side Set '%s': %zu node(s) on the axis (first: node %lld) of 3-node edges "
+               "carry no contact weight (their ring's integral of H 2 pi r is 0): the contact force is right, but "
+               "their contact_pressure is not a pressure; read the peak from the nodes next to the axis, or use Q4 "
+               "elements there (user guide, axisymmetric models)\n",
+               where.c_str(), set.c_str(), count, static_cast<long long>(first) + 1);
+  std::fflush(stderr);
+}
+
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
                                                         const mesh::DistributedMesh& part,
                                                         SurfaceCoordinates& coordinates, bool revolved) {
@@ -353,6 +374,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.slaveAreas = slave.areas;
   if (spec.mortar && mesh.dimension == 3 && slave.nodesPerFacet >= 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
+  if (revolved && slave.nodesPerFacet == 3 && part.rank == 0) warnWeightlessAxisNodes(slave, coordinates, slaveSet, where);
   if (rigid) {
     requireInput(!in.twoPass, where + "/Two Pass: a rigid master has no slave side of its own");
     requireInput(in.smoothing == InterfaceParameters::Smoothing::None,
