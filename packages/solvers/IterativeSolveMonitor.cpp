@@ -54,8 +54,10 @@ class MonitoredLinearOpWithSolve : public LOWS {
     timers::Scope timed(timers::Phase::IterativeSolve);
     const double tolerance = krylovForcing().takeTolerance(limits_.tolerance, rhsNorm(B));
     const bool tightened = tolerance < limits_.tolerance;
-    // ‖r‖ ≤ η ‖b‖: the forcing term's measure. Thyra sets it (tolerance and "Norm of RHS" scaling) on the
-    // Belos solver for this solve; with a zero initial guess (NOX's) it is the deck's scaling.
+    // ‖r‖ ≤ η ‖b‖: the forcing term's measure. Thyra sets it on the Belos solver (the tolerance for this
+    // solve; the "Norm of RHS" scaling stays for later ones): with GMRES preconditioned on the right, as
+    // Stratimikos does by default, it differs from Belos' default scaling (the initial residual) only when
+    // the initial guess is not zero.
     const Thyra::SolveCriteria<double> criteria(
         Thyra::SolveMeasureType(Thyra::SOLVE_MEASURE_NORM_RESIDUAL, Thyra::SOLVE_MEASURE_NORM_RHS), tolerance);
     const auto status = inner_->solve(t, B, X, tightened ? Teuchos::ptrFromRef(criteria) : Teuchos::null);
