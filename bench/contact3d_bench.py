@@ -2,6 +2,7 @@
 """3D contact at 10^5–10^6 unknowns: a block pressed by a rigid punch (inputs/punch_3d.xml).
 
     /usr/bin/python3 bench/contact3d_bench.py [--sizes 40 58 86] [--ranks 1 2] [--work DIR] [--contessa PATH]
+        [--forcing "Newton Target" Constant] [--repeat 3]
 
 The deck is a quarter block of Hex8 (n x n x n/2 elements, 3 (n+1)^2 (n/2+1) unknowns: n = 40, 58, 86
 give 1.06e5, 3.13e5 and 9.99e5) pressed by a rigid square punch covering part of its top face,
@@ -19,12 +20,18 @@ near-null space). For each size and rank count it prints one Markdown row:
   a refused re-set-up; the first set-up not counted) / reused (aggregates and P kept) / skipped (values
   unchanged);
 - the 2-rank answer against one rank's (compare_history.py, 1e-8 relative on every history column but
-  the solver counts).
+  the solver counts);
+- with --forcing, one row set per Krylov forcing term (Piro/NOX/Direction/Forcing Term: "Newton Target",
+  the default, or "Constant", the deck's tolerance for every solve), and with --repeat R each run R times
+  (interleaved) with the CPU time (user + system of every rank, getrusage of the children) as the median
+  and the range; the wall and phase columns are the first run's.
 
 Tools: /usr/bin/python3 (standard library), mpiexec. Times depend on the machine's load (printed).
 The global contact search alone, for 10^4–10^6 slave nodes, is build/bin/contact_search_bench.
 """
 import os
+import resource
+import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -46,9 +53,18 @@ def unknowns(n):
     return 3 * (n + 1) ** 2 * (n // 2 + 1)
 
 
-def run(contessa, n, ranks, work):
+def run(contessa, n, ranks, work, forcing=None, repeat=0):
+    """One timed run; its "cpu" is the user + system time of contessa on every rank (the children's rusage)."""
     sets = [f"Problem/Mesh/Elements {axis}={count}" for axis, count in (("X", n), ("Y", n), ("Z", n // 2))]
-    return timed_run(contessa, DECK, ranks, os.path.join(work, f"n{n}_np{ranks}"), sets)
+    name = f"n{n}_np{ranks}"
+    if forcing:
+        sets.append(f"Piro/NOX/Direction/Forcing Term={forcing}")
+        name += "_" + forcing.replace(" ", "")
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r = timed_run(contessa, DECK, ranks, os.path.join(work, f"{name}_{repeat}"), sets)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return r
 
 
 def setups(summary):
@@ -68,36 +84,50 @@ def main():
     parser = bench_arguments(__doc__)
     parser.add_argument("--sizes", type=int, nargs="+", default=[40, 58, 86])
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--forcing", nargs="+", default=[None], help='Forcing Term values, e.g. "Newton Target" Constant')
+    parser.add_argument("--repeat", type=int, default=1)
     args = parser.parse_args()
     work = work_directory(args, "contact3d_bench_")
-    print_table_header(["n", "unknowns", "ranks", "slave / contact nodes", "punch force [N]", "Newton it.", "Krylov it./solve",
+    print_table_header(["n", "unknowns", "ranks", "forcing term", "CPU [s] median (range)", "slave / contact nodes", "punch force [N]", "Newton it.", "Krylov it./solve (total)",
                         "wall [s]", "per Newton it. [s]", "preconditioner set-up [s]", "Krylov [s]", "contact [s]",
                         "elements + assembly [s]", "set-up [s]", "peak memory: largest rank / sum [MiB]",
                         "MueLu set-ups started over / reused / skipped", "answer vs 1 rank"])
     for n in args.sizes:
-        reference = None
-        for ranks in args.ranks:
-            r = run(args.contessa, n, ranks, work)
-            s = r.get("summary")
-            if r["status"] != 0 or s is None:
-                print(f"| {n} | {unknowns(n)} | {ranks} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) ||||||||||||||")
-                continue
-            history = os.path.join(r["out"], "punch_3d.history.csv")
-            answer = "reference" if reference is None else history_difference(reference, history)
-            reference = reference or history
-            phase = {k: sum(r["phases"].get(p, 0.0) for p in v) for k, v in PHASES.items()}
-            krylov = s["linear_iterations"] / max(s["linear_solves"], 1)
-            memory = s["peak_memory_bytes"]
-            slaves = (n + 1) ** 2
-            contacts = int(float(last_row(history)["active_contacts"]))
-            force = -float(last_row(history)["contact_force_punch_z"])
-            print(f"| {n} | {unknowns(n)} | {ranks} | {slaves} / {contacts} | {force:.1f} | {s['newton_iterations']} | {krylov:.1f} | "
-                  f"{s['wall_seconds']:.1f} | {s['wall_seconds'] / max(s['newton_iterations'], 1):.2f} | "
-                  f"{phase['preconditioner set-up']:.1f} | {phase['Krylov iterations']:.1f} | {phase['contact']:.2f} | {phase['elements + assembly']:.1f} | "
-                  f"{phase['set-up']:.1f} | {memory['max'] / 2**20:.0f} / {sum(memory['per_rank']) / 2**20:.0f} | "
-                  f"{setups(s)} | {answer} |",
-                  flush=True)
+        cases = [(ranks, forcing) for forcing in args.forcing for ranks in args.ranks]
+        runs = {case: [] for case in cases}
+        for repeat in range(args.repeat):  # interleaved, so that the machine's load falls on every case alike
+            for ranks, forcing in cases:
+                runs[(ranks, forcing)].append(run(args.contessa, n, ranks, work, forcing, repeat))
+        references = {}
+        for ranks, forcing in cases:
+            print_row(n, ranks, forcing, runs[(ranks, forcing)], references)
 
+
+def print_row(n, ranks, forcing, runs, references):
+    r = runs[0]
+    s = r.get("summary")
+    label = forcing or "deck default"
+    if any(x["status"] != 0 or x.get("summary") is None for x in runs):
+        print(f"| {n} | {unknowns(n)} | {ranks} | {label} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) ||||||||||||||")
+        return
+    cpus = [x["cpu"] for x in runs]
+    cpu = f"{statistics.median(cpus):.1f} ({min(cpus):.1f}-{max(cpus):.1f})" if len(cpus) > 1 else f"{cpus[0]:.1f}"
+    history = os.path.join(r["out"], "punch_3d.history.csv")
+    reference = references.setdefault(forcing, history)
+    answer = "reference" if reference == history else history_difference(reference, history)
+    phase = {k: sum(r["phases"].get(p, 0.0) for p in v) for k, v in PHASES.items()}
+    krylov = s["linear_iterations"] / max(s["linear_solves"], 1)
+    memory = s["peak_memory_bytes"]
+    slaves = (n + 1) ** 2
+    contacts = int(float(last_row(history)["active_contacts"]))
+    force = -float(last_row(history)["contact_force_punch_z"])
+    print(f"| {n} | {unknowns(n)} | {ranks} | {label} | {cpu} | {slaves} / {contacts} | {force:.1f} | {s['newton_iterations']} | "
+          f"{krylov:.1f} ({s['linear_iterations']}) | "
+          f"{s['wall_seconds']:.1f} | {s['wall_seconds'] / max(s['newton_iterations'], 1):.2f} | "
+          f"{phase['preconditioner set-up']:.1f} | {phase['Krylov iterations']:.1f} | {phase['contact']:.2f} | {phase['elements + assembly']:.1f} | "
+          f"{phase['set-up']:.1f} | {memory['max'] / 2**20:.0f} / {sum(memory['per_rank']) / 2**20:.0f} | "
+          f"{setups(s)} | {answer} |",
+          flush=True)
 
 if __name__ == "__main__":
     main()

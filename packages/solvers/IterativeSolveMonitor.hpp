@@ -4,7 +4,10 @@
 //
 // The wrapped solver is given no solve criteria of its own caller's: NOX would otherwise impose its
 // "Linear Solver/Tolerance" (1e-6 by default) over the deck's Belos "Convergence Tolerance". The deck's
-// tolerance governs, so what a user writes is what runs.
+// tolerance governs, so what a user writes is what runs, except that a Newton step whose linear residual
+// at that tolerance could exceed a tenth of the Newton target is solved to a tighter one (the forcing term
+// of KrylovForcing.hpp, Piro/NOX/Direction/Forcing Term); a tightened solve that stops between the two
+// tolerances is accepted.
 //
 // A solve that stops at Maximum Iterations without reaching the tolerance throws (as a failed MUMPS
 // factorization does): NOX would otherwise "rescue" the unconverged direction and carry on, and a poor

@@ -15,7 +15,8 @@ enum class NoxPrinting {
 };
 
 /// Fills `nox` (the sublist "NOX" of LOCA's or Piro's list): the solver, direction and line search of the
-/// deck, `observer` on every solve, NOX's errors (and, without Newton Details, its output) into
+/// deck, `observer` on every solve (after the Krylov forcing term's observer, KrylovForcing.hpp, whose
+/// choice and Newton target it sets from the deck's Direction and Status Tests), NOX's errors (and, without Newton Details, its output) into
 /// `messages` for the one-line stop message, and exceptions of an evaluation caught (the solve fails,
 /// not the run).
 void setNoxParameters(Teuchos::ParameterList& nox, const Teuchos::ParameterList& deckNox,

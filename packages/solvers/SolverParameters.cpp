@@ -88,6 +88,10 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setChoice(nox, "Nonlinear Solver", "Line Search Based", {"Line Search Based"}, "NOX solver");
   auto& direction = nox.sublist("Direction", false, "Search direction");
   deck::setChoice(direction, "Method", "Newton", {"Newton"}, "Full Newton with the consistent tangent");
+  deck::setChoice(direction, "Forcing Term", "Newton Target", {"Newton Target", "Constant"},
+                  "Krylov tolerance of each Newton step (iterative solvers): Newton Target tightens a step whose "
+                  "linear residual at the Belos Convergence Tolerance could exceed a tenth of the Newton target "
+                  "(at most 100 times tighter); Constant: the Convergence Tolerance for every solve");
   auto& lineSearch = nox.sublist("Line Search", false, "Globalisation");
   deck::setChoice(lineSearch, "Method", "Full Step", {"Full Step", "Backtrack", "Polynomial"}, "NOX line search");
   auto& tests = nox.sublist("Status Tests", false, "Newton convergence: converged when any of the three tests holds");
