@@ -23,7 +23,8 @@ table is printed: Newton iterations, contact evaluations (the timer's count: res
 the median contact-phase time ("contact: search, elements, scatter": search, every slave node's term,
 scatter into the matrix), that time per evaluation, per slave node and evaluation and per Newton
 iteration, mortar over node-to-segment per evaluation and per Newton iteration (the two discretisations
-need different numbers of iterations), and the median total wall time.
+need different numbers of iterations), the median total wall time and the median CPU time of the whole
+process (user + system, from the children's resource usage: what the run cost, whatever the machine's load).
 
 With --callgrind each variant runs once under valgrind's callgrind, counting the instructions executed
 inside ContactAssembly::assemble (the same contact phase; independent of the machine's load, about 50x
@@ -42,6 +43,7 @@ report unwinds the DWARF stacks, minutes per run on a loaded machine.
 import argparse
 import os
 import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -106,7 +108,10 @@ def run(contessa, work, case, discretization, mu, index, callgrind=False, max_va
         cmd = ["valgrind", "--tool=callgrind", "--collect-atstart=no",
                "--toggle-collect=contessa::model::ContactAssembly::assemble*",
                f"--callgrind-out-file={profile}", *cmd]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     p = subprocess.run(cmd, capture_output=True, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)  # the run's own CPU seconds
     if p.returncode not in (0, 3):  # 3: a deck's own check of its own answer failed (above)
         sys.exit(f"{' '.join(cmd)} exited with {p.returncode}:\n{p.stderr[-2000:]}")
     if callgrind:
@@ -123,8 +128,8 @@ def run(contessa, work, case, discretization, mu, index, callgrind=False, max_va
     if contact is None or total is None or newton is None:
         sys.exit(f"no timer table or Newton count in the output of {' '.join(cmd)}")
     if perf:
-        return contact_cpu_seconds(samples), contact[1], total, newton
-    return (instructions if callgrind else contact[0]), contact[1], total, newton
+        return contact_cpu_seconds(samples), contact[1], total, newton, cpu
+    return (instructions if callgrind else contact[0]), contact[1], total, newton, cpu
 
 
 def main():
@@ -156,21 +161,22 @@ def main():
           f"search, every slave node's term, scatter ({clock}); {CASE_NOTES}\n")
     print("| case | friction | discretisation | Newton | contact evaluations | contact s | ms / evaluation "
           "| µs / (slave node · evaluation) | ms / Newton iteration | mortar / NTS per evaluation "
-          "| mortar / NTS per Newton iteration | total s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "| mortar / NTS per Newton iteration | total s | process CPU s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     per_eval, per_newton = {}, {}
     for v in variants:
         rows = results[v]
         contact = statistics.median(r[0] for r in rows)
         evaluations, newton = rows[0][1], rows[0][3]
         total = statistics.median(r[2] for r in rows)
+        cpu = statistics.median(r[4] for r in rows)
         per_eval[v] = contact / evaluations
         per_newton[v] = contact / newton
         base = (v[0], "Node To Segment", v[2])
         name = v[1] if v[0] == "2d" or v[1] == "Mortar" else "Node To Face"
         print(f"| {v[0]} | {v[2]:g} | {name} | {newton} | {evaluations} | {contact:.4f} | {1e3 * per_eval[v]:.3f} "
               f"| {1e6 * per_eval[v] / CASES[v[0]]['slave_nodes']:.2f} | {1e3 * per_newton[v]:.3f} "
-              f"| {per_eval[v] / per_eval[base]:.2f} | {per_newton[v] / per_newton[base]:.2f} | {total:.2f} |")
+              f"| {per_eval[v] / per_eval[base]:.2f} | {per_newton[v] / per_newton[base]:.2f} | {total:.2f} | {cpu:.2f} |")
 
 
 def print_instructions(variants, results, max_value):
@@ -181,7 +187,7 @@ def print_instructions(variants, results, max_value):
           "| mortar / NTS per Newton iteration |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for v in variants:
-        instructions, evaluations, _, newton = results[v][0]
+        instructions, evaluations, _, newton, _ = results[v][0]
         base = results[(v[0], "Node To Segment", v[2])][0]
         name = v[1] if v[0] == "2d" or v[1] == "Mortar" else "Node To Face"
         print(f"| {v[0]} | {v[2]:g} | {name} | {newton} | {evaluations} | {instructions / 1e6:.1f} "

@@ -68,11 +68,13 @@ std::vector<PlanePoint<T>> clipConvexPolygon(std::vector<PlanePoint<T>> subject,
     const PlanePoint<T> edge = clip[(e + 1) % clip.size()] - a;
     const double tolerance = snap * std::hypot(valueOf(edge.x), valueOf(edge.y));
     const std::size_t n = subject.size();
-    std::vector<T> d(n, T(0.0));
+    // The sides on the values (the numbers' own values: planeCross of the values, to the bit); the
+    // differentiated distances only at a crossing, where they enter the clip vertex.
+    const double ex = valueOf(edge.x), ey = valueOf(edge.y);
+    const auto distance = [&](std::size_t i) { return planeCross(edge, subject[i] - a); };
     side.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
-      d[i] = planeCross(edge, subject[i] - a);
-      const double v = valueOf(d[i]);
+      const double v = ex * (valueOf(subject[i].y) - valueOf(a.y)) - ey * (valueOf(subject[i].x) - valueOf(a.x));
       side[i] = v < -tolerance ? -1 : (v > tolerance ? 1 : 0);
     }
     const auto onLine = [&](std::size_t i, std::size_t j) { return side[i] == 0 && side[j] == 0; };
@@ -86,7 +88,10 @@ std::vector<PlanePoint<T>> clipConvexPolygon(std::vector<PlanePoint<T>> subject,
       // of an edge lying on the line (that end is the crossing).
       const bool crossing = (side[p] < 0) != (side[q] < 0) &&
                             !(side[q] == 0 && onLine(q, (q + 1) % n)) && !(side[p] == 0 && onLine((p + n - 1) % n, p));
-      if (crossing) kept.push_back(P + scaled(Q - P, d[p] / (d[p] - d[q])));
+      if (crossing) {
+        const T dp = distance(p), dq = distance(q);
+        kept.push_back(P + scaled(Q - P, dp / (dp - dq)));
+      }
       if (side[q] >= 0) kept.push_back(Q);
     }
     subject.swap(kept);

@@ -337,6 +337,26 @@ KernelVariables<C> rigidBodyVariables(int first, int count, const double* motion
   return v;
 }
 
+/// Whether a rigid body's motion is zero (count entries): a motionless rigid master (the block's base),
+/// whose coordinates then carry no derivative at all.
+inline bool motionless(const double* motion, int count) {
+  for (int i = 0; i < count; ++i)
+    if (motion[i] != 0.0) return false;
+  return true;
+}
+/// The coordinates [first, first + count) those of a motionless rigid body: no variable of theirs (the
+/// others their own, in order), V = C − count. The entries of a moving body's motion variable would hold
+/// the derivatives along a zero motion, zeros: they are zeros here too, and every other entry is computed
+/// by the same operations on the same numbers (a HessianDual's entries do not mix variables), so the
+/// derivatives are the same to the bit, at (V/(V + 1))² of the Hessians' cost.
+template <int C>
+KernelVariables<C> motionlessBodyVariables(int first, int count) {
+  const std::array<double, C> zero{};
+  KernelVariables<C> v = rigidBodyVariables<C>(first, count, zero.data());
+  v.motionEntry = -1;
+  return v;
+}
+
 /// A pair kernel's weighted gaps differentiated twice: `integrate` (the kernel on HessianDual coordinates,
 /// returning overlaps, weightedGap and mortarArea per slave slot) evaluated with every coordinate its own
 /// variable, or, given a rigid master's motion (its entries from FirstMaster on), with the master along that
@@ -359,6 +379,8 @@ Derivatives differentiatePairKernel(const std::array<double, N>& x, const double
     return out;
   };
   if (masterMotion == nullptr) return differentiate(std::integral_constant<int, C>{}, ownVariables<C>());
+  if (motionless(masterMotion, FirstMaster))
+    return differentiate(std::integral_constant<int, FirstMaster>{}, motionlessBodyVariables<C>(FirstMaster, FirstMaster));
   return differentiate(std::integral_constant<int, FirstMaster + 1>{},
                        rigidBodyVariables<C>(FirstMaster, FirstMaster, masterMotion));
 }

@@ -51,6 +51,121 @@ Point3<T> tangentialSlip(const FacetMap<T>& slaveMap, const FacetMap<T>& masterM
   return motion - times(n, dot(motion, n));
 }
 
+/// Whether the fused Gauss-point kernel below applies to a pair: a Quad4 slave whose monomial terms are
+/// linear in the variables (the seeded nodes' combinations: zero Hessians) and a master whose point is
+/// x_0 + η_1 x_η1 + η_2 x_η2 with constant x_η (a rigid master, moved by a translation) and a fixed normal
+/// (FacetMap::fixedNormal): the block and the tube on their rigid bases. Values (T = double) never.
+template <class T>
+bool fusedGaussPoints(const LinearFacet<T>&, const FacetMap<T>&, const FacetMap<T>&) {
+  return false;
+}
+template <int V>
+bool fusedGaussPoints(const LinearFacet<HessianDual<V>>& slave, const FacetMap<HessianDual<V>>& slaveMap,
+                      const FacetMap<HessianDual<V>>& masterMap) {
+  const auto linear = [](const Point3<HessianDual<V>>& p) {
+    for (const HessianDual<V>* c : {&p.x, &p.y, &p.z})
+      for (double d : c->h)
+        if (d != 0.0) return false;
+    return true;
+  };
+  bool slaveTerms = slave.count == 4 && slaveMap.twisted;
+  for (int k = 0; k < 4; ++k) slaveTerms = slaveTerms && !slaveMap.fixed[k] && linear(slaveMap.term[k]);
+  return slaveTerms && !masterMap.twisted && masterMap.fixed[1] && masterMap.fixed[2] && linear(masterMap.term[0]) &&
+         masterMap.fixedNormal();
+}
+
+/// One Gauss point's term of the differentiated weighted gaps, g̃_a += N_a(ξ) (w |T| A_0/A_p) g (eq. M17),
+/// where fusedGaussPoints holds: the same operations as the generic path (FacetMap::at for x_s(ξ) and
+/// x_m(η), g = (x_s − x_m) · n_m with n_m fixed, LinearFacet::shape, the products of HessianDual.hpp), entry
+/// by entry of the gradient and the packed Hessian, in the same order, so the same bits (bar the signs of
+/// zeros: the terms dropped are the products with the linear terms' zero Hessians). One pass over the
+/// entries instead of some thirty HessianDual temporaries of N(N+1)/2 entries each.
+/// `gapValue`: g at the point (the doubles'); `slaveValue`/`masterValue`: x_s, x_m's values.
+template <int V>
+void addFusedGaussPoint(const FacetMap<HessianDual<V>>& slaveMap, const FacetMap<HessianDual<V>>& masterMap,
+                        const std::array<HessianDual<V>, 2>& xi, const std::array<HessianDual<V>, 2>& eta,
+                        const Point3<double>& normal, double gapValue, const HessianDual<V>& triangleMeasure,
+                        double ruleWeight, double weight, std::array<HessianDual<V>, kMortarFacetNodes>& sum) {
+  using H = HessianDual<V>;
+  const H& s = xi[0];
+  const H& t = xi[1];
+  const double n[3] = {normal.x, normal.y, normal.z};
+  const auto component = [](const Point3<H>& p, int c) -> const H& { return c == 0 ? p.x : (c == 1 ? p.y : p.z); };
+  const auto value = [](const Point3<double>& p, int c) { return c == 0 ? p.x : (c == 1 ? p.y : p.z); };
+  // Gradients: P = ξ η; per coordinate the slave terms T_k and the master's x_0 and constant x_η.
+  const double pv = s.v * t.v;
+  std::array<double, V> pg, dg[3], gapG, wg, wgG;
+  for (int i = 0; i < V; ++i) pg[i] = t.v * s.g[i] + s.v * t.g[i];
+  const H* term[3][4];
+  double m1[3], m2[3];
+  for (int c = 0; c < 3; ++c) {
+    for (int k = 0; k < 4; ++k) term[c][k] = &component(slaveMap.term[k], c);
+    const H& m0 = component(masterMap.term[0], c);
+    m1[c] = value(masterMap.termValue[1], c);
+    m2[c] = value(masterMap.termValue[2], c);
+    const H &t0 = *term[c][0], &t1 = *term[c][1], &t2 = *term[c][2], &t3 = *term[c][3];
+    for (int i = 0; i < V; ++i) {
+      const double x = ((t0.g[i] + (s.v * t1.g[i] + t1.v * s.g[i])) + (t.v * t2.g[i] + t2.v * t.g[i])) +
+                       (pv * t3.g[i] + t3.v * pg[i]);
+      const double y = (m0.g[i] + eta[0].g[i] * m1[c]) + eta[1].g[i] * m2[c];
+      dg[c][i] = x - y;
+    }
+  }
+  for (int i = 0; i < V; ++i) {
+    gapG[i] = (dg[0][i] * n[0] + dg[1][i] * n[1]) + dg[2][i] * n[2];
+    wg[i] = triangleMeasure.g[i] * ruleWeight;
+    wgG[i] = gapValue * wg[i] + weight * gapG[i];
+  }
+  const double wgV = weight * gapValue;
+  // The shape functions N_a = (0.25 (1 ± ξ)) (1 ± η) (LinearFacet::shape): B = 0.25 (1 ± ξ), C = 1 ± η.
+  constexpr double kSign[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  double bv[4], cv[4], nv[4];
+  std::array<double, V> bg[4], cg[4], ng[4];
+  for (int a = 0; a < 4; ++a) {
+    const bool minusXi = kSign[a][0] < 0, minusEta = kSign[a][1] < 0;
+    bv[a] = (minusXi ? -s.v + 1.0 : s.v + 1.0) * 0.25;
+    cv[a] = minusEta ? -t.v + 1.0 : t.v + 1.0;
+    nv[a] = bv[a] * cv[a];
+    for (int i = 0; i < V; ++i) {
+      bg[a][i] = (minusXi ? -s.g[i] : s.g[i]) * 0.25;
+      cg[a][i] = minusEta ? -t.g[i] : t.g[i];
+      ng[a][i] = cv[a] * bg[a][i] + bv[a] * cg[a][i];
+    }
+    H& r = sum[a];
+    r.v = r.v + nv[a] * wgV;
+    for (int i = 0; i < V; ++i) r.g[i] = r.g[i] + (wgV * ng[a][i] + nv[a] * wgG[i]);
+  }
+  // The packed Hessian, entry (i, j ≥ i) at k.
+  int k = 0;
+  for (int i = 0; i < V; ++i) {
+    const double si = s.g[i], ti = t.g[i], pi = pg[i], wi = wg[i], gi = gapG[i], wgi = wgG[i];
+    double ti1[3], ti2[3], ti3[3];
+    for (int c = 0; c < 3; ++c) ti1[c] = term[c][1]->g[i], ti2[c] = term[c][2]->g[i], ti3[c] = term[c][3]->g[i];
+    double bi[4], ci[4], ni[4];
+    for (int a = 0; a < 4; ++a) bi[a] = bg[a][i], ci[a] = cg[a][i], ni[a] = ng[a][i];
+    for (int j = i; j < V; ++j, ++k) {
+      const double sh = s.h[k], th = t.h[k];
+      const double ph = ((t.v * sh + s.v * th) + si * t.g[j]) + ti * s.g[j];
+      double d[3];
+      for (int c = 0; c < 3; ++c) {
+        const H &t1 = *term[c][1], &t2 = *term[c][2], &t3 = *term[c][3];
+        const double r1 = (t1.v * sh + ti1[c] * s.g[j]) + si * t1.g[j];
+        const double r2 = (t2.v * th + ti2[c] * t.g[j]) + ti * t2.g[j];
+        const double r3 = (t3.v * ph + ti3[c] * pg[j]) + pi * t3.g[j];
+        d[c] = ((r1 + r2) + r3) - (eta[0].h[k] * m1[c] + eta[1].h[k] * m2[c]);
+      }
+      const double gh = (d[0] * n[0] + d[1] * n[1]) + d[2] * n[2];
+      const double wh = triangleMeasure.h[k] * ruleWeight;
+      const double wgh = ((gapValue * wh + weight * gh) + wi * gapG[j]) + gi * wg[j];
+      for (int a = 0; a < 4; ++a) {
+        const double bh = (kSign[a][0] < 0 ? -sh : sh) * 0.25, ch = kSign[a][1] < 0 ? -th : th;
+        const double nh = ((cv[a] * bh + bv[a] * ch) + bi[a] * cg[a][j]) + ci[a] * bg[a][j];
+        sum[a].h[k] = sum[a].h[k] + (((wgV * nh + nv[a] * wgh) + ni[a] * wgG[j]) + wgi * ng[a][j]);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 template <class T>
@@ -83,6 +198,8 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
   // A master normal without derivatives (FacetMap::fixedNormal): its value at every Gauss point is
   // LinearFacet's formula's, and the gap's derivatives are those of the products with the constant.
   const bool fixedNormal = masterMap.fixedNormal();
+  // The fused Gauss-point kernel where it applies (a rigid master: the block's and the tube's bases).
+  const bool fused = fusedGaussPoints(slave, slaveMap, masterMap);
   std::array<double, kMortarFacetNodes> weightedGap{}, mortarArea{};
   std::array<T, kMortarFacetNodes> differentiated{};  // the weighted gaps' derivatives (T not double)
   for (std::size_t i = 0; i < clip.size(); ++i) {
@@ -102,11 +219,15 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
       }
       if constexpr (!std::is_same_v<T, double>) {
         const Point3<double> normal = masterMap.valueNormal(etaValue);
-        const std::array<T, kMortarFacetNodes> nodeShape = slave.shape(xi[0], xi[1]);
-        const Point3<T> d = slaveMap.at(xi) - masterMap.at(eta);
-        const T gap = fixedNormal ? d.x * normal.x + d.y * normal.y + d.z * normal.z : dot(d, masterMap.unitNormal(eta));
-        const T weightedG = withValue(q.weight * triangleMeasure, weight) * gap;
-        for (int a = 0; a < slave.count; ++a) differentiated[a] = differentiated[a] + nodeShape[a] * weightedG;
+        if (fused) {
+          addFusedGaussPoint(slaveMap, masterMap, xi, eta, normal, g, triangleMeasure, q.weight, weight, differentiated);
+        } else {
+          const std::array<T, kMortarFacetNodes> nodeShape = slave.shape(xi[0], xi[1]);
+          const Point3<T> d = slaveMap.at(xi) - masterMap.at(eta);
+          const T gap = fixedNormal ? d.x * normal.x + d.y * normal.y + d.z * normal.z : dot(d, masterMap.unitNormal(eta));
+          const T weightedG = withValue(q.weight * triangleMeasure, weight) * gap;
+          for (int a = 0; a < slave.count; ++a) differentiated[a] = differentiated[a] + nodeShape[a] * weightedG;
+        }
       }
       if (committed != nullptr) {  // eq. M9′: Δũ_a += w N_a(ξ) u_T, in T (values and derivatives alike)
         const Point3<T> u = tangentialSlip(slaveMap, masterMap, slave, master, xi, eta, *committed);
@@ -164,6 +285,9 @@ MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<doubl
   constexpr int kFirstMaster = 3 * kMortarFacetNodes;
   if (committed != nullptr) {
     if (masterMotion == nullptr) return differentiateWithSlip<kN>(x, referenceArea, shape, *committed, ownVariables<kN>());
+    if (motionless(masterMotion, kFirstMaster))
+      return differentiateWithSlip<kFirstMaster>(x, referenceArea, shape, *committed,
+                                                 motionlessBodyVariables<kN>(kFirstMaster, kFirstMaster));
     return differentiateWithSlip<kFirstMaster + 1>(x, referenceArea, shape, *committed,
                                                    rigidBodyVariables<kN>(kFirstMaster, kFirstMaster, masterMotion));
   }

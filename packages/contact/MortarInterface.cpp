@@ -251,6 +251,10 @@ class MortarInterface final : public ContactInterfaceBase {
                                                       const PairNodes& pair, int facet) const;
   void addPair(WeightedGap& w, int end, const std::array<double, Layout::kCoordinates>& x, const PairNodes& pair,
                int facet, const SlipBasis& basis) const;
+  /// A pair's weighted gap's gradient and Hessian (the kernel's, row-major) into node k's (`to`: the support
+  /// index of each of the kernel's coordinates, −1 where unused).
+  template <class Support>
+  void addGapDerivatives(WeightedGap& w, const double* gradient, const double* hessian, const Support& to) const;
   /// A pair's slip increments' derivatives into node k's components (`to`: the support index of each of
   /// the kernel's coordinates, −1 where unused).
   template <class Derivatives, class Support>
@@ -517,14 +521,34 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
   // Support index of each kernel coordinate (−1: unused).
   std::array<int, m> to{};
   for (int i = 0; i < m; ++i) to[i] = at[i / kDim] < 0 ? -1 : kDim * at[i / kDim] + i % kDim;
-  for (int i = 0; i < m; ++i) {
-    if (to[i] < 0) continue;
-    w.gradient[to[i]] += g.gradient[end][i];
-    for (int j = 0; j < m; ++j)
-      if (to[j] >= 0) w.hessian[to[i] * n + to[j]] += g.hessian[end][i * m + j];
-  }
+  addGapDerivatives(w, g.gradient[end].data(), g.hessian[end].data(), to);
   if constexpr (Layout::kSlipEntries > 0) {
     if (slips) addSlipDerivatives(w, end, g, basis, to);
+  }
+}
+
+template <class F>
+template <class Support>
+void MortarInterface<F>::addGapDerivatives(WeightedGap& w, const double* gradient, const double* hessian,
+                                           const Support& to) const {
+  // The kernel's coordinates that carry derivatives: the used ones, of a rigid master only its first
+  // entry (the derivatives along the motion; facetPairDerivatives and segmentPairDerivatives leave its
+  // other entries zero). The zeros left out would add nothing (bar the signs of zero sums): a rigid
+  // master's pair scatters (m/3 + 1)² entries instead of m².
+  constexpr int m = Layout::kCoordinates;
+  constexpr int kMotionEntry = kDim * Layout::kFirstMaster;
+  std::array<int, m> carried{};
+  int count = 0;
+  for (int i = 0; i < m; ++i) {
+    const bool rigidZero = spec_.rigidMaster && i > kMotionEntry && i < kDim * (Layout::kFirstMaster + Layout::kMasterNodes);
+    if (to[i] >= 0 && !rigidZero) carried[count++] = i;
+  }
+  const int n = w.size();
+  for (int a = 0; a < count; ++a) {
+    const int i = carried[a];
+    w.gradient[to[i]] += gradient[i];
+    double* row = &w.hessian[static_cast<std::size_t>(to[i]) * n];
+    for (int b = 0; b < count; ++b) row[to[carried[b]]] += hessian[i * m + carried[b]];
   }
 }
 

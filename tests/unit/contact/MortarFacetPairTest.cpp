@@ -191,6 +191,40 @@ TEST(MortarFacetPair, ARigidMasterIsDifferentiatedAlongItsMotion) {
   }
 }
 
+TEST(MortarFacetPair, AFlatRigidMasterGivesTheDeformableMastersSlaveDerivativesAndAMotionlessOneTheMovingOnes) {
+  // A warped slave facet half under a flat master: with the master rigid, the kernel takes its fused
+  // Gauss-point path (MortarFacetPair.cpp, addFusedGaussPoint) and, motionless, 12 variables instead of 13.
+  // The slave entries are the deformable master's (the generic path) to round-off, a motionless master's
+  // are a moving one's to the bit, and a motionless master's own entries are zeros.
+  FacetPairCoordinates<double> x = flatPair(0.3, 1.7, -0.2, 1.5, -0.01);
+  const double warp[12] = {0.01, 0.02, 0.003, -0.02, 0.01, -0.004, 0.03, -0.01, 0.002, 0.0, 0.02, -0.001};
+  for (int i = 0; i < 12; ++i) x[i] += warp[i];
+  std::array<double, 12> still{}, motion{};
+  for (int b = 0; b < 4; ++b) motion[3 * b] = 0.3, motion[3 * b + 1] = 0.1, motion[3 * b + 2] = -0.5;
+  const MortarFacetPairDerivatives full = facetPairDerivatives(x, 0.9);
+  const MortarFacetPairDerivatives moving = facetPairDerivatives(x, 0.9, {}, motion.data());
+  const MortarFacetPairDerivatives fixed = facetPairDerivatives(x, 0.9, {}, still.data());
+  ASSERT_TRUE(full.overlaps && moving.overlaps && fixed.overlaps);
+  for (int a = 0; a < 4; ++a) {
+    double scale = 0;
+    for (double v : full.hessian[a]) scale = std::max(scale, std::abs(v));
+    EXPECT_GT(scale, 1e-3);
+    EXPECT_EQ(fixed.weightedGap[a], full.weightedGap[a]);
+    for (int i = 0; i < 12; ++i) {
+      EXPECT_NEAR(fixed.gradient[a][i], full.gradient[a][i], 1e-14) << a << ", " << i;
+      EXPECT_EQ(fixed.gradient[a][i], moving.gradient[a][i]) << a << ", " << i;
+      for (int j = 0; j < 12; ++j) {
+        EXPECT_NEAR(fixed.hessian[a][i * kM + j], full.hessian[a][i * kM + j], 1e-13 * scale) << a << ", " << i << ", " << j;
+        EXPECT_EQ(fixed.hessian[a][i * kM + j], moving.hessian[a][i * kM + j]) << a << ", " << i << ", " << j;
+      }
+    }
+    for (int i = 12; i < kM; ++i) {
+      EXPECT_EQ(fixed.gradient[a][i], 0.0);
+      for (int j = 0; j < kM; ++j) EXPECT_EQ(fixed.hessian[a][i * kM + j], 0.0);
+    }
+  }
+}
+
 TEST(MortarFacetPair, TheClipVerticesAreDifferentiatedToo) {
   // Moving a master node sideways moves the clip polygon's edge: the weighted gaps owe it the edge term
   // g N_a ∂(clip)/∂x_m, not zero for a flat parallel pair whose gap is uniform (no other dependence on x_m's
