@@ -34,7 +34,7 @@ void copyLocalGraph(const CrsGraph& graph, std::vector<std::size_t>& begin, std:
 }  // namespace
 
 StiffnessScatter::StiffnessScatter(const RCP<const CrsGraph>& ownedGraph, const RCP<const Map>& overlapMap,
-                                   const std::vector<std::vector<LO>>& overlapRows)
+                                   const OverlapCouplings& overlapRows)
     : ownedGraph_(ownedGraph), overlapMap_(overlapMap) {
   const auto& rowMap = *ownedGraph_->getRowMap();
   const auto& colMap = *ownedGraph_->getColMap();
@@ -50,7 +50,7 @@ StiffnessScatter::StiffnessScatter(const RCP<const CrsGraph>& ownedGraph, const 
     ownedCol_[r] = c == Teuchos::OrdinalTraits<LO>::invalid() ? kNone : c;
     if (ownedRow_[r] == Teuchos::OrdinalTraits<LO>::invalid()) {
       ownedRow_[r] = kNone;
-      if (!overlapRows[r].empty()) {
+      if (overlapRows.rowSize(r) > 0) {
         ghostRow_[r] = static_cast<LO>(ghostIds.size());
         ghostIds.push_back(g);
       }
@@ -67,11 +67,11 @@ StiffnessScatter::StiffnessScatter(const RCP<const CrsGraph>& ownedGraph, const 
     auto ghostMap = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(ghostIds), 0, comm));
     std::vector<std::size_t> counts;
     for (LO r = 0; r < numOverlap; ++r)
-      if (ghostRow_[r] != kNone) counts.push_back(overlapRows[r].size());
+      if (ghostRow_[r] != kNone) counts.push_back(overlapRows.rowSize(r));
     auto ghostGraph = rcp(new CrsGraph(ghostMap, overlapMap_, Teuchos::ArrayView<const std::size_t>(counts)));
     for (LO r = 0; r < numOverlap; ++r)
       if (ghostRow_[r] != kNone)
-        ghostGraph->insertLocalIndices(ghostRow_[r], Teuchos::ArrayView<const LO>(overlapRows[r]));
+        ghostGraph->insertLocalIndices(ghostRow_[r], Teuchos::ArrayView<const LO>(overlapRows.row(r), overlapRows.rowSize(r)));
     ghostGraph->fillComplete(ownedGraph_->getDomainMap(), ownedGraph_->getRangeMap());
     copyLocalGraph(*ghostGraph, ghostRowBegin_, ghostColumns_);
     ghostMatrix_ = rcp(new CrsMatrix(ghostGraph));
