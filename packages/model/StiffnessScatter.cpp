@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -105,8 +106,29 @@ void StiffnessScatter::addElement(const int* dofs, int n) {
   elementPositionBegin_.push_back(elementPositions_.size());
   elementSize_.push_back(n);
   elementDofs_.insert(elementDofs_.end(), dofs, dofs + n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) elementPositions_.push_back(position(dofs[i], dofs[j]));
+  // The element's columns in increasing local column: each owned row then finds all of them in one
+  // forward pass over its sorted columns instead of a binary search per entry (this is most of the set-up
+  // of a scatter). Ghost rows, and a column the row lacks, go through position() (which names it).
+  columnOrder_.resize(static_cast<std::size_t>(n));
+  std::iota(columnOrder_.begin(), columnOrder_.end(), 0);
+  std::sort(columnOrder_.begin(), columnOrder_.end(), [&](int a, int b) { return ownedCol_[dofs[a]] < ownedCol_[dofs[b]]; });
+  const std::size_t base = elementPositions_.size();
+  elementPositions_.resize(base + static_cast<std::size_t>(n) * n);
+  for (int i = 0; i < n; ++i) {
+    int* out = elementPositions_.data() + base + static_cast<std::size_t>(i) * n;
+    const LO r = ownedRow_[dofs[i]];
+    if (r == kNone) {
+      for (int j = 0; j < n; ++j) out[j] = position(dofs[i], dofs[j]);
+      continue;
+    }
+    std::size_t k = rowBegin_[r];
+    const std::size_t end = rowBegin_[r + 1];
+    for (int j : columnOrder_) {
+      const LO c = ownedCol_[dofs[j]];
+      while (k < end && columns_[k] < c) ++k;
+      out[j] = k < end && columns_[k] == c ? static_cast<int>(k) : position(dofs[i], dofs[j]);
+    }
+  }
 }
 
 void StiffnessScatter::beginPass() {

@@ -82,6 +82,7 @@ class StiffnessScatter {
   };
   std::unordered_map<LO, CachedBlock> blocks_;
   std::vector<int> scratch_;
+  std::vector<int> columnOrder_;  // addElement's columns by local column
 };
 
 }  // namespace contessa::model
