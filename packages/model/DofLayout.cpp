@@ -1,6 +1,7 @@
 #include "model/DofLayout.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 
 #include <Tpetra_Details_makeColMap.hpp>
@@ -160,8 +161,10 @@ void DofLayout::buildGraph(const OverlapCouplings& rows) {
       received->getGlobalRowView(ownedMap_->getGlobalElement(o), fromOthers);
       for (std::size_t k = 0; k < fromOthers.extent(0); ++k) columns.push_back(colMap->getLocalElement(fromOthers(k)));
     }
+    // Strictly increasing already where the local columns keep the global order and no other rank
+    // added to the row; otherwise sorted, and a column both gave kept once.
     const auto first = columns.begin() + static_cast<std::ptrdiff_t>(begin);
-    if (!std::is_sorted(first, columns.end())) {
+    if (std::adjacent_find(first, columns.end(), std::greater_equal<LO>()) != columns.end()) {
       std::sort(first, columns.end());
       columns.erase(std::unique(first, columns.end()), columns.end());
     }
