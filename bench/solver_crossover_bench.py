@@ -14,7 +14,8 @@ with Belos GMRES + MueLu (Contessa's defaults for both), the variants interleave
 Prints per case the median CPU seconds (user + system, /usr/bin/time: the whole process, start-up and
 set-up included), the Newton iterations, the CPU per Newton iteration, the Krylov iterations per linear
 solve, the factorisations (MUMPS) or MueLu set-ups skipped, and per case the ratio MUMPS / Belos of the
-CPU (above 1: Belos + MueLu is the cheaper).
+CPU (above 1: Belos + MueLu is the cheaper); then per case the ratios per run and per Newton iteration and
+which solver is the cheaper by each.
 
 The punch's Jacobian changes only with its contact set (a linear solid and a flat rigid punch): Jacobians
 equal to the last one reuse MUMPS' factors or MueLu's set-up, which a nonlinear solid (the tube) does not
@@ -95,6 +96,24 @@ def main():
         ratio = f"{pair[0] / pair[1]:.2f}" if None not in pair and solver != "MUMPS" else ""
         print(f"| {label}{flag} | {unknowns} | {solver} | {newton} | {cpu:.2f} | {cpu / max(newton, 1):.3f} | {krylov} | "
               f"{reuse} | {ratio} |")
+    print_crossover(results, medians)
+
+
+def print_crossover(results, medians):
+    """Per case, which solver is the cheaper per run and per Newton iteration (the two measures an automatic
+    choice can serve: a deck's whole run, or the cost of one iteration whatever the iteration counts)."""
+    print("\n| case | unknowns | MUMPS / Belos CPU per run | MUMPS / Belos CPU per Newton it. | cheaper per run | "
+          "cheaper per Newton it. |")
+    print("|---|---:|---:|---:|---|---|")
+    for label, unknowns in dict.fromkeys((lab, n) for lab, n, _ in results):
+        runs = [results.get((label, unknowns, x)) for x in SOLVERS]
+        if None in runs:
+            continue
+        cpu = [medians[(label, unknowns, x)] for x in SOLVERS]
+        per_it = [c / max(r[-1][1]["newton_iterations"], 1) for c, r in zip(cpu, runs)]
+        names = list(SOLVERS)
+        print(f"| {label} | {unknowns} | {cpu[0] / cpu[1]:.2f} | {per_it[0] / per_it[1]:.2f} | "
+              f"{names[0] if cpu[0] <= cpu[1] else names[1]} | {names[0] if per_it[0] <= per_it[1] else names[1]} |")
 
 
 if __name__ == "__main__":

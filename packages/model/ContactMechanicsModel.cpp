@@ -84,17 +84,13 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
 ContactMechanicsModel::~ContactMechanicsModel() = default;
 
 void ContactMechanicsModel::buildGraph() const {
-  // Element couplings, gathered per overlapped row, and the contact couplings reserved by search; the
-  // owned graph receives them through the exporter.
-  std::vector<std::vector<LO>> rows(layout_->numOverlapDofs());
-  const std::size_t numElements = elementDofBegin_.size() - 1;
-  for (std::size_t e = 0; e < numElements; ++e) {
-    const int* dofs = elementDofs_.data() + elementDofBegin_[e];
-    const int n = static_cast<int>(elementDofBegin_[e + 1] - elementDofBegin_[e]);
-    for (int i = 0; i < n; ++i) rows[dofs[i]].insert(rows[dofs[i]].end(), dofs, dofs + n);
-  }
-  contact_->addReservedCouplings(rows);
+  // Element couplings and the contact couplings reserved by search, gathered per overlapped row; the
+  // owned graph receives them, shared rows from each rank that holds them.
+  std::vector<std::vector<LO>> contactRows(layout_->numOverlapDofs());
+  contact_->addReservedCouplings(contactRows);
+  const auto rows = OverlapCouplings::gather(layout_->numOverlapDofs(), elementDofs_, elementDofBegin_, contactRows);
   layout_->buildGraph(rows);
+  const std::size_t numElements = elementDofBegin_.size() - 1;
   // Where each element's stiffness goes in the Jacobian's values, once per graph (the element loop visits
   // the elements in the same order at every pass).
   scatter_ = std::make_unique<StiffnessScatter>(layout_->ownedGraph(), layout_->overlapMap(), rows);

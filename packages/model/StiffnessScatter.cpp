@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -34,7 +35,7 @@ void copyLocalGraph(const CrsGraph& graph, std::vector<std::size_t>& begin, std:
 }  // namespace
 
 StiffnessScatter::StiffnessScatter(const RCP<const CrsGraph>& ownedGraph, const RCP<const Map>& overlapMap,
-                                   const std::vector<std::vector<LO>>& overlapRows)
+                                   const OverlapCouplings& overlapRows)
     : ownedGraph_(ownedGraph), overlapMap_(overlapMap) {
   const auto& rowMap = *ownedGraph_->getRowMap();
   const auto& colMap = *ownedGraph_->getColMap();
@@ -50,7 +51,7 @@ StiffnessScatter::StiffnessScatter(const RCP<const CrsGraph>& ownedGraph, const 
     ownedCol_[r] = c == Teuchos::OrdinalTraits<LO>::invalid() ? kNone : c;
     if (ownedRow_[r] == Teuchos::OrdinalTraits<LO>::invalid()) {
       ownedRow_[r] = kNone;
-      if (!overlapRows[r].empty()) {
+      if (overlapRows.rowSize(r) > 0) {
         ghostRow_[r] = static_cast<LO>(ghostIds.size());
         ghostIds.push_back(g);
       }
@@ -67,11 +68,11 @@ StiffnessScatter::StiffnessScatter(const RCP<const CrsGraph>& ownedGraph, const 
     auto ghostMap = rcp(new Map(invalid, Teuchos::ArrayView<const GO>(ghostIds), 0, comm));
     std::vector<std::size_t> counts;
     for (LO r = 0; r < numOverlap; ++r)
-      if (ghostRow_[r] != kNone) counts.push_back(overlapRows[r].size());
+      if (ghostRow_[r] != kNone) counts.push_back(overlapRows.rowSize(r));
     auto ghostGraph = rcp(new CrsGraph(ghostMap, overlapMap_, Teuchos::ArrayView<const std::size_t>(counts)));
     for (LO r = 0; r < numOverlap; ++r)
       if (ghostRow_[r] != kNone)
-        ghostGraph->insertLocalIndices(ghostRow_[r], Teuchos::ArrayView<const LO>(overlapRows[r]));
+        ghostGraph->insertLocalIndices(ghostRow_[r], Teuchos::ArrayView<const LO>(overlapRows.row(r), overlapRows.rowSize(r)));
     ghostGraph->fillComplete(ownedGraph_->getDomainMap(), ownedGraph_->getRangeMap());
     copyLocalGraph(*ghostGraph, ghostRowBegin_, ghostColumns_);
     ghostMatrix_ = rcp(new CrsMatrix(ghostGraph));
@@ -105,8 +106,29 @@ void StiffnessScatter::addElement(const int* dofs, int n) {
   elementPositionBegin_.push_back(elementPositions_.size());
   elementSize_.push_back(n);
   elementDofs_.insert(elementDofs_.end(), dofs, dofs + n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) elementPositions_.push_back(position(dofs[i], dofs[j]));
+  // The element's columns in increasing local column: each owned row then finds all of them in one
+  // forward pass over its sorted columns instead of a binary search per entry (this is most of the set-up
+  // of a scatter). Ghost rows, and a column the row lacks, go through position() (which names it).
+  columnOrder_.resize(static_cast<std::size_t>(n));
+  std::iota(columnOrder_.begin(), columnOrder_.end(), 0);
+  std::sort(columnOrder_.begin(), columnOrder_.end(), [&](int a, int b) { return ownedCol_[dofs[a]] < ownedCol_[dofs[b]]; });
+  const std::size_t base = elementPositions_.size();
+  elementPositions_.resize(base + static_cast<std::size_t>(n) * n);
+  for (int i = 0; i < n; ++i) {
+    int* out = elementPositions_.data() + base + static_cast<std::size_t>(i) * n;
+    const LO r = ownedRow_[dofs[i]];
+    if (r == kNone) {
+      for (int j = 0; j < n; ++j) out[j] = position(dofs[i], dofs[j]);
+      continue;
+    }
+    std::size_t k = rowBegin_[r];
+    const std::size_t end = rowBegin_[r + 1];
+    for (int j : columnOrder_) {
+      const LO c = ownedCol_[dofs[j]];
+      while (k < end && columns_[k] < c) ++k;
+      out[j] = k < end && columns_[k] == c ? static_cast<int>(k) : position(dofs[i], dofs[j]);
+    }
+  }
 }
 
 void StiffnessScatter::beginPass() {

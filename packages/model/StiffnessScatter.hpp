@@ -13,16 +13,17 @@
 #include <unordered_map>
 #include <vector>
 
+#include "model/DofLayout.hpp"
 #include "model/TpetraTypes.hpp"
 
 namespace contessa::model {
 
 class StiffnessScatter {
  public:
-  /// `overlapRows[r]`: the columns (overlapped local DOFs) of overlapped row r; the rows this rank
+  /// `overlapRows.row(r)`: the columns (overlapped local DOFs) of overlapped row r; the rows this rank
   /// owns must be in `ownedGraph` (fill complete, sorted), the others become ghost rows.
   StiffnessScatter(const Teuchos::RCP<const CrsGraph>& ownedGraph, const Teuchos::RCP<const Map>& overlapMap,
-                   const std::vector<std::vector<LO>>& overlapRows);
+                   const OverlapCouplings& overlapRows);
 
   /// Set-up: records an element's DOFs (overlapped local numbering), in the order the element loop
   /// visits the elements, and computes where its n × n block goes.
@@ -81,6 +82,7 @@ class StiffnessScatter {
   };
   std::unordered_map<LO, CachedBlock> blocks_;
   std::vector<int> scratch_;
+  std::vector<int> columnOrder_;  // addElement's columns by local column
 };
 
 }  // namespace contessa::model

@@ -33,8 +33,10 @@ struct ProblemSize {
 };
 
 /// The largest problems the automatic choice gives to the direct solver (MUMPS); larger ones get Belos
-/// GMRES + MueLu. 3D: the crossover measured on the 3D punch, where MUMPS with METIS' ordering and MueLu
-/// cost the same per Newton iteration at 1.5·10^4 unknowns (bench/README.md, "Issue 23"). 2D: the 2D
+/// GMRES + MueLu. 3D: decided per Newton iteration (the choice is made before the first Jacobian, so not
+/// for one run's reuse of repeated Jacobians), measured on the 3D punch: the two within 6 % from 7.8·10^3
+/// to 1.9·10^4 unknowns where Jacobians repeat, Belos + MueLu 1.9× cheaper at 1.5·10^4 where every
+/// Jacobian is new (bench/README.md, "Issue 23, seventh round"). 2D: the 2D
 /// factor grows as N^1.2 in entries and N^1.66 in operations (the tube refined, bench/README.md), so MUMPS
 /// stays the cheaper and the more robust for penalty contact far longer (docs/user-guide.md, "Linear solver").
 inline constexpr long long kDirectSolverLimit2D = 500000;
