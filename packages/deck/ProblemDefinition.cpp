@@ -319,41 +319,39 @@ std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& sp
 // A revolved 3-node edge weighs its corner on the axis by ∫ H_i 2πr ds = 0 (user guide, "Contact on quadratic
 // axisymmetric sections"): that slave node carries no contact force, and its contact_pressure is not a
 // pressure. Said once per interface, so that no one reads Hertz's p0 off it.
-void warnWeightlessAxisNodes(const contact::ContactSurface& slave, const SurfaceCoordinates& coordinates,
-                             const std::string& set, const std::string& where) {
+std::string weightlessAxisNodes(const contact::ContactSurface& slave, const SurfaceCoordinates& coordinates,
+                                const std::string& set, const std::string& where) {
   std::size_t count = 0;
   GlobalIndex first = -1;
   for (std::size_t k = 0; k < slave.nodes.size(); ++k)  // r within round-off of the axis
     if (std::abs(coordinates.at(slave.nodes[k])[0]) <= 1e-9 * slave.facetLengths[k] && count++ == 0)
       first = slave.nodes[k];
-  if (count == 0) return;
-  std::fprintf(stderr,
-               "contessa: warning: %s/Slave Side Set '%s': %zu node(s) on the axis (first: node %lld) of 3-node edges "
-               "carry no contact weight (their ring's integral of H 2 pi r is 0): the contact force is right, but "
-               "their contact_pressure is not a pressure; read the peak from the nodes next to the axis, or use Q4 "
-               "elements there (user guide, axisymmetric models)\n",
-               where.c_str(), set.c_str(), count, static_cast<long long>(first) + 1);
-  std::fflush(stderr);
+  if (count == 0) return "";
+  return "contessa: warning: " + where + "/Slave Side Set '" + set + "': " + std::to_string(count) +
+         " node(s) on the axis (first: node " + std::to_string(static_cast<long long>(first) + 1) +
+         ") of 3-node edges carry no contact weight (their ring's integral of H 2 pi r is 0): the contact force is "
+         "right, but their contact_pressure is not a pressure; read the peak from the nodes next to the axis, or use "
+         "Q4 elements there (user guide, axisymmetric models)";
 }
 
 // Node-to-face contact on TRI6 or QUAD8 slave faces cannot pass the patch test: their consistent corner weights
 // are 0 or negative, the sub-facet weights that replace them are not the loads of a uniform pressure (user
 // guide, "Contact surfaces"). The audit measured a pressed Hex20 block's force 3.9 % below CalculiX C3D20 and
 // the Dirichlet solution; Hertz on Tet10 reads its peak 6–8 % high. Mortar does not have the defect.
-void warnSerendipitySlaveFaces(int nodesPerFacet, const std::string& set, const std::string& where) {
-  if (nodesPerFacet != 6 && nodesPerFacet != 8) return;
-  std::fprintf(stderr,
-               "contessa: warning: %s/Slave Side Set '%s' has %s faces: node-to-face contact on them does not pass "
-               "the patch test (%s); Discretization = Mortar does (user guide, contact surfaces)\n",
-               where.c_str(), set.c_str(), nodesPerFacet == 6 ? "TRI6" : "QUAD8",
-               nodesPerFacet == 6 ? "their corner nodes carry almost no force: Hertz's peak pressure on Tet10 reads 6-8 % high"
-                                  : "their corners open: a Hex20 block pressed by a rigid base reads its force 3.9 % low");
-  std::fflush(stderr);
+std::string serendipitySlaveFaces(int nodesPerFacet, const std::string& set, const std::string& where) {
+  if (nodesPerFacet != 6 && nodesPerFacet != 8) return "";
+  const bool tri6 = nodesPerFacet == 6;
+  return "contessa: warning: " + where + "/Slave Side Set '" + set + "' has " + (tri6 ? "TRI6" : "QUAD8") +
+         " faces: node-to-face contact on them does not pass the patch test (" +
+         (tri6 ? "their corner nodes carry almost no force: Hertz's peak pressure on Tet10 reads 6-8 % high"
+               : "their corners open: a Hex20 block pressed by a rigid base reads its force 3.9 % low") +
+         "); Discretization = Mortar does (user guide, contact surfaces)";
 }
 
 std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& list, const std::string& name,
                                                         const mesh::DistributedMesh& part,
-                                                        SurfaceCoordinates& coordinates, bool revolved) {
+                                                        SurfaceCoordinates& coordinates, bool revolved,
+                                                        std::vector<std::string>& warnings) {
   const mesh::Mesh& mesh = part.local();
   const std::string where = "Problem/Contact/" + name;
   contact::ContactInterfaceSpec spec;
@@ -389,8 +387,8 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.slaveAreas = slave.areas;
   if (spec.mortar && mesh.dimension == 3 && slave.nodesPerFacet >= 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
-  if (revolved && slave.nodesPerFacet == 3 && part.rank == 0) warnWeightlessAxisNodes(slave, coordinates, slaveSet, where);
-  if (!spec.mortar && mesh.dimension == 3 && part.rank == 0) warnSerendipitySlaveFaces(slave.nodesPerFacet, slaveSet, where);
+  if (revolved && slave.nodesPerFacet == 3) warnings.push_back(weightlessAxisNodes(slave, coordinates, slaveSet, where));
+  if (!spec.mortar && mesh.dimension == 3) warnings.push_back(serendipitySlaveFaces(slave.nodesPerFacet, slaveSet, where));
   if (rigid) {
     requireInput(!in.twoPass, where + "/Two Pass: a rigid master has no slave side of its own");
     requireInput(in.smoothing == InterfaceParameters::Smoothing::None,
@@ -658,10 +656,10 @@ void readOutput(const ParameterList& output, const mesh::Mesh& mesh, ProblemDefi
 
 // Contact interfaces and the reference coordinates of their surface nodes (collective: the surfaces are
 // gathered from every rank's part).
-void buildContacts(ParameterList& contactList, ProblemDefinition& def) {
+void buildContacts(ParameterList& contactList, ProblemDefinition& def, std::vector<std::string>& warnings) {
   SurfaceCoordinates surfaceCoordinates;
   for (const auto& name : validateChildren(contactList, contactValidFor, "Problem/Contact")) {
-    auto passes = buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates, def.axisymmetric);
+    auto passes = buildContact(contactList.sublist(name), name, def.mesh, surfaceCoordinates, def.axisymmetric, warnings);
     setAutomaticPenalties(passes, contactList.sublist(name), def.mesh, def.blocks);  // no Normal Penalty given
     for (auto& spec : passes) def.contacts.push_back(std::move(spec));
   }
@@ -704,7 +702,8 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
   def.nodalForces = buildNodalForces(problem.sublist("Nodal Forces"), mesh);
   def.loads = buildLoads(problem.sublist("Loads"), mesh);
   readOutput(problem.sublist("Output"), mesh, def);
-  buildContacts(problem.sublist("Contact"), def);
+  std::vector<std::string> warnings;  // said once the whole problem is valid: a bad deck gets its one error line
+  buildContacts(problem.sublist("Contact"), def, warnings);
   def.history = buildHistoryRequests(problem.sublist("Output").sublist("History"), def);
   def.regression = buildRegression(problem.sublist("Regression"));
   def.loadSteps = buildLoadSteps(problem.sublist("Load Steps"), def);
@@ -714,6 +713,9 @@ ProblemDefinition buildProblem(ParameterList& problem, const std::string& deckDi
                      (check.loadStep == 0 || check.step == -1),
                  "Problem/Regression/" + check.name + "/Load Step: expected 0 or a load step of Problem/Load Steps (1 to " +
                      std::to_string(def.loadSteps.size()) + "), without Step, got " + std::to_string(check.loadStep));
+  for (const auto& warning : warnings)
+    if (!warning.empty() && def.mesh.rank == 0) std::fprintf(stderr, "%s\n", warning.c_str());
+  std::fflush(stderr);
   return def;
 }
 
