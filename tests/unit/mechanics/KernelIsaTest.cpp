@@ -1,7 +1,8 @@
 // The dispatched Hex8 Enhanced kernel (KernelIsa.hpp): its generic x86-64 code and its AVX2 code give
 // the same force, tangent and internal variables bit for bit (no fused multiply-adds, the same order of
 // every sum), and each passes the tangent check by central differences of its own force, so that both
-// are tested on a processor that runs the AVX2 one by default.
+// are tested on a processor that runs the AVX2 one by default; likewise every law's dispatched 3D point
+// loop (MaterialLaw::atPointsAvx2).
 #include "MechanicsTestUtilities.hpp"
 #include "mechanics/KernelIsa.hpp"
 
