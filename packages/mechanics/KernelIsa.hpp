@@ -4,9 +4,10 @@
 // (EnhancedStrainElement.hpp, kDispatched) is therefore compiled twice, once as the rest of the program
 // and once for AVX2 (GCC's target attribute, everything it calls inlined into it), and each evaluation
 // picks one here at run time. The same binary runs on any x86-64 and operates on four doubles at once
-// where the processor can (bench/README.md, issue 23 sixth round). The two give the same bits: Hex8.cpp
-// is compiled without contraction into fused multiply-adds (CMakeLists.txt), and vectorisation keeps
-// the order of every sum.
+// where the processor can (bench/README.md, issue 23 sixth round). Every law's 3D point loop is
+// dispatched the same way (Material.hpp, MaterialLaw::atPointsAvx2; seventh round), since the kernel
+// calls it virtually. The two give the same bits: Hex8.cpp and the laws' files are compiled without
+// contraction into fused multiply-adds (CMakeLists.txt), and vectorisation keeps the order of every sum.
 //
 // CONTESSA_KERNEL_ISA=generic in the environment keeps the generic code on any processor (a run to
 // compare against); CONTESSA_KERNEL_ISA=avx2 or unset chooses by the processor.

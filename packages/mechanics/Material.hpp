@@ -7,6 +7,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "mechanics/KernelIsa.hpp"
 #include "mechanics/Tensor.hpp"
 
 namespace contessa::mechanics {
@@ -62,6 +63,12 @@ class MaterialLaw : public Material {
     return atPoints<2>(count, F, P, A);
   }
   bool firstPiolaKirchhoffAtPoints(int count, const Matrix<3>* F, Matrix<3>* P, Tangent<3>* A) const final {
+#if CONTESSA_KERNEL_AVX2
+    // The 3D point loop is dispatched like Hex8 Enhanced's evaluation (KernelIsa.hpp), which calls it
+    // through this virtual function and so could not inline it into its own AVX2 code: the law was
+    // a quarter of that kernel's instructions, in SSE2 (bench/README.md, issue 23 seventh round).
+    if (kernelIsa() == KernelIsa::Avx2) return atPointsAvx2(count, F, P, A);
+#endif
     return atPoints<3>(count, F, P, A);
   }
   /// Every law of this package derives P from a stored energy (the small-strain one for Linear
@@ -76,6 +83,15 @@ class MaterialLaw : public Material {
       if (!law().template stress<D>(F[q], P[q], A ? A + q : nullptr)) return false;
     return true;
   }
+#if CONTESSA_KERNEL_AVX2
+  // The same loop for AVX2, the law's formula inlined into it; the same bits as atPoints<3> (no
+  // fused multiply-adds: the target has none, and the laws' files are compiled without contraction).
+  CONTESSA_TARGET_AVX2 bool atPointsAvx2(int count, const Matrix<3>* F, Matrix<3>* P, Tangent<3>* A) const {
+    for (int q = 0; q < count; ++q)
+      if (!law().template stress<3>(F[q], P[q], A ? A + q : nullptr)) return false;
+    return true;
+  }
+#endif
 };
 
 /// Creates materials by the deck's "Model" name. Each law publishes its valid parameters.

@@ -160,6 +160,16 @@ void MumpsSymmetricInput::buildPattern(const MumpsMatrixView& general) {
     lowerRows_.push_back(std::max(rows[k], cols[k]));
     lowerColumns_.push_back(std::min(rows[k], cols[k]));
   }
+  runs_.clear();
+  diagonalPositions_.clear();
+  for (std::size_t k = 0; k < numEntries;) {
+    RowRun run{static_cast<std::size_t>(rows[k] - 1), k, k, diagonalPositions_.size(), 0};
+    for (; k < numEntries && rows[k] == rows[run.begin]; ++k)
+      if (cols[k] == rows[k]) diagonalPositions_.push_back(k);
+    run.end = k;
+    run.diagonalEnd = diagonalPositions_.size();
+    runs_.push_back(run);
+  }
   generalGeneration_ = general.patternGeneration;
   patternDecoupled_.clear();  // the roles are chosen again
 }
@@ -201,30 +211,43 @@ void MumpsSymmetricInput::planEntries() {
 }
 
 void MumpsSymmetricInput::measureRows(const MumpsMatrixView& general) {
-  const MUMPS_INT* rows = general.rows;
-  const MUMPS_INT* cols = general.columns;
   const double* v = general.values;
-  const auto numEntries = static_cast<std::size_t>(general.numEntries);
   const auto n = static_cast<std::size_t>(n_);
   rowNorm_.assign(n, 0.0);
   diagonal_.assign(n, 0.0);
   offDiagonal_.assign(n, 0);
-  // Entry by entry, but summed over each run of one row's entries before they are stored (the input
-  // gives a row's entries together): a store per entry into the same row made a chain of dependent
-  // memory round trips that cost more than the arithmetic.
-  for (std::size_t k = 0; k < numEntries;) {
-    const MUMPS_INT row = rows[k];
-    double norm = 0.0, diagonal = 0.0;
-    char offDiagonal = 0;
-    for (; k < numEntries && rows[k] == row; ++k) {
-      norm = std::max(norm, std::abs(v[k]));
-      if (cols[k] == row) diagonal += v[k];
-      else offDiagonal |= static_cast<char>(v[k] != 0.0);
+  // Per run of one row's entries (buildPattern), in four independent lanes: one maximum and one count
+  // of non-zero values carried from entry to entry was a chain of dependent operations, with a
+  // comparison of each entry's column with its row (bench/README.md, issue 23 seventh round). The maximum does not depend on the order; a row's diagonal entries are
+  // summed in their order as before, so every value is the one of the entry-by-entry loop.
+  for (const RowRun& run : runs_) {
+    double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
+    std::size_t nz0 = 0, nz1 = 0, nz2 = 0, nz3 = 0;
+    std::size_t k = run.begin;
+    for (; k + 4 <= run.end; k += 4) {
+      m0 = std::max(m0, std::abs(v[k]));
+      m1 = std::max(m1, std::abs(v[k + 1]));
+      m2 = std::max(m2, std::abs(v[k + 2]));
+      m3 = std::max(m3, std::abs(v[k + 3]));
+      nz0 += v[k] != 0.0;
+      nz1 += v[k + 1] != 0.0;
+      nz2 += v[k + 2] != 0.0;
+      nz3 += v[k + 3] != 0.0;
     }
-    const auto i = static_cast<std::size_t>(row - 1);
-    rowNorm_[i] = std::max(rowNorm_[i], norm);
+    for (; k < run.end; ++k) {
+      m0 = std::max(m0, std::abs(v[k]));
+      nz0 += v[k] != 0.0;
+    }
+    double diagonal = 0.0;
+    std::size_t diagonalNonZero = 0;
+    for (std::size_t d = run.diagonalBegin; d < run.diagonalEnd; ++d) {
+      diagonal += v[diagonalPositions_[d]];
+      diagonalNonZero += v[diagonalPositions_[d]] != 0.0;
+    }
+    const std::size_t i = run.row;
+    rowNorm_[i] = std::max(rowNorm_[i], std::max(std::max(m0, m1), std::max(m2, m3)));
     diagonal_[i] += diagonal;
-    offDiagonal_[i] |= offDiagonal;
+    offDiagonal_[i] |= static_cast<char>(nz0 + nz1 + nz2 + nz3 > diagonalNonZero);
   }
   decoupled_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) decoupled_[i] = !offDiagonal_[i] && diagonal_[i] != 0.0;

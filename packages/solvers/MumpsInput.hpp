@@ -168,6 +168,14 @@ class MumpsSymmetricInput {
   std::vector<MUMPS_INT> coupledRows_;               ///< per MUMPS row (0-based): its row (0-based)
   std::vector<MUMPS_INT> rows_, cols_;               ///< 1-based in MUMPS' numbering, the kept entries
   std::vector<double> values_;
+  /// The general input's runs of one row's entries (each row's entries come together), and where
+  /// each run's diagonal entries are (in diagonalPositions_[diagonalBegin, diagonalEnd)): measureRows
+  /// then reads the values without comparing indices (buildPattern).
+  struct RowRun {
+    std::size_t row, begin, end, diagonalBegin, diagonalEnd;
+  };
+  std::vector<RowRun> runs_;
+  std::vector<std::size_t> diagonalPositions_;
   std::vector<double> rowNorm_;         ///< ‖row i‖∞ (0-based)
   std::vector<double> diagonal_;        ///< a_jj of each row (0-based)
   std::vector<char> offDiagonal_;       ///< per row: some off-diagonal value is not zero
