@@ -67,8 +67,8 @@ struct QuadraticMortarPairLayout {
   static constexpr int kMasterNodes = Slots;
   using Derivatives = MortarQuadraticPairDerivatives<Slots>;
   using Gaps = MortarQuadraticFacetPairGaps<double, Slots>;
-  using Committed = FacetPairCommitted;   // unused: no friction on quadratic faces
-  static constexpr int kSlipEntries = 0;  ///< no slip increments (frictionless only)
+  using Committed = QuadraticFacetPairCommitted<Slots>;
+  static constexpr int kSlipEntries = 3;  ///< the kernel's slip: a 3-vector (eq. M21)
 };
 /// A master facet type whose interface takes the quadratic pair kernel of Slots slots (a quadratic slave
 /// or master side): the same facets to MasterSurface, which reads only the type's constants.
@@ -93,6 +93,14 @@ inline const double* slipGradientOf(const MortarPairDerivatives& g, int a, int) 
 inline const double* slipGradientOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipGradient[3 * a + c].data(); }
 inline const double* slipHessianOf(const MortarPairDerivatives& g, int a, int) { return g.slipHessian[a].data(); }
 inline const double* slipHessianOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipHessian[3 * a + c].data(); }
+template <int Slots>
+double slipEntry(const MortarQuadraticFacetPairGaps<double, Slots>& g, int a, int c) { return g.weightedSlip[a][c]; }
+template <int Slots>
+double slipEntry(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) { return g.weightedSlip[a][c]; }
+template <int Slots>
+const double* slipGradientOf(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) { return g.slipGradient[3 * a + c].data(); }
+template <int Slots>
+const double* slipHessianOf(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) { return g.slipHessian[3 * a + c].data(); }
 
 /// A 2D traction's restart field is its one component (the files' scalar); a 3D one's its two.
 inline double& tractionField(Vector<1>& t) { return t[0]; }
@@ -157,8 +165,6 @@ class MortarInterface final : public ContactInterfaceBase {
     const std::size_t measures = static_cast<std::size_t>(kDim == 3 ? mortarFaceMeasures(nodes) : 1);
     if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() * measures != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
-    if (Layout::kSlipEntries == 0 && frictional())
-      throw std::logic_error("MortarInterface '" + spec_.label() + "': quadratic 3D mortar is frictionless (the deck refuses first)");
     segmentsAt_.resize(spec_.slaveNodes.size());
     for (std::size_t s = 0; s < spec_.slaveFacets.size() / perFacet_; ++s)
       for (std::size_t a = 0; a < perFacet_; ++a)
@@ -372,10 +378,8 @@ auto MortarInterface<F>::pairValues(const std::array<double, Layout::kCoordinate
   const typename Layout::Committed* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
   if constexpr (kDim == 2)
     return segmentPairGaps(x, pair.referenceMeasure, pair.neighbours, committed);
-  else if constexpr (Layout::kSlipEntries > 0)
-    return facetPairGaps(x, pair.referenceMeasure, pair.shape, committed);
   else
-    return facetPairGaps(x, pair.referenceMeasure, pair.shape);
+    return facetPairGaps(x, pair.referenceMeasure, pair.shape, committed);
 }
 
 template <class F>
@@ -451,11 +455,9 @@ auto MortarInterface<F>::pairDerivatives(
   if constexpr (kDim == 2)
     cached.derivatives =
         segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, withCommitted ? &then : nullptr, rigidMotion);
-  else if constexpr (Layout::kSlipEntries > 0)
+  else
     cached.derivatives =
         facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion, withCommitted ? &then : nullptr);
-  else
-    cached.derivatives = facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion);
   return cached.derivatives;
 }
 
@@ -580,8 +582,8 @@ template <class F>
 bool MortarInterface<F>::committedPair(const PairNodes& pair, int facet, typename Layout::Committed& out) const {
   if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
   if constexpr (kDim == 3) {
-    if constexpr (Layout::kSlipEntries == 0) return false;  // quadratic faces: frictionless
-    // FacetPairCoordinates' layout: the slave facet's nodes, then the master facet's.
+    // FacetPairCoordinates' layout (QuadraticFacetPairCoordinates' on quadratic faces): the slave facet's
+    // nodes, then the master facet's from slot kFirstMaster.
     out.fill(0.0);
     for (std::size_t a = 0; a < perFacet_; ++a) {
       const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
@@ -632,15 +634,17 @@ auto MortarInterface<F>::tangentialTraction(std::size_t k, const WeightedGap& w,
 template <class F>
 auto MortarInterface<F>::slipBasis(std::size_t k, const std::vector<Vector<kDim>>& x) const -> SlipBasis {
   SlipBasis basis{};
-  if constexpr (kDim == 2 || Layout::kSlipEntries == 0) {
+  if constexpr (kDim == 2) {
     basis[0][0] = 1.0;  // 2D: the kernel's slip is the component along t_m already
   } else {
     if (x.empty()) return basis;  // no positions yet: no slip increments either
-    // n_k: the normalised sum of the unit normals of node k's slave facets (MortarSlipBasis.hpp).
+    // n_k: the normalised sum of the unit normals of node k's slave facets (MortarSlipBasis.hpp), a
+    // quadratic face's from its corners (a Tri6's first three nodes, a Quad8's or Quad9's first four).
+    const std::size_t cornerCount = perFacet_ == 6 ? 3 : std::min<std::size_t>(perFacet_, 4);
     Vector<3> normal{};
     for (const SegmentEnd& se : segmentsAt_[k]) {
       std::vector<Vector<3>> corners;
-      for (std::size_t a = 0; a < perFacet_; ++a) corners.push_back(x[slaveIndex(spec_.slaveFacets[perFacet_ * se.segment + a])]);
+      for (std::size_t a = 0; a < cornerCount; ++a) corners.push_back(x[slaveIndex(spec_.slaveFacets[perFacet_ * se.segment + a])]);
       normal = add(normal, linearFacetNormal(corners));
     }
     const double length = norm(normal);

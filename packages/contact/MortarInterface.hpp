@@ -1,6 +1,6 @@
 #pragma once
 // Mortar (segment-to-segment) contact of one interface, penalty; 2D frictionless or Coulomb, 3D
-// frictionless or Coulomb on linear faces, frictionless on quadratic ones (theory-contact.md §13): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over
+// frictionless or Coulomb on linear and quadratic faces (theory-contact.md §13, eq. M21 on quadratic ones): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over
 // its slave facets (2D, MortarSegment.hpp: segmented along the averaged nodal normals; 3D,
 // MortarFacetPair.hpp: the facets projected on the slave facet's plane and clipped; the gap along the
 // master's normal in both), the pressure p_k = ε_N ⟨−g̃_k⟩ / A_k (A_k its reference tributary length or
@@ -19,8 +19,8 @@
 
 namespace contessa::contact {
 
-/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles (3- or 6-node) and quadrilaterals; friction on
-/// 2D segments and 3- and 4-node faces only: a logic_error otherwise, the deck refuses first).
+/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles (3- or 6-node) and quadrilaterals (4, 8
+/// or 9 nodes), frictionless or Coulomb on each).
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
 
 /// The spec whose reservation (CouplingReservation) holds every master node a mortar slave node's term can

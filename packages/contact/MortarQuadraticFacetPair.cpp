@@ -235,11 +235,24 @@ struct PieceMeasure {
   }
 };
 
-/// One slave piece against one master piece (eq. M13–M15 on the pieces, M19 at the Gauss points): adds
-/// to `out` and says whether they overlap.
+/// The committed position Σ N_a(ξ) X_a of the face point with shape values n (X_a: the committed nodes
+/// first … first + count − 1, constants).
+template <class T, int Slots>
+Point3<T> committedPoint(const QuadraticFacetPairCommitted<Slots>& then, int first, int count, const std::array<T, Slots>& n) {
+  Point3<T> p{T(0.0), T(0.0), T(0.0)};
+  for (int a = 0; a < count; ++a) {
+    const double* X = &then[3 * (first + a)];
+    p = p + Point3<T>{n[a] * X[0], n[a] * X[1], n[a] * X[2]};
+  }
+  return p;
+}
+
+/// One slave piece against one master piece (eq. M13–M15 on the pieces, M19 at the Gauss points, M21 with
+/// `committed`): adds to `out` and says whether they overlap.
 template <class T, int Slots>
 bool addPiecePair(const QuadraticChart<T, Slots>& slave, int s, const QuadraticChart<T, Slots>& master, int m,
-                  const PieceMeasure<T>& measure, double size, MortarQuadraticFacetPairGaps<T, Slots>& out) {
+                  const PieceMeasure<T>& measure, double size, const QuadraticFacetPairCommitted<Slots>* committed,
+                  MortarQuadraticFacetPairGaps<T, Slots>& out) {
   const LinearFacet<T> sp = slave.piece(s), mp = master.piece(m);
   const ProjectionPlane<T> plane(sp);
   if (!facing(sp, mp, plane, size)) return false;
@@ -261,12 +274,26 @@ bool addPiecePair(const QuadraticChart<T, Slots>& slave, int s, const QuadraticC
       const std::array<T, 2> local = inverseMap(sp, slavePolygon, p), xi = slave.parent(s, local);
       const std::array<T, 2> eta = master.parent(m, inverseMap(mp, masterProjected, p));
       // eq. M19: the quadratic points and the master's normal at the parent coordinates.
-      const T g = dot(slave.at(slave.shape(xi)) - master.at(master.shape(eta)), master.unitNormal(eta));
+      const std::array<T, Slots> slaveShape = slave.shape(xi), masterShape = master.shape(eta);
+      const Point3<T> xs = slave.at(slaveShape), xm = master.at(masterShape), normal = master.unitNormal(eta);
+      const T g = dot(xs - xm, normal);
       const std::array<T, Slots> w = slave.weights(s, local, xi);
       const T weight = q.weight * triangleArea * measure.at(sp, plane, local);
       for (int a = 0; a < slave.count; ++a) {
         out.weightedGap[a] = out.weightedGap[a] + weight * w[a] * g;
         out.mortarArea[a] = out.mortarArea[a] + weight * w[a];
+      }
+      if (committed == nullptr) continue;
+      // eq. M21: the relative motion over the increment of the slave point ξ and the master point η it
+      // sees (material points of the quadratic faces, both moved from their committed positions), less its
+      // part along n_m(η): the tangential slip, weighted with the gaps' Φ_a.
+      const Point3<T> motion = (xs - committedPoint<T, Slots>(*committed, 0, slave.count, slaveShape)) -
+                               (xm - committedPoint<T, Slots>(*committed, Slots, master.count, masterShape));
+      const Point3<T> u = motion - times(normal, dot(motion, normal));
+      for (int a = 0; a < slave.count; ++a) {
+        const T wa = weight * w[a];
+        std::array<T, 3>& slip = out.weightedSlip[a];
+        slip = {slip[0] + wa * u.x, slip[1] + wa * u.y, slip[2] + wa * u.z};
       }
     }
   }
@@ -277,7 +304,8 @@ bool addPiecePair(const QuadraticChart<T, Slots>& slave, int s, const QuadraticC
 
 template <class T, int Slots>
 MortarQuadraticFacetPairGaps<T, Slots> integrateQuadraticFacetPair(const QuadraticFacetPairCoordinates<T, Slots>& x,
-                                                                   double referenceArea, const MortarFacetPairShape& shape) {
+                                                                   double referenceArea, const MortarFacetPairShape& shape,
+                                                                   const QuadraticFacetPairCommitted<Slots>* committed) {
   MortarQuadraticFacetPairGaps<T, Slots> out;
   const QuadraticChart<T, Slots> slave = chartOf<T, Slots>(x, 0, shape.slaveNodes);
   const QuadraticChart<T, Slots> master = chartOf<T, Slots>(x, Slots, shape.masterNodes);
@@ -293,7 +321,7 @@ MortarQuadraticFacetPairGaps<T, Slots> integrateQuadraticFacetPair(const Quadrat
     else
       measure.jacobian = &shape.slavePieceAreas[slave.measureOffset(s)];
     for (int m = 0; m < master.pieces(); ++m)
-      if (addPiecePair(slave, s, master, m, measure, size, out)) out.overlaps = true;
+      if (addPiecePair(slave, s, master, m, measure, size, committed, out)) out.overlaps = true;
   }
   return out;
 }
@@ -301,15 +329,50 @@ MortarQuadraticFacetPairGaps<T, Slots> integrateQuadraticFacetPair(const Quadrat
 namespace {
 template <int Slots>
 MortarQuadraticFacetPairGaps<double, Slots> gapsOf(const QuadraticFacetPairCoordinates<double, Slots>& x,
-                                                    double referenceArea, const MortarFacetPairShape& shape) {
-  return integrateQuadraticFacetPair<double, Slots>(x, referenceArea, shape);
+                                                    double referenceArea, const MortarFacetPairShape& shape,
+                                                    const QuadraticFacetPairCommitted<Slots>* committed) {
+  return integrateQuadraticFacetPair<double, Slots>(x, referenceArea, shape, committed);
+}
+/// The pair with its slip increments (friction) differentiated over `variables`: as
+/// differentiatePairKernel (MortarDual.hpp), plus Δũ_a's three components (MortarFacetPair.cpp's
+/// differentiateWithSlip on the quadratic layouts).
+template <int Slots, int V>
+MortarQuadraticPairDerivatives<Slots> differentiateWithSlip(const QuadraticFacetPairCoordinates<double, Slots>& x,
+                                                            double referenceArea, const MortarFacetPairShape& shape,
+                                                            const QuadraticFacetPairCommitted<Slots>& committed,
+                                                            const KernelVariables<3 * 2 * Slots>& variables) {
+  constexpr int kC = 3 * 2 * Slots;
+  std::vector<std::array<HessianDual<V>, kC>> seeded(1, variables.template seed<V>(x));  // large: on the heap
+  const auto g = integrateQuadraticFacetPair<HessianDual<V>, Slots>(seeded[0], referenceArea, shape, &committed);
+  MortarQuadraticPairDerivatives<Slots> out;
+  out.overlaps = g.overlaps;
+  out.slipGradient.resize(3 * Slots);
+  out.slipHessian.resize(3 * Slots);
+  for (int a = 0; a < Slots; ++a) {
+    out.weightedGap[a] = g.weightedGap[a].v;
+    out.mortarArea[a] = g.mortarArea[a].v;
+    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
+    for (int c = 0; c < 3; ++c) {
+      out.weightedSlip[a][c] = g.weightedSlip[a][c].v;
+      variables.extract(g.weightedSlip[a][c], out.slipGradient[3 * a + c], out.slipHessian[3 * a + c]);
+    }
+  }
+  return out;
 }
 template <int Slots>
 MortarQuadraticPairDerivatives<Slots> derivativesOf(const QuadraticFacetPairCoordinates<double, Slots>& x,
                                                     double referenceArea, const MortarFacetPairShape& shape,
-                                                    const double* masterMotion) {
+                                                    const double* masterMotion,
+                                                    const QuadraticFacetPairCommitted<Slots>* committed) {
+  constexpr int kC = 3 * 2 * Slots, kFirstMaster = 3 * Slots;
+  if (committed != nullptr) {
+    if (masterMotion == nullptr)
+      return differentiateWithSlip<Slots, kC>(x, referenceArea, shape, *committed, ownVariables<kC>());
+    return differentiateWithSlip<Slots, kFirstMaster + 1>(x, referenceArea, shape, *committed,
+                                                          rigidBodyVariables<kC>(kFirstMaster, kFirstMaster, masterMotion));
+  }
   // A rigid master: the slave's coordinates and the motion (MortarDual.hpp, KernelVariables).
-  return differentiatePairKernel<MortarQuadraticPairDerivatives<Slots>, 3 * Slots>(
+  return differentiatePairKernel<MortarQuadraticPairDerivatives<Slots>, kFirstMaster>(
       x, masterMotion, [&](const auto& seeded) {
         using Number = typename std::decay_t<decltype(seeded)>::value_type;
         return integrateQuadraticFacetPair<Number, Slots>(seeded, referenceArea, shape);
@@ -318,31 +381,37 @@ MortarQuadraticPairDerivatives<Slots> derivativesOf(const QuadraticFacetPairCoor
 }  // namespace
 
 MortarQuadraticFacetPairGaps<double, 6> facetPairGaps(const QuadraticFacetPairCoordinates<double, 6>& x,
-                                                      double referenceArea, const MortarFacetPairShape& shape) {
-  return gapsOf<6>(x, referenceArea, shape);
+                                                      double referenceArea, const MortarFacetPairShape& shape,
+                                                      const QuadraticFacetPairCommitted<6>* committed) {
+  return gapsOf<6>(x, referenceArea, shape, committed);
 }
 MortarQuadraticFacetPairGaps<double, 8> facetPairGaps(const QuadraticFacetPairCoordinates<double, 8>& x,
-                                                      double referenceArea, const MortarFacetPairShape& shape) {
-  return gapsOf<8>(x, referenceArea, shape);
+                                                      double referenceArea, const MortarFacetPairShape& shape,
+                                                      const QuadraticFacetPairCommitted<8>* committed) {
+  return gapsOf<8>(x, referenceArea, shape, committed);
 }
 MortarQuadraticFacetPairGaps<double, 9> facetPairGaps(const QuadraticFacetPairCoordinates<double, 9>& x,
-                                                      double referenceArea, const MortarFacetPairShape& shape) {
-  return gapsOf<9>(x, referenceArea, shape);
+                                                      double referenceArea, const MortarFacetPairShape& shape,
+                                                      const QuadraticFacetPairCommitted<9>* committed) {
+  return gapsOf<9>(x, referenceArea, shape, committed);
 }
 MortarQuadraticPairDerivatives<6> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 6>& x,
                                                        double referenceArea, const MortarFacetPairShape& shape,
-                                                       const double* masterMotion) {
-  return derivativesOf<6>(x, referenceArea, shape, masterMotion);
+                                                       const double* masterMotion,
+                                                       const QuadraticFacetPairCommitted<6>* committed) {
+  return derivativesOf<6>(x, referenceArea, shape, masterMotion, committed);
 }
 MortarQuadraticPairDerivatives<8> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 8>& x,
                                                        double referenceArea, const MortarFacetPairShape& shape,
-                                                       const double* masterMotion) {
-  return derivativesOf<8>(x, referenceArea, shape, masterMotion);
+                                                       const double* masterMotion,
+                                                       const QuadraticFacetPairCommitted<8>* committed) {
+  return derivativesOf<8>(x, referenceArea, shape, masterMotion, committed);
 }
 MortarQuadraticPairDerivatives<9> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 9>& x,
                                                        double referenceArea, const MortarFacetPairShape& shape,
-                                                       const double* masterMotion) {
-  return derivativesOf<9>(x, referenceArea, shape, masterMotion);
+                                                       const double* masterMotion,
+                                                       const QuadraticFacetPairCommitted<9>* committed) {
+  return derivativesOf<9>(x, referenceArea, shape, masterMotion, committed);
 }
 
 namespace {

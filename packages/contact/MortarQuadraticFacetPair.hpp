@@ -25,6 +25,7 @@
 // over the pair's coordinates: Slots node slots per side (6 when the larger face is a Tri6, 8 a Quad8,
 // 9 a Quad9; a smaller face leaves the last slots unused).
 #include <array>
+#include <vector>
 
 #include "contact/MortarFacetPair.hpp"  // MortarFacetPairShape
 
@@ -41,11 +42,20 @@ constexpr int kQuadraticFacetPairCoordinates = 3 * 2 * kQuadraticFacetNodes;
 template <class T, int Slots = kQuadraticFacetNodes>
 using QuadraticFacetPairCoordinates = std::array<T, 3 * 2 * Slots>;
 
+/// The committed positions of the pair's nodes, in the layout of QuadraticFacetPairCoordinates: where the
+/// material points were at the last converged state, the start of the slip increments (eq. M9′, M21).
+template <int Slots>
+using QuadraticFacetPairCommitted = std::array<double, 3 * 2 * Slots>;
+
 template <class T, int Slots = kQuadraticFacetNodes>
 struct MortarQuadraticFacetPairGaps {
   bool overlaps = false;
   std::array<T, Slots> weightedGap{};  ///< g̃_a = ∫ Φ_a g dA_0 (eq. M19)
   std::array<T, Slots> mortarArea{};   ///< ∫ Φ_a dA_0 over the overlap
+  /// Weighted slip increments Δũ_a = ∫ Φ_a (I − n_m ⊗ n_m)(Δx_s(ξ) − Δx_m(η)) dA_0 (eq. M21), with the
+  /// weights of the weighted gaps, a 3-vector per node, when the committed positions are given (friction),
+  /// else 0; as MortarFacetPairGaps::weightedSlip.
+  std::array<std::array<T, 3>, Slots> weightedSlip{};
 };
 
 /// The integral over the overlap. The measure is the reference one, as the linear kernel's A_0 / A_projected
@@ -55,7 +65,8 @@ struct MortarQuadraticFacetPairGaps {
 /// |d_1 × d_2| / 2) over the current one.
 template <class T, int Slots>
 MortarQuadraticFacetPairGaps<T, Slots> integrateQuadraticFacetPair(const QuadraticFacetPairCoordinates<T, Slots>& x,
-                                                                   double referenceArea, const MortarFacetPairShape& shape);
+                                                                   double referenceArea, const MortarFacetPairShape& shape,
+                                                                   const QuadraticFacetPairCommitted<Slots>* committed = nullptr);
 
 template <int Slots>
 struct MortarQuadraticPairDerivatives {
@@ -65,28 +76,40 @@ struct MortarQuadraticPairDerivatives {
   std::array<double, Slots> mortarArea{};
   std::array<std::array<double, kCoordinates>, Slots> gradient{};
   std::array<std::array<double, kCoordinates * kCoordinates>, Slots> hessian{};  ///< row-major
+  /// With committed positions (friction): Δũ_a's components c (index 3 a + c), their gradients and
+  /// Hessians; empty without (a frictionless pair carries no slip derivatives).
+  std::array<std::array<double, 3>, Slots> weightedSlip{};
+  std::vector<std::array<double, kCoordinates>> slipGradient;
+  std::vector<std::array<double, kCoordinates * kCoordinates>> slipHessian;
 };
 using MortarQuadraticFacetPairDerivatives = MortarQuadraticPairDerivatives<kQuadraticFacetNodes>;
 
 /// The pair's weighted gaps (values only); overloads of MortarFacetPair's on the quadratic layouts (6, 8
-/// and 9 slots).
+/// and 9 slots). With `committed` (friction) the weighted slip increments too.
 MortarQuadraticFacetPairGaps<double, 6> facetPairGaps(const QuadraticFacetPairCoordinates<double, 6>& x,
-                                                      double referenceArea, const MortarFacetPairShape& shape);
+                                                      double referenceArea, const MortarFacetPairShape& shape,
+                                                      const QuadraticFacetPairCommitted<6>* committed = nullptr);
 MortarQuadraticFacetPairGaps<double, 8> facetPairGaps(const QuadraticFacetPairCoordinates<double, 8>& x,
-                                                      double referenceArea, const MortarFacetPairShape& shape);
+                                                      double referenceArea, const MortarFacetPairShape& shape,
+                                                      const QuadraticFacetPairCommitted<8>* committed = nullptr);
 MortarQuadraticFacetPairGaps<double, 9> facetPairGaps(const QuadraticFacetPairCoordinates<double, 9>& x,
-                                                      double referenceArea, const MortarFacetPairShape& shape);
+                                                      double referenceArea, const MortarFacetPairShape& shape,
+                                                      const QuadraticFacetPairCommitted<9>* committed = nullptr);
 /// The pair's weighted gaps differentiated twice; with masterMotion (a rigid master's ∂x/∂λ, its 3 × Slots
-/// entries) only along that motion in the master's coordinates (MortarFacetPair.hpp says why).
+/// entries) only along that motion in the master's coordinates (MortarFacetPair.hpp says why); with
+/// `committed` (friction) the slip increments' too.
 MortarQuadraticPairDerivatives<6> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 6>& x,
                                                        double referenceArea, const MortarFacetPairShape& shape,
-                                                       const double* masterMotion = nullptr);
+                                                       const double* masterMotion = nullptr,
+                                                       const QuadraticFacetPairCommitted<6>* committed = nullptr);
 MortarQuadraticPairDerivatives<8> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 8>& x,
                                                        double referenceArea, const MortarFacetPairShape& shape,
-                                                       const double* masterMotion = nullptr);
+                                                       const double* masterMotion = nullptr,
+                                                       const QuadraticFacetPairCommitted<8>* committed = nullptr);
 MortarQuadraticPairDerivatives<9> facetPairDerivatives(const QuadraticFacetPairCoordinates<double, 9>& x,
                                                        double referenceArea, const MortarFacetPairShape& shape,
-                                                       const double* masterMotion = nullptr);
+                                                       const double* masterMotion = nullptr,
+                                                       const QuadraticFacetPairCommitted<9>* committed = nullptr);
 
 /// The node slots a pair of faces of these node counts takes (6, 8 or 9: the larger face's, a Quad8 with
 /// a Quad9 9).

@@ -225,16 +225,6 @@ void requireMortarSupported(bool twoPass, bool revolved, const contact::ContactL
   requireInput(!twoPass, what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
 
-// 3D mortar's Coulomb friction is on 3- and 4-node faces (MortarFacetPair.hpp, eq. M9′); the quadratic
-// faces' pairs (MortarQuadraticFacetPair) have no slip increments yet: a one-line InputError.
-void requireMortarFrictionFaces(int dimension, int nodesPerFacet, const contact::ContactLawParameters& law,
-                                const std::string& sideSet, const std::string& where) {
-  requireInput(dimension == 2 || law.isFrictionless() || nodesPerFacet <= 4,
-               where + "/Friction Coefficient: Discretization = Mortar has Coulomb friction in 3D on 3- and 4-node "
-                       "faces only, not on the " + std::to_string(nodesPerFacet) + "-node faces of '" + sideSet +
-                       "'; set Friction Coefficient = 0 or use Discretization = Node To Segment");
-}
-
 // What Master Smoothing = Hermite takes (contact/SmoothedMaster.hpp): one-line InputErrors.
 void requireSmoothingSupported(const contact::ContactInterfaceSpec& spec, const std::string& where,
                                const std::string& masterSet) {
@@ -380,7 +370,6 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.slaveFacetNodes = slave.nodesPerFacet;
   if (spec.mortar) {
     requireMortarFacets(mesh.dimension, slave.nodesPerFacet, slaveSet, where);
-    requireMortarFrictionFaces(mesh.dimension, slave.nodesPerFacet, spec.law, slaveSet, where);
     spec.slaveFacetMeasures = slaveFacetMeasures(slave.facets, slave.nodesPerFacet, coordinates);
   }
   spec.slaveNodes = slave.nodes;
@@ -414,7 +403,6 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.masterFacets = master.facets;
   spec.masterFacetNodes = master.nodesPerFacet;
   if (spec.mortar) requireMortarFacets(mesh.dimension, master.nodesPerFacet, masterSet, where);
-  if (spec.mortar) requireMortarFrictionFaces(mesh.dimension, master.nodesPerFacet, spec.law, masterSet, where);
   const bool smoothed = in.smoothing == InterfaceParameters::Smoothing::Hermite;
   if (smoothed) requireSmoothingSupported(spec, where, masterSet);
   if (smoothed) smoothMaster(spec);
