@@ -357,6 +357,25 @@ KernelVariables<C> motionlessBodyVariables(int first, int count) {
   return v;
 }
 
+/// A friction pair kernel's results `g` (overlaps and, per slave slot, the weighted gap, mortar area and weighted
+/// slip increment's three components, on HessianDual numbers) into `out` as values, gradients and Hessians over
+/// the coordinates (the fields of MortarFacetPairDerivatives and MortarQuadraticPairDerivatives alike).
+template <int Slots, int C, class Integrated, class Derivatives>
+void extractGapsAndSlips(const Integrated& g, const KernelVariables<C>& variables, Derivatives& out) {
+  out.overlaps = g.overlaps;
+  out.slipGradient.resize(3 * Slots);
+  out.slipHessian.resize(3 * Slots);
+  for (int a = 0; a < Slots; ++a) {
+    out.weightedGap[a] = g.weightedGap[a].v;
+    out.mortarArea[a] = g.mortarArea[a].v;
+    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
+    for (int c = 0; c < 3; ++c) {
+      out.weightedSlip[a][c] = g.weightedSlip[a][c].v;
+      variables.extract(g.weightedSlip[a][c], out.slipGradient[3 * a + c], out.slipHessian[3 * a + c]);
+    }
+  }
+}
+
 /// A pair kernel's weighted gaps differentiated twice: `integrate` (the kernel on HessianDual coordinates,
 /// returning overlaps, weightedGap and mortarArea per slave slot) evaluated with every coordinate its own
 /// variable, or, given a rigid master's motion (its entries from FirstMaster on), with the master along that

@@ -263,18 +263,7 @@ MortarFacetPairDerivatives differentiateWithSlip(const FacetPairCoordinates<doub
   std::vector<std::array<HessianDual<V>, kN>> seeded(1, variables.template seed<V>(x));  // large: on the heap
   const auto g = integrateFacetPair(seeded[0], referenceArea, shape, &committed);
   MortarFacetPairDerivatives out;
-  out.overlaps = g.overlaps;
-  out.slipGradient.resize(3 * kMortarFacetNodes);
-  out.slipHessian.resize(3 * kMortarFacetNodes);
-  for (int a = 0; a < kMortarFacetNodes; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v;
-    out.mortarArea[a] = g.mortarArea[a].v;
-    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
-    for (int c = 0; c < 3; ++c) {
-      out.weightedSlip[a][c] = g.weightedSlip[a][c].v;
-      variables.extract(g.weightedSlip[a][c], out.slipGradient[3 * a + c], out.slipHessian[3 * a + c]);
-    }
-  }
+  extractGapsAndSlips<kMortarFacetNodes>(g, variables, out);
   return out;
 }
 }  // namespace

@@ -345,18 +345,7 @@ MortarQuadraticPairDerivatives<Slots> differentiateWithSlip(const QuadraticFacet
   std::vector<std::array<HessianDual<V>, kC>> seeded(1, variables.template seed<V>(x));  // large: on the heap
   const auto g = integrateQuadraticFacetPair<HessianDual<V>, Slots>(seeded[0], referenceArea, shape, &committed);
   MortarQuadraticPairDerivatives<Slots> out;
-  out.overlaps = g.overlaps;
-  out.slipGradient.resize(3 * Slots);
-  out.slipHessian.resize(3 * Slots);
-  for (int a = 0; a < Slots; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v;
-    out.mortarArea[a] = g.mortarArea[a].v;
-    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
-    for (int c = 0; c < 3; ++c) {
-      out.weightedSlip[a][c] = g.weightedSlip[a][c].v;
-      variables.extract(g.weightedSlip[a][c], out.slipGradient[3 * a + c], out.slipHessian[3 * a + c]);
-    }
-  }
+  extractGapsAndSlips<Slots>(g, variables, out);
   return out;
 }
 template <int Slots>
