@@ -7,8 +7,6 @@
 // surface (MasterSurface: deformable or rigid), history transfer and resolution (NodeToFacetContact) are
 // used as they are; this class only organises them over an interface. Pure C++: the model turns the global
 // DOF ids it receives into Tpetra entries.
-#include <algorithm>
-#include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -62,45 +60,6 @@ struct AugmentationViolation {
   double elasticSlip = 0;  ///< max ‖t_T − λ_T‖/(ε_T L_k) over the sticking nodes
 };
 
-
-/// Augmented Lagrangian with friction: a sticking node at an Uzawa update, its stick traction t_T = λ_T + ε_T ā Δξ
-/// and its relative motion since it stuck, ā Δξ (covariant, on the node's facet; eq. 15.2).
-template <int NXi>
-struct StickUpdate {
-  Vector<NXi> traction{};
-  Vector<NXi> motion{};
-};
-
-/// The factor f of the update λ_T ← λ_T + f (t_T − λ_T) of a node that sticks at two successive updates on
-/// the same facet (docs/theory-contact.md §15, "The stick multipliers' secant"). The plain update (15.3) is
-/// f = 1 and shrinks the motion by the node's Uzawa rate K/(K + ε_T) only, near 1 where the pressure and with
-/// it ε_T = μ|λ_N|/(s L_k) are small. The structure holds the node with t_T = F − K ā Δξ (F the force it would
-/// carry at rest, K its tangential stiffness there), so the multiplier that leaves no motion is λ_T* = F =
-/// t_T + K ā Δξ, i.e. f = 1 + K/ε_T; K is measured by the secant of the last two updates, K = −⟨Δt_T, Δm⟩/⟨Δm,
-/// Δm⟩ with m = ā Δξ (ā^αβ inner products), whatever ε_T did between them (it follows λ_N). Where the motion
-/// changed by less than `noise` (the Newton error the update may read) or K is not positive, f = 1; f is at
-/// most `maxFactor`, and the new multiplier stays inside the Coulomb cone ‖λ_T‖ ≤ `coneRadius` = μ|λ_N| (past it
-/// the node slips: the step stops on it).
-template <int NXi>
-double stickSecantFactor(const StickUpdate<NXi>& previous, const StickUpdate<NXi>& current, const Vector<NXi>& multiplier,
-                         double stickPenalty, const Matrix<NXi, NXi>& inverseMetric, double coneRadius, double noise,
-                         double maxFactor) {
-  const auto inner = [&](const Vector<NXi>& a, const Vector<NXi>& b) { return dot(a, multiply(inverseMetric, b)); };
-  const Vector<NXi> motionChange = subtract(current.motion, previous.motion);
-  const double changeSquared = inner(motionChange, motionChange);
-  if (!(stickPenalty > 0.0) || !(changeSquared > noise * noise)) return 1.0;
-  const double stiffness = -inner(subtract(current.traction, previous.traction), motionChange) / changeSquared;
-  if (!(stiffness > 0.0)) return 1.0;
-  const double factor = std::min(1.0 + stiffness / stickPenalty, maxFactor);
-  // ‖λ + f d‖² = R² on the line, d = t_T − λ_T: a f² + b f + q = 0, q ≤ 0 when λ is inside the cone.
-  const Vector<NXi> d = subtract(current.traction, multiplier);
-  const double a = inner(d, d);
-  const double b = 2.0 * inner(multiplier, d);
-  const double q = inner(multiplier, multiplier) - coneRadius * coneRadius;
-  if (!(a > 0.0) || q > 0.0) return 1.0;
-  const double onCone = (-b + std::sqrt(b * b - 4.0 * a * q)) / (2.0 * a);
-  return std::max(1.0, std::min(factor, onCone));
-}
 
 /// A slave node that passed through the master surface in the current increment (tunnelling).
 struct TunnellingNode {
