@@ -52,7 +52,11 @@ void checkRange(const std::string& path, const Teuchos::ParameterEntry& entry) {
     const double v = Teuchos::getValue<double>(entry);
     const bool ok = std::isfinite(v) && (!d->hasMin() || v >= d->getMin()) && (!d->hasMax() || v <= d->getMax());
     if (!ok) {
-      std::string range = "[" + (d->hasMin() ? formatNumber(d->getMin()) : std::string("-inf")) + ", " +
+      // setPositive's bound is the smallest denormal (an open bound at 0): say "> 0", not "[4.94066e-324, ...".
+      const bool positive = d->hasMin() && d->getMin() == std::nextafter(0.0, 1.0);
+      if (positive && !d->hasMax()) throw InputError(path + ": expected a value > 0, got " + formatNumber(v));
+      std::string range = (positive ? std::string("(0") :
+                           "[" + (d->hasMin() ? formatNumber(d->getMin()) : std::string("-inf"))) + ", " +
                           (d->hasMax() ? formatNumber(d->getMax()) : std::string("inf")) + "]";
       throw InputError(path + ": expected a value in " + range + ", got " + formatNumber(v));
     }

@@ -60,7 +60,7 @@ TEST(DeckValidation, WrongTypeIsNamed) {
 TEST(DeckValidation, ValueOutOfRangeIsNamed) {
   auto p = goodProblem();
   p->sublist("Mesh").set("Length X", -1.0);
-  expectProblemError(*p, "Problem/Mesh/Length X: expected a value in [");
+  expectProblemError(*p, "Problem/Mesh/Length X: expected a value > 0, got -1");
 }
 
 TEST(DeckValidation, ChoiceOutsideTheListIsNamed) {
