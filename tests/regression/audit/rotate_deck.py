@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""rotate_deck.py DECK OUT MESH [--angle DEG] [--axis AX AY AZ] [--translate TX TY [TZ]]
+"""rotate_deck.py DECK OUT MESH [--angle DEG] [--axis AX AY AZ] [--translate TX TY [TZ]] [--vector LOAD ...]
 
 Writes OUT: the objectivity deck DECK (objectivity_2d.xml, objectivity_3d.xml) in the frame make_block_msh.py
 writes MESH in: its mesh file MESH, every rigid-surface Points (positions: rotated, then translated) and every
@@ -18,6 +18,7 @@ parser.add_argument("mesh")
 parser.add_argument("--angle", type=float, default=0.0)
 parser.add_argument("--axis", type=float, nargs=3, default=[0.0, 0.0, 1.0])
 parser.add_argument("--translate", type=float, nargs="+", default=[0.0, 0.0, 0.0])
+parser.add_argument("--vector", action="append", default=[], help="a load whose load-step values are vectors to rotate")
 args = parser.parse_args()
 axis = np.array(args.axis) / np.linalg.norm(args.axis)
 t = math.radians(args.angle)
@@ -25,7 +26,9 @@ K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0]
 R = np.eye(3) + math.sin(t) * K + (1 - math.cos(t)) * K @ K
 shift = np.array((list(args.translate) + [0.0, 0.0])[:3])
 text = open(args.deck).read()
-dim = 3 if "Facets" in text else 2
+dim = 3 if "Facets" in text or "Traction" in text and "Spring" in text else 2  # the decks this writes
+if '"Traction" type="Array(double)" value="{' in text:
+    dim = len(re.search(r'"Traction" type="Array\(double\)" value="\{([^}]*)\}"', text).group(1).split(","))
 
 
 def transform(match, is_point):
@@ -40,6 +43,9 @@ def transform(match, is_point):
 
 text = re.sub(r'(name="Points" type="Array\(double\)" value=")\{([^}]*)\}(")', lambda m: transform(m, True), text)
 text = re.sub(r'(name="Motion" type="Array\(double\)" value=")\{([^}]*)\}(")', lambda m: transform(m, False), text)
+for load in args.vector:  # a Traction and its load steps' end values
+    text = re.sub(r'(name="(?:Traction|%s)" type="Array\(double\)" value=")\{([^}]*)\}(")' % re.escape(load),
+                  lambda m: transform(m, False), text)
 text = re.sub(r'(name="File Name" type="string" value=")[^"]*(")', lambda m: m.group(1) + args.mesh + m.group(2), text)
 frame = f"rotated by {args.angle:g} degrees about ({', '.join(f'{a:g}' for a in args.axis)}) and translated by " \
         f"({', '.join(f'{c:g}' for c in args.translate)})"
@@ -47,5 +53,6 @@ text = re.sub(r'(name="Title" type="string" value=")([^"]*)(")', lambda m: m.gro
               text, count=1)
 command = " ".join(["rotate_deck.py", args.deck, args.out, args.mesh, "--angle", f"{args.angle:g}", "--axis"]
                    + [f"{a:g}" for a in args.axis] + ["--translate"] + [f"{c:g}" for c in args.translate])
+command += "".join(f" --vector '{v}'" for v in args.vector)
 text = text.replace("<!--\n", f"<!--\n  Written by {command}: {args.deck} {frame}.\n", 1)
 open(args.out, "w").write(text)
