@@ -16,10 +16,11 @@ displacements (round-off: the rotated body sits 1e3 from the origin, where a coo
 penetrations are 1e-5)."""
 import argparse
 import csv
-import math
 
 import netCDF4
 import numpy as np
+
+from msh_frames import rotation
 
 parser = argparse.ArgumentParser()
 parser.add_argument("reference")
@@ -31,10 +32,7 @@ parser.add_argument("--interface", default="base", help="the contact interface's
 parser.add_argument("--reaction", default="top", help="the node set whose reaction is compared")
 parser.add_argument("--block", default="block", help="the block that returns to u = 0 at the release")
 args = parser.parse_args()
-axis = np.array(args.axis) / np.linalg.norm(args.axis)
-t = math.radians(args.angle)
-K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
-R = np.eye(3) + math.sin(t) * K + (1 - math.cos(t)) * K @ K
+R = rotation(args.angle, args.axis)
 
 
 def names(ds, var):

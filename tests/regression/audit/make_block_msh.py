@@ -6,9 +6,10 @@ Writes the block [0, 1] x [0, 0.5] (x [0, 1] with NZ) as a structured Gmsh MSH 2
 (AX, AY, AZ) through the origin (2D: about z) and then translated: the same mesh, node for node, in another
 frame, for the objectivity decks (objectivity_2d.xml, objectivity_3d.xml). Prints the rotation matrix."""
 import argparse
-import math
 
 import numpy as np
+
+from msh_frames import rotation, write_msh
 
 parser = argparse.ArgumentParser()
 parser.add_argument("out")
@@ -20,10 +21,7 @@ args = parser.parse_args()
 three_d = len(args.n) == 3
 nx, ny = args.n[0], args.n[1]
 nz = args.n[2] if three_d else 0
-axis = np.array(args.axis) / np.linalg.norm(args.axis)
-t = math.radians(args.angle)
-K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
-R = np.eye(3) + math.sin(t) * K + (1 - math.cos(t)) * K @ K  # Rodrigues
+R = rotation(args.angle, args.axis)
 shift = np.array((list(args.translate) + [0.0, 0.0])[:3])
 
 
@@ -58,15 +56,5 @@ else:
         for i in range(nx):
             elements.append((1, tag, [node(i, j), node(i + 1, j)]))
     names = [(2, 1, "block"), (1, 2, "bottom"), (1, 3, "top")]
-with open(args.out, "w") as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n" % len(names))
-    for dim, tag, name in names:
-        f.write(f'{dim} {tag} "{name}"\n')
-    f.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(nodes))
-    for n, p in enumerate(nodes, 1):
-        f.write(f"{n} {p[0]!r} {p[1]!r} {p[2]!r}\n")
-    f.write("$EndNodes\n$Elements\n%d\n" % len(elements))
-    for e, (kind, tag, conn) in enumerate(elements, 1):
-        f.write(f"{e} {kind} 2 {tag} {tag} " + " ".join(map(str, conn)) + "\n")
-    f.write("$EndElements\n")
+write_msh(args.out, names, nodes, elements)
 print("R =", np.array2string(R, precision=17, separator=", "))

@@ -6,9 +6,10 @@ Writes two blocks as a structured Gmsh MSH 2.2 mesh of HEX8: "lower" [0, 1] x [0
 upper_bottom, upper_top, rotated by DEG degrees about the axis (AX, AY, AZ) through the origin and then translated,
 as make_block_msh.py does: the mortar objectivity decks (objectivity_mortar.xml). Prints the rotation matrix."""
 import argparse
-import math
 
 import numpy as np
+
+from msh_frames import rotation, write_msh
 
 parser = argparse.ArgumentParser()
 parser.add_argument("out")
@@ -16,10 +17,7 @@ parser.add_argument("--angle", type=float, default=0.0)
 parser.add_argument("--axis", type=float, nargs=3, default=[0.0, 0.0, 1.0])
 parser.add_argument("--translate", type=float, nargs=3, default=[0.0, 0.0, 0.0])
 args = parser.parse_args()
-axis = np.array(args.axis) / np.linalg.norm(args.axis)
-t = math.radians(args.angle)
-K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
-R = np.eye(3) + math.sin(t) * K + (1 - math.cos(t)) * K @ K  # Rodrigues
+R = rotation(args.angle, args.axis)
 shift = np.array(args.translate)
 nodes, elements = [], []
 names = [(3, 1, "lower"), (3, 2, "upper"), (2, 3, "lower_bottom"), (2, 4, "lower_top"), (2, 5, "upper_bottom"),
@@ -44,15 +42,5 @@ for block, (n, y0, faces) in enumerate([(4, 0.0, (3, 4)), (3, 0.5, (5, 6))]):
         for k in range(n):
             for i in range(n):
                 elements.append((3, tag, [node(i, j, k), node(i + 1, j, k), node(i + 1, j, k + 1), node(i, j, k + 1)]))
-with open(args.out, "w") as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n" % len(names))
-    for dim, tag, name in names:
-        f.write(f'{dim} {tag} "{name}"\n')
-    f.write("$EndPhysicalNames\n$Nodes\n%d\n" % len(nodes))
-    for n, p in enumerate(nodes, 1):
-        f.write(f"{n} {float(p[0])!r} {float(p[1])!r} {float(p[2])!r}\n")
-    f.write("$EndNodes\n$Elements\n%d\n" % len(elements))
-    for e, (kind, tag, conn) in enumerate(elements, 1):
-        f.write(f"{e} {kind} 2 {tag} {tag} " + " ".join(map(str, conn)) + "\n")
-    f.write("$EndElements\n")
+write_msh(args.out, names, nodes, elements)
 print("R =", np.array2string(R, precision=17, separator=", "))

@@ -6,10 +6,11 @@ writes MESH in: its mesh file MESH, every rigid-surface Points (positions: rotat
 Motion (displacements: rotated), as make_block_msh.py rotates (Rodrigues' formula, the axis through the origin;
 2D about z). Its title and header comment say so."""
 import argparse
-import math
 import re
 
 import numpy as np
+
+from msh_frames import rotation
 
 parser = argparse.ArgumentParser()
 parser.add_argument("deck")
@@ -20,10 +21,7 @@ parser.add_argument("--axis", type=float, nargs=3, default=[0.0, 0.0, 1.0])
 parser.add_argument("--translate", type=float, nargs="+", default=[0.0, 0.0, 0.0])
 parser.add_argument("--vector", action="append", default=[], help="a load whose load-step values are vectors to rotate")
 args = parser.parse_args()
-axis = np.array(args.axis) / np.linalg.norm(args.axis)
-t = math.radians(args.angle)
-K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
-R = np.eye(3) + math.sin(t) * K + (1 - math.cos(t)) * K @ K
+R = rotation(args.angle, args.axis)
 shift = np.array((list(args.translate) + [0.0, 0.0])[:3])
 text = open(args.deck).read()
 dim = 3 if "Facets" in text or "Traction" in text and "Spring" in text else 2  # the decks this writes
