@@ -855,6 +855,10 @@ void MortarInterface<F>::commit() {
       for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
         if (evaluatesSlave_[k])
           committedTraction_[k] = transportTraction(committedTraction_[k], slipBasis(k, committedSlave_), slipBasis(k, trialSlave_));
+    // The trial traction too: until the next evaluation the trial state is the committed one, and a second
+    // commit without an evaluation between (the continuation commits its initial state twice) must find it
+    // in the new basis, not carry the old basis' components into it (issue 25, verification §9.4).
+    trialTraction_ = committedTraction_;
   }
   if (!trialSlave_.empty()) committedSlave_ = trialSlave_;
   if (!trialMaster_.empty()) committedMaster_ = trialMaster_;
