@@ -32,6 +32,7 @@
 #include "solvers/LinearSolverFactory.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/PreconditionerReuse.hpp"
+#include "solvers/ResidualTolerance.hpp"
 #include "solvers/SolverParameters.hpp"
 #include "solvers/StaticSolveDriver.hpp"
 
@@ -219,7 +220,14 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
                 summary.finished ? "finished" : summary.checkpointed ? "stopped for a restart" : "STOPPED", summary.increments, summary.failedAttempts,
                 summary.newtonIterations, summary.linearSolves, summary.finalLambda);
     std::printf("contessa: wrote %s and %s\n", results.exodusPath().c_str(), results.historyPath().c_str());
+    if (summary.forceScale > 0 || summary.residualBound > 0)
+      std::printf("contessa: Newton residual test at the last increment: force scale F = ||f_int|| = %.3g, "
+                  "absolute bound %.3g (%.3g F)\n",
+                  summary.forceScale, summary.residualBound,
+                  summary.forceScale > 0 ? summary.residualBound / summary.forceScale : 0.0);
     std::fflush(stdout);
+    if (!summary.toleranceWarning.empty())
+      std::fprintf(stderr, "contessa: warning: %s\n", summary.toleranceWarning.c_str());
     for (const auto& warning : results.regularisationWarnings())  // issue 21: the final state's contact
       std::fprintf(stderr, "contessa: warning: %s\n", warning.c_str());
   }
@@ -341,6 +349,9 @@ int run(const CommandLine& cl, const Teuchos::RCP<const Teuchos::Comm<int>>& com
   if (root && !cl.quiet)
     std::printf("contessa: linear solver %s (%s)\n", input.linearSolverChoice.solver.c_str(),
                 input.linearSolverChoice.reason.c_str());
+  if (root && !cl.quiet)
+    std::printf("contessa: Newton residual test %s\n",
+                solvers::ResidualTolerance::fromDeck(piro.sublist("NOX").sublist("Status Tests")).describe().c_str());
 
   // 3. The solve, its outcome and the run's summary.
   RunCheckpoints checkpoints(comm, *model, results, restartPath, identity, problem.checkpointEvery,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -45,6 +46,7 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
   overlapX_ = rcp(new Vector(layout_->overlapMap()));
   overlapForce_ = rcp(new Vector(layout_->overlapMap()));
   overlapDfdLambda_ = rcp(new Vector(layout_->overlapMap()));
+  overlapInternal_ = rcp(new Vector(layout_->overlapMap()));
   // The element couplings, once: the assembler runs at u = 0 (before any state matters) to name each
   // element's DOFs.
   solids_->assemble(std::vector<double>(layout_->numOverlapDofs(), 0.0).data(), false,
@@ -57,6 +59,7 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
   passX_ = rcp(new Vector(layout_->ownedMap()));
   passForce_ = rcp(new Vector(layout_->ownedMap()));
   passDfdLambda_ = rcp(new Vector(layout_->ownedMap()));
+  internalForce_ = rcp(new Vector(layout_->ownedMap()));
   conditions_ = std::make_unique<BoundaryConditions>(problem_, *layout_);
   results_ = std::make_unique<PostProcessing>(problem_, *layout_, *solids_, *contact_);
   schedule_ = loadScheduleOf(problem_);
@@ -161,7 +164,8 @@ Teuchos::ArrayRCP<const double> ContactMechanicsModel::overlapped(const Vector& 
 }
 
 SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double lambda, bool withStiffness,
-                                                       bool updateTrial, Vector& force, Vector& dForcedLambda) const {
+                                                       bool updateTrial, Vector& force, Vector& dForcedLambda,
+                                                       double* internalForceNorm) const {
   using timers::Phase;
   // A pass that leaves the trial state alone is the reactions' own element loop.
   const auto phase = [&](Phase p) { return updateTrial ? p : Phase::Reactions; };
@@ -184,6 +188,11 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
                                           if (ke != nullptr) scatter_->addElementStiffness(dofs, n, ke);
                                         });
   elementScope.reset();
+  if (internalForceNorm != nullptr) {
+    // The elements' forces alone, before contact and loads are added (the force scale, ForceScale.hpp).
+    auto fi = overlapInternal_->getDataNonConst(0);
+    std::copy(fo.begin(), fo.end(), fi.begin());
+  }
   {
     timers::Scope contactScope(phase(Phase::Contact));
     contactFitsGraph_ = contact_->assemble(u.getRawPtr(), a, updateTrial, fo.getRawPtr(), dl.getRawPtr(),
@@ -203,18 +212,23 @@ SolidAssembler::Status ContactMechanicsModel::assemble(const Vector& x, double l
   force.doExport(*overlapForce_, layout_->exporter(), Tpetra::ADD);
   dForcedLambda.putScalar(0.0);
   dForcedLambda.doExport(*overlapDfdLambda_, layout_->exporter(), Tpetra::ADD);
+  if (internalForceNorm != nullptr) {
+    internalForce_->putScalar(0.0);
+    internalForce_->doExport(*overlapInternal_, layout_->exporter(), Tpetra::ADD);
+    *internalForceNorm = internalForce_->norm2();
+  }
   return status;
 }
 
 void ContactMechanicsModel::evaluatePass(const Vector& x, double lambda, bool withStiffness) const {
-  passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+  passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_, &passForceScale_);
   if (withStiffness && !contactFitsGraph_) {
     // A contact pairing outside the reserved couplings (every rank agrees): reserve around the current
     // configuration, rebuild the graph and assemble the pass again on it. The new reservation holds
     // every pairing the run-time search can make at this x (CouplingReservation.hpp), so the second
     // pass fits; a residual-only pass never rebuilds (the next Jacobian does).
     rebuildGraph(overlapped(x).getRawPtr());
-    passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_);
+    passStatus_ = assemble(x, lambda, withStiffness, true, *passForce_, *passDfdLambda_, &passForceScale_);
     if (!contactFitsGraph_)
       throw std::logic_error("ContactMechanicsModel: the rebuilt matrix graph does not hold the contact pairing (" +
                              contact_->outsideReservation() + ")");
@@ -279,6 +293,27 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
     // finite-value test then fails the solve and the continuation cuts the step back.
     if (!ok)
       for (auto& v : f->getDataNonConst(0)) v = std::numeric_limits<double>::quiet_NaN();
+    // The out-of-balance force: f without its prescribed rows (x − ū, a displacement). It is only a
+    // measure of convergence once those rows hold (to 1e-12 of the largest |x|, round-off after one Newton
+    // step); before (e.g. a solve from rest under a prescribed displacement, where f_int and f_free are
+    // still 0) it is infinite, so that no force-relative test passes there.
+    std::vector<double> free(f->getLocalLength());
+    {
+      const auto fv = f->getData(0);
+      std::copy(fv.begin(), fv.end(), free.begin());
+    }
+    double local[2] = {0.0, 0.0}, largest[2] = {0.0, 0.0};  // max |x − ū| on prescribed rows, max |x|
+    for (const LO r : conditions_->prescribedRows()) {
+      local[0] = std::max(local[0], std::abs(free[static_cast<std::size_t>(r)]));
+      free[static_cast<std::size_t>(r)] = 0.0;
+    }
+    for (const double v : x->getData(0)) local[1] = std::max(local[1], std::abs(v));
+    double squares = 0.0, sum = 0.0;
+    for (const double v : free) squares += v * v;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &squares, &sum);
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 2, local, largest);
+    const bool prescribedHold = largest[0] <= 1e-12 * largest[1];
+    lastOutOfBalance_ = prescribedHold ? std::sqrt(sum) : std::numeric_limits<double>::infinity();
   }
   if (!W.is_null()) {
     // The stiffness of the pass, with the rows of other ranks added; prescribed rows become identity rows.

@@ -27,6 +27,7 @@
 #include "deck/ProblemDefinition.hpp"
 #include "io/RestartFile.hpp"
 #include "model/ContactAugmentation.hpp"
+#include "model/ForceScale.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/LoadStepping.hpp"
 #include "model/PostProcessing.hpp"
@@ -54,7 +55,8 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
                               public LoadStepping,
                               public continuation::ContactEventSource,
                               public SolveDiagnostics,
-                              public ContactAugmentation {
+                              public ContactAugmentation,
+                              public ForceScale {
  public:
   /// The model of this rank's part of `problem`'s mesh (problem->mesh, made for `comm`'s rank and size;
   /// std::logic_error otherwise). The model shares the problem: the caller need not keep it alive.
@@ -160,6 +162,9 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
 
   /// Number of Jacobian evaluations so far (each is followed by one linear solve in Newton).
   int jacobianEvaluations() const override { return jacobianEvaluations_; }
+  // ForceScale: ‖f_int‖₂ of the latest evaluation pass (kept with the pass).
+  double forceScale() const override { return passForceScale_; }
+  double outOfBalanceNorm() const override { return lastOutOfBalance_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
   int elementPasses() const { return elementPasses_; }
   int dimension() const { return dim_; }
@@ -187,9 +192,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   void rebuildGraph(const double* u) const;
   /// One assembly pass at owned x and load factor λ: internal and contact forces and their ∂/∂λ,
   /// exported to owned rows, before boundary conditions; with `withStiffness`, the stiffness into
-  /// scatter_. `updateTrial` stores the trial state. Returns the first element that failed, if any.
+  /// scatter_. `updateTrial` stores the trial state. `internalForceNorm` (may be null): ‖f_int‖₂, the
+  /// elements' forces alone, global. Returns the first element that failed, if any.
   SolidAssembler::Status assemble(const Vector& x, double lambda, bool withStiffness, bool updateTrial,
-                                  Vector& force, Vector& dForcedLambda) const;
+                                  Vector& force, Vector& dForcedLambda, double* internalForceNorm = nullptr) const;
   /// The pass every evaluation request is served from: residual, Jacobian and ∂f/∂λ at (x, λ).
   void evaluatePass(const Vector& x, double lambda, bool withStiffness) const;
   /// Whether the latest pass was made at exactly this x, λ and contact freeze, and `valid` still holds
@@ -216,6 +222,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   std::unique_ptr<PostProcessing> results_;
   Teuchos::RCP<const Map> paramMap_;
   Teuchos::RCP<Vector> overlapX_, overlapForce_, overlapDfdLambda_;
+  Teuchos::RCP<Vector> overlapInternal_, internalForce_;  ///< f_int alone (overlapped, owned): the force scale
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> solverFactory_;
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> xSpace_, pSpace_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
@@ -224,6 +231,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   // the reactions (no second element loop for the output).
   Teuchos::RCP<Vector> passX_, passForce_, passDfdLambda_;  ///< owned; force = f_int + contact
   mutable double passLambda_ = 0;
+  mutable double passForceScale_ = 0;  ///< ‖f_int‖₂ of the pass (ForceScale)
   mutable bool passFrozen_ = false, passHasStiffness_ = false;
   mutable SolidAssembler::Status passStatus_;
   mutable bool passServesEvaluations_ = false;  ///< until the state is committed or rolled back
@@ -234,6 +242,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   mutable double graphRebuildSeconds_ = 0;
   std::function<void(const GraphRebuild&)> rebuildObserver_;
   mutable double lastLoadFactor_ = 0;
+  mutable double lastOutOfBalance_ = 0;  ///< ‖f‖₂ over the free rows of the latest residual (ForceScale)
   continuation::LoadSchedule schedule_;
   int loadStep_ = 0;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank

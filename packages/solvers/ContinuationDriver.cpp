@@ -51,13 +51,13 @@ RCP<Teuchos::ParameterList> locaParameters(const Teuchos::ParameterList& piro, c
   return top;
 }
 
-// The Newton tests of every solve: the deck's tolerances in the ResidualTest, and what the step-size
-// method adds.
+// The Newton tests of every solve: the deck's tolerances in the ResidualTest (its absolute bound the deck's
+// or force-scaled, ResidualTolerance.hpp), and what the step-size method adds.
 std::unique_ptr<NewtonStatusTests> newtonTests(const SolverModel& model, const Teuchos::ParameterList& deckTests,
-                                               StepControl& stepControl) {
-  auto convergence = rcp(new ResidualTest(deckTests.get<double>("Absolute Residual Tolerance"),
+                                               StepControl& stepControl, ResidualToleranceRecord& record) {
+  auto convergence = rcp(new ResidualTest(ResidualTolerance::fromDeck(deckTests), model.forces,
                                           deckTests.get<double>("Relative Residual Tolerance"),
-                                          deckTests.get<double>("Update Tolerance"), stepControl));
+                                          deckTests.get<double>("Update Tolerance"), &stepControl, &record));
   return std::make_unique<NewtonStatusTests>(*model.diagnostics, model.evaluator->get_W_factory(), convergence,
                                              deckTests.get<int>("Maximum Iterations"), &stepControl);
 }
@@ -133,6 +133,9 @@ RunSummary ContinuationDriver::run() {
   summary.linearSolves =
       mumpsSolves > 0 ? static_cast<int>(mumpsSolves) : model_.diagnostics->jacobianEvaluations() - jacobiansBefore;
   summary.linearIterations = iterativeSolveLog().iterations - krylovBefore;
+  summary.forceScale = tolerance_.lastForceScale;
+  summary.residualBound = tolerance_.lastBound;
+  summary.toleranceWarning = tolerance_.warning;
   return summary;
 }
 
@@ -141,7 +144,7 @@ ContinuationDriver::StepOutcome ContinuationDriver::runStep(const StepStart& sta
   const auto& loca = piro_.sublist("LOCA");
   const ContinuationPoint* resume = start.resume;
   auto stepControl = createStepControl({stepSize, loca.sublist("Stepper").get<double>("Max Value"), *model_.events});
-  auto tests = newtonTests(model_, piro_.sublist("NOX").sublist("Status Tests"), *stepControl);
+  auto tests = newtonTests(model_, piro_.sublist("NOX").sublist("Status Tests"), *stepControl, tolerance_);
 
   auto errors = rcp(new std::ostringstream());
   auto newton = rcp(new NewtonCounter(*tests, *errors));

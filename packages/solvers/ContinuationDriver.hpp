@@ -17,6 +17,7 @@
 #include <Thyra_VectorBase.hpp>
 
 #include "solvers/ContinuationRestart.hpp"
+#include "solvers/ResidualTolerance.hpp"
 #include "solvers/RunReports.hpp"
 #include "solvers/SolverModel.hpp"
 
@@ -59,6 +60,7 @@ class ContinuationDriver {
   Teuchos::ParameterList piro_;
   IncrementObserver& observer_;
   Teuchos::RCP<NOX::Observer> iterationObserver_;
+  ResidualToleranceRecord tolerance_;  ///< the Newton test's force scale over every load step
 };
 
 }  // namespace contessa::solvers

@@ -13,14 +13,15 @@ T valueOr(const Teuchos::ParameterList& list, const std::string& name, T fallbac
   return list.isType<T>(name) ? list.get<T>(name) : fallback;
 }
 
-// The forcing term's choice and the Newton target it serves: ResidualTest's max(absolute, relative · ‖f₀‖)
-// for the continuation, the absolute NormF test alone for the single solve (StaticSolveDriver).
+// The forcing term's choice and the Newton target it serves: ResidualTest's max(bound, relative · ‖f₀‖)
+// for the continuation, the bound alone for the single solve (StaticSolveDriver). The bound (the deck's
+// absolute tolerance or c · F) is set by ResidualTest at each iterate, before the step's linear solve.
 void setKrylovForcing(const Teuchos::ParameterList& deckNox, NoxPrinting printing) {
   auto& forcing = krylovForcing();
   const std::string term = valueOr<std::string>(deckNox.sublist("Direction"), "Forcing Term", "Newton Target");
   forcing.term = term == "Constant" ? ForcingTerm::Constant : ForcingTerm::NewtonTarget;
   const auto& tests = deckNox.sublist("Status Tests");
-  forcing.absolute = valueOr(tests, "Absolute Residual Tolerance", 1e-8);
+  forcing.absolute = valueOr(tests, "Absolute Residual Tolerance", 0.0);
   forcing.relative = printing == NoxPrinting::Continuation ? valueOr(tests, "Relative Residual Tolerance", 1e-10) : 0.0;
   forcing.inStep = forcing.firstStep = false;
 }

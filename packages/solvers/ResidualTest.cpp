@@ -8,6 +8,8 @@
 #include <NOX_Abstract_Vector.H>
 #include <NOX_Solver_LineSearchBased.H>
 
+#include "solvers/KrylovForcing.hpp"
+
 namespace contessa::solvers {
 
 NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) {
@@ -15,7 +17,7 @@ NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic
   if (solver.getNumIterations() == 0) {
     initial_ = norm;
     updateNorm_ = -1;
-  } else {
+  } else if (update_ > 0) {
     auto dx = solver.getSolutionGroup().getX().clone(NOX::DeepCopy);
     dx->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
     // The Newton direction, not the damped step: a line search that shrinks the step must not
@@ -26,18 +28,37 @@ NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic
     xNorm_ = solver.getSolutionGroup().getX().norm();
   }
   norm_ = norm;
-  const bool residualSmall = std::isfinite(norm) && norm <= std::max(absolute_, relative_ * initial_);
-  const bool updateSmall = std::isfinite(norm) && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_ &&
-                           stepControl_.updateMeaningful();
-  status_ = (residualSmall || updateSmall) && stepControl_.mayConverge() ? NOX::StatusTest::Converged
-                                                                          : NOX::StatusTest::Unconverged;
+  // F of the iterate just evaluated (the model's latest pass is at the solver's x: NOX computes f before
+  // it checks). The force-scaled bound is a force: it bounds the out-of-balance force, f without its
+  // prescribed rows (x − ū, whose round-off is a length); the deck's absolute tolerance bounds ||f|| as
+  // it always has.
+  forceScale_ = forces_ != nullptr ? forces_->forceScale() : 0.0;
+  absolute_ = bound_.boundAt(forceScale_);
+  const double judged = bound_.isForceScaled() && forces_ != nullptr && std::isfinite(norm) ? forces_->outOfBalanceNorm() : norm;
+  judged_ = judged;
+  // The Krylov forcing term aims at the same target (KrylovForcing.hpp), set before the step's solve.
+  krylovForcing().absolute = absolute_;
+  const double relativeBound = relative_ > 0 ? relative_ * initial_ : 0.0;
+  const bool residualSmall = std::isfinite(norm) && (judged <= absolute_ || norm <= relativeBound);
+  const bool updateSmall = std::isfinite(norm) && update_ > 0 && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_ &&
+                           (stepControl_ == nullptr || stepControl_->updateMeaningful());
+  const bool mayConverge = stepControl_ == nullptr || stepControl_->mayConverge();
+  status_ = (residualSmall || updateSmall) && mayConverge ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+  if (status_ == NOX::StatusTest::Converged && record_ != nullptr && std::isfinite(forceScale_))
+    record_->accepted(bound_, forceScale_, judged, absolute_, residualSmall && norm > relativeBound);
   return status_;
 }
 
 std::ostream& ResidualTest::print(std::ostream& os, int indent) const {
   for (int i = 0; i < indent; ++i) os << ' ';
-  os << status_ << "||f|| = " << norm_ << " <= max(" << absolute_ << ", " << relative_ << " * " << initial_
-     << ") or ||dx|| = " << updateNorm_ << " <= " << update_ << " * " << xNorm_ << "\n";
+  os << status_;
+  if (bound_.isForceScaled())
+    os << "||f_free|| = " << judged_ << " <= " << absolute_ << " = " << bound_.boundAt(1.0) << " * F (F = " << forceScale_
+       << ") or ||f|| = " << norm_ << " <= " << relative_ << " * " << initial_;
+  else
+    os << "||f|| = " << norm_ << " <= max(" << absolute_ << ", " << relative_ << " * " << initial_ << ")";
+  if (update_ > 0) os << " or ||dx|| = " << updateNorm_ << " <= " << update_ << " * " << xNorm_;
+  os << "\n";
   return os;
 }
 

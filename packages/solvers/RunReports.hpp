@@ -63,6 +63,10 @@ struct RunSummary {
   int runNewtonIterations = 0;
   long linearIterations = 0;  ///< Krylov iterations of every linear solve (0 with a direct solver)
   double finalLambda = 0;
+  /// The Newton residual test at the last converged state (ResidualTolerance.hpp): its force scale F
+  /// (||f_int||) and the absolute bound applied; a loose acceptance, said once ("" when none).
+  double forceScale = 0, residualBound = 0;
+  std::string toleranceWarning;
 };
 
 }  // namespace contessa::solvers

@@ -8,6 +8,7 @@
 
 #include "continuation/ContactEventSource.hpp"
 #include "model/ContactAugmentation.hpp"
+#include "model/ForceScale.hpp"
 #include "model/IncrementalState.hpp"
 #include "model/LoadStepping.hpp"
 #include "model/SolveDiagnostics.hpp"
@@ -22,10 +23,11 @@ struct SolverModel {
   model::LoadStepping* loadStepping = nullptr;  ///< the load steps (continuation::LoadSchedule)
   int dimension = 0;  ///< displacement components per node (the restart file's node table)
   model::ContactAugmentation* augmentation = nullptr;  ///< the augmented Lagrangian's multiplier updates
+  const model::ForceScale* forces = nullptr;  ///< the force scale of the Newton test (ResidualTolerance)
 
   template <class Model>
   static SolverModel of(const Teuchos::RCP<Model>& model) {
-    return {model, model.get(), model.get(), model.get(), model.get(), model->dimension(), model.get()};
+    return {model, model.get(), model.get(), model.get(), model.get(), model->dimension(), model.get(), model.get()};
   }
 };
 

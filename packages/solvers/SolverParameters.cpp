@@ -10,6 +10,7 @@
 #include "deck/DeckReader.hpp"
 #include "deck/ParameterValidation.hpp"
 #include "deck/ProblemDefinition.hpp"
+#include "solvers/ResidualTolerance.hpp"
 #include "solvers/StepSizeMethods.hpp"
 
 namespace contessa::solvers {
@@ -98,7 +99,13 @@ RCP<const ParameterList> piroValidParameters() {
   deck::setPositiveInt(tests, "Maximum Iterations", 25, "Newton iterations before the increment counts as failed");
   deck::setNonNegative(tests, "Relative Residual Tolerance", 1e-10,
                        "Converged when ||f|| <= tol * ||f|| at the increment's first iterate");
-  deck::setNonNegative(tests, "Absolute Residual Tolerance", 1e-8, "Converged when ||f|| <= tol (2-norm)");
+  deck::setNonNegative(tests, "Absolute Residual Tolerance", 0.0,
+                       "Not set (the default): the force-scaled test below. Set: converged when ||f|| <= tol (2-norm) "
+                       "in the deck's force unit, instead of the force-scaled test (0: no absolute test)");
+  deck::setNonNegative(tests, "Force-Scaled Residual Tolerance", ResidualTolerance::kDefaultFactor,
+                       "Without Absolute Residual Tolerance: converged when ||f|| <= tol * F, F = ||f_int|| (2-norm of "
+                       "the internal forces at the state: external loads, contact forces and reactions), the same in "
+                       "any unit of force");
   deck::setNonNegative(tests, "Update Tolerance", 1e-10,
                        "Converged when the Newton update ||dx|| <= tol * ||x|| (round-off floor of penalty contact)");
   auto& printing = nox.sublist("Printing", false, "Solver output");
@@ -149,7 +156,18 @@ LinearSolverChoice chooseLinearSolver(ParameterList& stratimikos, const ProblemS
 }
 
 LinearSolverChoice validatePiro(ParameterList& piro, int numRanks, const ProblemSize& size) {
+  const auto gives = [&piro](const std::string& name) {
+    return piro.isSublist("NOX") && piro.sublist("NOX").isSublist("Status Tests") &&
+           piro.sublist("NOX").sublist("Status Tests").isParameter(name);
+  };
+  const bool absoluteGiven = gives("Absolute Residual Tolerance");
+  requireInput(!absoluteGiven || !gives("Force-Scaled Residual Tolerance"),
+               "Piro/NOX/Status Tests: expected one of Absolute Residual Tolerance (in the deck's force unit) and "
+               "Force-Scaled Residual Tolerance (relative to the force scale), not both");
   deck::validateAndSetDefaults(piro, *piroValidParameters(), "Piro", {"Stratimikos"});
+  // The absolute tolerance stays only where the deck gives it: its absence selects the force-scaled test
+  // (ResidualTolerance::fromDeck).
+  if (!absoluteGiven) piro.sublist("NOX").sublist("Status Tests").remove("Absolute Residual Tolerance");
   const auto& step = piro.sublist("LOCA").sublist("Step Size");
   requireInput(step.get<double>("Min Step Size") <= step.get<double>("Initial Step Size") &&
                    step.get<double>("Initial Step Size") <= step.get<double>("Max Step Size"),

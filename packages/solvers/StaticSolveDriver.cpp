@@ -5,7 +5,6 @@
 
 #include <NOX_Observer.hpp>
 #include <NOX_Observer_Vector.hpp>
-#include <NOX_StatusTest_NormF.H>
 #include <Piro_NOXSolver.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Thyra_VectorStdOps.hpp>
@@ -16,6 +15,7 @@
 #include "solvers/NewtonCounter.hpp"
 #include "solvers/NewtonStatusTests.hpp"
 #include "solvers/NoxParameters.hpp"
+#include "solvers/ResidualTest.hpp"
 
 namespace contessa::solvers {
 
@@ -66,13 +66,14 @@ RunSummary solveStatic(const SolverModel& model, const Teuchos::ParameterList& p
                "Enforcement = Augmented Lagrangian; use LOCA");
   const auto& deckNox = piro.sublist("NOX");
   const auto& deckTests = deckNox.sublist("Status Tests");
-  // The convergence test of a single solve is the absolute residual tolerance (a relative one has no
-  // increment start to refer to; the update test belongs to the continuation driver), within the same
-  // tests as the continuation: finite residual, no tunnelling, the iteration limit.
-  // The unscaled 2-norm, as NOX's status-test factory builds NormF from a parameter list.
+  // The convergence test of a single solve is the absolute bound alone, the deck's or force-scaled
+  // (ResidualTolerance.hpp; a relative one has no increment start to refer to, the update test belongs to
+  // the continuation driver), within the same tests as the continuation: finite residual, no tunnelling,
+  // the iteration limit. ||f|| is the unscaled 2-norm, as NOX's NormF.
+  ResidualToleranceRecord record;
   NewtonStatusTests tests(*model.diagnostics, model.evaluator->get_W_factory(),
-                          rcp(new NOX::StatusTest::NormF(deckTests.get<double>("Absolute Residual Tolerance"),
-                                                         NOX::Abstract::Vector::TwoNorm, NOX::StatusTest::NormF::Unscaled)),
+                          rcp(new ResidualTest(ResidualTolerance::fromDeck(deckTests), model.forces, 0.0, 0.0, nullptr,
+                                               &record)),
                           deckTests.get<int>("Maximum Iterations"));
   auto noxOutput = rcp(new std::ostringstream());
   auto solveObserver = rcp(new NewtonCounter(tests, *noxOutput));
@@ -127,6 +128,9 @@ RunSummary solveStatic(const SolverModel& model, const Teuchos::ParameterList& p
   }
   summary.linearSolves = static_cast<int>(mumpsCounters().solves - solvesBefore);
   summary.linearIterations = iterativeSolveLog().iterations - krylovBefore;
+  summary.forceScale = record.lastForceScale;
+  summary.residualBound = record.lastBound;
+  summary.toleranceWarning = record.warning;
   return summary;
 }
 
