@@ -20,6 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 // the point Σ_a N_a x_a and the tangents ∂x/∂ξ_m = Σ_a ∂N_a/∂ξ_m x_a (g[m][i]) at positions x.
 template <class Cell, int M>
 struct FacetPoint {
+  static constexpr int kParametric = M;  ///< M = D − 1 for a facet, D for a cell
   template <int D>
   std::array<double, D> point(const double* x) const {
     const auto& c = static_cast<const Cell&>(*this);
@@ -202,6 +203,17 @@ double norm(const std::array<double, D>& v) {
   return std::sqrt(s);
 }
 
+// det ∂X/∂ξ of a cell at one point (the columns are the tangents).
+template <int D>
+double cellJacobian(const std::array<std::array<double, D>, D>& g) {
+  if constexpr (D == 2) {
+    return g[0][0] * g[1][1] - g[0][1] * g[1][0];
+  } else {
+    return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[1][0] * (g[0][1] * g[2][2] - g[0][2] * g[2][1]) +
+           g[2][0] * (g[0][1] * g[1][2] - g[0][2] * g[1][1]);
+  }
+}
+
 }  // namespace
 
 double RevolvedMeasure::weight(const double* x) const { return 2.0 * kPi * x[0]; }
@@ -249,27 +261,37 @@ void followerPressureOn(const double* x, double p, const LoadMeasure& measure, d
   }
 }
 
+// The reference measure per unit parent measure at one point (theory-solids eqs. 8.5, 8.6): |a(X)| on a facet
+// (dA = |a| dξ), det(∂X/∂ξ) on a cell (dV = det(∂X/∂ξ) dξ).
 template <int D, class Cell>
-void facetTractionOn(const double* X, const double* t, const LoadMeasure& measure, double* force) {
+double referenceJacobian(const Cell& cell, const double* X) {
+  const auto g = cell.template tangents<D>(X);
+  if constexpr (Cell::kParametric == D) return cellJacobian<D>(g);
+  else return norm<D>(areaVector<D>(g));
+}
+
+// A dead load v (per reference area of a facet, eq. 8.5, or per reference volume of a cell, eq. 8.6):
+// f_a = Σ_q W_q w(X_q) J_q N_a v, J the reference measure above.
+template <int D, class Cell>
+void deadLoadOn(const double* X, const double* v, const LoadMeasure& measure, double* force) {
   constexpr int K = Cell::kNodes;
   for (int r = 0; r < D * K; ++r) force[r] = 0.0;
   for (const auto& q : Cell::rule()) {
     const Cell cell(q.xi);
     const auto Xq = cell.template point<D>(X);
-    // eq. (8.5): dA = |a(X)| dξ.
-    const double dA = q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
+    const double dA = q.weight * measure.weight(Xq.data()) * referenceJacobian<D>(cell, X);
     for (int a = 0; a < K; ++a)
-      for (int i = 0; i < D; ++i) force[D * a + i] += dA * cell.N[a] * t[i];
+      for (int i = 0; i < D; ++i) force[D * a + i] += dA * cell.N[a] * v[i];
   }
 }
 
 template <int D, class Cell>
-double facetMeasureOn(const double* X, const LoadMeasure& measure) {
+double measureOn(const double* X, const LoadMeasure& measure) {
   double total = 0.0;
   for (const auto& q : Cell::rule()) {
     const Cell cell(q.xi);
     const auto Xq = cell.template point<D>(X);
-    total += q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
+    total += q.weight * measure.weight(Xq.data()) * referenceJacobian<D>(cell, X);
   }
   return total;
 }
@@ -296,7 +318,7 @@ void followerPressure(const double* x, double p, const LoadMeasure& measure, dou
 
 template <int D>
 void facetTraction(int nodes, const double* X, const double* t, const LoadMeasure& measure, double* force) {
-  withFacetCell<D>(nodes, [&](auto cell) { facetTractionOn<D, typename decltype(cell)::type>(X, t, measure, force); });
+  withFacetCell<D>(nodes, [&](auto cell) { deadLoadOn<D, typename decltype(cell)::type>(X, t, measure, force); });
 }
 
 template <int D>
@@ -307,7 +329,7 @@ void facetTraction(const double* X, const double* t, const LoadMeasure& measure,
 template <int D>
 double facetMeasure(int nodes, const double* X, const LoadMeasure& measure) {
   return withFacetCell<D>(nodes,
-                          [&](auto cell) { return facetMeasureOn<D, typename decltype(cell)::type>(X, measure); });
+                          [&](auto cell) { return measureOn<D, typename decltype(cell)::type>(X, measure); });
 }
 
 template <int D>
@@ -316,17 +338,6 @@ double facetMeasure(const double* X, const LoadMeasure& measure) {
 }
 
 namespace {
-// det ∂X/∂ξ of a cell at one point (the columns are the tangents).
-template <int D>
-double cellJacobian(const std::array<std::array<double, D>, D>& g) {
-  if constexpr (D == 2) {
-    return g[0][0] * g[1][1] - g[0][1] * g[1][0];
-  } else {
-    return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[1][0] * (g[0][1] * g[2][2] - g[0][2] * g[2][1]) +
-           g[2][0] * (g[0][1] * g[1][2] - g[0][2] * g[1][1]);
-  }
-}
-
 // The cells' load rules: the element's own rule (ReferenceElement.hpp interface) where it integrates
 // N_a w det(∂X/∂ξ) exactly on a straight-sided cell, a richer one where it does not. With w = 1 (plane strain,
 // 3D) and w = 2πr (2D revolved, one degree more):
@@ -385,30 +396,6 @@ auto withVolumeCell(int nodes, F&& f) {
                          std::to_string(D) + "D");
 }
 
-template <int D, class Cell>
-void bodyForceOn(const double* X, const double* b, const LoadMeasure& measure, double* force) {
-  constexpr int K = Cell::kNodes;
-  for (int r = 0; r < D * K; ++r) force[r] = 0.0;
-  for (const auto& q : Cell::rule()) {
-    const Cell cell(q.xi);
-    const auto Xq = cell.template point<D>(X);
-    // eq. (8.6): dV = det(∂X/∂ξ) dξ.
-    const double dV = q.weight * measure.weight(Xq.data()) * cellJacobian<D>(cell.template tangents<D>(X));
-    for (int a = 0; a < K; ++a)
-      for (int i = 0; i < D; ++i) force[D * a + i] += dV * cell.N[a] * b[i];
-  }
-}
-
-template <int D, class Cell>
-double cellMeasureOn(const double* X, const LoadMeasure& measure) {
-  double total = 0.0;
-  for (const auto& q : Cell::rule()) {
-    const Cell cell(q.xi);
-    const auto Xq = cell.template point<D>(X);
-    total += q.weight * measure.weight(Xq.data()) * cellJacobian<D>(cell.template tangents<D>(X));
-  }
-  return total;
-}
 }  // namespace
 
 bool isLoadCell(int D, int nodes) {
@@ -418,7 +405,7 @@ bool isLoadCell(int D, int nodes) {
 
 template <int D>
 void bodyForce(int nodes, const double* X, const double* b, const LoadMeasure& measure, double* force) {
-  withVolumeCell<D>(nodes, [&](auto cell) { bodyForceOn<D, typename decltype(cell)::type>(X, b, measure, force); });
+  withVolumeCell<D>(nodes, [&](auto cell) { deadLoadOn<D, typename decltype(cell)::type>(X, b, measure, force); });
 }
 
 template <int D>
@@ -429,7 +416,7 @@ void bodyForce(const double* X, const double* b, const LoadMeasure& measure, dou
 template <int D>
 double cellMeasure(int nodes, const double* X, const LoadMeasure& measure) {
   return withVolumeCell<D>(nodes,
-                           [&](auto cell) { return cellMeasureOn<D, typename decltype(cell)::type>(X, measure); });
+                           [&](auto cell) { return measureOn<D, typename decltype(cell)::type>(X, measure); });
 }
 
 template <int D>
