@@ -1,5 +1,6 @@
 #include "model/ExternalLoads.hpp"
 
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -38,6 +39,9 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
     entries.start.assign(entries.change.size(), 0.0);
     if (load.type == deck::LoadType::Pressure || load.type == deck::LoadType::Traction) {
       const mesh::SideSet& set = mesh.sideSet(load.set);
+      // One Entries per side shape: the entries of one hold sides of one node count, and a side set may mix
+      // them (a wedge's triangles and quadrilaterals, the sides of blocks of different families).
+      std::map<int, Entries> bySize;
       for (std::size_t k = 0; k < set.elements.size(); ++k) {
         const auto where = mesh.locate(set.elements[k]);
         const mesh::ElementBlock& block = mesh.blocks[where.block];
@@ -48,9 +52,11 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
         if (!mechanics::isLoadFacet(dim_, static_cast<int>(nodes.size())))
           throw std::logic_error("ExternalLoads: a side of " + std::to_string(nodes.size()) + " nodes in side set '" +
                                  load.set + "', which no load kernel takes");
-        appendNodes(entries, nodes, problem, localDof);
+        auto group = bySize.try_emplace(static_cast<int>(nodes.size()), entries).first;
+        appendNodes(group->second, nodes, problem, localDof);
       }
-      (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(entries));
+      for (auto& [size, facets] : bySize)
+        (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(facets));
     } else if (load.type == deck::LoadType::BodyForce) {
       for (const auto& name : load.blocks) {
         const mesh::ElementBlock& block = mesh.block(name);

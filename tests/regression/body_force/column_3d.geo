@@ -33,3 +33,5 @@ Physical Surface("back") = {out[2]};
 Physical Surface("right") = {out[3]};
 Physical Surface("front") = {out[4]};
 Physical Surface("left") = {out[5]};
+// A side set of both face shapes (WEDGE6: the top's triangles, the side's quadrilaterals), for a load on mixed faces.
+Physical Surface("top_and_right") = {out[0], out[3]};
