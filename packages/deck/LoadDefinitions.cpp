@@ -9,6 +9,7 @@
 #include "common/Registry.hpp"
 #include "deck/MeshReferences.hpp"
 #include "deck/ParameterValidation.hpp"
+#include "mechanics/DistributedLoads.hpp"
 
 namespace contessa::deck {
 namespace {
@@ -55,7 +56,9 @@ RCP<ParameterList> bodyForceParameters() {
   auto p = withType("Body Force");
   p->set("Blocks", Teuchos::Array<std::string>(), "Element blocks the force acts on; empty = every block");
   p->set("Force Per Volume", Teuchos::Array<double>(),
-         "Force per reference volume at load factor 1 (x, y[, z]), e.g. gravity: density times g; a dead load");
+         "Force per reference volume at load factor 1 (x, y[, z]), e.g. gravity: density times g; a dead load, "
+         "integrated with each cell's shape functions on every cell family (per unit thickness in plane strain, "
+         "over the full circumference, 2 pi r, in an axisymmetric analysis)");
   return p;
 }
 
@@ -88,13 +91,14 @@ void readBodyForce(const ParameterList& list, const std::string& where, const me
   load.blocks.assign(blocks.begin(), blocks.end());
   if (load.blocks.empty())
     for (const auto& block : mesh.blocks) load.blocks.push_back(block.name);
-  // The body-force kernel integrates over QUAD4 and HEX8 cells only (mechanics/DistributedLoads.hpp): another
-  // cell is bad input, refused here in one line on every rank, not by the model's assembly (exit 1, an MPI abort).
+  // The body-force kernel takes every cell family of the element kernels (mechanics::isLoadCell); a cell it
+  // does not take is bad input, refused here in one line on every rank, not by the model's assembly (exit 1,
+  // an MPI abort).
   for (const auto& name : load.blocks) {
     const mesh::CellType type = mesh.block(name).cellType;
-    requireInput(type == mesh::CellType::Quad4 || type == mesh::CellType::Hex8,
+    requireInput(mechanics::isLoadCell(mesh.dimension, mesh::nodesPerCell(type)),
                  where + "/Blocks: block '" + name + "' has " + mesh::exodusCellName(type) +
-                     " cells; a Body Force acts on QUAD4 and HEX8 cells only" +
+                     " cells, which no Body Force kernel takes" +
                      (blocks.empty() ? " (an empty Blocks list means every block)" : ""));
   }
   load.vector = readVector(list, "Force Per Volume", mesh.dimension, where);
@@ -130,7 +134,8 @@ const Registry<LoadRow>& registry() {
         {pressureParameters, readPressure, LoadType::Pressure}},
        {"Traction", "A dead traction on a side set: f_a = ∫ N_a t dA over the reference face",
         {tractionParameters, readTraction, LoadType::Traction}},
-       {"Body Force", "A dead body force on element blocks: f_a = ∫ N_a b dV over the reference volume",
+       {"Body Force", "A dead body force on element blocks of any cell family: f_a = ∫ N_a b dV over the reference volume "
+        "(dV = 2 pi r dA in an axisymmetric analysis)",
         {bodyForceParameters, readBodyForce, LoadType::BodyForce}},
        {"Spring", "Linear springs to ground on a node set: a force -k_i u_i at every node of the set, in every direction i",
         {springParameters, readSpring, LoadType::Spring}}});

@@ -9,6 +9,7 @@
 #include "mechanics/ReferenceElement.hpp"
 #include "mechanics/ShapeFunctions.hpp"
 #include "mechanics/Simplices.hpp"
+#include "mechanics/Wedges.hpp"
 
 namespace contessa::mechanics {
 namespace {
@@ -19,6 +20,7 @@ constexpr double kPi = 3.14159265358979323846;
 // the point Σ_a N_a x_a and the tangents ∂x/∂ξ_m = Σ_a ∂N_a/∂ξ_m x_a (g[m][i]) at positions x.
 template <class Cell, int M>
 struct FacetPoint {
+  static constexpr int kParametric = M;  ///< M = D − 1 for a facet, D for a cell
   template <int D>
   std::array<double, D> point(const double* x) const {
     const auto& c = static_cast<const Cell&>(*this);
@@ -201,6 +203,17 @@ double norm(const std::array<double, D>& v) {
   return std::sqrt(s);
 }
 
+// det ∂X/∂ξ of a cell at one point (the columns are the tangents).
+template <int D>
+double cellJacobian(const std::array<std::array<double, D>, D>& g) {
+  if constexpr (D == 2) {
+    return g[0][0] * g[1][1] - g[0][1] * g[1][0];
+  } else {
+    return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[1][0] * (g[0][1] * g[2][2] - g[0][2] * g[2][1]) +
+           g[2][0] * (g[0][1] * g[1][2] - g[0][2] * g[1][1]);
+  }
+}
+
 }  // namespace
 
 double RevolvedMeasure::weight(const double* x) const { return 2.0 * kPi * x[0]; }
@@ -248,27 +261,37 @@ void followerPressureOn(const double* x, double p, const LoadMeasure& measure, d
   }
 }
 
+// The reference measure per unit parent measure at one point (theory-solids eqs. 8.5, 8.6): |a(X)| on a facet
+// (dA = |a| dξ), det(∂X/∂ξ) on a cell (dV = det(∂X/∂ξ) dξ).
 template <int D, class Cell>
-void facetTractionOn(const double* X, const double* t, const LoadMeasure& measure, double* force) {
+double referenceJacobian(const Cell& cell, const double* X) {
+  const auto g = cell.template tangents<D>(X);
+  if constexpr (Cell::kParametric == D) return cellJacobian<D>(g);
+  else return norm<D>(areaVector<D>(g));
+}
+
+// A dead load v (per reference area of a facet, eq. 8.5, or per reference volume of a cell, eq. 8.6):
+// f_a = Σ_q W_q w(X_q) J_q N_a v, J the reference measure above.
+template <int D, class Cell>
+void deadLoadOn(const double* X, const double* v, const LoadMeasure& measure, double* force) {
   constexpr int K = Cell::kNodes;
   for (int r = 0; r < D * K; ++r) force[r] = 0.0;
   for (const auto& q : Cell::rule()) {
     const Cell cell(q.xi);
     const auto Xq = cell.template point<D>(X);
-    // eq. (8.5): dA = |a(X)| dξ.
-    const double dA = q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
+    const double dA = q.weight * measure.weight(Xq.data()) * referenceJacobian<D>(cell, X);
     for (int a = 0; a < K; ++a)
-      for (int i = 0; i < D; ++i) force[D * a + i] += dA * cell.N[a] * t[i];
+      for (int i = 0; i < D; ++i) force[D * a + i] += dA * cell.N[a] * v[i];
   }
 }
 
 template <int D, class Cell>
-double facetMeasureOn(const double* X, const LoadMeasure& measure) {
+double measureOn(const double* X, const LoadMeasure& measure) {
   double total = 0.0;
   for (const auto& q : Cell::rule()) {
     const Cell cell(q.xi);
     const auto Xq = cell.template point<D>(X);
-    total += q.weight * measure.weight(Xq.data()) * norm<D>(areaVector<D>(cell.template tangents<D>(X)));
+    total += q.weight * measure.weight(Xq.data()) * referenceJacobian<D>(cell, X);
   }
   return total;
 }
@@ -295,7 +318,7 @@ void followerPressure(const double* x, double p, const LoadMeasure& measure, dou
 
 template <int D>
 void facetTraction(int nodes, const double* X, const double* t, const LoadMeasure& measure, double* force) {
-  withFacetCell<D>(nodes, [&](auto cell) { facetTractionOn<D, typename decltype(cell)::type>(X, t, measure, force); });
+  withFacetCell<D>(nodes, [&](auto cell) { deadLoadOn<D, typename decltype(cell)::type>(X, t, measure, force); });
 }
 
 template <int D>
@@ -306,7 +329,7 @@ void facetTraction(const double* X, const double* t, const LoadMeasure& measure,
 template <int D>
 double facetMeasure(int nodes, const double* X, const LoadMeasure& measure) {
   return withFacetCell<D>(nodes,
-                          [&](auto cell) { return facetMeasureOn<D, typename decltype(cell)::type>(X, measure); });
+                          [&](auto cell) { return measureOn<D, typename decltype(cell)::type>(X, measure); });
 }
 
 template <int D>
@@ -315,41 +338,90 @@ double facetMeasure(const double* X, const LoadMeasure& measure) {
 }
 
 namespace {
-// det ∂X/∂ξ of a cell at one point (the columns are the tangents).
-template <int D>
-double cellJacobian(const std::array<std::array<double, D>, D>& g) {
-  if constexpr (D == 2) {
-    return g[0][0] * g[1][1] - g[0][1] * g[1][0];
-  } else {
-    return g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) - g[1][0] * (g[0][1] * g[2][2] - g[0][2] * g[2][1]) +
-           g[2][0] * (g[0][1] * g[1][2] - g[0][2] * g[1][1]);
+// The cells' load rules: the element's own rule (ReferenceElement.hpp interface) where it integrates
+// N_a w det(∂X/∂ξ) exactly on a straight-sided cell, a richer one where it does not. With w = 1 (plane strain,
+// 3D) and w = 2πr (2D revolved, one degree more):
+//   Quad4, Hex8     2 Gauss points per direction (MultilinearCell): degree 3 per direction, N_a w det J ≤ 3;
+//   Q8, Q9          3 × 3 (the element's): N_a w det J ≤ 4 per direction;
+//   Hex20, Hex27    the element's 3 × 3 × 3: N_a det J ≤ 4 per direction on a trilinear geometry;
+//   Tet4, Tet10     the element's 1 and 4 points: N_a of degree 1 and 2, det J constant on a straight-sided cell;
+//   Wedge6          the element's 3 × 2: N_a det J of degree 2 in (ξ, η), 3 in ζ;
+//   Tri3            3 points (degree 2: N_a w), not the element's centroid (degree 1, enough for w = 1 only);
+//   Tri6            the 6-point degree-4 rule (N_a w of degree 3), not the element's 3 points (degree 2);
+//   Wedge15         the 6-point triangle × 3 Gauss points: N_a det J of degree 3 in (ξ, η) (the element's
+//                   3-point triangle is degree 2).
+template <class Shape>
+struct OwnRule {
+  static auto get() { return Shape::quadrature(); }
+};
+struct TriangleDegree2 {
+  static auto get() { return triangleRule<3>(); }
+};
+struct WedgeDegree4By3 {
+  static std::array<QuadraturePoint<3>, 18> get() {
+    const auto triangle = triangleRuleDegree4();
+    const auto line = gaussLegendreRule<1, 3>();
+    std::array<QuadraturePoint<3>, 18> rule{};
+    for (std::size_t t = 0; t < triangle.size(); ++t)
+      for (std::size_t l = 0; l < line.size(); ++l)
+        rule[3 * t + l] = {{triangle[t].xi[0], triangle[t].xi[1], line[l].xi[0]}, triangle[t].weight * line[l].weight};
+    return rule;
   }
+};
+
+template <class Shape>
+using OwnRuleCell = ShapeCell<Shape::kDimension, Shape, OwnRule<Shape>>;
+
+/// Calls f with the CellTag of the cell of `nodes` nodes of a D-dimensional solid: every cell family of the
+/// element kernels (ElementFactory.cpp), told apart by its node count within a dimension. Quad4 and Hex8 keep
+/// MultilinearCell (the same arithmetic as before the other families came).
+template <int D, class F>
+auto withVolumeCell(int nodes, F&& f) {
+  if constexpr (D == 2) {
+    if (nodes == 4) return f(CellTag<MultilinearCell<2>>{});
+    if (nodes == 3) return f(CellTag<ShapeCell<2, LinearTriangle, TriangleDegree2>>{});
+    if (nodes == 6) return f(CellTag<Tri6Cell>{});
+    if (nodes == 8) return f(CellTag<Quad8Cell>{});
+    if (nodes == 9) return f(CellTag<Quad9Cell>{});
+  } else {
+    if (nodes == 8) return f(CellTag<MultilinearCell<3>>{});
+    if (nodes == 4) return f(CellTag<OwnRuleCell<LinearTetrahedron>>{});
+    if (nodes == 10) return f(CellTag<OwnRuleCell<QuadraticTetrahedron>>{});
+    if (nodes == 20) return f(CellTag<OwnRuleCell<SerendipityHexahedron>>{});
+    if (nodes == 27) return f(CellTag<OwnRuleCell<LagrangeHexahedron>>{});
+    if (nodes == 6) return f(CellTag<OwnRuleCell<LinearWedge>>{});
+    if (nodes == 15) return f(CellTag<ShapeCell<3, QuadraticWedge, WedgeDegree4By3>>{});
+  }
+  throw std::logic_error("DistributedLoads: no cell of " + std::to_string(nodes) + " nodes in " +
+                         std::to_string(D) + "D");
 }
+
 }  // namespace
+
+bool isLoadCell(int D, int nodes) {
+  if (D == 2) return nodes == 3 || nodes == 4 || nodes == 6 || nodes == 8 || nodes == 9;
+  return D == 3 && (nodes == 4 || nodes == 6 || nodes == 8 || nodes == 10 || nodes == 15 || nodes == 20 || nodes == 27);
+}
+
+template <int D>
+void bodyForce(int nodes, const double* X, const double* b, const LoadMeasure& measure, double* force) {
+  withVolumeCell<D>(nodes, [&](auto cell) { deadLoadOn<D, typename decltype(cell)::type>(X, b, measure, force); });
+}
 
 template <int D>
 void bodyForce(const double* X, const double* b, const LoadMeasure& measure, double* force) {
-  constexpr int K = 1 << D;
-  for (int r = 0; r < D * K; ++r) force[r] = 0.0;
-  for (const auto& q : gaussLegendreRule<D, 2>()) {
-    const MultilinearCell<D> cell(q.xi);
-    const auto Xq = cell.template point<D>(X);
-    // eq. (8.6): dV = det(∂X/∂ξ) dξ.
-    const double dV = q.weight * measure.weight(Xq.data()) * cellJacobian<D>(cell.template tangents<D>(X));
-    for (int a = 0; a < K; ++a)
-      for (int i = 0; i < D; ++i) force[D * a + i] += dV * cell.N[a] * b[i];
-  }
+  bodyForce<D>(cellNodeCount(D), X, b, measure, force);
+}
+
+template <int D>
+double cellMeasure(int nodes, const double* X, const LoadMeasure& measure) {
+  return withVolumeCell<D>(nodes,
+                           [&](auto cell) { return measureOn<D, typename decltype(cell)::type>(X, measure); });
 }
 
 template <int D>
 double cellMeasure(const double* X, const LoadMeasure& measure) {
-  double total = 0.0;
-  for (const auto& q : gaussLegendreRule<D, 2>()) {
-    const MultilinearCell<D> cell(q.xi);
-    const auto Xq = cell.template point<D>(X);
-    total += q.weight * measure.weight(Xq.data()) * cellJacobian<D>(cell.template tangents<D>(X));
-  }
-  return total;
+  return cellMeasure<D>(cellNodeCount(D), X, measure);
 }
 
 template void followerPressure<2>(const double*, double, const LoadMeasure&, double*, double*);
@@ -368,5 +440,9 @@ template double facetMeasure<2>(int, const double*, const LoadMeasure&);
 template double facetMeasure<3>(int, const double*, const LoadMeasure&);
 template double cellMeasure<2>(const double*, const LoadMeasure&);
 template double cellMeasure<3>(const double*, const LoadMeasure&);
+template void bodyForce<2>(int, const double*, const double*, const LoadMeasure&, double*);
+template void bodyForce<3>(int, const double*, const double*, const LoadMeasure&, double*);
+template double cellMeasure<2>(int, const double*, const LoadMeasure&);
+template double cellMeasure<3>(int, const double*, const LoadMeasure&);
 
 }  // namespace contessa::mechanics

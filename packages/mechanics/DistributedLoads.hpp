@@ -7,7 +7,9 @@
 // One code path for 2D and 3D and every facet shape. A facet of a D-dimensional solid is a cell of
 // dimension M = D − 1: an edge of 2 or 3 nodes, a face of 3, 4, 6, 8 or 9 (the sides of every cell family,
 // their shapes those of the solid kernels), integrated by a rule exact on an undistorted facet; a cell one
-// of dimension D (Quad4, Hex8); nodes in Exodus order. The only dimension-specific piece is the facet's area vector from its tangents
+// of dimension D of every family of the element kernels (Quad4, Tri3, Tri6, Q8, Q9; Hex8, Tet4, Tet10, Hex20,
+// Hex27, Wedge6, Wedge15), with the element's shape functions and a rule exact on a straight-sided cell
+// (bodyForce); nodes in Exodus order. The only dimension-specific piece is the facet's area vector from its tangents
 // (areaVector: the rotated tangent in 2D, the cross product in 3D), which points out of the body for a
 // side in Exodus order.
 //
@@ -49,8 +51,14 @@ class RevolvedMeasure final : public LoadMeasure {
 
 /// Nodes of a facet of a D-dimensional solid: 2 (an edge) in 2D, 4 (a quadrilateral face) in 3D.
 constexpr int facetNodeCount(int D) { return D == 2 ? 2 : 4; }
-/// Nodes of a cell: 4 (Quad4) in 2D, 8 (Hex8) in 3D.
+/// Nodes of the cell the overloads without a node count take: 4 (Quad4) in 2D, 8 (Hex8) in 3D.
 constexpr int cellNodeCount(int D) { return D == 2 ? 4 : 8; }
+
+/// Whether the cell kernels (bodyForce, cellMeasure) take a cell of `nodes` nodes of a D-dimensional solid:
+/// every family of the element kernels, which its node count tells apart within a dimension: in 2D 3 (Tri3),
+/// 4 (Quad4), 6 (Tri6), 8 (Q8), 9 (Q9); in 3D 4 (Tet4), 6 (Wedge6), 8 (Hex8), 10 (Tet10), 15 (Wedge15),
+/// 20 (Hex20), 27 (Hex27). The axisymmetric elements are the 2D cells with w = 2πr.
+bool isLoadCell(int D, int nodes);
 
 /// Whether the facet kernels take a side of `nodes` nodes of a D-dimensional solid: the sides of every cell
 /// family, in Exodus side order (mesh::sideNodes): 2D edges of 2 (Quad4, Tri3) or 3 nodes (Tri6, Q8, Q9);
@@ -80,6 +88,11 @@ void facetTraction(int nodes, const double* X, const double* t, const LoadMeasur
 /// (cellNodeCount(D) × D): f_a = ∫ N_a b w dV (eq. 8.6), into `force` (overwritten).
 template <int D>
 void bodyForce(const double* X, const double* b, const LoadMeasure& measure, double* force);
+/// The same on a cell of `nodes` nodes (isLoadCell): X is nodes × D. The element's shape functions N_a and a
+/// rule that integrates N_a w det(∂X/∂ξ) exactly on a straight-sided cell (mid-edge nodes at the midpoints;
+/// DistributedLoads.cpp lists the rules): so Σ_a f_a = b ∫ w dV and Σ_a f_a X_a = b ∫ X w dV exactly there.
+template <int D>
+void bodyForce(int nodes, const double* X, const double* b, const LoadMeasure& measure, double* force);
 
 /// The reference measure of a facet (length in 2D, area in 3D) and of a cell (area, volume), each
 /// weighted by w: for resultants and checks.
@@ -89,5 +102,7 @@ template <int D>
 double facetMeasure(int nodes, const double* X, const LoadMeasure& measure);
 template <int D>
 double cellMeasure(const double* X, const LoadMeasure& measure);
+template <int D>
+double cellMeasure(int nodes, const double* X, const LoadMeasure& measure);
 
 }  // namespace contessa::mechanics

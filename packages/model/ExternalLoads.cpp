@@ -1,5 +1,6 @@
 #include "model/ExternalLoads.hpp"
 
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -38,6 +39,9 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
     entries.start.assign(entries.change.size(), 0.0);
     if (load.type == deck::LoadType::Pressure || load.type == deck::LoadType::Traction) {
       const mesh::SideSet& set = mesh.sideSet(load.set);
+      // One Entries per side shape: the entries of one hold sides of one node count, and a side set may mix
+      // them (a wedge's triangles and quadrilaterals, the sides of blocks of different families).
+      std::map<int, Entries> bySize;
       for (std::size_t k = 0; k < set.elements.size(); ++k) {
         const auto where = mesh.locate(set.elements[k]);
         const mesh::ElementBlock& block = mesh.blocks[where.block];
@@ -48,22 +52,28 @@ ExternalLoads::ExternalLoads(const deck::ProblemDefinition& problem, const std::
         if (!mechanics::isLoadFacet(dim_, static_cast<int>(nodes.size())))
           throw std::logic_error("ExternalLoads: a side of " + std::to_string(nodes.size()) + " nodes in side set '" +
                                  load.set + "', which no load kernel takes");
-        appendNodes(entries, nodes, problem, localDof);
+        auto group = bySize.try_emplace(static_cast<int>(nodes.size()), entries).first;
+        appendNodes(group->second, nodes, problem, localDof);
       }
-      (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(entries));
+      for (auto& [size, facets] : bySize)
+        (load.type == deck::LoadType::Pressure ? pressureFacets_ : tractionFacets_).push_back(std::move(facets));
     } else if (load.type == deck::LoadType::BodyForce) {
       for (const auto& name : load.blocks) {
         const mesh::ElementBlock& block = mesh.block(name);
         const int npe = mesh::nodesPerCell(block.cellType);
-        if (npe != mechanics::cellNodeCount(dim_))
+        // The deck refuses a cell no kernel takes (deck/LoadDefinitions.cpp); this is the model's own guard.
+        if (!mechanics::isLoadCell(dim_, npe))
           throw std::logic_error("ExternalLoads: block '" + name + "' has " + std::to_string(npe) +
-                                 "-node cells; the body-force kernel takes Quad4 and Hex8");
+                                 "-node cells, which no body-force kernel takes");
+        // One Entries per block: the entries of one hold cells of one node count, and the blocks of a
+        // mesh may mix families (triangles and quadrilaterals, tetrahedra and wedges).
+        Entries cells = entries;
         for (GlobalIndex e = 0; e < block.numElements(); ++e)
-          appendNodes(entries, std::vector<GlobalIndex>(block.connectivity.begin() + e * npe,
-                                                        block.connectivity.begin() + (e + 1) * npe),
+          appendNodes(cells, std::vector<GlobalIndex>(block.connectivity.begin() + e * npe,
+                                                      block.connectivity.begin() + (e + 1) * npe),
                       problem, localDof);
+        if (cells.count > 0) bodyCells_.push_back(std::move(cells));
       }
-      bodyCells_.push_back(std::move(entries));
     }  // springs are supports, not loads: BoundaryConditions
   }
 }
@@ -86,8 +96,8 @@ void ExternalLoads::addDeadLoads(double* f, bool change) const {
     for (std::size_t k = 0; k < entries.count; ++k) {
       const double* X = entries.X.data() + k * n;
       if (cells) {
-        if (dim_ == 2) mechanics::bodyForce<2>(X, value.data(), *measure_, fe.data());
-        else mechanics::bodyForce<3>(X, value.data(), *measure_, fe.data());
+        if (dim_ == 2) mechanics::bodyForce<2>(entries.nodes, X, value.data(), *measure_, fe.data());
+        else mechanics::bodyForce<3>(entries.nodes, X, value.data(), *measure_, fe.data());
       } else {
         if (dim_ == 2) mechanics::facetTraction<2>(entries.nodes, X, value.data(), *measure_, fe.data());
         else mechanics::facetTraction<3>(entries.nodes, X, value.data(), *measure_, fe.data());
