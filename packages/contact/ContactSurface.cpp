@@ -121,7 +121,41 @@ void addFacets(const mesh::ReplicatedSurface& facets, bool revolved, ContactSurf
   }
 }
 
+/// The nodes on the axis (r = x = 0 within round-off of the edge's length) of a revolved surface of 3-node
+/// edges (Line3Facet order: corner, corner, mid), each with its edge reaching off the axis.
+std::vector<AxisNode> axisNodesOf(const mesh::ReplicatedSurface& facets, const ContactSurface& surface) {
+  std::vector<AxisNode> out;
+  const auto indexOf = [&](GlobalIndex node) {
+    return static_cast<std::size_t>(std::lower_bound(surface.nodes.begin(), surface.nodes.end(), node) -
+                                    surface.nodes.begin());
+  };
+  const auto radius = [&](GlobalIndex node) {
+    const auto at = static_cast<std::size_t>(std::lower_bound(facets.nodes.begin(), facets.nodes.end(), node) -
+                                             facets.nodes.begin());
+    return facets.coordinates[at * 2];
+  };
+  for (std::size_t f = 0; f + 3 <= surface.facets.size(); f += 3) {
+    const GlobalIndex corners[2] = {surface.facets[f], surface.facets[f + 1]}, mid = surface.facets[f + 2];
+    const double length = surface.facetLengths[indexOf(corners[0])];
+    for (int c = 0; c < 2; ++c) {
+      const double rMid = radius(mid), rFar = radius(corners[1 - c]);
+      // An edge along the axis, or one whose mid node is not between its corners in r, recovers nothing.
+      if (std::abs(radius(corners[c])) > 1e-9 * length || !(rMid > 1e-9 * length && rFar > rMid)) continue;
+      const std::size_t node = indexOf(corners[c]);
+      if (std::any_of(out.begin(), out.end(), [&](const AxisNode& a) { return a.node == node; })) continue;
+      out.push_back({node, indexOf(mid), indexOf(corners[1 - c]), rMid, rFar});
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+double valueOnAxis(const AxisNode& axis, double atMid, double atFar) {
+  // a + b r² through (r_mid, f_mid), (r_far, f_far), at r = 0.
+  const double m = axis.rMid * axis.rMid, f = axis.rFar * axis.rFar;
+  return (f * atMid - m * atFar) / (f - m);
+}
 
 ContactSurface ContactSurface::fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where) {
   requireInput(mesh.dimension == 2 || mesh.dimension == 3, where + ": contact needs a 2D or 3D mesh");
@@ -150,6 +184,8 @@ ContactSurface ContactSurface::fromSurface(const mesh::ReplicatedSurface& facets
       throw std::logic_error("ContactSurface: no facet type of " + std::to_string(facets.nodesPerFacet) +
                              " nodes in " + std::to_string(facets.dimension) + "D");
   }
+  // ∫ H_i 2πr ds of a 3-node edge is 0 at a corner on the axis ((1 − 3t + 2t²) t integrates to 0).
+  if (revolved && facets.nodesPerFacet == 3) surface.axisNodes = axisNodesOf(facets, surface);
   return surface;
 }
 

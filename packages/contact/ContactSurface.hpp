@@ -25,6 +25,9 @@ struct ContactSurface {
   /// The sides as node tuples in mesh::sideNodes order, nodesPerFacet per side: the Exodus side orderings
   /// make the facet's normal (MasterFacet.hpp) the outward normal of the body.
   std::vector<GlobalIndex> facets;
+  /// A revolved surface of 3-node edges: its nodes on the axis, each with the edge it recovers its output
+  /// from (AxisNode, valueOnAxis); empty otherwise.
+  std::vector<AxisNode> axisNodes;
 
   /// Throws InputError starting with `where` for a side set that is not a surface of the mesh's dimension.
   static ContactSurface fromSideSet(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& where);
@@ -44,6 +47,14 @@ struct ContactSurface {
 template <class Facet>
 std::array<double, Facet::kNodes> tributaryAreas(const std::array<typename Facet::Point, Facet::kNodes>& x,
                                                  bool revolved, double& area);
+
+/// The value at the axis (r = 0) of a nodal field of a revolved 3-node edge (contact pressure, gap), from its
+/// values at the edge's mid node and other corner: the field a + b r² through them. A smooth axisymmetric
+/// field is even in r (∂/∂r = 0 on the axis), and the consistent weights ∫ H 2πr ds leave the node on the axis
+/// with no information of its own (its row of the projection ∫ H_i H_j 2πr ds p_j = ∫ H_i t 2πr ds, with its
+/// right-hand side 0, would only copy the far corner's value, H_0 H_1 integrating to 0 on a straight edge).
+/// Exact for a + b r²; p₀ √(1 − r²/a²) (Hertz) to p₀ r_mid² r_far² / (8 a⁴). On a straight edge, (4 f_mid − f_far)/3.
+double valueOnAxis(const AxisNode& axis, double atMid, double atFar);
 
 /// Checks a rigid master surface of the given dimension (one-line InputError naming `where`/Points,
 /// Facets or Motion): spaceDim coordinates per point, facets of 2 (2D) or 4 (3D) indices in range, no

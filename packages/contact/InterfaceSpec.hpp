@@ -3,6 +3,7 @@
 // facets (mesh nodes, or a rigid surface), the contact law's parameters. Built by ContactSurface from the
 // deck's side sets; read by the contact interface (ContactInterface.hpp) and the graph reservation. A light
 // header: no contact algorithm, no Trilinos.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,14 @@ struct RigidSurface {
   std::vector<double> points;  ///< reference positions, spaceDim values per point
   std::vector<int> facets;     ///< point indices (0-based), nodesPerFacet per facet
   std::vector<double> motion;  ///< displacement of every point at load factor 1, spaceDim values
+};
+
+/// A slave node on the axis (r = 0) of a revolved 3-node edge (ContactSurface::axisNodes): ∫ H 2πr ds weighs
+/// it by 0, so it carries no contact force and its own ε_N g_N or multiplier is no pressure. Its output is
+/// recovered from the edge's two other nodes (contact::valueOnAxis). Indices into slaveNodes; reference radii.
+struct AxisNode {
+  std::size_t node = 0, mid = 0, far = 0;  ///< the node on the axis, the edge's mid node, its other corner
+  double rMid = 0, rFar = 0;               ///< 0 < rMid < rFar
 };
 
 /// Everything that defines an interface, in mesh terms (built by ContactSurface from side sets).
@@ -50,6 +59,8 @@ struct ContactInterfaceSpec {
   std::vector<GlobalIndex> slaveFacets;
   /// Each slave facet's reference length (2D) or area (3D): the mortar's measure (MortarSegment, MortarFacetPair).
   std::vector<double> slaveFacetMeasures;
+  /// Axisymmetric 3-node slave edges: the slave nodes on the axis, whose output is their edge's (AxisNode).
+  std::vector<AxisNode> slaveAxisNodes;
 
   /// The interface in messages: its name, "(second pass)" added for the second pass.
   std::string label() const { return secondPass ? name + " (second pass)" : name; }

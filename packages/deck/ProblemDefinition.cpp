@@ -306,24 +306,6 @@ std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& sp
   return out;
 }
 
-// A revolved 3-node edge weighs its corner on the axis by ∫ H_i 2πr ds = 0 (user guide, "Contact on quadratic
-// axisymmetric sections"): that slave node carries no contact force, and its contact_pressure is not a
-// pressure. Said once per interface, so that no one reads Hertz's p0 off it.
-std::string weightlessAxisNodes(const contact::ContactSurface& slave, const SurfaceCoordinates& coordinates,
-                                const std::string& set, const std::string& where) {
-  std::size_t count = 0;
-  GlobalIndex first = -1;
-  for (std::size_t k = 0; k < slave.nodes.size(); ++k)  // r within round-off of the axis
-    if (std::abs(coordinates.at(slave.nodes[k])[0]) <= 1e-9 * slave.facetLengths[k] && count++ == 0)
-      first = slave.nodes[k];
-  if (count == 0) return "";
-  return "contessa: warning: " + where + "/Slave Side Set '" + set + "': " + std::to_string(count) +
-         " node(s) on the axis (first: node " + std::to_string(static_cast<long long>(first) + 1) +
-         ") of 3-node edges carry no contact weight (their ring's integral of H 2 pi r is 0): the contact force is "
-         "right, but their contact_pressure is not a pressure; read the peak from the nodes next to the axis, or use "
-         "Q4 elements there (user guide, axisymmetric models)";
-}
-
 // Node-to-face contact on TRI6 or QUAD8 slave faces cannot pass the patch test: their consistent corner weights
 // are 0 or negative, the sub-facet weights that replace them are not the loads of a uniform pressure (user
 // guide, "Contact surfaces"). The audit measured a pressed Hex20 block's force 3.9 % below CalculiX C3D20 and
@@ -376,7 +358,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.slaveAreas = slave.areas;
   if (spec.mortar && mesh.dimension == 3 && slave.nodesPerFacet >= 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
-  if (revolved && slave.nodesPerFacet == 3) warnings.push_back(weightlessAxisNodes(slave, coordinates, slaveSet, where));
+  spec.slaveAxisNodes = slave.axisNodes;
   if (!spec.mortar && mesh.dimension == 3) warnings.push_back(serendipitySlaveFaces(slave.nodesPerFacet, slaveSet, where));
   if (rigid) {
     requireInput(!in.twoPass, where + "/Two Pass: a rigid master has no slave side of its own");
@@ -413,6 +395,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   swapped.slaveNodes = master.nodes;
   swapped.slaveAreas = master.areas;
   swapped.slaveFacetLengths = master.facetLengths;
+  swapped.slaveAxisNodes = master.axisNodes;
   swapped.masterFacets = slave.facets;
   swapped.masterFacetNodes = slave.nodesPerFacet;
   if (smoothed) requireSmoothingSupported(swapped, where, slaveSet);

@@ -1,8 +1,10 @@
 #include "model/PostProcessing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "contact/ContactSurface.hpp"
 #include "model/ContactAssembly.hpp"
 #include "model/DofLayout.hpp"
 #include "model/SolidAssembler.hpp"
@@ -62,12 +64,52 @@ std::vector<std::string> PostProcessing::contactFieldNames() {
   return {"contact_pressure", "contact_gap", "contact_status", "contact_slip"};
 }
 
+namespace {
+
+// The committed output of an interface's slave nodes, those on the axis of revolved 3-node edges recovered
+// from their edge (contact::AxisNode: ∫ H 2πr ds weighs them by 0, they carry no force and their own ε_N g_N
+// or multiplier is no pressure): pressure and gap a + b r² through the edge's mid node and far corner
+// (contact::valueOnAxis), the status of the nearest of them in contact. Forces are not touched. Collective:
+// the edge's nodes may be evaluated on other ranks.
+std::vector<contact::SlaveNodeState> outputStates(const contact::ContactInterfaceBase& interface, const Comm& comm) {
+  std::vector<contact::SlaveNodeState> states = interface.committedStates();
+  const auto& axis = interface.spec().slaveAxisNodes;
+  if (axis.empty()) return states;
+  // Per axis node, for its mid node then its far corner: pressure, gap, status, from the rank evaluating each.
+  constexpr int kFields = 3;
+  std::vector<double> local(2 * kFields * axis.size(), 0.0), global(local.size(), 0.0);
+  for (std::size_t i = 0; i < axis.size(); ++i) {
+    const std::size_t neighbours[2] = {axis[i].mid, axis[i].far};
+    for (int j = 0; j < 2; ++j) {
+      if (!interface.evaluatesSlave()[neighbours[j]]) continue;
+      const auto& st = states[neighbours[j]];
+      double* to = &local[(2 * i + j) * kFields];
+      to[0] = st.pressure;
+      to[1] = st.gap;
+      to[2] = static_cast<double>(static_cast<int>(st.status));
+    }
+  }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  for (std::size_t i = 0; i < axis.size(); ++i) {
+    const double* mid = &global[2 * kFields * i];
+    const double* far = mid + kFields;
+    auto& st = states[axis[i].node];
+    st.pressure = std::max(0.0, contact::valueOnAxis(axis[i], mid[0], far[0]));
+    if (std::isfinite(mid[1]) && std::isfinite(far[1])) st.gap = contact::valueOnAxis(axis[i], mid[1], far[1]);
+    st.status = st.pressure <= 0.0 ? contact::ContactStatus::Open
+                                   : static_cast<contact::ContactStatus>(static_cast<int>(mid[2] != 0.0 ? mid[2] : far[2]));
+  }
+  return states;
+}
+
+}  // namespace
+
 RCP<MultiVector> PostProcessing::contactNodalFields() const {
   const auto& nodeMap = layout_.nodeMap();
   auto out = rcp(new MultiVector(nodeMap, 4));
   for (const auto& interface : contact_.interfaces()) {
     const auto& spec = interface->spec();
-    const auto& states = interface->committedStates();
+    const auto states = outputStates(*interface, *layout_.comm());
     for (std::size_t k = 0; k < spec.slaveNodes.size(); ++k) {
       if (!interface->evaluatesSlave()[k]) continue;
       const LO lo = nodeMap->getLocalElement(spec.slaveNodes[k]);

@@ -150,3 +150,65 @@ TEST(TributaryAreas, RevolvedThreeNodeEdgeGivesTheBandAreas) {
   EXPECT_NEAR(a[2], 2 * M_PI * 2.0 * 2.0 * 2.6 / 3.0, 1e-12);
   EXPECT_NEAR(a[0] + a[1] + a[2], 2 * M_PI * 2.6 * 2.0, 1e-12);
 }
+
+// A revolved surface of 3-node edges whose first corner lies on the axis: ∫ H 2πr ds gives that node no weight,
+// and ContactSurface names it with its edge (the mid node, the far corner, their radii), the others not.
+TEST(TributaryAreas, RevolvedThreeNodeEdgesNameTheirNodeOnTheAxis) {
+  contessa::mesh::ReplicatedSurface facets;
+  facets.name = "outer";
+  facets.dimension = 2;
+  facets.nodesPerFacet = 3;
+  // Two edges along y = 0 from the axis: nodes 10 (r = 0), 11 (r = 0.5, mid), 12 (r = 1), 13 (r = 1.5, mid),
+  // 14 (r = 2); Line3 order: corner, corner, mid.
+  facets.elements = {0, 1};
+  facets.sides = {0, 0};
+  facets.facetNodes = {10, 12, 11, 12, 14, 13};
+  facets.nodes = {10, 11, 12, 13, 14};
+  facets.coordinates = {0.0, 0.0, 0.5, 0.0, 1.0, 0.0, 1.5, 0.0, 2.0, 0.0};
+  const auto surface = cc::ContactSurface::fromSurface(facets, "test", true);
+  EXPECT_NEAR(surface.areas[0], 0.0, 1e-15);  // Gauss round-off of an exact 0
+  ASSERT_EQ(surface.axisNodes.size(), 1u);
+  const auto& axis = surface.axisNodes[0];
+  EXPECT_EQ(surface.nodes[axis.node], 10);
+  EXPECT_EQ(surface.nodes[axis.mid], 11);
+  EXPECT_EQ(surface.nodes[axis.far], 12);
+  EXPECT_DOUBLE_EQ(axis.rMid, 0.5);
+  EXPECT_DOUBLE_EQ(axis.rFar, 1.0);
+  // Not revolved (plane strain): every node has its weight, none is recovered.
+  EXPECT_TRUE(cc::ContactSurface::fromSurface(facets, "test", false).axisNodes.empty());
+}
+
+// The value on the axis of a field sampled exactly at an edge's mid node and far corner: exact for a + b r²
+// (a constant among them), and Hertz's p0 √(1 − r²/a²) to its leading error p0 r_mid² r_far² / (8 a⁴), on a
+// straight edge and on a curved one (the mid node on a circle through the axis, not at half the radius).
+TEST(TributaryAreas, ValueOnTheAxisIsTheEdgesEvenFieldThere) {
+  const auto exactFor = [](const cc::AxisNode& e) {
+    const auto quadratic = [](double r) { return 3.0 - 2.5 * r * r; };
+    EXPECT_NEAR(cc::valueOnAxis(e, quadratic(e.rMid), quadratic(e.rFar)), 3.0, 1e-13);
+    EXPECT_NEAR(cc::valueOnAxis(e, 7.0, 7.0), 7.0, 1e-13);
+  };
+  const double p0 = 50.0, a = 0.7;
+  const auto hertz = [&](double r) { return p0 * std::sqrt(1.0 - r * r / (a * a)); };
+  for (const double h : {0.05, 0.1, 0.2}) {
+    cc::AxisNode straight;
+    straight.rMid = 0.5 * h;
+    straight.rFar = h;
+    exactFor(straight);
+    // A straight edge: (4 f_mid − f_far) / 3.
+    EXPECT_NEAR(cc::valueOnAxis(straight, 4.0, 1.0), 5.0, 1e-13);
+    // A circle of radius 10 through the axis, an arc of angle θ: r = 10 sin θ at the far corner, 10 sin(θ/2)
+    // at the mid node.
+    const double theta = std::asin(h / 10.0);
+    cc::AxisNode curved;
+    curved.rMid = 10.0 * std::sin(0.5 * theta);
+    curved.rFar = h;
+    exactFor(curved);
+    for (const auto& e : {straight, curved}) {
+      const double recovered = cc::valueOnAxis(e, hertz(e.rMid), hertz(e.rFar));
+      const double leading = p0 * e.rMid * e.rMid * e.rFar * e.rFar / (8 * std::pow(a, 4));
+      EXPECT_GT(recovered, p0);  // the next terms of the series are of the same sign
+      EXPECT_NEAR(recovered - p0, leading, 0.5 * leading) << "h = " << h;
+      EXPECT_LT(std::abs(recovered / p0 - 1), h <= 0.1 ? 1e-4 : 2e-3) << "h = " << h;
+    }
+  }
+}
