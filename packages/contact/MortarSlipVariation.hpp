@@ -26,15 +26,12 @@
 
 namespace contessa::contact {
 
-/// A number's value and gradient (the first-order part of a HessianDual).
+/// A number's value and gradient (the first-order part of a HessianDual), as MortarDual.hpp's Dual.
 template <int V>
-struct FirstOrder {
-  double v = 0.0;
-  std::array<double, V> g{};
-};
+using FirstOrder = Dual<double, V>;
 template <int V>
 FirstOrder<V> firstOrder(const HessianDual<V>& x) {
-  return {x.v, x.g};
+  return FirstOrder<V>(x.v, x.g);
 }
 
 /// The number of variables V of a HessianDual<V>.
@@ -108,7 +105,7 @@ struct SlipVariationSum<HessianDual<V>> {
           q[c][v] += rcd.v * jv;
           double* row = &dq[(static_cast<std::size_t>(c) * V + v) * V];
           const double* djRow = &dj[(static_cast<std::size_t>(d) * V + v) * V];
-          for (int w = 0; w < V; ++w) row[w] += rcd.g[w] * jv + rcd.v * djRow[w];
+          for (int w = 0; w < V; ++w) row[w] += rcd.d[w] * jv + rcd.v * djRow[w];
         }
       }
     // B_ac += W_a q_c.
@@ -135,7 +132,7 @@ std::array<std::array<FirstOrder<V>, 3>, 3> tangentialProjectorRows(const std::a
   for (int c = 0; c < 3; ++c)
     for (int d = 0; d < 3; ++d) {
       p[c][d].v = (c == d ? 1.0 : 0.0) - n[c].v * n[d].v;
-      for (int w = 0; w < V; ++w) p[c][d].g[w] = -(n[c].g[w] * n[d].v + n[c].v * n[d].g[w]);
+      for (int w = 0; w < V; ++w) p[c][d].d[w] = -(n[c].d[w] * n[d].v + n[c].v * n[d].d[w]);
     }
   return p;
 }
