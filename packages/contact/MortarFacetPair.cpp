@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contact/MortarFacetGeometry.hpp"
+#include "contact/MortarSlipVariation.hpp"
 
 namespace contessa::contact {
 
@@ -49,6 +50,26 @@ Point3<T> tangentialSlip(const FacetMap<T>& slaveMap, const FacetMap<T>& masterM
   const Point3<T> motion = slaveMotion - masterMotion;
   const Point3<T> n = masterMap.unitNormal(eta);
   return motion - times(n, dot(motion, n));
+}
+
+/// One Gauss point's virtual slips δũ_a = W_a P (Σ_j N_j δx_j − Σ_l M_l δy_l) (MortarSlipVariation.hpp,
+/// eq. M11″): the weights W_a = w N_a(ξ), the slave and master shape values at ξ and η, n_m(η).
+template <int V>
+void addSlipVariation(SlipVariationSum<HessianDual<V>>& sum, const std::array<HessianDual<V>, kMortarFacetNodes>& weights,
+                      const LinearFacet<HessianDual<V>>& slave, const LinearFacet<HessianDual<V>>& master,
+                      const std::array<HessianDual<V>, kMortarFacetNodes>& slaveShape,
+                      const std::array<HessianDual<V>, kMortarFacetNodes>& masterShape,
+                      const Point3<HessianDual<V>>& normal, const FacetPairCoordinates<HessianDual<V>>& x) {
+  using Term = typename SlipVariationSum<HessianDual<V>>::Term;
+  std::array<Term, 2 * kMortarFacetNodes> terms;
+  int count = 0;
+  for (int j = 0; j < slave.count; ++j) terms[count++] = {&slaveShape[j], {&x[3 * j], &x[3 * j + 1], &x[3 * j + 2]}, 1.0};
+  for (int l = 0; l < master.count; ++l) {
+    const int i = 3 * (kMortarFacetNodes + l);
+    terms[count++] = {&masterShape[l], {&x[i], &x[i + 1], &x[i + 2]}, -1.0};
+  }
+  const auto rows = tangentialProjectorRows<V>({firstOrder(normal.x), firstOrder(normal.y), firstOrder(normal.z)});
+  sum.template add<3, 3>(kMortarFacetNodes, weights.data(), slave.count, rows, terms.data(), count);
 }
 
 /// Whether the fused Gauss-point kernel below applies to a pair: a Quad4 slave whose monomial terms are
@@ -233,11 +254,15 @@ MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, doub
         const Point3<T> u = tangentialSlip(slaveMap, masterMap, slave, master, xi, eta, *committed);
         const std::array<T, kMortarFacetNodes> nodeShape = slave.shape(xi[0], xi[1]);
         const T w = withValue(q.weight * triangleMeasure, weight);
+        std::array<T, kMortarFacetNodes> wa{};
         for (int a = 0; a < slave.count; ++a) {
-          const T wa = w * nodeShape[a];
+          wa[a] = w * nodeShape[a];
           std::array<T, 3>& slip = out.weightedSlip[a];
-          slip = {slip[0] + wa * u.x, slip[1] + wa * u.y, slip[2] + wa * u.z};
+          slip = {slip[0] + wa[a] * u.x, slip[1] + wa[a] * u.y, slip[2] + wa[a] * u.z};
         }
+        if constexpr (!std::is_same_v<T, double>)  // the virtual slip (MortarSlipVariation.hpp)
+          addSlipVariation(out.slipVariation, wa, slave, master, nodeShape, master.shape(eta[0], eta[1]),
+                           masterMap.unitNormal(eta), x);
       }
     }
   }
@@ -264,6 +289,8 @@ MortarFacetPairDerivatives differentiateWithSlip(const FacetPairCoordinates<doub
   const auto g = integrateFacetPair(seeded[0], referenceArea, shape, &committed);
   MortarFacetPairDerivatives out;
   extractGapsAndSlips<kMortarFacetNodes>(g, variables, out);
+  extractSlipVariation<kN, V>(g.slipVariation, variables, kMortarFacetNodes, 3, out.slipVariation,
+                              out.slipVariationGradient);
   return out;
 }
 }  // namespace

@@ -20,6 +20,8 @@
 #include <array>
 #include <vector>
 
+#include "contact/MortarSlipVariation.hpp"
+
 namespace contessa::contact {
 
 /// A 3D pair's coordinates: slave nodes 0–3 then master nodes 0–3, three coordinates each (a 3-node
@@ -54,6 +56,9 @@ struct MortarFacetPairGaps {
   /// in the master's tangent plane at each Gauss point, when the committed positions are given (friction),
   /// else 0. The interface takes its components in the slave node's tangent basis (MortarSlipBasis.hpp).
   std::array<std::array<T, 3>, kMortarFacetNodes> weightedSlip{};
+  /// With committed positions and derivatives (T a HessianDual): the virtual slips δũ_a (the mortar
+  /// matrices applied to a virtual displacement) and their first derivatives (MortarSlipVariation.hpp).
+  SlipVariationSum<T> slipVariation;
 };
 
 /// The integral over the overlap (eq. M13–M17). The measure is the slave facet's reference area: the
@@ -77,6 +82,11 @@ struct MortarFacetPairDerivatives {
   std::array<std::array<double, 3>, kMortarFacetNodes> weightedSlip{};
   std::vector<std::array<double, kCoordinates>> slipGradient;
   std::vector<std::array<double, kCoordinates * kCoordinates>> slipHessian;
+  /// With committed positions: the virtual slips' components (index 3 a + c), B_ac = ∂Δũ_ac/∂x at a frozen
+  /// segmentation (the D and M matrices: what the tangential traction works on, the residual's), and their
+  /// derivatives ∂B_ac,i/∂x_j, row-major, not symmetric (MortarSlipVariation.hpp, eq. M11″).
+  std::vector<std::array<double, kCoordinates>> slipVariation;
+  std::vector<std::array<double, kCoordinates * kCoordinates>> slipVariationGradient;
 };
 
 /// The pair's weighted gaps (values only).

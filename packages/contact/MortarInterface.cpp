@@ -91,8 +91,15 @@ inline double slipEntry(const MortarPairDerivatives& g, int a, int) { return g.w
 inline double slipEntry(const MortarFacetPairDerivatives& g, int a, int c) { return g.weightedSlip[a][c]; }
 inline const double* slipGradientOf(const MortarPairDerivatives& g, int a, int) { return g.slipGradient[a].data(); }
 inline const double* slipGradientOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipGradient[3 * a + c].data(); }
-inline const double* slipHessianOf(const MortarPairDerivatives& g, int a, int) { return g.slipHessian[a].data(); }
-inline const double* slipHessianOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipHessian[3 * a + c].data(); }
+// The virtual slips and their derivatives (MortarSlipVariation.hpp, eq. M11″): what the traction works on.
+inline const double* slipVariationOf(const MortarPairDerivatives& g, int a, int) { return g.slipVariation[a].data(); }
+inline const double* slipVariationOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipVariation[3 * a + c].data(); }
+inline const double* slipVariationGradientOf(const MortarPairDerivatives& g, int a, int) {
+  return g.slipVariationGradient[a].data();
+}
+inline const double* slipVariationGradientOf(const MortarFacetPairDerivatives& g, int a, int c) {
+  return g.slipVariationGradient[3 * a + c].data();
+}
 template <int Slots>
 double slipEntry(const MortarQuadraticFacetPairGaps<double, Slots>& g, int a, int c) { return g.weightedSlip[a][c]; }
 template <int Slots>
@@ -100,7 +107,13 @@ double slipEntry(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) {
 template <int Slots>
 const double* slipGradientOf(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) { return g.slipGradient[3 * a + c].data(); }
 template <int Slots>
-const double* slipHessianOf(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) { return g.slipHessian[3 * a + c].data(); }
+const double* slipVariationOf(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) {
+  return g.slipVariation[3 * a + c].data();
+}
+template <int Slots>
+const double* slipVariationGradientOf(const MortarQuadraticPairDerivatives<Slots>& g, int a, int c) {
+  return g.slipVariationGradient[3 * a + c].data();
+}
 
 /// A 2D traction's restart field is its one component (the files' scalar); a 3D one's its two.
 inline double& tractionField(Vector<1>& t) { return t[0]; }
@@ -118,8 +131,9 @@ struct NodeWeightedGap {
   std::vector<double> gradient;          ///< ∂g̃_k/∂x over the support's coordinates
   std::vector<double> hessian;           ///< ∂²g̃_k/∂x², row-major
   Vector<kDim - 1> slip{};               ///< Δũ_kα in the node's tangent basis, eq. (M9), (M9′) (friction only)
-  std::array<std::vector<double>, kDim - 1> slipGradient;  ///< ∂Δũ_kα/∂x
-  std::array<std::vector<double>, kDim - 1> slipHessian;   ///< ∂²Δũ_kα/∂x², row-major
+  std::array<std::vector<double>, kDim - 1> slipGradient;   ///< ∂Δũ_kα/∂x (the return mapping's)
+  std::array<std::vector<double>, kDim - 1> slipVariation;  ///< δũ_kα: the virtual slip (the residual's, M11″)
+  std::array<std::vector<double>, kDim - 1> slipVariationGradient;  ///< ∂δũ_kα,i/∂x_j, row-major
 
   /// The support index of `node`, added (with its DOF ids and ∂x/∂λ) when new.
   int indexOf(GlobalIndex node, const GlobalIndex* nodeDofs, const double* motion) {
@@ -473,7 +487,7 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
   const bool sized = frictional() && Layout::kSlipEntries > 0;
   bool slips = false;
   if constexpr (Layout::kSlipEntries > 0) {
-    slips = sized && !g.slipGradient.empty();
+    slips = sized && !g.slipGradient.empty() && !g.slipVariation.empty();
     for (int a = 0; a < kSlipDim && slips; ++a)
       for (int c = 0; c < Layout::kSlipEntries; ++c) w.slip[a] += basis[a][c] * slipEntry(g, end, c);
   }
@@ -515,10 +529,13 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
   };
   if (n != old) {
     grow(w.hessian);
-    for (int a = 0; a < kSlipDim && sized; ++a) grow(w.slipHessian[a]);
+    for (int a = 0; a < kSlipDim && sized; ++a) grow(w.slipVariationGradient[a]);
   }
   w.gradient.resize(static_cast<std::size_t>(n), 0.0);
-  for (int a = 0; a < kSlipDim && sized; ++a) w.slipGradient[a].resize(static_cast<std::size_t>(n), 0.0);
+  for (int a = 0; a < kSlipDim && sized; ++a) {
+    w.slipGradient[a].resize(static_cast<std::size_t>(n), 0.0);
+    w.slipVariation[a].resize(static_cast<std::size_t>(n), 0.0);
+  }
   constexpr int m = Layout::kCoordinates;
   // Support index of each kernel coordinate (−1: unused).
   std::array<int, m> to{};
@@ -564,15 +581,17 @@ void MortarInterface<F>::addSlipDerivatives(WeightedGap& w, int end, const Deriv
   const int n = w.size();
   for (int c = 0; c < Layout::kSlipEntries; ++c) {
     const double* gradient = slipGradientOf(g, end, c);
-    const double* hessian = slipHessianOf(g, end, c);
+    const double* variation = slipVariationOf(g, end, c);
+    const double* variationGradient = slipVariationGradientOf(g, end, c);
     for (int a = 0; a < kSlipDim; ++a) {
       const double e = basis[a][c];
       if (e == 0.0) continue;
       for (int i = 0; i < m; ++i) {
         if (to[i] < 0) continue;
         w.slipGradient[a][to[i]] += e * gradient[i];
+        w.slipVariation[a][to[i]] += e * variation[i];
         for (int j = 0; j < m; ++j)
-          if (to[j] >= 0) w.slipHessian[a][to[i] * n + to[j]] += e * hessian[i * m + j];
+          if (to[j] >= 0) w.slipVariationGradient[a][to[i] * n + to[j]] += e * variationGradient[i * m + j];
       }
     }
   }
@@ -669,7 +688,8 @@ auto MortarInterface<F>::weightedGap(std::size_t k, const NodePosition& position
     w.hessian.assign(kDim * kDim, 0.0);
     for (int a = 0; a < kSlipDim; ++a) {
       w.slipGradient[a].assign(kDim, 0.0);
-      w.slipHessian[a].assign(kDim * kDim, 0.0);
+      w.slipVariation[a].assign(kDim, 0.0);
+      w.slipVariationGradient[a].assign(kDim * kDim, 0.0);
     }
   }
   for (const SegmentEnd& se : segmentsAt_[k]) {
@@ -736,7 +756,9 @@ SlaveNodeChange MortarInterface<F>::changeOf(std::size_t k, const SlaveNodeState
 template <class F>
 void MortarInterface<F>::addTangential(std::size_t k, const WeightedGap& w, const ReturnMappingResult<kSlipDim>& tangential,
                                        std::vector<double>& residual, std::vector<double>& tangent) const {
-  // eq. M11–M12 (M11′–M12′ in 3D): r_T = t_α ∇Δũ_kα; t_α depends on Δũ_kβ / A_k and on t_N = ε_N g̃_k / A_k.
+  // eq. M11″–M12″: r_T = t_α δũ_kα, the traction's work on the virtual slip (the D and M matrices at the
+  // current segmentation, not ∇Δũ_kα, which adds the overlap's change times the increment's slip:
+  // MortarSlipVariation.hpp); t_α depends on Δũ_kβ / A_k (through ∇Δũ) and on t_N = ε_N g̃_k / A_k.
   const int n = w.size();
   const double area = spec_.slaveAreas[k];
   const double stiffness = spec_.law.normalPenalty / area;
@@ -744,7 +766,7 @@ void MortarInterface<F>::addTangential(std::size_t k, const WeightedGap& w, cons
   for (int a = 0; a < kSlipDim; ++a) {
     const double t = tangential.traction[a];
     const double dNormal = tangential.dTraction_dNormalTraction[a] * stiffness;
-    const std::vector<double>& ga = w.slipGradient[a];
+    const std::vector<double>& ga = w.slipVariation[a];
     for (int j = 0; j < n; ++j) {
       double d = tangential.dTraction_dSlipIncrement(a, 0) / area * w.slipGradient[0][j];
       for (int b = 1; b < kSlipDim; ++b) d += tangential.dTraction_dSlipIncrement(a, b) / area * w.slipGradient[b][j];
@@ -752,7 +774,7 @@ void MortarInterface<F>::addTangential(std::size_t k, const WeightedGap& w, cons
     }
     for (int i = 0; i < n; ++i) {
       residual[i] += t * ga[i];
-      for (int j = 0; j < n; ++j) tangent[i * n + j] += ga[i] * dTraction[j] + t * w.slipHessian[a][i * n + j];
+      for (int j = 0; j < n; ++j) tangent[i * n + j] += ga[i] * dTraction[j] + t * w.slipVariationGradient[a][i * n + j];
     }
   }
 }

@@ -290,10 +290,23 @@ bool addPiecePair(const QuadraticChart<T, Slots>& slave, int s, const QuadraticC
       const Point3<T> motion = (xs - committedPoint<T, Slots>(*committed, 0, slave.count, slaveShape)) -
                                (xm - committedPoint<T, Slots>(*committed, Slots, master.count, masterShape));
       const Point3<T> u = motion - times(normal, dot(motion, normal));
+      std::array<T, Slots> wa{};
       for (int a = 0; a < slave.count; ++a) {
-        const T wa = weight * w[a];
+        wa[a] = weight * w[a];
         std::array<T, 3>& slip = out.weightedSlip[a];
-        slip = {slip[0] + wa * u.x, slip[1] + wa * u.y, slip[2] + wa * u.z};
+        slip = {slip[0] + wa[a] * u.x, slip[1] + wa[a] * u.y, slip[2] + wa[a] * u.z};
+      }
+      if constexpr (!std::is_same_v<T, double>) {  // the virtual slips (MortarSlipVariation.hpp, eq. M11″)
+        using Term = typename SlipVariationSum<T>::Term;
+        std::array<Term, 2 * Slots> terms;
+        int count = 0;
+        for (int j = 0; j < slave.count; ++j)
+          terms[count++] = {&slaveShape[j], {&slave.node[j].x, &slave.node[j].y, &slave.node[j].z}, 1.0};
+        for (int l = 0; l < master.count; ++l)
+          terms[count++] = {&masterShape[l], {&master.node[l].x, &master.node[l].y, &master.node[l].z}, -1.0};
+        constexpr int V = kVariables<T>;
+        const auto rows = tangentialProjectorRows<V>({firstOrder(normal.x), firstOrder(normal.y), firstOrder(normal.z)});
+        out.slipVariation.template add<3, 3>(Slots, wa.data(), slave.count, rows, terms.data(), count);
       }
     }
   }
@@ -346,6 +359,7 @@ MortarQuadraticPairDerivatives<Slots> differentiateWithSlip(const QuadraticFacet
   const auto g = integrateQuadraticFacetPair<HessianDual<V>, Slots>(seeded[0], referenceArea, shape, &committed);
   MortarQuadraticPairDerivatives<Slots> out;
   extractGapsAndSlips<Slots>(g, variables, out);
+  extractSlipVariation<kC, V>(g.slipVariation, variables, Slots, 3, out.slipVariation, out.slipVariationGradient);
   return out;
 }
 template <int Slots>

@@ -56,6 +56,8 @@ struct MortarQuadraticFacetPairGaps {
   /// weights of the weighted gaps, a 3-vector per node, when the committed positions are given (friction),
   /// else 0; as MortarFacetPairGaps::weightedSlip.
   std::array<std::array<T, 3>, Slots> weightedSlip{};
+  /// With committed positions and derivatives: the virtual slips (MortarSlipVariation.hpp, eq. M11″).
+  SlipVariationSum<T> slipVariation;
 };
 
 /// The integral over the overlap. The measure is the reference one, as the linear kernel's A_0 / A_projected
@@ -81,6 +83,9 @@ struct MortarQuadraticPairDerivatives {
   std::array<std::array<double, 3>, Slots> weightedSlip{};
   std::vector<std::array<double, kCoordinates>> slipGradient;
   std::vector<std::array<double, kCoordinates * kCoordinates>> slipHessian;
+  /// The virtual slips and their derivatives, as MortarFacetPairDerivatives'.
+  std::vector<std::array<double, kCoordinates>> slipVariation;
+  std::vector<std::array<double, kCoordinates * kCoordinates>> slipVariationGradient;
 };
 using MortarQuadraticFacetPairDerivatives = MortarQuadraticPairDerivatives<kQuadraticFacetNodes>;
 

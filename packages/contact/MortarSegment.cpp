@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "contact/MortarDual.hpp"
 
@@ -123,10 +124,13 @@ MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& c, doubl
   // (along n(ξ), as the segmentation), both material points moved from their committed positions,
   // measured along the master's unit tangent t_m (the gap's frame).
   const Point2<T> masterTangent = unit(b);
-  const auto slipAt = [&](const T& xi) {
-    const SegmentPairCommitted& n = *committed;
+  const auto masterPointOf = [&](const T& xi) {
     const Point2<T> xs = along(s0, a, xi), normalAt = along(n0, dn, xi);
-    const T eta = cross(minus(xs, m0), normalAt) / cross(b, normalAt);
+    return T(cross(minus(xs, m0), normalAt) / cross(b, normalAt));
+  };
+  const auto slipAt = [&](const T& xi, const T& eta) {
+    const SegmentPairCommitted& n = *committed;
+    const Point2<T> xs = along(s0, a, xi);
     const Point2<T> slaveThen{n[0] + xi * (n[2] - n[0]), n[1] + xi * (n[3] - n[1])};
     const Point2<T> masterThen{n[4] + eta * (n[6] - n[4]), n[5] + eta * (n[7] - n[5])};
     const Point2<T> slaveMotion = minus(xs, slaveThen), masterMotion = minus(along(m0, b, eta), masterThen);
@@ -151,9 +155,21 @@ MortarPairGaps<T> integrateSegmentPair(const SegmentPairCoordinates<T>& c, doubl
     out.mortarLength[0] = out.mortarLength[0] + weight * shape0;
     out.mortarLength[1] = out.mortarLength[1] + weight * xi;
     if (committed != nullptr) {
-      const T u = slipAt(xi);
-      out.weightedSlip[0] = out.weightedSlip[0] + weight * shape0 * u;
-      out.weightedSlip[1] = out.weightedSlip[1] + weight * xi * u;
+      const T eta = masterPointOf(xi);
+      const T u = slipAt(xi, eta);
+      const std::array<T, 2> w{weight * shape0, weight * xi};
+      out.weightedSlip[0] = out.weightedSlip[0] + w[0] * u;
+      out.weightedSlip[1] = out.weightedSlip[1] + w[1] * u;
+      if constexpr (!std::is_same_v<T, double>) {  // the virtual slips (MortarSlipVariation.hpp, eq. M11″)
+        using Term = typename SlipVariationSum<T>::Term;
+        const T masterShape0 = 1.0 - eta;
+        const Term terms[4] = {{&shape0, {&c[0], &c[1], nullptr}, 1.0},
+                               {&xi, {&c[2], &c[3], nullptr}, 1.0},
+                               {&masterShape0, {&c[4], &c[5], nullptr}, -1.0},
+                               {&eta, {&c[6], &c[7], nullptr}, -1.0}};
+        const std::array<std::array<FirstOrder<kVariables<T>>, 2>, 1> row{{{firstOrder(masterTangent.x), firstOrder(masterTangent.y)}}};
+        out.slipVariation.template add<2, 1>(2, w.data(), 2, row, terms, 4);
+      }
     }
   }
   return out;
@@ -181,6 +197,9 @@ MortarPairDerivatives differentiateSegmentPair(const SegmentPairCoordinates<doub
     variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
     variables.extract(g.weightedSlip[a], out.slipGradient[a], out.slipHessian[a]);
   }
+  if (committed != nullptr)
+    extractSlipVariation<kMortarPairCoordinates, V>(g.slipVariation, variables, 2, 1, out.slipVariation,
+                                                    out.slipVariationGradient);
   return out;
 }
 }  // namespace

@@ -17,7 +17,9 @@
 // neighbouring slave nodes, so a segment pair depends on six nodes: its two slave nodes, its two master
 // nodes, and the slave nodes beyond each end.
 #include <array>
+#include <vector>
 
+#include "contact/MortarSlipVariation.hpp"
 #include "contact/SmallMatrix.hpp"
 
 namespace contessa::contact {
@@ -39,6 +41,8 @@ struct MortarPairGaps {
   /// Weighted slip increments Δũ_a = ∫ N_a t_m · (Δx_s(ξ) − Δx_m(η(ξ))) dΓ_0 (eq. M9), when the committed
   /// positions are given (friction), else 0.
   std::array<T, 2> weightedSlip{};
+  /// With committed positions and derivatives (T a HessianDual): the virtual slips (MortarSlipVariation.hpp).
+  SlipVariationSum<T> slipVariation;
 };
 
 /// The committed positions of the pair's slave and master nodes (entries 0–7 of SegmentPairCoordinates):
@@ -82,6 +86,10 @@ struct MortarPairDerivatives {
   std::array<double, 2> weightedSlip{};  ///< Δũ_a (with committed positions)
   std::array<std::array<double, kMortarPairCoordinates>, 2> slipGradient{};  ///< ∂Δũ_a/∂x_i
   std::array<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>, 2> slipHessian{};
+  /// With committed positions: the virtual slips B_a = ∂Δũ_a/∂x at a frozen segmentation (the D and M
+  /// matrices, what the tangential traction works on) and ∂B_a,i/∂x_j, row-major, not symmetric (eq. M11″).
+  std::vector<std::array<double, kMortarPairCoordinates>> slipVariation;
+  std::vector<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>> slipVariationGradient;
 };
 
 /// The pair's weighted gaps (values only: open nodes, predicted states).
