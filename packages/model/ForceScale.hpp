@@ -14,7 +14,7 @@ class ForceScale {
   /// ‖f‖₂ over the free DOFs at the latest residual evaluation: the out-of-balance force alone. The
   /// prescribed rows of f hold x − ū, a displacement, whose round-off (about 1e-17 at coordinates of order 1)
   /// would otherwise set a floor in length units under a force residual that scales with the unit of force.
-  /// Infinite while a prescribed row does not hold (|x − ū| above 1e-12 of the largest |x|): the state is
+  /// Infinite while a prescribed row does not hold (|x − ū| above 1e-10 of the largest |x|): the state is
   /// then no candidate for a force-relative test (a solve from rest under a prescribed displacement has
   /// f_int = 0 and f_free = 0 at its first iterate).
   virtual double outOfBalanceNorm() const = 0;
