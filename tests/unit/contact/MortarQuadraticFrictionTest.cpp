@@ -15,15 +15,17 @@
 
 #include "contact/MortarInterface.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
+#include "MortarQuadraticTestTools.hpp"
 #include "MortarTestTools.hpp"
 
 namespace contessa::contact {
 namespace {
 
-using Point = std::array<double, 3>;
-using Face = std::vector<Point>;
-
-Point mid(const Point& a, const Point& b) { return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])}; }
+using testing::Face;
+using testing::faceNodes;
+using testing::mid;
+using testing::Point;
+using testing::reversed;
 // Faces of corners a, b, c(, d), anticlockwise seen from the side their normal points to, straight edges.
 Face tri6(const Point& a, const Point& b, const Point& c) { return {a, b, c, mid(a, b), mid(b, c), mid(c, a)}; }
 Face quad8(const Point& a, const Point& b, const Point& c, const Point& d) {
@@ -33,19 +35,6 @@ Face quad9(const Point& a, const Point& b, const Point& c, const Point& d) {
   Face f = quad8(a, b, c, d);
   f.push_back(mid(mid(a, c), mid(b, d)));
   return f;
-}
-// The same face ordered the other way round (its normal reversed).
-Face reversed(const Face& f) {
-  if (f.size() == 6) return {f[0], f[2], f[1], f[5], f[4], f[3]};
-  Face r = {f[0], f[3], f[2], f[1]};
-  if (f.size() >= 8) r.insert(r.end(), {f[7], f[6], f[5], f[4]});
-  if (f.size() == 9) r.push_back(f[8]);
-  return r;
-}
-MortarFaceNodes faceNodes(const Face& f) {
-  MortarFaceNodes x{};
-  std::copy(f.begin(), f.end(), x.begin());
-  return x;
 }
 template <int Slots>
 QuadraticFacetPairCoordinates<double, Slots> pairOf(const Face& slave, const Face& master) {

@@ -2,7 +2,7 @@
 // What the quadratic mortar pair tests share (MortarQuadraticFacetPairTest.cpp on 6-node triangles,
 // MortarQuadraticQuadFacetPairTest.cpp on 8- and 9-node quadrilaterals): the pair's exact gradient and
 // Hessian of its weighted gaps against central differences (the gradient over every coordinate, the
-// Hessian over the given columns).
+// Hessian over the given columns); the faces' points and orderings the friction tests share too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,26 @@
 #include "contact/MortarQuadraticFacetPair.hpp"
 
 namespace contessa::contact::testing {
+
+using Point = std::array<double, 3>;
+using Face = std::vector<Point>;
+
+inline Point mid(const Point& a, const Point& b) {
+  return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
+}
+// The same face ordered the other way round (its normal reversed).
+inline Face reversed(const Face& f) {
+  if (f.size() == 6) return {f[0], f[2], f[1], f[5], f[4], f[3]};
+  Face r = {f[0], f[3], f[2], f[1]};
+  if (f.size() >= 8) r.insert(r.end(), {f[7], f[6], f[5], f[4]});
+  if (f.size() == 9) r.push_back(f[8]);
+  return r;
+}
+inline MortarFaceNodes faceNodes(const Face& f) {
+  MortarFaceNodes x{};
+  std::copy(f.begin(), f.end(), x.begin());
+  return x;
+}
 
 template <int Slots>
 void expectDerivativesAreCentralDifferences(const QuadraticFacetPairCoordinates<double, Slots>& x,

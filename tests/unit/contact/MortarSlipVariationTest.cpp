@@ -23,6 +23,7 @@
 #include "contact/MortarFacetPair.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
 #include "contact/MortarSegment.hpp"
+#include "MortarQuadraticTestTools.hpp"
 
 namespace contessa::contact {
 namespace {
@@ -253,27 +254,16 @@ TEST(MortarSlipVariation, SegmentPairVirtualSlipsAreExact) {
 
 // ---- quadratic pairs ---------------------------------------------------------------------------------------
 
-using Point = std::array<double, 3>;
-using Face = std::vector<Point>;
-Point mid(const Point& a, const Point& b) { return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])}; }
+using testing::Face;
+using testing::faceNodes;
+using testing::mid;
+using testing::Point;
+using testing::reversed;
 Face quadraticFace(int nodes, const Point& a, const Point& b, const Point& c, const Point& d) {
   if (nodes == 6) return {a, b, d, mid(a, b), mid(b, d), mid(d, a)};
   Face f = {a, b, c, d, mid(a, b), mid(b, c), mid(c, d), mid(d, a)};
   if (nodes == 9) f.push_back(mid(mid(a, c), mid(b, d)));
   return f;
-}
-// The same face ordered the other way round (its normal reversed).
-Face reversed(const Face& f) {
-  if (f.size() == 6) return {f[0], f[2], f[1], f[5], f[4], f[3]};
-  Face r = {f[0], f[3], f[2], f[1]};
-  if (f.size() >= 8) r.insert(r.end(), {f[7], f[6], f[5], f[4]});
-  if (f.size() == 9) r.push_back(f[8]);
-  return r;
-}
-MortarFaceNodes faceNodes(const Face& f) {
-  MortarFaceNodes x{};
-  std::copy(f.begin(), f.end(), x.begin());
-  return x;
 }
 
 template <int Slots>
