@@ -40,6 +40,11 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
     throw std::logic_error("ContactMechanicsModel: the mesh part was made for rank " + std::to_string(problem_.mesh.rank) +
                            " of " + std::to_string(problem_.mesh.numRanks) + ", not for this communicator");
   layout_ = std::make_unique<DofLayout>(comm_, problem_.mesh, ContactAssembly::surfaceNodes(problem_.contacts));
+  {
+    double local = 0.0;
+    for (const double c : problem_.mesh.part.mesh.coordinates) local = std::max(local, std::abs(c));
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &local, &lengthScale_);
+  }
   contact_ = std::make_unique<ContactAssembly>(problem_, *layout_);
   solids_ = std::make_unique<SolidAssembler>(
       problem_, [this](GlobalIndex dof) { return layout_->overlapMap()->getLocalElement(dof); });

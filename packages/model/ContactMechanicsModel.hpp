@@ -165,6 +165,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   // ForceScale: ‖f_int‖₂ of the latest evaluation pass (kept with the pass).
   double forceScale() const override { return passForceScale_; }
   double outOfBalanceNorm() const override { return lastOutOfBalance_; }
+  double lengthScale() const override { return lengthScale_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
   int elementPasses() const { return elementPasses_; }
   int dimension() const { return dim_; }
@@ -243,6 +244,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   std::function<void(const GraphRebuild&)> rebuildObserver_;
   mutable double lastLoadFactor_ = 0;
   mutable double lastOutOfBalance_ = 0;  ///< ‖f‖₂ over the free rows of the latest residual (ForceScale)
+  double lengthScale_ = 0;  ///< max |X| of the reference coordinates over every rank (ForceScale)
   continuation::LoadSchedule schedule_;
   int loadStep_ = 0;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank

@@ -18,6 +18,9 @@ class ForceScale {
   /// then no candidate for a force-relative test (a solve from rest under a prescribed displacement has
   /// f_int = 0 and f_free = 0 at its first iterate).
   virtual double outOfBalanceNorm() const = 0;
+  /// The largest |X| of the mesh's reference coordinates over every rank, in the deck's length unit: the
+  /// scale of the positions x = X + u whose round-off sets a floor under the Newton update (0: none known).
+  virtual double lengthScale() const { return 0.0; }
 };
 
 }  // namespace contessa::model

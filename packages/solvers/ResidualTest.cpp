@@ -40,7 +40,13 @@ NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic
   krylovForcing().absolute = absolute_;
   const double relativeBound = relative_ > 0 ? relative_ * initial_ : 0.0;
   const bool residualSmall = std::isfinite(norm) && (judged <= absolute_ || norm <= relativeBound);
-  const bool updateSmall = std::isfinite(norm) && update_ > 0 && updateNorm_ >= 0 && updateNorm_ <= update_ * xNorm_ &&
+  // The update test's bound is relative to ||x|| (the displacements); near λ = 0 they are tiny and the update
+  // can stall at the round-off of the positions X + u instead (a penalty contact's gaps are differences of
+  // positions): an update below kPositionRoundOff of the largest |X| is converged too (roller_on_axle's first
+  // attempt: ||dx|| 4e-15 at positions of 50 mm, ||f|| stalled at 2e-10 under a force-scaled bound of 1e-12).
+  const double positionFloor = forces_ != nullptr ? kPositionRoundOff * forces_->lengthScale() : 0.0;
+  const bool updateSmall = std::isfinite(norm) && update_ > 0 && updateNorm_ >= 0 &&
+                           updateNorm_ <= std::max(update_ * xNorm_, positionFloor) &&
                            (stepControl_ == nullptr || stepControl_->updateMeaningful());
   const bool mayConverge = stepControl_ == nullptr || stepControl_->mayConverge();
   status_ = (residualSmall || updateSmall) && mayConverge ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;

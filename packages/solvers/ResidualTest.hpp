@@ -18,6 +18,9 @@ namespace contessa::solvers {
 
 class ResidualTest : public NOX::StatusTest::Generic {
  public:
+  /// An update below this fraction of the mesh's largest |X| is at the positions' round-off (about 4500
+  /// machine epsilons): converged whatever ||x|| (ResidualTest.cpp).
+  static constexpr double kPositionRoundOff = 1e-12;
   /// `bound`: the absolute part; `forces` gives F at the iterate (may be null: F = 0). `relative` and
   /// `update` ≤ 0 switch those tests off. `stepControl` (may be null) may veto convergence
   /// (StepControl::mayConverge, e.g. while new contacts are frozen) and disable the update test at an
