@@ -44,7 +44,9 @@ NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic
   // can stall at the round-off of the positions X + u instead (a penalty contact's gaps are differences of
   // positions): an update below kPositionRoundOff of the largest |X| is converged too (roller_on_axle's first
   // attempt: ||dx|| 4e-15 at positions of 50 mm, ||f|| stalled at 2e-10 under a force-scaled bound of 1e-12).
-  const double positionFloor = forces_ != nullptr ? kPositionRoundOff * forces_->lengthScale() : 0.0;
+  // Only under the force-scaled bound: a deck's absolute tolerance and its update test decide as they always have.
+  const double positionFloor =
+      bound_.isForceScaled() && forces_ != nullptr ? kPositionRoundOff * forces_->lengthScale() : 0.0;
   const bool updateSmall = std::isfinite(norm) && update_ > 0 && updateNorm_ >= 0 &&
                            updateNorm_ <= std::max(update_ * xNorm_, positionFloor) &&
                            (stepControl_ == nullptr || stepControl_->updateMeaningful());
