@@ -61,7 +61,7 @@ Teuchos::RCP<Thyra::VectorBase<double>> displacement(const model::ContactMechani
   const int dim = problem.dimension();
   const auto& map = *xt->getMap();
   auto v = xt->getDataNonConst(0);
-  for (std::size_t k = 0; k < v.size(); ++k) {
+  for (std::size_t k = 0; k < static_cast<std::size_t>(v.size()); ++k) {
     const auto gid = map.getGlobalElement(static_cast<model::LO>(k));
     const auto node = problem.mesh.localNode(gid / dim);
     const int c = static_cast<int>(gid % dim);
@@ -77,7 +77,7 @@ std::vector<double> componentSums(const Thyra::VectorBase<double>& f, int dim) {
   const auto& map = *ft->getMap();
   const auto v = ft->getData(0);
   std::vector<double> local(dim, 0.0), global(dim, 0.0);
-  for (std::size_t k = 0; k < v.size(); ++k) local[map.getGlobalElement(static_cast<model::LO>(k)) % dim] += v[k];
+  for (std::size_t k = 0; k < static_cast<std::size_t>(v.size()); ++k) local[map.getGlobalElement(static_cast<model::LO>(k)) % dim] += v[k];
   Teuchos::reduceAll(*map.getComm(), Teuchos::REDUCE_SUM, dim, local.data(), global.data());
   return global;
 }
@@ -179,7 +179,7 @@ TEST_P(LoadsIn, ReactionsSubtractTheLoadsAndReportTheSpringsForce) {
     const auto& nodes = local.nodeSet(reaction.nodeSet).nodes;
     const bool springs = reaction.nodeSet == "bottom";
     std::vector<double> mine(dim, 0.0), expected(dim, 0.0);
-    for (std::size_t k = 0; k < f.size(); ++k) {
+    for (std::size_t k = 0; k < static_cast<std::size_t>(f.size()); ++k) {
       const auto gid = map.getGlobalElement(static_cast<model::LO>(k));
       const int c = static_cast<int>(gid % dim);
       if (!std::binary_search(nodes.begin(), nodes.end(), problem.mesh.localNode(gid / dim))) continue;
