@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian package Contessa needs (idempotent; quick when already installed).
-# Run as root on Debian bookworm, or as a user with sudo.
+# Run as root on Debian bookworm, or as a user with sudo. gmsh (the command line, for the user guide's worked
+# examples that mesh a .geo) is the only one no test needs.
 set -euo pipefail
 
 packages=(
@@ -13,6 +14,7 @@ packages=(
   paraview python3-paraview xvfb xauth
   slurm-wlm munge
   calculix-ccx
+  gmsh
 )
 
 missing=()
