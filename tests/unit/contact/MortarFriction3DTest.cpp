@@ -198,13 +198,13 @@ std::vector<double> slid(double slide) {
 
 using testing::Assembled;
 
-// The trial evaluation at x and λ after committing the uneven face at λ = 0.3 and, when `stuck` > 0, the
-// face slid by `stuck` (a stick state with a nonzero committed traction).
-Assembled frictionalTrial(const Face& face, const std::vector<double>& x, double lambda, double stuck = 0.0) {
+// The interface committed at the uneven face at λ = 0.3 and, when `stuck` > 0, at the face slid by `stuck`
+// (a stick state with a nonzero committed traction): where every trial of a central difference starts.
+std::unique_ptr<ContactInterfaceBase> committedInterface(const Face& face, double stuck) {
   auto interface = face.make();
   testing::assemble<3>(*interface, unevenFace(), 0.3);
   if (stuck > 0.0) testing::assemble<3>(*interface, slid(stuck), 0.3 + 0.5 * stuck);
-  return testing::assemble<3>(*interface, x, lambda);
+  return interface;
 }
 
 void expectFrictionalTangentIsTheCentralDifference(const Face& face, double slide, ContactStatus expected,
@@ -213,7 +213,8 @@ void expectFrictionalTangentIsTheCentralDifference(const Face& face, double slid
                ", slide " + std::to_string(slide) + ", stuck " + std::to_string(stuck));
   const auto x = slid(slide);
   const double lambda = 0.3 + 0.5 * slide;
-  const Assembled a = frictionalTrial(face, x, lambda, stuck);
+  const auto committed = committedInterface(face, stuck);
+  const Assembled a = testing::assemble<3>(*committed->clone(), x, lambda);
   for (const auto& s : a.states) EXPECT_EQ(s.status, expected);
   double frictionScale = 0;
   for (int node = 0; node < 9; ++node)
@@ -221,14 +222,14 @@ void expectFrictionalTangentIsTheCentralDifference(const Face& face, double slid
   EXPECT_GT(frictionScale, 1e-3) << "a tangential force";
   double scale = 0;
   const double error = testing::tangentCentralDifferenceError(
-      a.tangent, x, [&](const std::vector<double>& y) { return frictionalTrial(face, y, lambda, stuck).residual; },
+      a.tangent, x, [&](const std::vector<double>& y) { return testing::trialResidual<3>(*committed, y, lambda); },
       &scale);
   EXPECT_GT(scale, 100.0);
   EXPECT_LT(error, 1e-6 * scale);
   if (face.rigidMaster) {
     double dScale = 0;
     const double dError = testing::loadDerivativeCentralDifferenceError(
-        a.dLambda, lambda, [&](double mu) { return frictionalTrial(face, x, mu, stuck).residual; }, &dScale);
+        a.dLambda, lambda, [&](double mu) { return testing::trialResidual<3>(*committed, x, mu); }, &dScale);
     EXPECT_GT(dScale, 1.0);
     EXPECT_LT(dError, 1e-6 * dScale);
   }
