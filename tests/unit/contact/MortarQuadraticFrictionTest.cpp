@@ -284,11 +284,11 @@ std::vector<double> slid(int nodes, bool rigidMaster, double slide) {
   return x;
 }
 
-// The trial evaluation at x and λ after committing the uneven faces at λ = 0.3.
-testing::Assembled frictionalTrial(int nodes, bool rigid, const std::vector<double>& x, double lambda) {
+// The interface committed at the uneven faces at λ = 0.3: where every trial of a central difference starts.
+std::unique_ptr<ContactInterfaceBase> committedInterface(int nodes, bool rigid) {
   auto interface = interfaceOf(nodes, rigid);
   testing::assemble<3>(*interface, unevenFaces(nodes, rigid), 0.3);
-  return testing::assemble<3>(*interface, x, lambda);
+  return interface;
 }
 
 void expectFrictionalTangentIsTheCentralDifference(int nodes, bool rigid, double slide, ContactStatus expected) {
@@ -296,7 +296,8 @@ void expectFrictionalTangentIsTheCentralDifference(int nodes, bool rigid, double
                std::to_string(slide));
   const auto x = slid(nodes, rigid, slide);
   const double lambda = 0.3 + 0.5 * slide;
-  const testing::Assembled a = frictionalTrial(nodes, rigid, x, lambda);
+  const auto committed = committedInterface(nodes, rigid);
+  const testing::Assembled a = testing::assemble<3>(*committed->clone(), x, lambda);
   const int slaves = facesOf(nodes, rigid, 0.0).slaveCount();
   for (const auto& s : a.states) EXPECT_EQ(s.status, expected);
   double frictionScale = 0;
@@ -309,14 +310,14 @@ void expectFrictionalTangentIsTheCentralDifference(int nodes, bool rigid, double
   if (!rigid) columns.insert(columns.end(), {slaves, slaves + 4});
   double scale = 0;
   const double error = testing::tangentColumnsCentralDifferenceError(
-      a.tangent, x, [&](const std::vector<double>& y) { return frictionalTrial(nodes, rigid, y, lambda).residual; },
+      a.tangent, x, [&](const std::vector<double>& y) { return testing::trialResidual<3>(*committed, y, lambda); },
       testing::nodeColumns<3>(columns), &scale);
   EXPECT_GT(scale, 10.0);
   EXPECT_LT(error, 1e-6 * scale);
   if (!rigid) return;
   double dScale = 0;
   const double dError = testing::loadDerivativeCentralDifferenceError(
-      a.dLambda, lambda, [&](double mu) { return frictionalTrial(nodes, rigid, x, mu).residual; }, &dScale);
+      a.dLambda, lambda, [&](double mu) { return testing::trialResidual<3>(*committed, x, mu); }, &dScale);
   EXPECT_GT(dScale, 0.1);
   EXPECT_LT(dError, 1e-6 * dScale);
 }

@@ -46,6 +46,14 @@ Assembled evaluateOnly(ContactInterfaceBase& interface, const std::vector<double
   return out;
 }
 
+// The residual of a trial evaluation at x and λ from `committed`'s state, on a copy (clone): a central
+// difference's residuals all start from one committed state, and the commits leading there cost as much as
+// the trial itself, so the tests make them once and evaluate copies.
+template <int Dim>
+std::vector<double> trialResidual(const ContactInterfaceBase& committed, const std::vector<double>& x, double lambda) {
+  return evaluateOnly<Dim>(*committed.clone(), x, lambda).residual;
+}
+
 // Evaluates and commits `interface` at x and λ (evaluateOnly, then the committed states and counts).
 template <int Dim>
 Assembled assemble(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
