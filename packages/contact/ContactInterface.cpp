@@ -564,6 +564,7 @@ SlaveNodeChange ContactInterface<Facet>::unchanged(std::size_t k) const {
   SlaveNodeChange c;
   c.committedGap = c.trialGap = committedOutput_[k].gap;
   c.committedStatus = c.trialStatus = history_.committed(k).status;
+  c.frictional = !spec_.law.isFrictionless();
   return c;
 }
 

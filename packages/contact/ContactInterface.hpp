@@ -49,6 +49,7 @@ struct SlaveNodeChange {
   /// nodes, local in the facet (−1: none).
   int trialContactKind = 0;
   int trialContactNodes[2] = {-1, -1};
+  bool frictional = false;  ///< its interface has μ > 0 (automatic Contact Beta N_c keeps the paper's 2)
 };
 
 /// Augmented Lagrangian: the owned slave nodes' largest violations at the latest trial evaluation, each

@@ -294,6 +294,7 @@ class MortarInterface final : public ContactInterfaceBase {
     SlaveNodeChange c;
     c.committedGap = c.trialGap = committedOutput_[k].gap;
     c.committedStatus = c.trialStatus = committedOutput_[k].status;
+    c.frictional = !spec_.law.isFrictionless();
     return c;
   }
 

@@ -5,6 +5,11 @@
 
 namespace contessa::continuation {
 
+int automaticContactsPerStep(std::size_t slaveNodes) {
+  const double share = std::ceil(kAutomaticContactsShare * static_cast<double>(slaveNodes));
+  return std::max(kAutomaticContactsMinimum, static_cast<int>(share));
+}
+
 double closureFraction(const GapChange& change, double touchingGap) {
   if (change.inContactAtStart || !std::isfinite(change.gapStart)) return -1;
   if (change.gapStart <= touchingGap) return 0;  // touching: closes at once if it closes at all

@@ -2,6 +2,7 @@
 // The load-step correction of the reference paper (section 2.1, Table 1, after Chamoret et al. 2002):
 // choose the increment so that only N_c slave nodes come into contact in it. Pure arithmetic on the
 // gaps of the slave nodes: the continuation strategy (solvers/ContactBetaStepSize) supplies them.
+#include <cstddef>
 #include <limits>
 #include <vector>
 
@@ -15,10 +16,30 @@ struct GapChange {
   bool inContactAtStart = false;
 };
 
+/// Contacts Per Step = 0: N_c is chosen from the number of slave nodes (automaticContactsPerStep).
+constexpr int kAutomaticContactsPerStep = 0;
+
+/// The share of the slave nodes that automatic N_c lets close per increment without friction
+/// (docs/theory-load-stepping.md §11.7; bench/README.md, "A default Contact Beta that takes the cheapest
+/// path"): on the frictionless tube (102 slave nodes) every N_c from 34 on takes the fewest Newton
+/// iterations, 36, with Max Step Size bounding the steps (N_c = 32: 47, 24: 73, 2: 145); half the slave
+/// nodes keeps a margin above that edge.
+constexpr double kAutomaticContactsShare = 0.5;
+/// Automatic N_c never falls below the paper's N_c = 2, and is 2 with friction: the frictional answer
+/// depends on the path (the slip history), and on the frictional tube every N_c above 2 moves the final
+/// plate force by more than the user's fixed step does (N_c = 4: 1.9e-3, 32: 6.8e-3 against 8.9e-4).
+constexpr int kAutomaticContactsMinimum = 2;
+
+/// N_c for `slaveNodes` frictionless slave nodes (every interface, every rank) when the deck does not
+/// give it: max(2, ⌈kAutomaticContactsShare × slaveNodes⌉).
+int automaticContactsPerStep(std::size_t slaveNodes);
+
 /// The defaults here (and in ContactBetaSettings) are the deck's: solvers/ContactBetaStepControl declares
 /// the Step Size parameters with them.
 struct BetaOptions {
-  int contactsPerStep = 2;     ///< N_c
+  /// N_c, ≥ 1 when β is computed (computeBeta, betaFromFractions); kAutomaticContactsPerStep (the
+  /// deck's default) only in the settings, which ContactBetaControl resolves for the nodes it is given.
+  int contactsPerStep = kAutomaticContactsPerStep;
   double maxGrowth = 2.0;      ///< β ≤ maxGrowth (the step may grow at most this much per increment)
   double maxShrink = 0.05;     ///< β ≥ maxShrink
   /// Where β falls between β^{N_c} (0: the paper's eq. 13) and β^{N_c+1} (1): see computeBeta.

@@ -19,7 +19,14 @@ QuietGrowth quietGrowthByName(const std::string& name) {
 }
 
 ContactBetaControl::ContactBetaControl(const ContactBetaSettings& settings)
-    : settings_(settings), correction_(settings.beta.nextContactFraction) {}
+    : settings_(settings), correction_(settings.beta.nextContactFraction),
+      appliedContactsPerStep_(settings.beta.contactsPerStep) {}
+
+int ContactBetaControl::contactsPerStep(const std::vector<SlaveNodeIncrement>& nodes) const {
+  if (settings_.beta.contactsPerStep != kAutomaticContactsPerStep) return settings_.beta.contactsPerStep;
+  const bool frictional = std::any_of(nodes.begin(), nodes.end(), [](const auto& n) { return n.frictional; });
+  return frictional ? kAutomaticContactsMinimum : automaticContactsPerStep(nodes.size());
+}
 
 AttemptPlan ContactBetaControl::plan(double base, double lambda) {
   if (base < settings_.minStep) {
@@ -125,8 +132,9 @@ bool ContactBetaControl::standsAsPlanned(const BetaResult& r) const {
 
 std::string ContactBetaControl::redoAtConvergence(const std::vector<SlaveNodeIncrement>& converged) {
   const double f = settings_.beta.nextContactFraction;
-  const int n = std::max(1, settings_.beta.contactsPerStep);
   if (f <= 0 || redos_ >= settings_.maxCorrections || step_ <= 0) return "";  // f = 0: Table 1 as printed
+  const int n = std::max(1, contactsPerStep(converged));
+  appliedContactsPerStep_ = n;
   const int observed = countEvents(converged, settings_.counted);
   if (observed == n) return "";
   double beta = 1;
@@ -166,6 +174,7 @@ std::string ContactBetaControl::redoAtConvergence(const std::vector<SlaveNodeInc
 
 void ContactBetaControl::recordPrediction(const std::vector<SlaveNodeIncrement>& nodes, const BetaResult& r) {
   predictedEvents_ = r.predictedContacts;
+  appliedContactsPerStep_ = contactsPerStep(nodes);
   predictedFractions_ = eventFractions(nodes, settings_.counted, settings_.beta.touchingGap);
   predictionStep_ = plannedStep_;
   lastBetaFromEvents_ = r.fromEvents;
@@ -173,6 +182,7 @@ void ContactBetaControl::recordPrediction(const std::vector<SlaveNodeIncrement>&
 
 BetaResult ContactBetaControl::betaFor(const std::vector<SlaveNodeIncrement>& nodes) const {
   BetaOptions options = settings_.beta;
+  options.contactsPerStep = contactsPerStep(nodes);
   options.eventRateScale = learning() ? correction_.scale() : 1.0;
   if (afterFailure_) options.maxGrowth = std::min(options.maxGrowth, 1.0);
   if (step_ > 0) {

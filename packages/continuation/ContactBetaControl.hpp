@@ -94,6 +94,12 @@ class ContactBetaControl {
   /// New contacts were switched on at this iterate: its Newton update was computed without them.
   bool newContactsJustReleased() const { return justReleased_; }
   bool hitMinimumStep() const { return hitMinimumStep_; }
+  /// N_c for decisions over these slave nodes (all of them, every interface): the deck's Contacts Per
+  /// Step, or with kAutomaticContactsPerStep the paper's 2 when any of them is frictional, otherwise
+  /// automaticContactsPerStep(nodes.size()).
+  int contactsPerStep(const std::vector<SlaveNodeIncrement>& nodes) const;
+  /// N_c of the last decision (the deck's before any; 0 while automatic and undecided), for messages.
+  int appliedContactsPerStep() const { return appliedContactsPerStep_; }
   double beta() const { return beta_; }  ///< β applied to this increment (1 = none), for the history
   int predictedEvents() const { return predictedEvents_; }
   double eventRateScale() const { return correction_.scale(); }
@@ -125,6 +131,7 @@ class ContactBetaControl {
   int redos_ = 0;     ///< redoAtConvergence corrections of the current increment
   bool redoing_ = false;
   int lastNewtonIterations_ = 0;
+  int appliedContactsPerStep_ = 0;  ///< not checkpointed: derived again from the nodes at every decision
   std::vector<double> predictedFractions_;  ///< unscaled β^k of the last check / prediction
   double predictionStep_ = 0;               ///< the Δλ they refer to (0: none recorded)
 

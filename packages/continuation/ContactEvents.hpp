@@ -41,6 +41,9 @@ struct SlaveNodeIncrement {
   /// step leaves behind it) is a kink too.
   int trialContactKind = 0;
   int trialContactNodes[2] = {-1, -1};
+  /// Its interface has a friction coefficient μ > 0: the answer depends on the path (the slip history),
+  /// so automatic N_c keeps the paper's 2 (automaticContactsPerStep).
+  bool frictional = false;
 
   bool inContactAtCommit() const { return committedStatus != NodeStatus::Open; }
 };

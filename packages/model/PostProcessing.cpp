@@ -203,16 +203,16 @@ std::vector<std::pair<std::string, contact::RegularisationMeasures>> PostProcess
 
 namespace {
 // Every rank needs every slave node's change to sort the β^k of eq. (12): gather them all, as
-// continuation::SlaveNodeIncrement (11 numbers each), in rank order.
+// continuation::SlaveNodeIncrement (12 numbers each), in rank order.
 std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const std::vector<contact::SlaveNodeChange>& local) {
-  constexpr int kFields = 11;
+  constexpr int kFields = 12;
   std::vector<double> packed;
   for (const auto& c : local) {
     packed.insert(packed.end(), {c.committedGap, c.trialGap, static_cast<double>(static_cast<int>(c.committedStatus)),
                                  static_cast<double>(static_cast<int>(c.trialStatus)), c.committedIndicator,
                                  c.trialIndicator, c.slipReversed ? 1.0 : 0.0, static_cast<double>(c.trialFacet),
                                  static_cast<double>(c.trialContactKind), static_cast<double>(c.trialContactNodes[0]),
-                                 static_cast<double>(c.trialContactNodes[1])});
+                                 static_cast<double>(c.trialContactNodes[1]), c.frictional ? 1.0 : 0.0});
   }
   const int size = comm.getSize();
   std::vector<int> counts(size), offsets(size + 1, 0);
@@ -238,6 +238,7 @@ std::vector<continuation::SlaveNodeIncrement> gatherAll(const Comm& comm, const 
     n.trialContactKind = static_cast<int>(all[i + 8]);
     n.trialContactNodes[0] = static_cast<int>(all[i + 9]);
     n.trialContactNodes[1] = static_cast<int>(all[i + 10]);
+    n.frictional = all[i + 11] != 0.0;
     out.push_back(n);
   }
   return out;

@@ -35,8 +35,16 @@ const ParameterTable<Settings>& table() {
   const Settings d;  // the defaults
   static const auto rows =
       ParameterTable<Settings>()
-          .count("Contacts Per Step", [](Settings& s) -> int& { return s.beta.contactsPerStep; }, d.beta.contactsPerStep,
-                 "Contact Beta: N_c, the number of slave nodes allowed to come into contact per increment (eq. 13)")
+          .declared("Contacts Per Step", [](Settings& s) -> int& { return s.beta.contactsPerStep; }, d.beta.contactsPerStep,
+                    "Contact Beta: N_c, the number of slave nodes allowed to come into contact per increment (eq. 13); "
+                    "0 (the default) = automatic: 2 (the paper's) when an interface has friction (its answer depends on "
+                    "the path), otherwise max(2, half the slave nodes of all interfaces), the fewest Newton "
+                    "iterations measured (docs/theory-load-stepping.md §11.7) ([0, inf])",
+                    [](ParameterList& p, const std::string& name, int value, const std::string& doc) {
+                      auto atLeastZero = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>());
+                      atLeastZero->setMin(continuation::kAutomaticContactsPerStep);
+                      p.set(name, value, doc, atLeastZero);
+                    })
           .enumChoice("Mode", &Settings::mode, d.mode, modeNames(),
                       "Contact Beta: Restart = the paper's Table 1 (β at the first Newton iteration, one restart); "
                       "Predictor = β from the predicted state before the solve (no restart)")
@@ -143,7 +151,7 @@ std::string ContactBetaStepControl::redoAtConvergence() {
 std::string ContactBetaStepControl::stopReason() const {
   if (!control_.hitMinimumStep()) return "";
   return "Contact Beta asked for a step below Min Step Size = " + shortNumber(control_.settings().minStep) +
-         " to let only " + std::to_string(control_.settings().beta.contactsPerStep) + " contacts close per increment";
+         " to let only " + std::to_string(control_.appliedContactsPerStep()) + " contacts close per increment";
 }
 
 }  // namespace contessa::solvers

@@ -26,7 +26,7 @@ std::ostream& ContactBetaRestartTest::print(std::ostream& os, int indent) const 
   const auto& control = control_.control();
   for (int i = 0; i < indent; ++i) os << ' ';
   os << status_ << "Contact Beta restart: beta = " << control.beta() << " (" << control.predictedEvents()
-     << " events predicted, N_c = " << control.settings().beta.contactsPerStep << ")\n";
+     << " events predicted, N_c = " << control.appliedContactsPerStep() << ")\n";
   return os;
 }
 

@@ -310,13 +310,15 @@ TEST(ComputeBeta, NaNGapsAreIgnored) {
 }
 
 TEST(ComputeBeta, DefaultOptions) {
-  // The defaults of BetaOptions: N_c = 2, f = 0.9, β in [0.05, 2], touchingGap = 1e-10.
-  const cb::BetaOptions defaults;
-  EXPECT_EQ(defaults.contactsPerStep, 2);
+  // The defaults of BetaOptions: N_c automatic (ContactBetaControl resolves it from the slave nodes,
+  // AutomaticContactsTest), f = 0.9, β in [0.05, 2], touchingGap = 1e-10.
+  cb::BetaOptions defaults;
+  EXPECT_EQ(defaults.contactsPerStep, cb::kAutomaticContactsPerStep);
+  defaults.contactsPerStep = 2;
   EXPECT_EQ(defaults.nextContactFraction, 0.9);
   EXPECT_EQ(defaults.maxGrowth, 2.0);
   EXPECT_EQ(defaults.maxShrink, 0.05);
   EXPECT_EQ(defaults.touchingGap, 1e-10);
-  // 0.25, 0.5, 0.75, 1.5 with the defaults: 0.5 + 0.9 × 0.25 = 0.725.
+  // 0.25, 0.5, 0.75, 1.5 with the defaults and N_c = 2: 0.5 + 0.9 × 0.25 = 0.725.
   EXPECT_DOUBLE_EQ(cb::computeBeta(fourCandidates(), defaults).beta, 0.725);
 }

@@ -451,7 +451,7 @@ TEST(PiroValidation, StratimikosSolversThatTakeTpetraMatrices) {
 
 TEST(PiroValidation, ContactBetaParameters) {
   const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> cases = {
-      {{"Contacts Per Step", "0"}, "Piro/LOCA/Step Size/Contacts Per Step: expected an integer in [1, inf]"},
+      {{"Contacts Per Step", "-1"}, "Piro/LOCA/Step Size/Contacts Per Step: expected an integer in [0, inf]"},  // 0: automatic
       {{"Mode", "Corrector"}, "Piro/LOCA/Step Size/Mode: expected one of Restart, Predictor; got 'Corrector'"},
       {{"Max Growth Factor", "0.5"}, "Piro/LOCA/Step Size/Max Growth Factor: expected a value in [1, 1000]"},
       {{"Max Shrink Factor", "2"}, "Piro/LOCA/Step Size/Max Shrink Factor: expected a value in [1e-06, 1]"},
