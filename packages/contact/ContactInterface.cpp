@@ -153,8 +153,10 @@ class ContactInterface final : public ContactInterfaceBase {
   std::vector<TunnellingNode> tunnellingNodes() const override;
   void commit() override;
   void rollback() override;
-  void augment() override {
-    if (!spec_.law.isFrictionless()) accelerateStickMultipliers();
+  void augment(bool atEquilibrium) override {
+    // The secant reads the update's iterate as an equilibrium (t_T = F − K m): at an early update it would
+    // pass the iterate's Newton error on with the gain K + ε_T (theory §15, "The secant reads equilibria").
+    if (!spec_.law.isFrictionless() && atEquilibrium) accelerateStickMultipliers();
     history_.augment();
   }
   void saveCommittedSlaves(StateRecord& table) const override;

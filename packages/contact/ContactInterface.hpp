@@ -179,8 +179,10 @@ class ContactInterfaceBase {
   virtual void rollback() = 0;
   /// Augmented Lagrangian (spec().law.isAugmented()): the multipliers take the tractions of the latest
   /// trial evaluation (the Uzawa update, docs/theory-contact.md eq. 15.3), within the increment. Nothing for
-  /// an interface without multipliers.
-  virtual void augment() {}
+  /// an interface without multipliers. `atEquilibrium`: that evaluation is of a converged Newton iterate (not
+  /// an early update's, §15 "Updates before convergence"); only there may a sticking node's multiplier take
+  /// the secant's step (eq. 15.7), which reads the iterate as an equilibrium of the structure.
+  virtual void augment(bool atEquilibrium) { (void)atEquilibrium; }
   /// The owned slave nodes' violations at the latest trial evaluation (for the augmentation test).
   AugmentationViolation trialViolation() const;
   /// Augmented Lagrangian: the normal penalty from now on is the deck's times `growth` ≥ 1 (penalty growth,
