@@ -19,6 +19,8 @@ namespace contessa::contact {
 
 namespace {
 constexpr double kTouchingGap = 1e-10;  // as continuation::BetaOptions::touchingGap
+/// The most a secant step of a sticking node's multiplier may stretch Uzawa's (stickSecantFactor).
+constexpr double kMaxStickSecantFactor = 1000.0;
 
 /// ‖t_T‖/ε_T of an element result (RegularisationMeasures), ‖t_T‖ = √(t_α ā^αβ t_β) of eq. (19). With the
 /// augmented Lagrangian the stick spring is stretched by t_T − λ_T only (eq. 15.2), and only while sticking.
@@ -151,7 +153,12 @@ class ContactInterface final : public ContactInterfaceBase {
   std::vector<TunnellingNode> tunnellingNodes() const override;
   void commit() override;
   void rollback() override;
-  void augment() override { history_.augment(); }
+  void augment(bool atEquilibrium) override {
+    // The secant reads the update's iterate as an equilibrium (t_T = F − K m): at an early update it would
+    // pass the iterate's Newton error on with the gain K + ε_T (theory §15, "The secant reads equilibria").
+    if (!spec_.law.isFrictionless() && atEquilibrium) accelerateStickMultipliers();
+    history_.augment();
+  }
   void saveCommittedSlaves(StateRecord& table) const override;
   void restoreSlaves(const StateRecord& table) override;
   void saveCommittedMaster(StateRecord& table) const override;
@@ -326,6 +333,11 @@ class ContactInterface final : public ContactInterfaceBase {
   /// contact at the last commit gets that commit's stick reference ξ_n (with g_T there) and multiplier λ_T
   /// back, on the facet it now touches (eq. 15.4 of docs/theory-contact.md).
   void keepStickReferences();
+  /// Augmented Lagrangian with friction, at an update: the trial multiplier λ_T of each node that sticks on the
+  /// facet of its last update in the increment goes the secant's step (stickSecantFactor) instead of Uzawa's.
+  void accelerateStickMultipliers();
+  /// Forgets the increment's updates (a commit, a cut-back, a restart).
+  void forgetStickUpdates() { stickUpdates_.clear(); }
 
   MasterSurface<Facet> master_;
   NodeToFacetContact<Facet> element_;
@@ -336,6 +348,12 @@ class ContactInterface final : public ContactInterfaceBase {
   Facets lastFacets_;            ///< master positions of the latest trial evaluation
   std::vector<Point> committedSlave_;  ///< slave positions of the committed configuration
   std::vector<Point> lastSlave_;       ///< slave positions of the latest trial evaluation
+  /// Per slave node, the augmented Lagrangian's updates in the increment: the last one of a node that stuck
+  /// on facet `stickFacets_[k]` (−1: none), and ā^αβ of its latest trial evaluation.
+  std::vector<StickUpdate<kXi>> stickUpdates_;
+  std::vector<int> stickFacets_;
+  std::vector<Matrix<kXi, kXi>> trialInverseMetric_;
+  std::vector<double> trialStickPenalty_;  ///< ε_T of a sticking node's latest trial evaluation (0: not sticking)
   /// Frictionless or penalty enforced at set-up: the matrix graph then holds the couplings across master
   /// edges that a valley blend needs (model::ContactAssembly), so only such an interface blends.
   const bool blendable_ = spec_.law.isFrictionless() || !spec_.law.isAugmented();
@@ -385,6 +403,12 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
       out.elasticSlip = elasticSlipOf(r, committed, spec_.law.isAugmented());
+      if (updateTrial && spec_.law.isAugmented()) {
+        trialInverseMetric_.resize(spec_.slaveNodes.size());
+        trialStickPenalty_.resize(spec_.slaveNodes.size());
+        trialInverseMetric_[k] = r.projection.inverseMetric;
+        trialStickPenalty_[k] = r.status == ContactStatus::Stick ? r.friction.tangentialPenalty : 0.0;
+      }
       if (r.status != ContactStatus::Open) {
         if (blend) {
           const std::vector<double> residual = scatterBlend(k, *blend, sink);
@@ -610,6 +634,7 @@ void ContactInterface<Facet>::commit() {
   }
   if (spec_.law.isAugmented() && !spec_.law.isFrictionless()) keepStickReferences();
   history_.commit();
+  forgetStickUpdates();
   commitPenaltyGrowth();
   damping_.reset();
   committedIncrement_ = trialChanges_;
@@ -621,6 +646,48 @@ void ContactInterface<Facet>::commit() {
     committedSlave_ = lastSlave_;
   }
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+}
+
+template <class Facet>
+void ContactInterface<Facet>::accelerateStickMultipliers() {
+  const std::size_t n = spec_.slaveNodes.size();
+  if (stickUpdates_.size() != n) {
+    stickUpdates_.assign(n, {});
+    stickFacets_.assign(n, -1);
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    ContactHistory<kXi> trial = history_.trial(k);
+    const ContactHistory<kXi>& committed = history_.committed(k);
+    // λ_T and t_T on one facet: the node sticks where its multiplier lives.
+    if (trial.status != ContactStatus::Stick || trial.segment != committed.segment || trial.segment < 0) {
+      stickFacets_[k] = -1;
+      continue;
+    }
+    const double penalty = trialStickPenalty_[k];
+    if (!(penalty > 0.0)) {
+      stickFacets_[k] = -1;
+      continue;
+    }
+    const Vector<kXi> stretch = subtract(trial.tangentialMultiplier, committed.tangentialMultiplier);
+    const StickUpdate<kXi> now{trial.tangentialMultiplier, scaled(1.0 / penalty, stretch)};
+    // The secant's regularisation length n of eq. (15.7): the motion the updates are to resolve, Elastic Slip
+    // Tolerance x L_k. A tenth of it (the Newton error an early update may read) left the Tet10 press-slide
+    // audit 7.6e-7 apart between mm and m (its bound 1e-8); tol x L: within it, but half or twice that not
+    // (the audit's sensitivity to the update path, which today's main misses on this machine too: theory §15).
+    const double noise = spec_.law.elasticSlipTolerance * spec_.slaveFacetLengths[k];
+    const double factor =
+        stickFacets_[k] == trial.segment
+            ? stickSecantFactor(stickUpdates_[k], now, committed.tangentialMultiplier, penalty, trialInverseMetric_[k],
+                                spec_.law.frictionCoefficient * std::abs(trial.normalMultiplier), noise,
+                                kMaxStickSecantFactor)
+            : 1.0;
+    stickUpdates_[k] = now;
+    stickFacets_[k] = trial.segment;
+    if (factor == 1.0) continue;
+    trial.tangentialMultiplier = add(committed.tangentialMultiplier, scaled(factor, stretch));
+    history_.setTrial(k, trial);
+  }
 }
 
 template <class Facet>
@@ -647,6 +714,7 @@ void ContactInterface<Facet>::keepStickReferences() {
 template <class Facet>
 void ContactInterface<Facet>::rollback() {
   history_.rollback();
+  forgetStickUpdates();
   rollbackPenaltyGrowth();
   damping_.reset();
   trialOutput_ = committedOutput_;
@@ -694,6 +762,7 @@ template <class Facet>
 void ContactInterface<Facet>::restoreSlaves(const StateRecord& table) {
   StateTableReader rows(table);
   const std::size_t n = spec_.slaveNodes.size();
+  forgetStickUpdates();
   readSlaveRows(table, rows, [&](std::size_t k) {
     ContactHistory<kXi> h;
     SlaveNodeChange c;

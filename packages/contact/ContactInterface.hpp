@@ -7,6 +7,8 @@
 // surface (MasterSurface: deformable or rigid), history transfer and resolution (NodeToFacetContact) are
 // used as they are; this class only organises them over an interface. Pure C++: the model turns the global
 // DOF ids it receives into Tpetra entries.
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -61,6 +63,53 @@ struct AugmentationViolation {
   double elasticSlip = 0;  ///< max ‖t_T − λ_T‖/(ε_T L_k) over the sticking nodes
 };
 
+
+/// Augmented Lagrangian with friction: a sticking node at an Uzawa update, its stick traction t_T = λ_T + ε_T ā Δξ
+/// and its relative motion since it stuck, ā Δξ (covariant, on the node's facet; eq. 15.2).
+template <int NXi>
+struct StickUpdate {
+  Vector<NXi> traction{};
+  Vector<NXi> motion{};
+};
+
+/// The factor f of the update λ_T ← λ_T + f (t_T − λ_T) of a node that sticks at two successive updates on
+/// the same facet (docs/theory-contact.md §15, "The stick multipliers' secant", eq. 15.6–15.7). The plain
+/// update (15.3) is f = 1 and shrinks the motion by the node's Uzawa rate K/(K + ε_T) only, near 1 where the
+/// pressure and with it ε_T = μ|λ_N|/(s L_k) are small. The structure holds the node with t_T = F − K m
+/// (m = ā Δξ its motion since it stuck, F the force it would carry at rest, K its tangential stiffness
+/// there), so the multiplier that leaves no motion is λ_T* = t_T + K m, f = 1 + K/ε_T. K is measured from the
+/// last two updates, whatever ε_T did between them (it follows λ_N), by a regularised secant
+///     K̃ = max(0, −⟨Δt_T, Δm⟩) / (⟨Δm, Δm⟩ + n²)        (ā^αβ inner products, n = `noise`),
+/// the secant's K weighted by ⟨Δm, Δm⟩/(⟨Δm, Δm⟩ + n²): a motion change at the Newton error n an update may
+/// read gives half the step, a smaller one none. The factor saturates smoothly at `maxFactor`,
+///     f = 1 + g/(1 + g/(maxFactor − 1)),   g = K̃/ε_T,
+/// and stops on the Coulomb cone ‖λ_T‖ ≤ `coneRadius` = μ|λ_N| (past it the node slips). Every step is a
+/// continuous function of the updates with no threshold, and K̃/ε_T is a ratio of like quantities, so that
+/// neither round-off, nor the rank count, nor the unit system can switch a node between Uzawa's step and
+/// the secant's (the thresholds of the first version did: theory §15).
+template <int NXi>
+double stickSecantFactor(const StickUpdate<NXi>& previous, const StickUpdate<NXi>& current, const Vector<NXi>& multiplier,
+                         double stickPenalty, const Matrix<NXi, NXi>& inverseMetric, double coneRadius, double noise,
+                         double maxFactor) {
+  const auto inner = [&](const Vector<NXi>& a, const Vector<NXi>& b) { return dot(a, multiply(inverseMetric, b)); };
+  const Vector<NXi> motionChange = subtract(current.motion, previous.motion);
+  const double regularised = inner(motionChange, motionChange) + noise * noise;
+  if (!(stickPenalty > 0.0) || !(regularised > 0.0)) return 1.0;
+  const double stiffness =
+      std::max(0.0, -inner(subtract(current.traction, previous.traction), motionChange)) / regularised;
+  const double stretch = stiffness / stickPenalty;
+  const double factor = 1.0 + stretch / (1.0 + stretch / (maxFactor - 1.0));
+  // ‖λ + f d‖² = R² on the line, d = t_T − λ_T: a f² + b f + q = 0, q ≤ 0 when λ is inside the cone. Its
+  // larger root, with the discriminant kept from going negative, is continuous across q = 0 too (a λ that a
+  // step left on the cone may lie a round-off outside it).
+  const Vector<NXi> d = subtract(current.traction, multiplier);
+  const double a = inner(d, d);
+  const double b = 2.0 * inner(multiplier, d);
+  const double q = inner(multiplier, multiplier) - coneRadius * coneRadius;
+  if (!(a > 0.0)) return 1.0;
+  const double onCone = (-b + std::sqrt(std::max(0.0, b * b - 4.0 * a * q))) / (2.0 * a);
+  return std::max(1.0, std::min(factor, onCone));
+}
 
 /// A slave node that passed through the master surface in the current increment (tunnelling).
 struct TunnellingNode {
@@ -131,8 +180,10 @@ class ContactInterfaceBase {
   virtual void rollback() = 0;
   /// Augmented Lagrangian (spec().law.isAugmented()): the multipliers take the tractions of the latest
   /// trial evaluation (the Uzawa update, docs/theory-contact.md eq. 15.3), within the increment. Nothing for
-  /// an interface without multipliers.
-  virtual void augment() {}
+  /// an interface without multipliers. `atEquilibrium`: that evaluation is of a converged Newton iterate (not
+  /// an early update's, §15 "Updates before convergence"); only there may a sticking node's multiplier take
+  /// the secant's step (eq. 15.7), which reads the iterate as an equilibrium of the structure.
+  virtual void augment(bool atEquilibrium) { (void)atEquilibrium; }
   /// The owned slave nodes' violations at the latest trial evaluation (for the augmentation test).
   AugmentationViolation trialViolation() const;
   /// Augmented Lagrangian: the normal penalty from now on is the deck's times `growth` ≥ 1 (penalty growth,

@@ -234,7 +234,7 @@ TEST(AugmentedLagrangianInterface, AStickingNodeKeepsItsStickReferenceAndMultipl
   plate->commit();                            // the stick reference: here
   plate->evaluate(slave, 0.52, true, sink);   // 0.005 more
   EXPECT_NEAR(plate->trialViolation().elasticSlip, 0.005, 1e-9);
-  plate->augment();                           // λ_T ← t_T (eq. 15.3)
+  plate->augment(true);                           // λ_T ← t_T (eq. 15.3)
   plate->evaluate(slave, 0.52, true, sink);
   plate->commit();
   const std::vector<double> converged = plate->committedSlaveForce();
@@ -247,6 +247,59 @@ TEST(AugmentedLagrangianInterface, AStickingNodeKeepsItsStickReferenceAndMultipl
   // the 0.005 since the last commit: per-increment motions below the tolerance do not add up unseen.
   plate->evaluate(slave, 0.53, true, sink);
   EXPECT_NEAR(plate->trialViolation().elasticSlip, 0.01, 1e-9);
+}
+
+// The stick multipliers' secant (eq. 15.7) reads an update's iterate as an equilibrium of the structure
+// (t_T = F − K m), so it steps only at an update of a converged iterate; an early update (an unconverged
+// iterate, §15 "Updates before convergence") is Uzawa's λ_T ← t_T, and the secant's memory skips it. The
+// plate's nodes stuck at λ = 0.51; at λ = 0.52 the master has moved 0.005 past them. Update 1 (converged):
+// nodes unmoved, m₁ = 0.005, t₁ = ε_T m₁ = 50. Update 2 at nodes pulled 0.001 along: m₂ = 0.004, t₂ = 50 +
+// 40 = 90 (like a spring K = −Δt/Δm = 4e4). The committed force is the nodes' t_T = λ_T + ε_T m₂ times their
+// total area 2.
+TEST(AugmentedLagrangianInterface, TheStickSecantStepsAtConvergedUpdatesOnly) {
+  const auto sink = [](const cc::GlobalIndex*, int, const double*, const double*, const double*) {};
+  const auto pulled = [](double shift) {
+    return [shift](cc::GlobalIndex node, double* x) {
+      x[0] = static_cast<double>(node) + shift;
+      x[1] = 0.0;
+    };
+  };
+  const double penalty = 1e4, m1 = 0.005, m2 = 0.004, noise = 1e-4;  // n = Elastic Slip Tolerance × L_k
+  // Force after update 1 (converged), update 2 (`secondAtEquilibrium`), an evaluation at update 2's iterate.
+  const auto forceAfterTwoUpdates = [&](bool secondAtEquilibrium, double earlyShift) {
+    const auto plate = draggedPlate();
+    plate->evaluate(ct::threeNodesOnXAxis, 0.51, true, sink);
+    plate->commit();
+    plate->evaluate(pulled(0.0), 0.52, true, sink);
+    plate->augment(true);
+    if (earlyShift >= 0.0) {  // an early update in between
+      plate->evaluate(pulled(earlyShift), 0.52, true, sink);
+      plate->augment(false);
+    }
+    plate->evaluate(pulled(m1 - m2), 0.52, true, sink);
+    plate->augment(secondAtEquilibrium);
+    plate->evaluate(pulled(m1 - m2), 0.52, true, sink);
+    plate->commit();
+    return std::abs(plate->committedSlaveForce()[0]) / 2.0;
+  };
+  // Eq. (15.7) by hand: K̃ from the two converged updates (t, m) and the step from the latest multiplier λ.
+  const auto secantTraction = [&](double t1, double t2, double lambda) {
+    const double k = (t2 - t1) * (m1 - m2) / ((m1 - m2) * (m1 - m2) + noise * noise);
+    const double g = k / penalty, f = 1.0 + g / (1.0 + g / 999.0);
+    return lambda + f * (t2 - lambda) + penalty * m2;  // the new λ_T plus the stretch ε_T m₂
+  };
+  const double t1 = penalty * m1, t2 = t1 + penalty * m2;
+  // Early second update: Uzawa's, λ_T = t₂ (the force 130 = 90 + 40).
+  EXPECT_NEAR(forceAfterTwoUpdates(false, -1.0), t2 + penalty * m2, 1e-9 * t2);
+  // Converged second update: the secant's step, about five times Uzawa's here.
+  const double secant = forceAfterTwoUpdates(true, -1.0);
+  EXPECT_NEAR(secant, secantTraction(t1, t2, t1), 1e-9 * secant);
+  EXPECT_GT(secant, 2.0 * (t2 + penalty * m2));
+  // An early update between them (nodes pulled 0.0005: λ_T = 50 + 45 = 95) is Uzawa's and is not in the
+  // secant's memory: the step pairs the two converged updates.
+  const double lambdaEarly = t1 + penalty * (m1 - 0.0005);
+  EXPECT_NEAR(forceAfterTwoUpdates(true, 0.0005), secantTraction(t1, lambdaEarly + penalty * m2, lambdaEarly),
+              1e-9 * secant);
 }
 
 // ---- Every facet family, at its projection, an edge point and a vertex ---------------------------------

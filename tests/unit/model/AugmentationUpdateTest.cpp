@@ -34,7 +34,7 @@ TEST(AugmentationViolation, APositiveGapHeldByTheMultiplierCountsAsAPenetrationD
   const auto plate = pressedPlate();
   plate->evaluate(ct::threeNodesOnXAxis, 0.52, true, kNoSink);  // g_N = −0.02
   EXPECT_NEAR(plate->trialViolation().penetration, 0.02, 1e-12);
-  plate->augment();  // λ_N = −ε_N · 0.02 = −2e4: in contact while g_N < 0.02
+  plate->augment(true);  // λ_N = −ε_N · 0.02 = −2e4: in contact while g_N < 0.02
   // The line moves back to y = 0.005: every node is at g_N = +0.005 and still pressed, t_N = −2e4 + 5e3.
   plate->evaluate(ct::threeNodesOnXAxis, 0.495, true, kNoSink);
   plate->commit();
