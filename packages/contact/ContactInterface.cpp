@@ -159,6 +159,8 @@ class ContactInterface final : public ContactInterfaceBase {
     if (!spec_.law.isFrictionless() && atEquilibrium) accelerateStickMultipliers();
     history_.augment();
   }
+  void setConsistentTangents(bool consistent) override { consistentTangents_ = consistent; }
+  int secantTangentNodes() const override { return secantTangentNodes_; }
   void saveCommittedSlaves(StateRecord& table) const override;
   void restoreSlaves(const StateRecord& table) override;
   void saveCommittedMaster(StateRecord& table) const override;
@@ -344,6 +346,8 @@ class ContactInterface final : public ContactInterfaceBase {
   FacetSelector<Facet> selector_;
   ContactHistoryStore<kXi> history_;
   SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates
+  bool consistentTangents_ = false;  ///< the damping's secants left out of the tangent (setConsistentTangents)
+  int secantTangentNodes_ = 0;       ///< nodes the latest trial evaluation gave (or would give) a secant
   Facets committedMaster_;       ///< master positions of the committed configuration
   Facets lastFacets_;            ///< master positions of the latest trial evaluation
   std::vector<Point> committedSlave_;  ///< slave positions of the committed configuration
@@ -369,6 +373,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
   std::vector<double> force(kDim, 0.0);
   std::vector<int> hits;
   Facets candidates;
+  if (updateTrial) secantTangentNodes_ = 0;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
     const Point xs = slavePosition(position, k);
@@ -386,8 +391,8 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
     if (selection.kind != SelectionKind::None && !frozenOpen) {
       // The history is kept on the facet the node projected on at the last commit; near a valley edge the
       // blend replaces the element. Newton iterates (updateTrial): a node whose slip direction has just
-      // reversed gets a secant tangential stiffness (SlipReversalDamping; not in the blend); the residual
-      // is the same either way.
+      // reversed gets a secant tangential stiffness (SlipReversalDamping; not in the blend, nor with
+      // consistent tangents); the residual is the same either way.
       const auto& facet = facets[selection.facet];
       const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
       NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, selection, committed);
@@ -396,7 +401,10 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       if (updateTrial) {
         damping_.observe(k, history_.trial(k), r.trial);
         const SlipTangent tangent = damping_.tangent(k);
-        if (tangent.secant && !blend) r = evaluateElement(k, xs, facet, selection, committed, tangent);
+        if (tangent.secant && !blend) {
+          ++secantTangentNodes_;
+          if (!consistentTangents_) r = evaluateElement(k, xs, facet, selection, committed, tangent);
+        }
       }
       trial = r.trial;
       change = changeOf(k, out.gap, &r, committed);

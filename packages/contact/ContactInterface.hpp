@@ -178,6 +178,15 @@ class ContactInterfaceBase {
   virtual void commit() = 0;
   /// The increment is abandoned: back to the committed state (the multipliers too).
   virtual void rollback() = 0;
+  /// While `consistent`, every node's tangent is the derivative of its residual: the secant slip
+  /// stiffness that SlipReversalDamping gives a node whose slip direction has just reversed (a Newton aid
+  /// that changes the tangent, never the residual) is left out of the stiffness, while the damping still
+  /// watches the iterates. The Jacobian check's W (JacobianCheck): its differences of the residual measure
+  /// the consistent tangent only. Nothing for an interface without such secants.
+  virtual void setConsistentTangents(bool /*consistent*/) {}
+  /// Slave nodes of this rank to which the latest trial evaluation gave a secant slip tangent (with
+  /// consistent tangents: would have given one).
+  virtual int secantTangentNodes() const { return 0; }
   /// Augmented Lagrangian (spec().law.isAugmented()): the multipliers take the tractions of the latest
   /// trial evaluation (the Uzawa update, docs/theory-contact.md eq. 15.3), within the increment. Nothing for
   /// an interface without multipliers. `atEquilibrium`: that evaluation is of a converged Newton iterate (not

@@ -18,7 +18,9 @@ namespace contessa::contact {
 /// two states instead of across them. A further reversal narrows the bracket. The secant ends when the node
 /// sticks (its consistent tangent is then the stick stiffness), or when it has slipped the same way for
 /// `kReleaseIterates` iterates (it really slips: the consistent tangent restores quadratic convergence).
-/// Only the tangent changes, never the residual: the converged answer is the same with or without it.
+/// Only the tangent changes, never the residual: the converged answer is the same with or without it. (So
+/// the secant is the derivative of no residual: the Jacobian check leaves it out, ContactInterfaceBase::
+/// setConsistentTangents.)
 ///
 /// State per increment: reset when the increment is committed or abandoned. The same evaluation repeated at
 /// the same iterate (residual and Jacobian computed in separate calls) changes nothing.

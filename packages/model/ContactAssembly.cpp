@@ -463,6 +463,16 @@ std::string ContactAssembly::tunnelling() const {
          (count > 1 ? " (and " + std::to_string(count - 1) + " more)" : "") + " passed through the master surface";
 }
 
+void ContactAssembly::setConsistentTangents(bool consistent) {
+  for (auto& c : interfaces_) c->setConsistentTangents(consistent);
+}
+
+int ContactAssembly::secantTangentNodes() const {
+  int n = 0;
+  for (const auto& c : interfaces_) n += c->secantTangentNodes();
+  return n;
+}
+
 ContactAssembly::Interfaces ContactAssembly::saveState() const {
   Interfaces copy;
   for (const auto& c : interfaces_) copy.push_back(c->clone());

@@ -89,6 +89,13 @@ class ContactAssembly {
   /// latest evaluation and are not in contact now, in words (ContactMechanicsModel::contactTunnelling).
   std::string tunnelling() const;
 
+  /// Every interface's tangents the consistent ones while `consistent` (ContactInterfaceBase::
+  /// setConsistentTangents: no slip-reversal secants), for the Jacobian check.
+  void setConsistentTangents(bool consistent);
+  /// The owned slave nodes (every interface) to which the latest trial evaluation gave, or with consistent
+  /// tangents would have given, a secant slip tangent.
+  int secantTangentNodes() const;
+
   bool empty() const { return interfaces_.empty(); }
   const Interfaces& interfaces() const { return interfaces_; }
   /// Copies of the interfaces with their state, and putting them back (the Jacobian check's evaluations

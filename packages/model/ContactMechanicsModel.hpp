@@ -176,6 +176,12 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// Taken before evaluations that must leave no trace, and put back after them.
   std::shared_ptr<const EvaluationState> saveEvaluationState() const;
   void restoreEvaluationState(const EvaluationState& state) const;
+  /// The Jacobian W = ∂f/∂x at (x, λ) into `W`, every contact tangent the consistent one: Newton's W gives
+  /// a slave node whose slip direction has just reversed a secant slip stiffness (SlipReversalDamping, not
+  /// ∂f/∂x; the residual is the same). Collective; returns how many slave nodes (all ranks) Newton's W
+  /// would give a secant at this evaluation. Evaluates afresh (no pass is served) and changes the trial
+  /// state as an evaluation does.
+  int consistentJacobian(const Thyra::VectorBase<double>& x, double lambda, Thyra::LinearOpBase<double>& W) const;
   /// Who couples two DOFs (global ids), in words: "element 12 of block 'tube'", "contact 'plate' slave
   /// node 41" (Exodus numbering), or both.
   std::string describeCoupling(GO rowDof, GO columnDof) const;

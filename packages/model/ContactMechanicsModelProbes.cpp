@@ -1,7 +1,10 @@
 // What the finite-difference check of the Jacobian (JacobianCheck) needs of the model beyond the
-// Thyra::ModelEvaluator: to put its evaluation state back after the perturbed residuals, and to name
-// who couples two DOFs.
+// Thyra::ModelEvaluator: to put its evaluation state back after the perturbed residuals, its Jacobian
+// with the consistent contact tangents, and to name who couples two DOFs.
 #include <algorithm>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Thyra_VectorStdOps.hpp>
 
 #include "model/ContactMechanicsModel.hpp"
 #include "model/ContactAssembly.hpp"
@@ -63,6 +66,32 @@ void ContactMechanicsModel::restoreEvaluationState(const EvaluationState& s) con
   elementPasses_ = s.elementPasses;
   lastLoadFactor_ = s.lastLoadFactor;
   // (stiffnessPasses_ keeps counting: it says whether the scatter holds the saved pass's stiffness.)
+}
+
+int ContactMechanicsModel::consistentJacobian(const Thyra::VectorBase<double>& x, double lambda,
+                                             Thyra::LinearOpBase<double>& W) const {
+  auto in = createInArgs();
+  auto p = Thyra::createMember(get_p_space(0));
+  Thyra::set_ele(0, lambda, p.ptr());
+  in.set_x(Teuchos::rcpFromRef(x));
+  in.set_p(0, p);
+  auto out = createOutArgs();
+  out.set_W_op(Teuchos::rcpFromRef(W));
+  // A pass at x with stiffness may hold Newton's tangent (with its secants): evaluate afresh.
+  passServesEvaluations_ = false;
+  contact_->setConsistentTangents(true);
+  try {
+    evalModel(in, out);
+  } catch (...) {
+    contact_->setConsistentTangents(false);
+    throw;
+  }
+  contact_->setConsistentTangents(false);
+  // The pass holds the consistent tangent: not Newton's, so no later evaluation is served from it.
+  passServesEvaluations_ = false;
+  int local = contact_->secantTangentNodes(), all = 0;
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &local, &all);
+  return all;
 }
 
 std::string ContactMechanicsModel::describeCoupling(GO rowDof, GO columnDof) const {

@@ -25,7 +25,9 @@ pattern = re.compile(r"^jacobian check, increment (\d+) \(load factor \S+\): wor
                      r"(?:; \d+ column\(s\) differenced on one side \(a contact status changes on the other: "
                      r"status \d+, facet \d+, contact point \d+\))?"
                      r"(?:; \d+ column\(s\) differenced with a shorter step \(the residual bends "
-                     r"within h\))? \((\d+) residuals, \S+ s\)$")
+                     r"within h\))?"
+                     r"(?:; \d+ slave node\(s\) with a secant slip tangent in Newton's W \(slip reversed; checked: "
+                     r"the consistent one\))? \((\d+) residuals, \S+ s\)$")
 found = []
 for line in proc.stdout.splitlines():
     if line.startswith("jacobian check"):

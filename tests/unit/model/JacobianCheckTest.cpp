@@ -1,6 +1,7 @@
 // JacobianCheck (--check-jacobian): it finds the model's own Jacobian right, catches a wrong one (a
-// matrix 0.1 % off, one entry changed) and names where, and leaves the model's evaluation state (trial
-// histories, the latest pass) exactly as it was; on 1 and 2 ranks.
+// matrix 0.1 % off, one entry changed) and names where, checks the consistent tangent where Newton's W
+// carries slip-reversal secants (and says so), and leaves the model's evaluation state (trial histories,
+// the latest pass) exactly as it was; on 1 and 2 ranks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -220,6 +221,53 @@ TEST(JacobianCheck, DifferencesA3DSlippingNodeWithAShortEnoughStep) {
   EXPECT_GT(wrong.worstRelativeError, 0.3) << model::JacobianCheck::describe(wrong, *fx.model);
   EXPECT_EQ(wrong.row, target);
   EXPECT_EQ(wrong.column, target);
+}
+
+// A slave node whose slip has just reversed: Newton's W gives it SlipReversalDamping's secant stiffness
+// along its slip, which is the derivative of no residual (the residual is the same with or without it).
+// The Tet10 Coulomb block's node 20 at the first iterate of increment 2 was such a node: W = 36.1 against
+// FD = -119.4, differences that held from h = 1e-6 down to 1e-10 mm. check() compares the consistent
+// tangent and counts the nodes; Newton's W itself (what check() compared before) is far off there.
+TEST(JacobianCheck, ChecksTheConsistentTangentOfANodeWhoseSlipReversed) {
+  Fixture fx(blockOnBase3d());
+  auto tx = Extract::getTpetraVector(fx.x);
+  // The bottom moved by `amount` along (0.6, 0, 0.8) (the top too: a rigid slide; y held).
+  const auto slide = [&](double amount) {
+    auto v = tx->getDataNonConst(0);
+    for (Teuchos::ArrayRCP<double>::size_type i = 0; i < v.size(); ++i) {
+      const auto gid = tx->getMap()->getGlobalElement(i);
+      v[i] = gid % 3 == 0 ? 0.6 * amount : gid % 3 == 2 ? 0.8 * amount : 0.0;
+    }
+  };
+  slide(0.0);
+  fx.residual(0.0);  // every bottom node in contact, sticking without traction
+  fx.model->commitState();
+  slide(2e-6);  // |t^trial| = eps_T 2e-6 = 2 > mu |t_N| = 0.6: every bottom node slips
+  fx.residual(0.0);
+  fx.model->commitState();
+  slide(-2e-6);  // back by 4e-6: t^trial = (0.6 - 4) along the slide, slipping the other way
+  fx.residual(0.0);
+  int reversed = 0;
+  for (const auto& n : fx.model->trialIncrement()) reversed += n.slipReversed ? 1 : 0;
+  ASSERT_EQ(reversed, 6);
+
+  const auto r = model::JacobianCheck().check(*fx.model, *fx.x, 0.0);
+  const std::string line = model::JacobianCheck::describe(r, *fx.model);
+  EXPECT_LT(r.worstRelativeError, 1e-5) << line;
+  EXPECT_LT(r.normwiseError, 1e-6) << line;
+  EXPECT_EQ(r.nonSmoothColumns, 0) << line;
+  EXPECT_EQ(r.secantTangentNodes, 6) << line;
+  EXPECT_NE(line.find("; 6 slave node(s) with a secant slip tangent in Newton's W (slip reversed; checked: the "
+                      "consistent one)"),
+            std::string::npos)
+      << line;
+
+  // Newton's W at this iterate, the secants in: each node's stiffness along its slip is the secant of its
+  // traction between the two slip states (a change of 2 mu |t_N| over the slide back) against a consistent 0.
+  const auto newton = model::JacobianCheck().compare(*fx.model, *fx.x, 0.0, *fx.jacobian(0.0));
+  EXPECT_GT(newton.worstRelativeError, 0.1) << model::JacobianCheck::describe(newton, *fx.model);
+  EXPECT_GT(newton.normwiseError, 1e-3) << model::JacobianCheck::describe(newton, *fx.model);
+  EXPECT_EQ(newton.secantTangentNodes, 0);  // compare() takes W as given
 }
 
 }  // namespace
