@@ -225,6 +225,8 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
                   "absolute bound %.3g (%.3g F)\n",
                   summary.forceScale, summary.residualBound,
                   summary.forceScale > 0 ? summary.residualBound / summary.forceScale : 0.0);
+    if (!summary.toleranceFloor.empty())
+      std::printf("contessa: Newton residual test: %s\n", summary.toleranceFloor.c_str());
     std::fflush(stdout);
     if (!summary.toleranceWarning.empty())
       std::fprintf(stderr, "contessa: warning: %s\n", summary.toleranceWarning.c_str());

@@ -18,6 +18,7 @@
 #include "model/BoundaryConditions.hpp"
 #include "model/ContactAssembly.hpp"
 #include "model/DofLayout.hpp"
+#include "model/ForceRoundOff.hpp"
 #include "model/FreeMotion.hpp"
 #include "model/StiffnessScatter.hpp"
 
@@ -53,14 +54,24 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
   overlapDfdLambda_ = rcp(new Vector(layout_->overlapMap()));
   overlapInternal_ = rcp(new Vector(layout_->overlapMap()));
   // The element couplings, once: the assembler runs at u = 0 (before any state matters) to name each
-  // element's DOFs.
-  solids_->assemble(std::vector<double>(layout_->numOverlapDofs(), 0.0).data(), false,
-                    [&](const int* dofs, int n, const double*, const double*) {
+  // element's DOFs; with the stiffness there, the round-off level of the elements' forces (ForceRoundOff.hpp).
+  ForceRoundOff roundOff(overlappedReferenceCoordinates(), dim_, problem_.axisymmetric);
+  solids_->assemble(std::vector<double>(layout_->numOverlapDofs(), 0.0).data(), true,
+                    [&](const int* dofs, int n, const double*, const double* ke) {
                       elementDofBegin_.push_back(elementDofs_.size());
                       elementDofs_.insert(elementDofs_.end(), dofs, dofs + n);
+                      roundOff.addElement(dofs, n, ke);
                     });
   elementDofBegin_.push_back(elementDofs_.size());
   buildGraph();
+  {
+    Vector overlapLevels(layout_->overlapMap());
+    auto v = overlapLevels.getDataNonConst(0);
+    std::copy(roundOff.squaredLevels().begin(), roundOff.squaredLevels().end(), v.begin());
+    v = Teuchos::null;
+    squaredRoundOff_ = rcp(new Vector(layout_->ownedMap()));
+    squaredRoundOff_->doExport(overlapLevels, layout_->exporter(), Tpetra::ADD);
+  }
   passX_ = rcp(new Vector(layout_->ownedMap()));
   passForce_ = rcp(new Vector(layout_->ownedMap()));
   passDfdLambda_ = rcp(new Vector(layout_->ownedMap()));
@@ -90,6 +101,18 @@ ContactMechanicsModel::ContactMechanicsModel(const RCP<const Comm>& comm,
 }
 
 ContactMechanicsModel::~ContactMechanicsModel() = default;
+
+std::vector<double> ContactMechanicsModel::overlappedReferenceCoordinates() const {
+  const auto& part = problem_.mesh.part;
+  std::vector<double> X(layout_->numOverlapDofs(), 0.0);
+  for (std::size_t n = 0; n < part.globalNodes.size(); ++n)
+    for (int c = 0; c < dim_; ++c) {
+      const LO dof = layout_->overlapMap()->getLocalElement(static_cast<GO>(part.globalNodes[n]) * dim_ + c);
+      if (dof != Teuchos::OrdinalTraits<LO>::invalid())
+        X[static_cast<std::size_t>(dof)] = part.mesh.coordinates[n * static_cast<std::size_t>(dim_) + static_cast<std::size_t>(c)];
+    }
+  return X;
+}
 
 void ContactMechanicsModel::buildGraph() const {
   // Element couplings and the contact couplings reserved by search, gathered per overlapped row; the
@@ -309,18 +332,27 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
       const auto fv = f->getData(0);
       std::copy(fv.begin(), fv.end(), free.begin());
     }
+    // Its round-off level (ForceRoundOff.hpp) over the same rows.
+    std::vector<double> squaredLevel(free.size());
+    {
+      const auto rv = squaredRoundOff_->getData(0);
+      std::copy(rv.begin(), rv.end(), squaredLevel.begin());
+    }
     double local[2] = {0.0, 0.0}, largest[2] = {0.0, 0.0};  // max |x − ū| on prescribed rows, max |x|
     for (const LO r : conditions_->prescribedRows()) {
       local[0] = std::max(local[0], std::abs(free[static_cast<std::size_t>(r)]));
       free[static_cast<std::size_t>(r)] = 0.0;
+      squaredLevel[static_cast<std::size_t>(r)] = 0.0;
     }
     for (const double v : x->getData(0)) local[1] = std::max(local[1], std::abs(v));
-    double squares = 0.0, sum = 0.0;
-    for (const double v : free) squares += v * v;
-    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 1, &squares, &sum);
+    double squares[2] = {0.0, 0.0}, sums[2] = {0.0, 0.0};  // ‖f_free‖², ‖r_free‖²
+    for (const double v : free) squares[0] += v * v;
+    for (const double v : squaredLevel) squares[1] += v;
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, 2, squares, sums);
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 2, local, largest);
     const bool prescribedHold = largest[0] <= 1e-10 * largest[1];
-    lastOutOfBalance_ = prescribedHold ? std::sqrt(sum) : std::numeric_limits<double>::infinity();
+    lastOutOfBalance_ = prescribedHold ? std::sqrt(sums[0]) : std::numeric_limits<double>::infinity();
+    lastRoundOff_ = std::sqrt(sums[1]);
   }
   if (!W.is_null()) {
     // The stiffness of the pass, with the rows of other ranks added; prescribed rows become identity rows.

@@ -166,6 +166,7 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   double forceScale() const override { return passForceScale_; }
   double outOfBalanceNorm() const override { return lastOutOfBalance_; }
   double lengthScale() const override { return lengthScale_; }
+  double forceRoundOff() const override { return lastRoundOff_; }
   /// Number of element passes (loops over the elements) so far: residual, Jacobian and reaction passes.
   int elementPasses() const { return elementPasses_; }
   int dimension() const { return dim_; }
@@ -251,6 +252,11 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   mutable double lastLoadFactor_ = 0;
   mutable double lastOutOfBalance_ = 0;  ///< ‖f‖₂ over the free rows of the latest residual (ForceScale)
   double lengthScale_ = 0;  ///< max |X| of the reference coordinates over every rank (ForceScale)
+  Teuchos::RCP<Vector> squaredRoundOff_;  ///< r² of every owned DOF, at the reference state (ForceRoundOff.hpp)
+  mutable double lastRoundOff_ = 0;       ///< ‖r‖₂ over the free rows of the latest residual (ForceScale)
+  /// X of each overlapped DOF (its node's reference coordinate in its component; 0 for DOFs of no node of
+  /// this rank's part).
+  std::vector<double> overlappedReferenceCoordinates() const;
   continuation::LoadSchedule schedule_;
   int loadStep_ = 0;
   mutable SolidAssembler::Status lastElementStatus_;  ///< of the latest residual evaluation, this rank

@@ -15,7 +15,7 @@ struct ContactMechanicsModel::EvaluationState {
   std::vector<double> solidTrial;
   ContactAssembly::Interfaces contacts;  ///< trial histories, last positions, slip damping
   Teuchos::RCP<Vector> passX, passForce, passDfdLambda;
-  double passLambda = 0, passForceScale = 0, lastOutOfBalance = 0;
+  double passLambda = 0, passForceScale = 0, lastOutOfBalance = 0, lastRoundOff = 0;
   bool passFrozen = false, passHasStiffness = false, passServesEvaluations = false, passServesReactions = false;
   SolidAssembler::Status passStatus, lastElementStatus;
   int jacobianEvaluations = 0, elementPasses = 0, stiffnessPasses = 0;
@@ -32,6 +32,7 @@ std::shared_ptr<const ContactMechanicsModel::EvaluationState> ContactMechanicsMo
   s->passLambda = passLambda_;
   s->passForceScale = passForceScale_;
   s->lastOutOfBalance = lastOutOfBalance_;
+  s->lastRoundOff = lastRoundOff_;
   s->passFrozen = passFrozen_;
   s->passHasStiffness = passHasStiffness_;
   s->passServesEvaluations = passServesEvaluations_;
@@ -54,6 +55,7 @@ void ContactMechanicsModel::restoreEvaluationState(const EvaluationState& s) con
   passLambda_ = s.passLambda;
   passForceScale_ = s.passForceScale;
   lastOutOfBalance_ = s.lastOutOfBalance;
+  lastRoundOff_ = s.lastRoundOff;
   passFrozen_ = s.passFrozen;
   // The stiffness of the saved pass is not kept: when a stiffness pass has overwritten it since, a
   // Jacobian asked for at the saved point is computed again (the residual is still served).

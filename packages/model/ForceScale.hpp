@@ -21,6 +21,11 @@ class ForceScale {
   /// The largest |X| of the mesh's reference coordinates over every rank, in the deck's length unit: the
   /// scale of the positions x = X + u whose round-off sets a floor under the Newton update (0: none known).
   virtual double lengthScale() const { return 0.0; }
+  /// The round-off level of outOfBalanceNorm() at the latest residual evaluation: ‖r‖₂ over the free DOFs of
+  /// the elements' rounding r (ForceRoundOff.hpp: ε times their forces under unit stretches, in squares),
+  /// the out-of-balance force that rounding alone leaves at an exact equilibrium, in the deck's force unit.
+  /// The same on every rank (0: none known).
+  virtual double forceRoundOff() const { return 0.0; }
 };
 
 }  // namespace contessa::model

@@ -136,6 +136,7 @@ RunSummary ContinuationDriver::run() {
   summary.forceScale = tolerance_.lastForceScale;
   summary.residualBound = tolerance_.lastBound;
   summary.toleranceWarning = tolerance_.warning;
+  summary.toleranceFloor = tolerance_.floorSummary();
   return summary;
 }
 

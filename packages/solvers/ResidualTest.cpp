@@ -33,7 +33,11 @@ NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic
   // prescribed rows (x − ū, whose round-off is a length); the deck's absolute tolerance bounds ||f|| as
   // it always has.
   forceScale_ = forces_ != nullptr ? forces_->forceScale() : 0.0;
-  absolute_ = bound_.boundAt(forceScale_);
+  // Under the force-scaled bound, not below the round-off of the out-of-balance force itself (at most
+  // kLooseFraction · F; ResidualTolerance.hpp): displacements near the positions' round-off leave rounding
+  // far above 1e-10 F, and a Newton step from it would only move an exact answer.
+  floor_ = forces_ != nullptr ? bound_.floorAt(forceScale_, forces_->forceRoundOff()) : 0.0;
+  absolute_ = std::max(bound_.boundAt(forceScale_), floor_);
   const double judged = bound_.isForceScaled() && forces_ != nullptr && std::isfinite(norm) ? forces_->outOfBalanceNorm() : norm;
   judged_ = judged;
   // The Krylov forcing term aims at the same target (KrylovForcing.hpp), set before the step's solve.
@@ -53,7 +57,8 @@ NOX::StatusTest::StatusType ResidualTest::checkStatus(const NOX::Solver::Generic
   const bool mayConverge = stepControl_ == nullptr || stepControl_->mayConverge();
   status_ = (residualSmall || updateSmall) && mayConverge ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
   if (status_ == NOX::StatusTest::Converged && record_ != nullptr && std::isfinite(forceScale_))
-    record_->accepted(bound_, forceScale_, judged, absolute_, residualSmall && norm > relativeBound);
+    record_->accepted(bound_, forceScale_, judged, absolute_, residualSmall && norm > relativeBound,
+                      judged > bound_.boundAt(forceScale_));
   return status_;
 }
 
@@ -61,8 +66,8 @@ std::ostream& ResidualTest::print(std::ostream& os, int indent) const {
   for (int i = 0; i < indent; ++i) os << ' ';
   os << status_;
   if (bound_.isForceScaled())
-    os << "||f_free|| = " << judged_ << " <= " << absolute_ << " = " << bound_.boundAt(1.0) << " * F (F = " << forceScale_
-       << ") or ||f|| = " << norm_ << " <= " << relative_ << " * " << initial_;
+    os << "||f_free|| = " << judged_ << " <= " << absolute_ << " = max(" << bound_.boundAt(1.0) << " * F, round-off floor "
+       << floor_ << ") (F = " << forceScale_ << ") or ||f|| = " << norm_ << " <= " << relative_ << " * " << initial_;
   else
     os << "||f|| = " << norm_ << " <= max(" << absolute_ << ", " << relative_ << " * " << initial_ << ")";
   if (update_ > 0) os << " or ||dx|| = " << updateNorm_ << " <= " << update_ << " * " << xNorm_;

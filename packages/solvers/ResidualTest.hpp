@@ -2,8 +2,9 @@
 // The convergence test of Contessa's Newton solves (NewtonStatusTests puts it among the others).
 // Converged when ||f|| ≤ max(bound, relative · ||f|| at the solve's first iterate), or when the Newton
 // update has shrunk to round-off: ||Δx|| ≤ update · ||x||. The bound is the deck's absolute tolerance or
-// the force-scaled one, c · F at the judged state (ResidualTolerance.hpp); the force-scaled bound is
-// compared with the out-of-balance force, ||f|| over the free DOFs (model/ForceScale.hpp). (NOX's relative NormF is
+// the force-scaled one, c · F at the judged state, not below the round-off of the out-of-balance force
+// (ResidualTolerance.hpp); the force-scaled bound is compared with the out-of-balance force, ||f|| over the
+// free DOFs (model/ForceScale.hpp). (NOX's relative NormF is
 // relative to a fixed group, not to each increment's start, hence this test.) The update test matters with
 // penalty contact: a penalty of 1e9 on coordinates of order 100 leaves residual noise of about
 // 1e9 · 1e-14 that no iteration can remove, while the update keeps converging quadratically. The single
@@ -37,7 +38,7 @@ class ResidualTest : public NOX::StatusTest::Generic {
   ResidualTolerance bound_;
   const model::ForceScale* forces_;
   double relative_, update_, initial_ = 0, norm_ = 0, updateNorm_ = -1, xNorm_ = 0, forceScale_ = 0, absolute_ = 0,
-         judged_ = 0;
+         judged_ = 0, floor_ = 0;
   const StepControl* stepControl_;
   ResidualToleranceRecord* record_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;

@@ -30,10 +30,15 @@ std::string ResidualTolerance::describe() const {
 }
 
 void ResidualToleranceRecord::accepted(const ResidualTolerance& rule, double forceScale, double norm, double bound,
-                                       bool byAbsolute) {
+                                       bool byAbsolute, bool byFloor) {
   lastForceScale = forceScale;
   lastBound = bound;
   largestForceScale = std::max(largestForceScale, forceScale);
+  if (byFloor && byAbsolute) {
+    if (floorAcceptances++ == 0)
+      floorNote = "||f_free|| = " + number(norm) + " <= " + number(bound) + " = " + number(bound / forceScale) +
+                  " F (F = " + number(forceScale) + "), above " + number(rule.boundAt(1.0)) + " F";
+  }
   if (!warning.empty() || !byAbsolute || !(forceScale > 0) || !rule.looseAt(forceScale) ||
       !(norm > ResidualTolerance::kLooseFraction * forceScale))
     return;
@@ -41,6 +46,14 @@ void ResidualToleranceRecord::accepted(const ResidualTolerance& rule, double for
             " of its force scale F = " + number(forceScale) + " (||f_int||), under the absolute bound " + number(bound) +
             ": the answer may be far from converged; leave Piro/NOX/Status Tests/Absolute Residual Tolerance out "
             "(the force-scaled test) or set it below " + number(ResidualTolerance::kLooseFraction * forceScale);
+}
+
+std::string ResidualToleranceRecord::floorSummary() const {
+  if (floorAcceptances == 0) return "";
+  return "the internal force's round-off floor decided " + std::to_string(floorAcceptances) +
+         " Newton solve(s) (first: " + floorNote +
+         "): displacements this small against the coordinates leave rounding above the force-scaled bound, and "
+         "a Newton step from that noise would only move the answer";
 }
 
 }  // namespace contessa::solvers

@@ -12,7 +12,18 @@
 // Abaqus (R_max ≤ 5·10⁻³ q̃, q̃ the time-averaged nodal force) and of Code_Aster's RESI_GLOB_RELA (relative
 // to the external and reaction forces), measured on the judged state itself so that a restarted run
 // judges every state as the uninterrupted run did. A state that carries no force (F = 0) has no absolute
-// bound: the relative and update tests decide there. No NOX: unit-tested on its own.
+// bound: the relative and update tests decide there.
+//
+// The force-scaled bound has a floor: the round-off level φ of the out-of-balance force (the elements'
+// rounding at the state's positions, model/ForceRoundOff.hpp), at most kLooseFraction · F,
+//
+//     ‖f_free‖₂ ≤ max(c · F, min(φ, kLooseFraction · F)),
+//
+// so that a state whose displacements are a tiny fraction of its coordinates (strains below about 1e-6,
+// where φ exceeds 1e-10 F) converges at the round-off its forces are computed with, instead of iterating
+// on that noise (docs/theory-load-stepping.md §7). A deck's absolute tolerance has no floor: it decides as
+// the deck says. No NOX: unit-tested on its own.
+#include <algorithm>
 #include <string>
 
 #include <Teuchos_ParameterList.hpp>
@@ -35,8 +46,14 @@ class ResidualTolerance {
   static ResidualTolerance fromDeck(const Teuchos::ParameterList& statusTests);
 
   bool isForceScaled() const { return scaled_; }
-  /// The bound on ‖f‖₂ at a state of force scale `forceScale` (≥ 0).
+  /// The bound on ‖f‖₂ at a state of force scale `forceScale` (≥ 0), without its floor.
   double boundAt(double forceScale) const { return scaled_ ? value_ * forceScale : value_; }
+  /// The floor of the force-scaled bound at a state of force scale `forceScale` whose out-of-balance force
+  /// is rounded to about `roundOff` (model/ForceScale.hpp): min(roundOff, kLooseFraction · F); 0 under the
+  /// deck's absolute tolerance.
+  double floorAt(double forceScale, double roundOff) const {
+    return scaled_ ? std::min(roundOff, kLooseFraction * forceScale) : 0.0;
+  }
   /// Whether accepting ‖f‖₂ ≤ boundAt(F) is loose against F (bound > kLooseFraction · F).
   bool looseAt(double forceScale) const { return boundAt(forceScale) > kLooseFraction * forceScale; }
   /// The rule in words, for the log, e.g. "||f|| <= 1e-10 * F (F = ||f_int||, ...)".
@@ -53,12 +70,18 @@ class ResidualTolerance {
 struct ResidualToleranceRecord {
   double lastForceScale = 0;    ///< F at the last converged state
   double largestForceScale = 0; ///< the largest F of a converged state
-  double lastBound = 0;         ///< the absolute bound applied there
+  double lastBound = 0;         ///< the absolute bound applied there (its floor, when that was above c · F)
   std::string warning;          ///< the first loose acceptance, in words ("" when none)
+  int floorAcceptances = 0;     ///< states the round-off floor accepted (‖f_free‖ above c · F, below the floor)
+  std::string floorNote;        ///< the first of them, in words ("" when none)
   /// Notes a state the residual test accepted with `norm` under `bound` (F = `forceScale`); `byAbsolute`:
-  /// the absolute bound decided (not the relative test). The first loose one (rule.looseAt(F) and ‖f‖ above
-  /// kLooseFraction · F) sets `warning`.
-  void accepted(const ResidualTolerance& rule, double forceScale, double norm, double bound, bool byAbsolute);
+  /// the absolute bound decided (not the relative test); `byFloor`: its round-off floor did (`norm` above
+  /// c · F). The first loose one (rule.looseAt(F) and ‖f‖ above kLooseFraction · F) sets `warning`; the
+  /// first by the floor sets `floorNote`.
+  void accepted(const ResidualTolerance& rule, double forceScale, double norm, double bound, bool byAbsolute,
+                bool byFloor = false);
+  /// What the floor decided over the run, for the log ("" when it never did).
+  std::string floorSummary() const;
 };
 
 }  // namespace contessa::solvers

@@ -67,6 +67,8 @@ struct RunSummary {
   /// (||f_int||) and the absolute bound applied; a loose acceptance, said once ("" when none).
   double forceScale = 0, residualBound = 0;
   std::string toleranceWarning;
+  /// What the bound's round-off floor decided, for the log ("" when it never did; ResidualToleranceRecord).
+  std::string toleranceFloor;
 };
 
 }  // namespace contessa::solvers

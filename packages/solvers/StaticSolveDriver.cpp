@@ -131,6 +131,7 @@ RunSummary solveStatic(const SolverModel& model, const Teuchos::ParameterList& p
   summary.forceScale = record.lastForceScale;
   summary.residualBound = record.lastBound;
   summary.toleranceWarning = record.warning;
+  summary.toleranceFloor = record.floorSummary();
   return summary;
 }
 
