@@ -129,18 +129,19 @@ int main(int argc, char** argv) {
     std::uint64_t print = 0;
     bool overlaps = false;
     for (int r = 0; r < repeat; ++r) {
-      std::uint64_t h = 0;
+      double sum = 0.0;
       const std::clock_t start = std::clock();
       for (int k = 0; k < calls; ++k) {
         const MortarFacetPairDerivatives d = facetPairDerivatives(c.x, 0.25, MortarFacetPairShape{},
                                                                   c.rigid ? c.motion.data() : nullptr,
                                                                   c.withCommitted ? &c.committed : nullptr);
-        h ^= fingerprint(d) + static_cast<std::uint64_t>(k == 0);
+        sum += d.hessian[0][0] + d.gradient[3][2];
         overlaps = d.overlaps;
-        if (k == 0) print = fingerprint(d);
       }
       times.push_back(1e6 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC / calls);
-      if (h == 42) std::printf(" ");  // keep the calls
+      if (sum == 42.0) std::printf(" ");  // keep the calls
+      print = fingerprint(facetPairDerivatives(c.x, 0.25, MortarFacetPairShape{}, c.rigid ? c.motion.data() : nullptr,
+                                               c.withCommitted ? &c.committed : nullptr));
     }
     std::sort(times.begin(), times.end());
     std::printf("| %s | %s | %.1f | %016llx |\n", c.name.c_str(), overlaps ? "yes" : "no", times[times.size() / 2],
