@@ -125,12 +125,16 @@ struct FacetMap {
   explicit FacetMap(const LinearFacet<T>& f) {
     valueFacet.count = f.count;
     for (int a = 0; a < f.count; ++a) valueFacet.node[a] = values(f.node[a]);
-    const auto& x = f.node;
-    if (f.count == 3) {
-      term = {x[0], x[1] - x[0], x[2] - x[0], Point3<T>{T(0.0), T(0.0), T(0.0)}};
+    // A facet without derivatives (a motionless rigid master): its terms and normal in doubles, the same
+    // values (the same formulas) and no derivatives to carry through the differentiated operations.
+    bool still = true;
+    for (int a = 0; a < f.count && still; ++a)
+      still = hasNoDerivatives(f.node[a].x) && hasNoDerivatives(f.node[a].y) && hasNoDerivatives(f.node[a].z);
+    if (still && !std::is_same_v<T, double>) {
+      const auto doubles = monomialTerms(valueFacet);
+      for (int k = 0; k < 4; ++k) term[k] = {T(doubles[k].x), T(doubles[k].y), T(doubles[k].z)};
     } else {
-      term = {times(x[0] + x[1] + x[2] + x[3], 0.25), times(x[1] + x[2] - x[0] - x[3], 0.25),
-              times(x[2] + x[3] - x[0] - x[1], 0.25), times(x[0] + x[2] - x[1] - x[3], 0.25)};
+      term = monomialTerms(f);
     }
     for (int k = 0; k < 4; ++k) {
       termValue[k] = values(term[k]);
@@ -138,7 +142,21 @@ struct FacetMap {
     }
     const Point3<double>& c = termValue[3];
     twisted = !(fixed[3] && c.x == 0.0 && c.y == 0.0 && c.z == 0.0);
-    if (!twisted) flatNormal = unit(cross(term[1], term[2]));
+    if (twisted) return;
+    if (fixed[1] && fixed[2] && !std::is_same_v<T, double>) {  // a normal without derivatives: in doubles
+      const Point3<double> n = unit(cross(termValue[1], termValue[2]));
+      flatNormal = {T(n.x), T(n.y), T(n.z)};
+    } else {
+      flatNormal = unit(cross(term[1], term[2]));
+    }
+  }
+  /// x_0, x_ξ, x_η, x_ξη of a facet's nodes.
+  template <class S>
+  static std::array<Point3<S>, 4> monomialTerms(const LinearFacet<S>& f) {
+    const auto& x = f.node;
+    if (f.count == 3) return {x[0], x[1] - x[0], x[2] - x[0], Point3<S>{S(0.0), S(0.0), S(0.0)}};
+    return {times(x[0] + x[1] + x[2] + x[3], 0.25), times(x[1] + x[2] - x[0] - x[3], 0.25),
+            times(x[2] + x[3] - x[0] - x[1], 0.25), times(x[0] + x[2] - x[1] - x[3], 0.25)};
   }
   /// The point's and the normal's values (LinearFacet's formulas in doubles).
   Point3<double> valueAt(const std::array<double, 2>& s) const { return valueFacet.at(valueFacet.shape(s[0], s[1])); }

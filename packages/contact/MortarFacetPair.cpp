@@ -187,24 +187,62 @@ void addFusedGaussPoint(const FacetMap<HessianDual<V>>& slaveMap, const FacetMap
   }
 }
 
+/// The pair's segmentation (eq. M13–M14): the projected slave polygon, the projected master facet and
+/// their clip polygon, and whether they overlap (the master faces the slave, both polygons have positive
+/// area, the clip polygon more than kMortarSnap of the slave's). Every decision is on the values, so a
+/// differentiated number type decides as the doubles do.
+template <class T>
+struct Segmentation {
+  bool overlaps = false;
+  std::vector<PlanePoint<T>> slavePolygon, masterProjected, clip;
+  T slaveArea2{};
+};
+template <class T>
+Segmentation<T> segment(const LinearFacet<T>& slave, const LinearFacet<T>& master, const ProjectionPlane<T>& plane) {
+  Segmentation<T> s;
+  const double size = std::max(facetDiameter(slave), facetDiameter(master));
+  if (!facing(slave, master, plane, size)) return s;
+  // eq. M14: the projected slave polygon (anticlockwise about n_0) clipped by the projected master
+  // polygon, which runs clockwise about n_0 (its normal is about −n_0): reversed first.
+  s.slavePolygon = plane.project(slave);
+  s.masterProjected = plane.project(master);
+  const std::vector<PlanePoint<T>> masterPolygon(s.masterProjected.rbegin(), s.masterProjected.rend());
+  s.slaveArea2 = twiceSignedArea(s.slavePolygon);
+  if (!(twiceSignedAreaValue(masterPolygon) > 0.0) || !(valueOf(s.slaveArea2) > 0.0)) return s;
+  s.clip = clipConvexPolygon(s.slavePolygon, masterPolygon, kMortarClipSnap * size);
+  s.overlaps = s.clip.size() >= 3 && twiceSignedAreaValue(s.clip) > kMortarSnap * valueOf(s.slaveArea2);
+  return s;
+}
+
+/// Whether the pair overlaps, decided on the values alone (in doubles: the decisions integrateFacetPair
+/// takes on any number type's values).
+bool overlapsOnValues(const FacetPairCoordinates<double>& x, const MortarFacetPairShape& shape) {
+  const LinearFacet<double> slave = facetOf(x, 0, shape.slaveNodes);
+  return segment(slave, facetOf(x, kMortarFacetNodes, shape.masterNodes), ProjectionPlane<double>(slave)).overlaps;
+}
+
 }  // namespace
 
 template <class T>
 MortarFacetPairGaps<T> integrateFacetPair(const FacetPairCoordinates<T>& x, double referenceArea,
                                           const MortarFacetPairShape& shape, const FacetPairCommitted* committed) {
   MortarFacetPairGaps<T> out;
+  if constexpr (!std::is_same_v<T, double>) {
+    // A pair without overlap on the values has none differentiated (the same decisions on the same
+    // values): found in doubles, before any differentiated number is formed (the projection plane, the
+    // projections and the clip cost about a sixth of an overlapping pair's derivatives).
+    FacetPairCoordinates<double> values;
+    for (std::size_t i = 0; i < x.size(); ++i) values[i] = valueOf(x[i]);
+    if (!overlapsOnValues(values, shape)) return out;
+  }
   const LinearFacet<T> slave = facetOf(x, 0, shape.slaveNodes), master = facetOf(x, kMortarFacetNodes, shape.masterNodes);
   const ProjectionPlane<T> plane(slave);
-  const double size = std::max(facetDiameter(slave), facetDiameter(master));
-  if (!facing(slave, master, plane, size)) return out;
-  // eq. M14: the projected slave polygon (anticlockwise about n_0) clipped by the projected master
-  // polygon, which runs clockwise about n_0 (its normal is about −n_0): reversed first.
-  const std::vector<PlanePoint<T>> slavePolygon = plane.project(slave), masterProjected = plane.project(master);
-  std::vector<PlanePoint<T>> masterPolygon(masterProjected.rbegin(), masterProjected.rend());
-  const T slaveArea2 = twiceSignedArea(slavePolygon);
-  if (!(twiceSignedAreaValue(masterPolygon) > 0.0) || !(valueOf(slaveArea2) > 0.0)) return out;
-  const std::vector<PlanePoint<T>> clip = clipConvexPolygon(slavePolygon, masterPolygon, kMortarClipSnap * size);
-  if (clip.size() < 3 || !(twiceSignedAreaValue(clip) > kMortarSnap * valueOf(slaveArea2))) return out;
+  const Segmentation<T> segmentation = segment(slave, master, plane);
+  if (!segmentation.overlaps) return out;
+  const std::vector<PlanePoint<T>>& slavePolygon = segmentation.slavePolygon;
+  const std::vector<PlanePoint<T>>& masterProjected = segmentation.masterProjected;
+  const std::vector<PlanePoint<T>>& clip = segmentation.clip;
+  const T& slaveArea2 = segmentation.slaveArea2;
   out.overlaps = true;
   // eq. M15–M17: triangles (c, v_i, v_i+1) about the vertex centroid c, Gauss points p on each; at p the
   // slave and master points x_s(ξ), x_m(η) projecting onto p, the gap g = (x_s − x_m) · n_m(η), and
@@ -307,6 +345,8 @@ MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<doubl
     return differentiateWithSlip<kFirstMaster + 1>(x, referenceArea, shape, *committed,
                                                    rigidBodyVariables<kN>(kFirstMaster, kFirstMaster, masterMotion));
   }
+  // Without overlap (on the values) every entry is zero: no differentiated number seeded or extracted.
+  if (!overlapsOnValues(x, shape)) return MortarFacetPairDerivatives{};
   // A rigid master: the twelve slave coordinates and the motion (MortarDual.hpp, KernelVariables).
   return differentiatePairKernel<MortarFacetPairDerivatives, kFirstMaster>(
       x, masterMotion, [&](const auto& seeded) { return integrateFacetPair(seeded, referenceArea, shape); });
