@@ -227,6 +227,7 @@ int reportOutcome(const solvers::RunSummary& summary, const deck::ProblemDefinit
                   summary.forceScale > 0 ? summary.residualBound / summary.forceScale : 0.0);
     if (!summary.toleranceFloor.empty())
       std::printf("contessa: Newton residual test: %s\n", summary.toleranceFloor.c_str());
+    if (!summary.stepSizeChoice.empty()) std::printf("contessa: %s\n", summary.stepSizeChoice.c_str());
     std::fflush(stdout);
     if (!summary.toleranceWarning.empty())
       std::fprintf(stderr, "contessa: warning: %s\n", summary.toleranceWarning.c_str());

@@ -154,4 +154,12 @@ std::string ContactBetaStepControl::stopReason() const {
          " to let only " + std::to_string(control_.appliedContactsPerStep()) + " contacts close per increment";
 }
 
+std::string ContactBetaStepControl::choiceMade() const {
+  if (control_.settings().beta.contactsPerStep != continuation::kAutomaticContactsPerStep) return "";
+  const int n = control_.appliedContactsPerStep();
+  if (n <= 0) return "";  // no decision was taken (no slave nodes, or no increment)
+  return "Contact Beta: Contacts Per Step not given, automatic N_c = " + std::to_string(n) +
+         " (2 with friction, otherwise half the slave nodes; docs/theory-load-stepping.md §11.7)";
+}
+
 }  // namespace contessa::solvers

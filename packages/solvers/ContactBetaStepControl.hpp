@@ -35,6 +35,7 @@ class ContactBetaStepControl : public StepControl {
   double correctionFactor() const override { return control_.beta(); }
   bool correctionRequested() const override { return control_.restartRequested(); }
   std::string stopReason() const override;
+  std::string choiceMade() const override;
 
   /// Restart mode: the current iterate is the first of a checked attempt and β asked for another step.
   bool firstIterateRejected() const { return firstIterateRejected_; }

@@ -218,6 +218,7 @@ ContinuationDriver::StepOutcome ContinuationDriver::runStep(const StepStart& sta
   }
   summary.increments = bookkeeper->increments;
   summary.failedAttempts = bookkeeper->failedAttempts;
+  summary.stepSizeChoice = stepControl->choiceMade();
   summary.newtonIterations = newton->total;
   summary.runNewtonIterations = bookkeeper->runNewtonIterations();
   summary.finalLambda = bookkeeper->lastLambda();

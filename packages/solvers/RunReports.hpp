@@ -69,6 +69,8 @@ struct RunSummary {
   std::string toleranceWarning;
   /// What the bound's round-off floor decided, for the log ("" when it never did; ResidualToleranceRecord).
   std::string toleranceFloor;
+  /// What the step-size method chose by itself (StepControl::choiceMade), for the log ("" when nothing).
+  std::string stepSizeChoice;
 };
 
 }  // namespace contessa::solvers

@@ -71,6 +71,9 @@ class StepControl {
   /// When the continuation stopped without a failed attempt: the method's own reason in words (e.g. a step
   /// below Min Step Size asked for by the method), or "".
   virtual std::string stopReason() const { return ""; }
+  /// What the method chose by itself and the log should say once at the run's end (e.g. an automatic
+  /// setting's value), or "".
+  virtual std::string choiceMade() const { return ""; }
 };
 
 }  // namespace contessa::solvers
