@@ -7,26 +7,14 @@
 #include <vector>
 
 #include "continuation/ContactBetaControl.hpp"
+#include "ClosingNodes.hpp"
 
 namespace cb = contessa::continuation;
 using cb::NodeStatus;
+using cb::testing::closingAt;
+using cb::testing::nodesAt;
 
 namespace {
-
-/// Open node closing at β^k = b of the planned step (g_t = b, trial g = b − 1).
-cb::SlaveNodeIncrement closingAt(double b) {
-  cb::SlaveNodeIncrement n;
-  n.committedGap = b;
-  n.trialGap = b - 1.0;
-  n.trialStatus = b <= 1.0 ? NodeStatus::Stick : NodeStatus::Open;
-  return n;
-}
-
-std::vector<cb::SlaveNodeIncrement> nodesAt(const std::vector<double>& b) {
-  std::vector<cb::SlaveNodeIncrement> out;
-  for (double x : b) out.push_back(closingAt(x));
-  return out;
-}
 
 /// Nine slave nodes (automatic N_c = ⌈9/2⌉ = 5): five close within the planned step (β^k 0.25 … 0.875),
 /// the sixth at 1.125.

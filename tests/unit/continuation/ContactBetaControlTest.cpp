@@ -2,6 +2,7 @@
 // predicted count, the re-solve of a converged increment with other than N_c events, and the quiet
 // growth. Nodes are built so that the arithmetic is exact (dyadic gaps closing by exactly 1).
 #include "continuation/ContactBetaControl.hpp"
+#include "ClosingNodes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,17 +13,10 @@
 
 namespace cb = contessa::continuation;
 using cb::NodeStatus;
+using cb::testing::closingAt;
+using cb::testing::nodesAt;
 
 namespace {
-
-/// Open node closing at β^k = b of the planned step (g_t = b, trial g = b − 1).
-cb::SlaveNodeIncrement closingAt(double b) {
-  cb::SlaveNodeIncrement n;
-  n.committedGap = b;
-  n.trialGap = b - 1.0;
-  n.trialStatus = b <= 1.0 ? NodeStatus::Stick : NodeStatus::Open;
-  return n;
-}
 
 cb::ContactBetaSettings settings(int nc, double f = 0.5) {
   cb::ContactBetaSettings s;
@@ -39,12 +33,6 @@ cb::ContactBetaSettings predictorSettings(int nc) {
   cb::ContactBetaSettings s = settings(nc);
   s.mode = cb::ContactBetaSettings::Mode::Predictor;
   return s;
-}
-
-std::vector<cb::SlaveNodeIncrement> nodesAt(const std::vector<double>& b) {
-  std::vector<cb::SlaveNodeIncrement> out;
-  for (double x : b) out.push_back(closingAt(x));
-  return out;
 }
 
 }  // namespace
