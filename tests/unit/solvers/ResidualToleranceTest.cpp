@@ -160,34 +160,53 @@ TEST(ResidualTest, AnAbsoluteBoundIsInTheDecksUnit) {
   EXPECT_GT(newton(1e6, absolute).iterations, newton(1.0, absolute).iterations);
 }
 
+// One unknown x on a spring of stiffness k loaded to k·target: the internal force is computed as the
+// derived problem says (where its rounding comes from); force scale, out-of-balance norm and the Jacobian
+// are the spring's.
+class RoundedSpring : public NOX::LAPACK::Interface, public contessa::model::ForceScale {
+ public:
+  RoundedSpring(double stiffness, double target, double start) : stiffness_(stiffness), target_(target), start_(1) {
+    start_(0) = start;
+  }
+  const NOX::LAPACK::Vector& getInitialGuess() override { return start_; }
+  bool computeF(NOX::LAPACK::Vector& f, const NOX::LAPACK::Vector& x) override {
+    internal_ = internalForce(x(0));
+    f(0) = internal_ - stiffness_ * target_;
+    residual_ = std::abs(f(0));
+    return true;
+  }
+  bool computeJacobian(NOX::LAPACK::Matrix<double>& jacobian, const NOX::LAPACK::Vector&) override {
+    jacobian(0, 0) = stiffness_;
+    return true;
+  }
+  double forceScale() const override { return std::abs(internal_); }
+  double outOfBalanceNorm() const override { return residual_; }
+
+ protected:
+  virtual double internalForce(double x) const = 0;
+
+ private:
+  double stiffness_, target_, internal_ = 0, residual_ = 0;
+  NOX::LAPACK::Vector start_;
+};
+
 // One DOF of a node at X = 1000 displaced by x, its internal force computed from positions as a contact gap
 // is, k ((X + x) − X), against the load k u*: the position X + x is rounded to the spacing of doubles at
 // X (1.1e-13), so the residual never goes below k · 3.2e-14 (u* = π · 1e-9) while the force-scaled bound
 // is 1e-10 k u* and the update test's 1e-10 |x| is 3e-19: only the update's floor at the positions'
 // round-off (ResidualTest::kPositionRoundOff · largest |X|) stops Newton. `length`: the mesh's largest |X|
 // the problem reports (0: none known).
-class FarFromOrigin : public NOX::LAPACK::Interface, public contessa::model::ForceScale {
+class FarFromOrigin : public RoundedSpring {
  public:
-  explicit FarFromOrigin(double length) : length_(length), start_(1) { start_(0) = 0.0; }
   static constexpr double kPosition = 1000.0, kStiffness = 1e3, kTarget = 3.14159265358979e-9;
-  const NOX::LAPACK::Vector& getInitialGuess() override { return start_; }
-  bool computeF(NOX::LAPACK::Vector& f, const NOX::LAPACK::Vector& x) override {
-    internal_ = kStiffness * ((kPosition + x(0)) - kPosition);
-    f(0) = internal_ - kStiffness * kTarget;
-    residual_ = std::abs(f(0));
-    return true;
-  }
-  bool computeJacobian(NOX::LAPACK::Matrix<double>& jacobian, const NOX::LAPACK::Vector&) override {
-    jacobian(0, 0) = kStiffness;
-    return true;
-  }
-  double forceScale() const override { return std::abs(internal_); }
-  double outOfBalanceNorm() const override { return residual_; }
+  explicit FarFromOrigin(double length) : RoundedSpring(kStiffness, kTarget, 0.0), length_(length) {}
   double lengthScale() const override { return length_; }
 
+ protected:
+  double internalForce(double x) const override { return kStiffness * ((kPosition + x) - kPosition); }
+
  private:
-  double length_, internal_ = 0, residual_ = 0;
-  NOX::LAPACK::Vector start_;
+  double length_;
 };
 
 TEST(ResidualTest, AnUpdateAtThePositionsRoundOffConvergesUnderTheForceScaledBound) {
@@ -219,29 +238,18 @@ TEST(ResidualTolerance, TheRoundOffFloorIsForceScaledAndAtMostTheLooseFraction) 
 // 8.3e-8 of itself as rounding (measured here: (1 + 1e-9) − 1 − 1e-9 = 8.27e-17), above the force-scaled
 // bound 1e-10 E u*. The problem reports `roundOff` as the rounding level of its force (the model's
 // ForceRoundOff: ε |K| δX = E ε here).
-class TinyStrain : public NOX::LAPACK::Interface, public contessa::model::ForceScale {
+class TinyStrain : public RoundedSpring {
  public:
   static constexpr double kModulus = 1e3, kTarget = 1e-9;
-  explicit TinyStrain(double roundOff) : roundOff_(roundOff), start_(1) { start_(0) = kTarget; }
-  const NOX::LAPACK::Vector& getInitialGuess() override { return start_; }  // the exact predictor
-  bool computeF(NOX::LAPACK::Vector& f, const NOX::LAPACK::Vector& x) override {
-    internal_ = kModulus * ((1.0 + x(0)) - 1.0);
-    f(0) = internal_ - kModulus * kTarget;
-    residual_ = std::abs(f(0));
-    return true;
-  }
-  bool computeJacobian(NOX::LAPACK::Matrix<double>& jacobian, const NOX::LAPACK::Vector&) override {
-    jacobian(0, 0) = kModulus;
-    return true;
-  }
-  double forceScale() const override { return std::abs(internal_); }
-  double outOfBalanceNorm() const override { return residual_; }
+  explicit TinyStrain(double roundOff) : RoundedSpring(kModulus, kTarget, kTarget), roundOff_(roundOff) {}  // the exact predictor
   double lengthScale() const override { return 1.0; }
   double forceRoundOff() const override { return roundOff_; }
 
+ protected:
+  double internalForce(double x) const override { return kModulus * ((1.0 + x) - 1.0); }
+
  private:
-  double roundOff_, internal_ = 0, residual_ = 0;
-  NOX::LAPACK::Vector start_;
+  double roundOff_;
 };
 
 TEST(ResidualTest, TheRoundOffFloorAcceptsAnExactPredictorUntouched) {
