@@ -281,6 +281,18 @@ TEST(ResidualTest, TheRoundOffFloorAcceptsAnExactPredictorUntouched) {
   EXPECT_EQ(deck.floorAcceptances, 0);
 }
 
+// A linear elastic Q4 rectangle W × H (nx × ny cells), held in x on its left side and in y at its bottom.
+auto heldRectangle(int nx, int ny, double W, double H, double E, double nu) {
+  using namespace contessa;
+  auto deck = test::newProblem();
+  test::setGrid(deck->sublist("Mesh"), "Rectangle", {nx, ny}, {W, H});
+  test::addBlock(*deck, "block_1", "Q4", "steel");
+  test::addMaterial(*deck, "steel", "Linear Elastic", E, nu);
+  test::addDirichlet(*deck, "hold x", "left", "x");
+  test::addDirichlet(*deck, "hold y", "bottom", "y");
+  return deck;
+}
+
 // F of the model at a homogeneous state: x = (e X, 0) on a W × H rectangle of nx × ny Q4 of linear elastic
 // material (plane strain), σxx = (λ + 2μ) e, σyy = λ e, σxy = 0: the internal force is σ·n over the
 // boundary, lumped to the nodes (σxx hy on a right or left edge node, half at a corner; σyy hx on a top or
@@ -290,12 +302,7 @@ TEST(ForceScale, IsTheNormOfTheInternalForcesAtAKnownState) {
   using namespace contessa;
   const int nx = 4, ny = 3;
   const double W = 4.0, H = 1.5, E = 200.0, nu = 0.3, e = 1e-3;
-  auto deck = test::newProblem();
-  test::setGrid(deck->sublist("Mesh"), "Rectangle", {nx, ny}, {W, H});
-  test::addBlock(*deck, "block_1", "Q4", "steel");
-  test::addMaterial(*deck, "steel", "Linear Elastic", E, nu);
-  test::addDirichlet(*deck, "hold x", "left", "x");
-  test::addDirichlet(*deck, "hold y", "bottom", "y");
+  auto deck = heldRectangle(nx, ny, W, H, E, nu);
   const auto problem = test::buildOn(*deck, test::everyRank());
   auto m = test::makeModel(problem);
   auto x = Thyra::createMember(m->get_x_space());
@@ -362,12 +369,7 @@ TEST(ForceScale, TheRoundOffLevelBoundsTheRoundingOfAnExactLinearState) {
   const double W = 4.1, H = 1.7, E = 210.0, nu = 0.3;
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu)), lateral = lambda / (lambda + 2 * mu);
   for (const double e : {1e-9, 1e-3}) {
-    auto deck = test::newProblem();
-    test::setGrid(deck->sublist("Mesh"), "Rectangle", {nx, ny}, {W, H});
-    test::addBlock(*deck, "block_1", "Q4", "steel");
-    test::addMaterial(*deck, "steel", "Linear Elastic", E, nu);
-    test::addDirichlet(*deck, "hold x", "left", "x");
-    test::addDirichlet(*deck, "hold y", "bottom", "y");
+    auto deck = heldRectangle(nx, ny, W, H, E, nu);
     test::addDirichlet(*deck, "stretch", "right", "x").set("Value", e * W);
     const auto problem = test::buildOn(*deck, test::everyRank());
     auto m = test::makeModel(problem);
