@@ -30,6 +30,10 @@ With --callgrind each variant runs once under valgrind's callgrind, counting the
 inside ContactAssembly::assemble (the same contact phase; independent of the machine's load, about 50x
 slower): the table then gives instructions per evaluation and per Newton iteration and their ratios.
 --max-value L stops the load at λ = L (the deck's checks are off; a shorter run for callgrind).
+With --callgrind --whole-process callgrind counts every instruction of the process (start-up, mesh, element
+kernels, MUMPS, output and contact alike) and the contact phase's share of them (ContactAssembly::assemble
+inclusive, by callgrind_annotate): the table gives both per Newton iteration and their ratios, what
+issue 25's "mortar at most 3x node-to-face per Newton iteration" is about when read as the whole run.
 With --perf each run is sampled by `perf record` (cpu-clock at 4000 Hz, DWARF call stacks) and the contact
 phase's time is its CPU time: the samples with ContactAssembly::assemble on the stack over the frequency.
 A sampled process counts only while it runs, so on a loaded machine (wall times inflated many times by
@@ -38,7 +42,7 @@ report unwinds the DWARF stacks, minutes per run on a loaded machine.
 
     /usr/bin/python3 bench/mortar_bench.py [--case 2d|3d|block|block-on-base|both|all] [--repeat 3]
                                            [--contessa PATH] [--work DIR]
-    /usr/bin/python3 bench/mortar_bench.py --callgrind [--max-value 0.3] [--case 2d]
+    /usr/bin/python3 bench/mortar_bench.py --callgrind [--whole-process] [--max-value 0.3] [--case 2d]
 """
 import argparse
 import os
@@ -91,7 +95,17 @@ def contact_cpu_seconds(samples):
     return share * total / PERF_FREQUENCY
 
 
-def run(contessa, work, case, discretization, mu, index, callgrind=False, max_value=None, perf=False):
+def contact_instructions(profile):
+    """Instructions inside ContactAssembly::assemble (inclusive) in a whole-process callgrind profile."""
+    report = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", profile],
+                            capture_output=True, text=True).stdout
+    for line in report.splitlines():
+        if "contessa::model::ContactAssembly::assemble" in line:
+            return int(line.split()[0].replace(",", ""))
+    sys.exit(f"no ContactAssembly::assemble in {profile}")
+
+
+def run(contessa, work, case, discretization, mu, index, callgrind=False, max_value=None, perf=False, whole=False):
     c = CASES[case]
     out = os.path.join(work, f"{case}_{discretization.replace(' ', '')}_mu{mu}_{index}")
     cmd = [contessa, os.path.join(ROOT, "inputs", c["deck"]), "--quiet", "--timers", "--output-dir", out,
@@ -105,9 +119,8 @@ def run(contessa, work, case, discretization, mu, index, callgrind=False, max_va
     if perf:
         cmd = ["perf", "record", "-q", "-F", str(PERF_FREQUENCY), "--call-graph", "dwarf,16384", "-o", samples, *cmd]
     if callgrind:
-        cmd = ["valgrind", "--tool=callgrind", "--collect-atstart=no",
-               "--toggle-collect=contessa::model::ContactAssembly::assemble*",
-               f"--callgrind-out-file={profile}", *cmd]
+        collect = [] if whole else ["--collect-atstart=no", "--toggle-collect=contessa::model::ContactAssembly::assemble*"]
+        cmd = ["valgrind", "--tool=callgrind", *collect, f"--callgrind-out-file={profile}", *cmd]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     p = subprocess.run(cmd, capture_output=True, text=True)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -117,6 +130,8 @@ def run(contessa, work, case, discretization, mu, index, callgrind=False, max_va
     if callgrind:
         with open(profile) as f:
             instructions = next(int(line.split()[1]) for line in f if line.startswith("summary:"))
+        if whole:  # (the process' instructions, the contact phase's)
+            instructions = (instructions, contact_instructions(profile))
     contact = total = newton = None
     for line in (p.stdout + p.stderr).splitlines():
         if (m := CONTACT.match(line)):
@@ -141,6 +156,8 @@ def main():
     parser.add_argument("--callgrind", action="store_true", help="count instructions (one run per variant)")
     parser.add_argument("--max-value", type=float, default=None, help="stop the load at this λ")
     parser.add_argument("--perf", action="store_true", help="the contact phase's CPU time, sampled by perf")
+    parser.add_argument("--whole-process", action="store_true",
+                        help="with --callgrind: every instruction of the process, and the contact phase's share")
     args = parser.parse_args()
     if args.callgrind:
         args.repeat = 1
@@ -152,8 +169,11 @@ def main():
     results = {v: [] for v in variants}
     for i in range(args.repeat):
         for v in variants:
-            results[v].append(run(args.contessa, work, *v, i, args.callgrind, args.max_value, args.perf))
+            results[v].append(run(args.contessa, work, *v, i, args.callgrind, args.max_value, args.perf,
+                                  args.whole_process))
     load = os.getloadavg()[0]
+    if args.callgrind and args.whole_process:
+        return print_whole_process(variants, results, args.max_value)
     if args.callgrind:
         return print_instructions(variants, results, args.max_value)
     clock = "CPU time sampled by perf" if args.perf else "wall time"
@@ -194,6 +214,24 @@ def print_instructions(variants, results, max_value):
               f"| {instructions / evaluations / 1e3:.1f} | {instructions / newton / 1e3:.1f} "
               f"| {instructions / evaluations / (base[0] / base[1]):.2f} "
               f"| {instructions / newton / (base[0] / base[3]):.2f} |")
+
+
+def print_whole_process(variants, results, max_value):
+    print(f"callgrind: every instruction of the process, and those inside ContactAssembly::assemble, 1 rank, "
+          f"load to λ = {max_value or 1:g}; {CASE_NOTES}\n")
+    print("| case | friction | discretisation | Newton | contact evaluations | process (10^6) | contact (10^6) "
+          "| contact share | process per Newton iteration (10^6) | contact per Newton iteration (10^6) "
+          "| mortar / NTS: process per Newton iteration | mortar / NTS: contact per Newton iteration "
+          "| mortar / NTS: whole run |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for v in variants:
+        (process, contact), evaluations, _, newton, _ = results[v][0]
+        (base_process, base_contact), _, _, base_newton, _ = results[(v[0], "Node To Segment", v[2])][0]
+        name = v[1] if v[0] == "2d" or v[1] == "Mortar" else "Node To Face"
+        print(f"| {v[0]} | {v[2]:g} | {name} | {newton} | {evaluations} | {process / 1e6:.0f} | {contact / 1e6:.0f} "
+              f"| {contact / process:.1%} | {process / newton / 1e6:.1f} | {contact / newton / 1e6:.2f} "
+              f"| {process / newton / (base_process / base_newton):.2f} "
+              f"| {contact / newton / (base_contact / base_newton):.2f} | {process / base_process:.2f} |")
 
 
 if __name__ == "__main__":

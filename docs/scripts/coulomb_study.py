@@ -12,7 +12,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from study_support import ROOT, cr, plt, run_deck, study_arguments  # noqa: E402
+from study_support import ROOT, cr, plt, run_deck, save_figure, study_arguments  # noqa: E402
 
 DECK = os.path.join(ROOT, "inputs", "verification", "coulomb_block.xml")
 MU, SHEAR = 0.3, 0.002  # friction coefficient, top displacement at load factor 1 (mm)
@@ -60,10 +60,7 @@ def main():
     bx.set_title("History column 'slip'")
     bx.legend(fontsize=8)
     bx.grid(alpha=0.3)
-    fig.tight_layout()
-    os.makedirs(args.figures, exist_ok=True)
-    fig.savefig(os.path.join(args.figures, "coulomb_friction.png"), dpi=120)
-    print(f"\nwrote {args.figures}/coulomb_friction.png")
+    save_figure(fig, args.figures, "coulomb_friction.png")
 
 
 if __name__ == "__main__":

@@ -32,3 +32,11 @@ def run_deck(contessa, deck, out, sets):
     for s in sets:
         command += ["--set", s]
     return subprocess.run(command, capture_output=True, text=True)
+
+
+def save_figure(fig, figures, name, dpi=120):
+    """Lays out FIG, writes it to the figures' directory as NAME and says so."""
+    fig.tight_layout()
+    os.makedirs(figures, exist_ok=True)
+    fig.savefig(os.path.join(figures, name), dpi=dpi)
+    print(f"\nwrote {figures}/{name}")
