@@ -2,7 +2,10 @@
 // Hessians), on the pairs of the cost cases of issue 25, and a fingerprint of every number they give, so
 // that a change to the kernel can be checked to give the same bits (run before and after, compare).
 //
-//   build/bin/mortar_pair_bench [--calls N] [--repeat R]
+//   build/bin/mortar_pair_bench [--calls N] [--repeat R] [--case NAME]
+//
+// --case runs one pair only (under callgrind: its instructions per call, the total over the R x N + R
+// calls).
 //
 // Pairs (slave Quad4 slightly warped and tilted, as a deformed block's face is):
 //   block      a slave Quad4 inside a motionless rigid quadrilateral (the block on its rigid base)
@@ -108,14 +111,18 @@ std::vector<Case> cases() {
 
 int main(int argc, char** argv) {
   int calls = 200, repeat = 5;
+  std::string only;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--calls")
       calls = std::atoi(argv[i + 1]);
     else if (flag == "--repeat")
       repeat = std::atoi(argv[i + 1]);
+    else if (flag == "--case")
+      only = argv[i + 1];
     else {
-      std::fprintf(stderr, "mortar_pair_bench: unknown option %s (expected --calls N, --repeat R)\n", argv[i]);
+      std::fprintf(stderr, "mortar_pair_bench: unknown option %s (expected --calls N, --repeat R, --case NAME)\n",
+                   argv[i]);
       return 1;
     }
   }
@@ -124,7 +131,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::printf("| pair | overlaps | us / pair (median of %d x %d calls) | fingerprint |\n|---|---|---|---|\n", repeat, calls);
+  bool found = only.empty();
   for (const Case& c : cases()) {
+    if (!only.empty() && c.name != only) continue;
+    found = true;
     std::vector<double> times;
     std::uint64_t print = 0;
     bool overlaps = false;
@@ -146,6 +156,11 @@ int main(int argc, char** argv) {
     std::sort(times.begin(), times.end());
     std::printf("| %s | %s | %.1f | %016llx |\n", c.name.c_str(), overlaps ? "yes" : "no", times[times.size() / 2],
                 static_cast<unsigned long long>(print));
+  }
+  if (!found) {
+    std::fprintf(stderr, "mortar_pair_bench: --case %s is not a pair (expected block, tube, deformable, friction, apart)\n",
+                 only.c_str());
+    return 1;
   }
   return 0;
 }

@@ -379,29 +379,36 @@ void extractGapsAndSlips(const Integrated& g, const KernelVariables<C>& variable
 /// A pair kernel's weighted gaps differentiated twice: `integrate` (the kernel on HessianDual coordinates,
 /// returning overlaps, weightedGap and mortarArea per slave slot) evaluated with every coordinate its own
 /// variable, or, given a rigid master's motion (its entries from FirstMaster on), with the master along that
-/// motion only (KernelVariables). Derivatives holds overlaps, weightedGap, mortarArea, gradient and hessian.
-template <class Derivatives, int FirstMaster, std::size_t N, class Integrate>
-Derivatives differentiatePairKernel(const std::array<double, N>& x, const double* masterMotion, Integrate integrate) {
+/// motion only (KernelVariables). Written into `out` (overlaps, weightedGap, mortarArea, gradient and
+/// hessian, every entry): a caller that keeps its records (MortarInterface's per pair, 18 KB in 3D) fills
+/// them in place instead of copying a returned one.
+template <int FirstMaster, class Derivatives, std::size_t N, class Integrate>
+void differentiatePairKernelInto(Derivatives& out, const std::array<double, N>& x, const double* masterMotion,
+                                 Integrate integrate) {
   constexpr int C = static_cast<int>(N);
   const auto differentiate = [&](auto variablesTag, const KernelVariables<C>& variables) {
     constexpr int V = decltype(variablesTag)::value;
     // A HessianDual<36> holds 703 doubles: the seeded coordinates live on the heap.
     std::vector<std::array<HessianDual<V>, C>> seeded(1, variables.template seed<V>(x));
     const auto g = integrate(seeded[0]);
-    Derivatives out;
     out.overlaps = g.overlaps;
     for (std::size_t a = 0; a < out.weightedGap.size(); ++a) {
       out.weightedGap[a] = g.weightedGap[a].v;
       out.mortarArea[a] = g.mortarArea[a].v;
       variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
     }
-    return out;
   };
   if (masterMotion == nullptr) return differentiate(std::integral_constant<int, C>{}, ownVariables<C>());
   if (motionless(masterMotion, FirstMaster))
     return differentiate(std::integral_constant<int, FirstMaster>{}, motionlessBodyVariables<C>(FirstMaster, FirstMaster));
-  return differentiate(std::integral_constant<int, FirstMaster + 1>{},
-                       rigidBodyVariables<C>(FirstMaster, FirstMaster, masterMotion));
+  differentiate(std::integral_constant<int, FirstMaster + 1>{}, rigidBodyVariables<C>(FirstMaster, FirstMaster, masterMotion));
+}
+/// The same, returned (the other fields of Derivatives value-initialised).
+template <class Derivatives, int FirstMaster, std::size_t N, class Integrate>
+Derivatives differentiatePairKernel(const std::array<double, N>& x, const double* masterMotion, Integrate integrate) {
+  Derivatives out;
+  differentiatePairKernelInto<FirstMaster>(out, x, masterMotion, integrate);
+  return out;
 }
 
 }  // namespace contessa::contact

@@ -320,36 +320,56 @@ namespace {
 /// The pair with its slip increments (friction) differentiated over `variables`: as
 /// differentiatePairKernel (MortarDual.hpp), plus Δũ_a's three components.
 template <int V>
-MortarFacetPairDerivatives differentiateWithSlip(const FacetPairCoordinates<double>& x, double referenceArea,
-                                                 const MortarFacetPairShape& shape, const FacetPairCommitted& committed,
-                                                 const KernelVariables<kN>& variables) {
+void differentiateWithSlip(const FacetPairCoordinates<double>& x, double referenceArea, const MortarFacetPairShape& shape,
+                           const FacetPairCommitted& committed, const KernelVariables<kN>& variables,
+                           MortarFacetPairDerivatives& out) {
   std::vector<std::array<HessianDual<V>, kN>> seeded(1, variables.template seed<V>(x));  // large: on the heap
   const auto g = integrateFacetPair(seeded[0], referenceArea, shape, &committed);
-  MortarFacetPairDerivatives out;
-  extractGapsAndSlips<kMortarFacetNodes>(g, variables, out);
+  extractGapsAndSlips<kMortarFacetNodes>(g, variables, out);  // every field but the virtual slips'
   extractSlipVariation<kN, V>(g.slipVariation, variables, kMortarFacetNodes, 3, out.slipVariation,
                               out.slipVariationGradient);
-  return out;
 }
 }  // namespace
+
+void facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea, const MortarFacetPairShape& shape,
+                          const double* masterMotion, const FacetPairCommitted* committed,
+                          MortarFacetPairDerivatives& out) {
+  constexpr int kFirstMaster = 3 * kMortarFacetNodes;
+  if (committed != nullptr) {
+    if (masterMotion == nullptr)
+      return differentiateWithSlip<kN>(x, referenceArea, shape, *committed, ownVariables<kN>(), out);
+    if (motionless(masterMotion, kFirstMaster))
+      return differentiateWithSlip<kFirstMaster>(x, referenceArea, shape, *committed,
+                                                 motionlessBodyVariables<kN>(kFirstMaster, kFirstMaster), out);
+    return differentiateWithSlip<kFirstMaster + 1>(x, referenceArea, shape, *committed,
+                                                   rigidBodyVariables<kN>(kFirstMaster, kFirstMaster, masterMotion), out);
+  }
+  // A frictionless pair carries no slip entries (a record reused from a frictional evaluation loses them).
+  out.weightedSlip = {};
+  out.slipGradient.clear();
+  out.slipHessian.clear();
+  out.slipVariation.clear();
+  out.slipVariationGradient.clear();
+  // Without overlap (on the values) every entry is zero: no differentiated number seeded or extracted.
+  if (!overlapsOnValues(x, shape)) {
+    out.overlaps = false;
+    out.weightedGap = {};
+    out.mortarArea = {};
+    for (auto& g : out.gradient) g.fill(0.0);
+    for (auto& h : out.hessian) h.fill(0.0);
+    return;
+  }
+  // A rigid master: the twelve slave coordinates and the motion (MortarDual.hpp, KernelVariables).
+  differentiatePairKernelInto<kFirstMaster>(
+      out, x, masterMotion, [&](const auto& seeded) { return integrateFacetPair(seeded, referenceArea, shape); });
+}
 
 MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea,
                                                 const MortarFacetPairShape& shape, const double* masterMotion,
                                                 const FacetPairCommitted* committed) {
-  constexpr int kFirstMaster = 3 * kMortarFacetNodes;
-  if (committed != nullptr) {
-    if (masterMotion == nullptr) return differentiateWithSlip<kN>(x, referenceArea, shape, *committed, ownVariables<kN>());
-    if (motionless(masterMotion, kFirstMaster))
-      return differentiateWithSlip<kFirstMaster>(x, referenceArea, shape, *committed,
-                                                 motionlessBodyVariables<kN>(kFirstMaster, kFirstMaster));
-    return differentiateWithSlip<kFirstMaster + 1>(x, referenceArea, shape, *committed,
-                                                   rigidBodyVariables<kN>(kFirstMaster, kFirstMaster, masterMotion));
-  }
-  // Without overlap (on the values) every entry is zero: no differentiated number seeded or extracted.
-  if (!overlapsOnValues(x, shape)) return MortarFacetPairDerivatives{};
-  // A rigid master: the twelve slave coordinates and the motion (MortarDual.hpp, KernelVariables).
-  return differentiatePairKernel<MortarFacetPairDerivatives, kFirstMaster>(
-      x, masterMotion, [&](const auto& seeded) { return integrateFacetPair(seeded, referenceArea, shape); });
+  MortarFacetPairDerivatives out;
+  facetPairDerivatives(x, referenceArea, shape, masterMotion, committed, out);
+  return out;
 }
 
 }  // namespace contessa::contact

@@ -101,5 +101,10 @@ MortarFacetPairDerivatives facetPairDerivatives(const FacetPairCoordinates<doubl
                                                 const MortarFacetPairShape& shape = {},
                                                 const double* masterMotion = nullptr,
                                                 const FacetPairCommitted* committed = nullptr);
+/// The same, written into `out` (every field): a kept record (MortarInterface's, one per pair) filled in
+/// place instead of a returned 18 KB one copied into it.
+void facetPairDerivatives(const FacetPairCoordinates<double>& x, double referenceArea, const MortarFacetPairShape& shape,
+                          const double* masterMotion, const FacetPairCommitted* committed,
+                          MortarFacetPairDerivatives& out);
 
 }  // namespace contessa::contact

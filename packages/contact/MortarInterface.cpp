@@ -8,6 +8,7 @@
 #include <map>
 #include <utility>
 #include <stdexcept>
+#include <type_traits>
 
 #include "contact/BoundingBoxTree.hpp"
 #include "contact/CoulombReturnMapping.hpp"
@@ -470,6 +471,10 @@ auto MortarInterface<F>::pairDerivatives(
   if constexpr (kDim == 2)
     cached.derivatives =
         segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, withCommitted ? &then : nullptr, rigidMotion);
+  else if constexpr (std::is_same_v<typename Layout::Derivatives, MortarFacetPairDerivatives>)
+    // Filled in place: the 18 KB record (four 24 × 24 Hessians) not returned and copied.
+    facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion, withCommitted ? &then : nullptr,
+                         cached.derivatives);
   else
     cached.derivatives =
         facetPairDerivatives(x, pair.referenceMeasure, pair.shape, rigidMotion, withCommitted ? &then : nullptr);
@@ -522,11 +527,16 @@ void MortarInterface<F>::addPair(WeightedGap& w, int end, const std::array<doubl
   const int n = w.size();
   // Grow the gradients and Hessians to the support's size, keeping the entries summed so far.
   const int old = static_cast<int>(w.gradient.size());
+  // In place (the rows moved to their new stride from the last, whose new place is never before its old
+  // one), in storage that grows geometrically: a node's support grows pair by pair, without a new matrix
+  // allocated and zeroed each time.
   const auto grow = [&](std::vector<double>& hessian) {
-    std::vector<double> grown(static_cast<std::size_t>(n) * n, 0.0);
-    for (int i = 0; i < old; ++i)
-      for (int j = 0; j < old; ++j) grown[i * n + j] = hessian[i * old + j];
-    hessian.swap(grown);
+    hessian.resize(static_cast<std::size_t>(n) * n);
+    for (int i = old - 1; i >= 0; --i) {
+      for (int j = n - 1; j >= old; --j) hessian[i * n + j] = 0.0;
+      for (int j = old - 1; j >= 0; --j) hessian[i * n + j] = hessian[i * old + j];
+    }
+    std::fill(hessian.begin() + static_cast<std::ptrdiff_t>(old) * n, hessian.end(), 0.0);
   };
   if (n != old) {
     grow(w.hessian);

@@ -225,6 +225,53 @@ TEST(MortarFacetPair, AFlatRigidMasterGivesTheDeformableMastersSlaveDerivativesA
   }
 }
 
+/// Every field of two derivative records the same to the bit (zeros' signs aside).
+void expectSameRecord(const MortarFacetPairDerivatives& a, const MortarFacetPairDerivatives& b, const char* what) {
+  const auto same = [&](const double* x, const double* y, std::size_t n, const char* field) {
+    for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(x[i], y[i]) << what << ": " << field << " entry " << i;
+  };
+  EXPECT_EQ(a.overlaps, b.overlaps) << what;
+  same(a.weightedGap.data(), b.weightedGap.data(), 4, "weightedGap");
+  same(a.mortarArea.data(), b.mortarArea.data(), 4, "mortarArea");
+  for (int k = 0; k < 4; ++k) {
+    same(a.gradient[k].data(), b.gradient[k].data(), kM, "gradient");
+    same(a.hessian[k].data(), b.hessian[k].data(), kM * kM, "hessian");
+    same(a.weightedSlip[k].data(), b.weightedSlip[k].data(), 3, "weightedSlip");
+  }
+  const auto sameRows = [&](const auto& x, const auto& y, const char* field) {
+    ASSERT_EQ(x.size(), y.size()) << what << ": " << field;
+    for (std::size_t r = 0; r < x.size(); ++r) same(x[r].data(), y[r].data(), x[r].size(), field);
+  };
+  sameRows(a.slipGradient, b.slipGradient, "slipGradient");
+  sameRows(a.slipHessian, b.slipHessian, "slipHessian");
+  sameRows(a.slipVariation, b.slipVariation, "slipVariation");
+  sameRows(a.slipVariationGradient, b.slipVariationGradient, "slipVariationGradient");
+}
+
+TEST(MortarFacetPair, DerivativesWrittenIntoAKeptRecordAreTheReturnedOnes) {
+  // MortarInterface keeps one record per pair and refills it in place: whatever the record held before (a
+  // frictional pair's slips, an overlapping pair's entries), the refilled record is the returned one.
+  FacetPairCoordinates<double> x = flatPair(0.3, 1.7, -0.2, 1.5, -0.01);
+  const double warp[12] = {0.01, 0.02, 0.003, -0.02, 0.01, -0.004, 0.03, -0.01, 0.002, 0.0, 0.02, -0.001};
+  for (int i = 0; i < 12; ++i) x[i] += warp[i];
+  FacetPairCommitted then = x;
+  for (int a = 0; a < 4; ++a) then[3 * a] -= 1e-3;
+  std::array<double, 12> still{}, motion{};
+  for (int b = 0; b < 4; ++b) motion[3 * b + 2] = 1.0;
+  const FacetPairCoordinates<double> apart = flatPair(1.2, 2.0, 0.0, 1.0, -0.01);
+  MortarFacetPairDerivatives record;
+  facetPairDerivatives(x, 0.9, {}, still.data(), &then, record);
+  expectSameRecord(record, facetPairDerivatives(x, 0.9, {}, still.data(), &then), "frictional");
+  facetPairDerivatives(x, 0.9, {}, motion.data(), nullptr, record);
+  expectSameRecord(record, facetPairDerivatives(x, 0.9, {}, motion.data()), "frictionless after frictional");
+  facetPairDerivatives(apart, 0.9, {}, nullptr, nullptr, record);
+  const MortarFacetPairDerivatives none = facetPairDerivatives(apart, 0.9);
+  EXPECT_FALSE(none.overlaps);
+  expectSameRecord(record, none, "apart after overlapping");
+  facetPairDerivatives(x, 0.9, {}, nullptr, nullptr, record);
+  expectSameRecord(record, facetPairDerivatives(x, 0.9), "deformable master");
+}
+
 TEST(MortarFacetPair, TheClipVerticesAreDifferentiatedToo) {
   // Moving a master node sideways moves the clip polygon's edge: the weighted gaps owe it the edge term
   // g N_a ∂(clip)/∂x_m, not zero for a flat parallel pair whose gap is uniform (no other dependence on x_m's
