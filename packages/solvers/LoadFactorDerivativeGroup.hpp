@@ -9,7 +9,7 @@
 // LOCA's tangent predictor (LOCA::MultiPredictor::Tangent::compute) asks exactly this of the underlying
 // group before it solves W dx/dλ = −∂f/∂λ, so the predicted state carried the difference's error: the
 // round-off of f divided by ε (1e-12 at λ = 0), and whatever moves f between the two evaluations
-// (docs/theory-load-stepping.md §2). Natural continuation's Newton solves do not ask for ∂f/∂λ
+// (docs/theory-load-stepping.md §6.1). Natural continuation's Newton solves do not ask for ∂f/∂λ
 // (Stepper/Skip Parameter Derivative, true by default), so only the predictor changes.
 //
 // The model's ∂f/∂λ is checked against central differences of f for every λ-dependent term (prescribed
