@@ -17,6 +17,7 @@
 #include "contact/MortarQuadraticFacetPair.hpp"
 #include "contact/MortarSegment.hpp"
 #include "contact/MortarSlipBasis.hpp"
+#include "contact/SlipReversalDamping.hpp"
 
 namespace contessa::contact {
 
@@ -171,7 +172,9 @@ class MortarInterface final : public ContactInterfaceBase {
         master_(spec_),
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
         trialTraction_(spec_.slaveNodes.size(), Traction{}),
-        committedTraction_(spec_.slaveNodes.size(), Traction{}) {
+        committedTraction_(spec_.slaveNodes.size(), Traction{}),
+        iterate_(spec_.slaveNodes.size()),
+        damping_(spec_.slaveNodes.size(), kRepeatedReversal) {
     const int slots = Layout::kFirstMaster;
     const bool quadratic = kDim == 3 && slots >= kQuadraticFacetNodes;
     const int nodes = static_cast<int>(perFacet_);
@@ -213,6 +216,8 @@ class MortarInterface final : public ContactInterfaceBase {
   void restoreSlaves(const StateRecord& table) override;
   void saveCommittedMaster(StateRecord& table) const override;
   void restoreMaster(const StateRecord& table) override;
+  void setConsistentTangents(bool consistent) override { consistentTangents_ = consistent; }
+  int secantTangentNodes() const override { return secantTangentNodes_; }
 
  private:
   struct SegmentEnd {
@@ -305,6 +310,23 @@ class MortarInterface final : public ContactInterfaceBase {
   CoulombReturnMapping<kSlipDim> friction_;
   /// t_Tα per slave node (eq. 22): 2D along t_m, 3D in the node's basis at the last commit (slipBasis).
   std::vector<Traction> trialTraction_, committedTraction_;
+  /// Per slave node, its state at the last Newton iterate as SlipReversalDamping compares it: the status, the
+  /// traction t_Tα and, as the "position", the slip increment Δũ_kα / A_k (both in the node's basis, a
+  /// constant of the increment); at an increment's start the committed status and traction, slip 0.
+  std::vector<ContactHistory<kSlipDim>> iterate_;
+  /// A node's secant starts when its slip reverses at three iterates in a row (the two-state cycle, A B A B),
+  /// not at one or two (also the predictor's overshoot and Newton's correction of it on an oblique slide,
+  /// which a secant would slow from the quadratic rate: verification-contact §9.5, measured).
+  static constexpr int kRepeatedReversal = 3;
+  SlipReversalDamping damping_;  ///< the secant tangent of nodes whose slip direction flips between iterates
+  bool consistentTangents_ = false;  ///< the damping's secants left out of the tangent (setConsistentTangents)
+  int secantTangentNodes_ = 0;       ///< nodes given (or, consistent, due) a secant at the last trial evaluation
+  /// The iterates' comparison starts anew from the committed state (commit, rollback, restart).
+  void restartIterates();
+  /// With `updateTrial` (a Newton iterate): node k's state compared with the last iterate's; a node whose
+  /// slip direction has just reversed takes the secant stiffness along its slip in `tangential`.
+  void dampSlipReversal(std::size_t k, const WeightedGap& w, ContactStatus status,
+                        ReturnMappingResult<kSlipDim>& tangential);
   std::vector<char> keepsSlave_;
   // The positions at the last evaluation and at the last commit (friction: the slip increments' start):
   // slave nodes (kept ones), and the master facets as MasterSurface gives them (a rigid one moved).
@@ -822,6 +844,7 @@ void MortarInterface<F>::evaluate(const NodePosition& position, double loadFacto
   if (frictional()) recordPositions(position, facets);
   ++evaluation_;
   std::vector<double> force(kDim, 0.0);
+  if (updateTrial) secantTangentNodes_ = 0;
   for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
     if (!evaluatesSlave_[k]) continue;
     // Frozen: nodes open at the commit carry no force, except those already touching (zero gap).
@@ -834,8 +857,10 @@ void MortarInterface<F>::evaluate(const NodePosition& position, double loadFacto
     if (closed) {
       w = weightedGap(k, position, facets, tree, true);
       if (frictional()) out = stateOf(k, w, frozenOpen, &tangential);  // the same values, summed in one order
+      if (frictional() && updateTrial) dampSlipReversal(k, w, out.status, tangential);
       assemble(k, w, out.pressure, frictional() ? &tangential : nullptr, sink, force);
     }
+    if (updateTrial && frictional() && !closed) dampSlipReversal(k, w, out.status, tangential);
     if (updateTrial) {
       trialOutput_[k] = out;
       trialTraction_[k] = closed && frictional() ? tangential.traction : Traction{};
@@ -896,6 +921,7 @@ void MortarInterface<F>::commit() {
   if (!trialSlave_.empty()) committedSlave_ = trialSlave_;
   if (!trialMaster_.empty()) committedMaster_ = trialMaster_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+  restartIterates();
 }
 
 template <class F>
@@ -906,6 +932,7 @@ void MortarInterface<F>::rollback() {
   trialSlave_ = committedSlave_;
   trialMaster_ = committedMaster_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
+  restartIterates();
 }
 
 namespace {
@@ -962,6 +989,50 @@ void MortarInterface<F>::restoreSlaves(const StateRecord& table) {
   bool complete = true;
   for (std::size_t j = 0; j < known.size(); ++j) complete = complete && (known[j] || !keepsSlave_[j]);
   if (complete) committedSlave_ = trialSlave_ = positions;
+  restartIterates();
+}
+
+template <class F>
+void MortarInterface<F>::restartIterates() {
+  damping_.reset();
+  for (std::size_t k = 0; k < iterate_.size(); ++k) {
+    iterate_[k] = ContactHistory<kSlipDim>{};
+    iterate_[k].status = committedOutput_[k].status;
+    iterate_[k].tangentialTraction = committedTraction_[k];
+  }
+}
+
+template <class F>
+void MortarInterface<F>::dampSlipReversal(std::size_t k, const WeightedGap& w, ContactStatus status,
+                                          ReturnMappingResult<kSlipDim>& tangential) {
+  // A slipping node has no stiffness along its slip (eq. 27): where nothing else holds the master along it
+  // (a body held by soft springs and the contact), Newton's step carries every node across its stick range
+  // into slip the other way and the next one back, a two-state cycle (docs/verification-contact.md §9.5).
+  // As node-to-segment (SlipReversalDamping), but only once a node reverses at three iterates in a row (one
+  // or two are also an overshoot on an oblique slide and its correction, which the secant would slow from
+  // Newton's quadratic rate to regula falsi's, §9.5): the secant of the traction between the two iterates
+  // along the slip, at most the stick stiffness ε_T (metric 1 in the node's basis), regula falsi on the
+  // node's friction law. The residual is untouched, so is the converged answer; with consistent tangents (the Jacobian
+  // check) the node is counted and its tangent left consistent.
+  ContactHistory<kSlipDim> now;
+  now.segment = 0;
+  now.status = status;
+  if (status != ContactStatus::Open) {
+    now.tangentialTraction = tangential.traction;
+    for (int a = 0; a < kSlipDim; ++a) now.xi[a] = w.slip[a] / spec_.slaveAreas[k];
+  }
+  damping_.observe(k, iterate_[k], now);
+  iterate_[k] = now;
+  const SlipTangent secant = damping_.tangent(k);
+  if (!secant.secant || status != ContactStatus::Slip || !(norm(tangential.trialDirection) > 0.0)) return;
+  ++secantTangentNodes_;
+  if (consistentTangents_) return;
+  const Vector<kSlipDim> s = scaled(1.0 / norm(tangential.trialDirection), tangential.trialDirection);
+  Matrix<kSlipDim, kSlipDim>& dT = tangential.dTraction_dSlipIncrement;
+  const double along = dot(s, multiply(dT, s));
+  const double stiffness = std::min(secant.stiffness, tangential.tangentialPenalty) - along;
+  for (int a = 0; a < kSlipDim; ++a)
+    for (int b = 0; b < kSlipDim; ++b) dT(a, b) += stiffness * s[a] * s[b];
 }
 
 namespace {

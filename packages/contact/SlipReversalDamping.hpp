@@ -22,13 +22,21 @@ namespace contessa::contact {
 /// the secant is the derivative of no residual: the Jacobian check leaves it out, ContactInterfaceBase::
 /// setConsistentTangents.)
 ///
+/// `reversalsToDamp`: the reversals at consecutive iterates before the node's secant starts. Node-to-segment
+/// damps every reversal (1). Mortar (3) damps a node once its slip has reversed at three iterates in a row,
+/// A B A B, the two-state cycle repeating: one or two reversals are also the predictor's overshoot on an
+/// oblique slide and Newton's correction of it (A B A, then on the same way), which a secant would slow from
+/// quadratic to linear (the 3D Coulomb block, docs/verification-contact.md §9.5: damping the second reversal
+/// in a row or within the increment did, 151 -> 155 Newton iterations and six pairs no longer quadratic).
+///
 /// State per increment: reset when the increment is committed or abandoned. The same evaluation repeated at
 /// the same iterate (residual and Jacobian computed in separate calls) changes nothing.
 class SlipReversalDamping {
  public:
   static constexpr int kReleaseIterates = 2;
 
-  explicit SlipReversalDamping(std::size_t numNodes) : nodes_(numNodes) {}
+  explicit SlipReversalDamping(std::size_t numNodes, int reversalsToDamp = 1)
+      : nodes_(numNodes), reversalsToDamp_(reversalsToDamp) {}
 
   /// The slip tangent to use for `node` at the next evaluation.
   SlipTangent tangent(std::size_t node) const {
@@ -50,7 +58,10 @@ class SlipReversalDamping {
     const Vector<NXi> dxi = subtract(current.xi, previous.xi);
     const bool reversed = bothSlip && dot(previous.tangentialTraction, current.tangentialTraction) < 0.0;
     const double dtAlong = dot(dt, dxi);
-    if (reversed && dtAlong > 0.0) {
+    n.run = reversed && dtAlong > 0.0 ? n.run + 1 : 0;
+    if (reversed && dtAlong > 0.0 && n.run < reversalsToDamp_) {
+      ++reversals_;  // a reversal not (yet) a cycle: the consistent tangent
+    } else if (reversed && dtAlong > 0.0) {
       // > 0: the traction follows the motion (one coordinate: Δt/Δξ, written so to keep 2D answers bit-identical)
       n.secant = NXi == 1 ? dt[0] / dxi[0] : dtAlong / dot(dxi, dxi);
       n.streak = 0;
@@ -75,8 +86,10 @@ class SlipReversalDamping {
   struct NodeState {
     double secant = 0.0;  ///< secant stiffness Δt_T1/Δξ of the last reversal; 0 = consistent tangent
     int streak = 0;       ///< iterates slipping the same way since the last reversal
+    int run = 0;          ///< reversals at consecutive iterates up to the last one observed
   };
   std::vector<NodeState> nodes_;
+  int reversalsToDamp_;
   int reversals_ = 0;
 };
 

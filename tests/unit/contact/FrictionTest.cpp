@@ -492,3 +492,32 @@ TEST(SlipReversalDamping, GivesANodeWhoseSlipDirectionReversesTheSecantStiffness
   EXPECT_FALSE(damping.tangent(2).secant);
   EXPECT_EQ(damping.reversals(), 0);
 }
+
+TEST(SlipReversalDamping, FromTwoReversalsInARowWhenAskedTo) {
+  // reversalsToDamp = 2 (mortar): a reversal followed by an iterate that slips on the same way keeps the
+  // consistent tangent (an overshoot corrected), two reversals at consecutive iterates (the two-state cycle)
+  // take the secant of the second; a reset (commit, rollback) starts anew.
+  auto state = [](double xi, double traction) {
+    cc::ContactHistory<1> h;
+    h.segment = 0;
+    h.status = ContactStatus::Slip;
+    h.xi = {xi};
+    h.tangentialTraction = {traction};
+    return h;
+  };
+  cc::SlipReversalDamping damping(1, 2);
+  const auto forward = state(0.10, 0.3), backward = state(0.04, -0.3), further = state(0.03, -0.3),
+             again = state(0.07, 0.3), back = state(0.05, -0.3);
+  EXPECT_TRUE(damping.observe(0, forward, backward));
+  EXPECT_FALSE(damping.tangent(0).secant);
+  EXPECT_FALSE(damping.observe(0, backward, further));  // the same way: the overshoot corrected
+  EXPECT_TRUE(damping.observe(0, further, again));       // a reversal again, but not in a row
+  EXPECT_FALSE(damping.tangent(0).secant);
+  EXPECT_TRUE(damping.observe(0, again, back));           // in a row: the cycle
+  ASSERT_TRUE(damping.tangent(0).secant);
+  EXPECT_NEAR(damping.tangent(0).stiffness, 0.6 / 0.02, 1e-12);  // (0.3 − (−0.3)) / (0.07 − 0.05)
+  EXPECT_EQ(damping.reversals(), 3);
+  damping.reset();
+  EXPECT_TRUE(damping.observe(0, forward, backward));
+  EXPECT_FALSE(damping.tangent(0).secant);
+}
