@@ -323,8 +323,8 @@ void ContactMechanicsModel::evalModelImpl(const MEB::InArgs<double>& inArgs, con
       for (auto& v : f->getDataNonConst(0)) v = std::numeric_limits<double>::quiet_NaN();
     // The out-of-balance force: f without its prescribed rows (x − ū, a displacement). It is only a
     // measure of convergence once those rows hold (to 1e-10 of the largest |x|: round-off after one Newton
-    // step or a tangent predictor step, whose ∂f/∂λ is this model's DfDp (LoadFactorDerivativeGroup; LOCA
-    // 13.2's own finite difference in λ landed within 1.3e-10 of it on a linear problem)); before (e.g. a solve from rest under a prescribed displacement, where f_int
+    // step, and LOCA 13.2's tangent predictor, whose dx/dλ is a finite difference in λ, lands within 1.3e-10
+    // of it on a linear problem); before (e.g. a solve from rest under a prescribed displacement, where f_int
     // and f_free are still 0 and the rows are off by all of ū) it is infinite, so that no force-relative
     // test passes there.
     std::vector<double> free(f->getLocalLength());
