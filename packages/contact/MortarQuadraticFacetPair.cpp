@@ -479,6 +479,13 @@ std::array<double, kMaxMortarFaceMeasures> mortarFacetPieceMeasures(const Mortar
   return out;
 }
 
+MortarFacePiece mortarFacePiece(int nodes, int i) {
+  if (nodes == 3) return {3, {0, 1, 2, -1}};
+  if (nodes == 4) return {4, {0, 1, 2, 3}};
+  const FlatPiece& p = nodes == 6 ? kTri6Pieces[i] : nodes == 8 ? kQuad8Pieces[i] : kQuad9Pieces[i];
+  return {p.count, {p.node[0], p.node[1], p.node[2], p.node[3]}};
+}
+
 std::array<double, kMaxMortarFaceNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes) {
   // The kernel's integral at the reference state of a face fully overlapped: each flat piece with the
   // same rule, in its own local coordinates.

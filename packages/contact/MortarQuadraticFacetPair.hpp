@@ -140,6 +140,14 @@ double mortarFacetReferenceArea(const MortarFaceNodes& x, int nodes);
 /// j_0 + j_1 l_1 + j_2 l_2 on [−1, 1]² as (j_0, j_1, j_2) (affine in l for a bilinear piece). A 3- or 4-node
 /// face's area first.
 std::array<double, kMaxMortarFaceMeasures> mortarFacetPieceMeasures(const MortarFaceNodes& x, int nodes);
+/// A face's flat piece: its node count (3 or 4) and the face's local nodes, counter-clockwise about the
+/// face's normal (a Tri3 or Quad4 is its own one piece; the quadratic faces' pieces as described above).
+struct MortarFacePiece {
+  int count = 0;
+  std::array<int, 4> node{};
+};
+/// Piece i (0 ≤ i < mortarFacePieces(nodes)) of a face of `nodes` nodes, in the order of its measures.
+MortarFacePiece mortarFacePiece(int nodes, int i);
 /// Its nodes' mortar areas ∫ Φ_a dA_0 over the whole face (the A_a of p_a = ε_N ⟨−g̃_a⟩ / A_a), integrated
 /// as the kernel does on the flat pieces.
 std::array<double, kMaxMortarFaceNodes> mortarFacetNodeAreas(const MortarFaceNodes& x, int nodes);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "contact/ContactSurface.hpp"
+#include "contact/MortarPressureRecovery.hpp"
 #include "model/ContactAssembly.hpp"
 #include "model/DofLayout.hpp"
 #include "model/SolidAssembler.hpp"
@@ -66,6 +67,21 @@ std::vector<std::string> PostProcessing::contactFieldNames() {
 
 namespace {
 
+// A mortar interface's nodal pressures as it reports them: the traction field's mean over each node's
+// support, eq. (M6′) (contact/MortarPressureRecovery.hpp), from every slave node's p_k. Forces are not
+// touched. Collective: a node's support may be evaluated on other ranks (each node on exactly one).
+void reportMortarPressures(const contact::ContactInterfaceBase& interface, const Comm& comm,
+                           std::vector<contact::SlaveNodeState>& states) {
+  const auto& evaluates = interface.evaluatesSlave();
+  std::vector<double> local(states.size(), 0.0), global(states.size(), 0.0);
+  for (std::size_t k = 0; k < states.size(); ++k)
+    if (evaluates[k]) local[k] = states[k].pressure;
+  if (!local.empty()) Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  const std::vector<double> reported = contact::mortarPressureRecovery(interface.spec()).apply(global);
+  for (std::size_t k = 0; k < states.size(); ++k)
+    if (evaluates[k]) states[k].pressure = reported[k];
+}
+
 // The committed output of an interface's slave nodes, those on the axis of revolved 3-node edges recovered
 // from their edge (contact::AxisNode: ∫ H 2πr ds weighs them by 0, they carry no force and their own ε_N g_N
 // or multiplier is no pressure): pressure and gap a + b r² through the edge's mid node and far corner
@@ -73,6 +89,7 @@ namespace {
 // the edge's nodes may be evaluated on other ranks.
 std::vector<contact::SlaveNodeState> outputStates(const contact::ContactInterfaceBase& interface, const Comm& comm) {
   std::vector<contact::SlaveNodeState> states = interface.committedStates();
+  if (interface.spec().mortar) reportMortarPressures(interface, comm, states);
   const auto& axis = interface.spec().slaveAxisNodes;
   if (axis.empty()) return states;
   // Per axis node, for its mid node then its far corner: pressure, gap, status, from the rank evaluating each.
