@@ -108,97 +108,102 @@ def recovered_traction(ds, side_set, nodal_pressure, displaced):
     return traction, forces.sum()
 
 
-parser = cr.hertz_parser(R=50.0, E=20000.0, p0_rtol=0.03, a_rtol=0.03)
-parser.add_argument("--interface", default="plane")
-parser.add_argument("--surface", default="surface")
-parser.add_argument("--reaction", default="equator")
-parser.add_argument("--pressure", choices=["nodal", "recovered"], default="nodal")
-parser.add_argument("--p0-known-excess", type=float, nargs=2, metavar=("LOW", "HIGH"),
-                    help="instead of |p0/p0_H - 1| <= --p0-rtol: a known deviation, LOW < p0/p0_H - 1 <= HIGH "
-                         "(the Tet10 deck's TRI6 faces miss the 3 %%: the test records by how much, and fails "
-                         "when that changes either way)")
-args = parser.parse_args()
+def main():
+    parser = cr.hertz_parser(R=50.0, E=20000.0, p0_rtol=0.03, a_rtol=0.03)
+    parser.add_argument("--interface", default="plane")
+    parser.add_argument("--surface", default="surface")
+    parser.add_argument("--reaction", default="equator")
+    parser.add_argument("--pressure", choices=["nodal", "recovered"], default="nodal")
+    parser.add_argument("--p0-known-excess", type=float, nargs=2, metavar=("LOW", "HIGH"),
+                        help="instead of |p0/p0_H - 1| <= --p0-rtol: a known deviation, LOW < p0/p0_H - 1 <= HIGH "
+                             "(the Tet10 deck's TRI6 faces miss the 3 %%: the test records by how much, and fails "
+                             "when that changes either way)")
+    args = parser.parse_args()
 
-res = cr.Results(args.exo)
-x, y, z = res.x, res.y, res.z
-pressure = res.nodal("contact_pressure")
-surface = res.node_set(args.surface)
-last = cr.read_history(args.history)[-1]
-force = last[f"contact_force_{args.interface}_z"]
-in_contact = pressure > 0  # the nodes in contact (a node's force is its weight times its pressure)
-recovery_check = None
-if args.pressure == "recovered":
-    displaced = np.stack([coordinate + res.nodal("displ_" + c)
-                          for c, coordinate in zip("xyz", (x, y, z))], axis=1)
-    corner_p = pressure[np.unique(np.concatenate([f[:3] for f in slave_faces(res.ds, args.surface)]))]
-    mid_p = pressure[np.unique(np.concatenate([f[3:] for f in slave_faces(res.ds, args.surface)]))]
-    print(f"info: nodal contact_pressure: corners up to {corner_p.max():.1f}, mid-edge nodes up to {mid_p.max():.1f} MPa")
-    pressure, force_sum = recovered_traction(res.ds, args.surface, pressure, displaced)
-    recovery_check = ("nodal forces", f"sum of A_k p_k = {force_sum:.6f}, interface force {force:.6f}",
-                      abs(abs(force_sum) - abs(force)) <= 1e-6 * abs(force), "<= 1e-6 x force")
-P = 4.0 * abs(force)
-a_h, p0_h = cr.hertz_sphere(P, args.R, args.E, args.nu)
+    res = cr.Results(args.exo)
+    x, y, z = res.x, res.y, res.z
+    pressure = res.nodal("contact_pressure")
+    surface = res.node_set(args.surface)
+    last = cr.read_history(args.history)[-1]
+    force = last[f"contact_force_{args.interface}_z"]
+    in_contact = pressure > 0  # the nodes in contact (a node's force is its weight times its pressure)
+    recovery_check = None
+    if args.pressure == "recovered":
+        displaced = np.stack([coordinate + res.nodal("displ_" + c)
+                              for c, coordinate in zip("xyz", (x, y, z))], axis=1)
+        corner_p = pressure[np.unique(np.concatenate([f[:3] for f in slave_faces(res.ds, args.surface)]))]
+        mid_p = pressure[np.unique(np.concatenate([f[3:] for f in slave_faces(res.ds, args.surface)]))]
+        print(f"info: nodal contact_pressure: corners up to {corner_p.max():.1f}, mid-edge nodes up to {mid_p.max():.1f} MPa")
+        pressure, force_sum = recovered_traction(res.ds, args.surface, pressure, displaced)
+        recovery_check = ("nodal forces", f"sum of A_k p_k = {force_sum:.6f}, interface force {force:.6f}",
+                          abs(abs(force_sum) - abs(force)) <= 1e-6 * abs(force), "<= 1e-6 x force")
+    P = 4.0 * abs(force)
+    a_h, p0_h = cr.hertz_sphere(P, args.R, args.E, args.nu)
 
-r = np.hypot(x[surface], y[surface])
-p = pressure[surface]
-order = np.argsort(r)
-r, p = r[order], p[order]
-touching = in_contact[surface][order]
-pole = int(np.argmin(r))
-p0 = p[pole]
-fit = touching & (r <= 0.8 * a_h)
-# p^2 = p0^2 - (p0^2 / a^2) r^2: a straight line in r^2.
-slope, intercept = np.polyfit(r[fit] ** 2, p[fit] ** 2, 1)
-a_fit = math.sqrt(-intercept / slope) if slope < 0 < intercept else float("nan")
-r_last = r[touching].max()
-beyond = r[(~touching) & (r > r_last)]
-r_open = beyond.min() if beyond.size else float("nan")
-# The element size at the last contact node: its longest corner-to-corner edge on the surface through it
-# (a mid-edge node of a quadratic cell: the edge it halves).
-last_node = surface[order][touching][np.argmax(r[touching])]
-on_surface = set(surface.tolist())
-HEX_EDGES = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
-TET_EDGES = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
-# The corner-to-corner edges of each solid cell type (nodes per cell); a quadratic cell's mid-edge nodes
-# halve its edges, the element size is the corners' distance. The rigid plane's SHELL4 block is skipped.
-CELL_EDGES = {8: HEX_EDGES, 20: HEX_EDGES, 27: HEX_EDGES, 4: TET_EDGES, 10: TET_EDGES}
-h_edge = 0.0
-for key in res.ds.variables:
-    if not key.startswith("connect") or res.ds.variables[key].getncattr("elem_type").upper().startswith("SHELL"):
-        continue
-    cells = np.asarray(res.ds.variables[key][:], dtype=int) - 1
-    if cells.ndim != 2 or cells.shape[1] not in CELL_EDGES:
-        continue
-    for cell in cells[np.any(cells == last_node, axis=1)]:
-        for e, (i, j) in enumerate(CELL_EDGES[cells.shape[1]]):
-            n1, n2 = cell[i], cell[j]
-            on_edge = last_node in (n1, n2) or (cells.shape[1] == 10 and cell[4 + e] == last_node)
-            if on_edge and n1 in on_surface and n2 in on_surface:
-                h_edge = max(h_edge, math.dist((x[n1], y[n1], z[n1]), (x[n2], y[n2], z[n2])))
-reaction = last.get(f"reaction_{args.reaction}_z", float("nan"))
+    r = np.hypot(x[surface], y[surface])
+    p = pressure[surface]
+    order = np.argsort(r)
+    r, p = r[order], p[order]
+    touching = in_contact[surface][order]
+    pole = int(np.argmin(r))
+    p0 = p[pole]
+    fit = touching & (r <= 0.8 * a_h)
+    # p^2 = p0^2 - (p0^2 / a^2) r^2: a straight line in r^2.
+    slope, intercept = np.polyfit(r[fit] ** 2, p[fit] ** 2, 1)
+    a_fit = math.sqrt(-intercept / slope) if slope < 0 < intercept else float("nan")
+    r_last = r[touching].max()
+    beyond = r[(~touching) & (r > r_last)]
+    r_open = beyond.min() if beyond.size else float("nan")
+    # The element size at the last contact node: its longest corner-to-corner edge on the surface through it
+    # (a mid-edge node of a quadratic cell: the edge it halves).
+    last_node = surface[order][touching][np.argmax(r[touching])]
+    on_surface = set(surface.tolist())
+    HEX_EDGES = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+    TET_EDGES = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
+    # The corner-to-corner edges of each solid cell type (nodes per cell); a quadratic cell's mid-edge nodes
+    # halve its edges, the element size is the corners' distance. The rigid plane's SHELL4 block is skipped.
+    CELL_EDGES = {8: HEX_EDGES, 20: HEX_EDGES, 27: HEX_EDGES, 4: TET_EDGES, 10: TET_EDGES}
+    h_edge = 0.0
+    for key in res.ds.variables:
+        if not key.startswith("connect") or res.ds.variables[key].getncattr("elem_type").upper().startswith("SHELL"):
+            continue
+        cells = np.asarray(res.ds.variables[key][:], dtype=int) - 1
+        if cells.ndim != 2 or cells.shape[1] not in CELL_EDGES:
+            continue
+        for cell in cells[np.any(cells == last_node, axis=1)]:
+            for e, (i, j) in enumerate(CELL_EDGES[cells.shape[1]]):
+                n1, n2 = cell[i], cell[j]
+                on_edge = last_node in (n1, n2) or (cells.shape[1] == 10 and cell[4 + e] == last_node)
+                if on_edge and n1 in on_surface and n2 in on_surface:
+                    h_edge = max(h_edge, math.dist((x[n1], y[n1], z[n1]), (x[n2], y[n2], z[n2])))
+    reaction = last.get(f"reaction_{args.reaction}_z", float("nan"))
 
-print(f"P = {P:.6f} N (4 x contact_force_{args.interface}_z), a_H = {a_h:.5f} mm, p0_H = {p0_h:.3f} MPa; "
-      f"{int(touching.sum())} surface nodes in contact")
-print(f"info: contact radius from the fit of p^2: a_fit = {a_fit:.5f} mm, {a_fit / a_h - 1:+.2%} of a_H; "
-      f"its peak sqrt(intercept) = {math.sqrt(max(intercept, 0.0)):.3f} MPa, {math.sqrt(max(intercept, 0.0)) / p0_h - 1:+.2%} of p0_H")
-print(f"info: SSNV104 (displacement-driven): a = 10 mm -> {a_fit / 10.0 - 1:+.2%}, p0 = 2798.3 MPa -> {p0 / 2798.3 - 1:+.2%}")
-p0_error = p0 / p0_h - 1
-if args.p0_known_excess:
-    low, high = args.p0_known_excess
-    p0_check = ("peak pressure (pole node), a known excess", f"p0 = {p0:.3f}, error {p0_error:+.2e}",
-                low < p0_error <= high, f"in ({low:g}, {high:g}]")
-else:
-    p0_check = ("peak pressure (pole node)", f"p0 = {p0:.3f}, error {p0_error:+.2e}", abs(p0_error) <= args.p0_rtol,
-                f"<= {args.p0_rtol:g}")
-checks = [
-    p0_check,
-    ("contact edge", f"last contact node r = {r_last:.4f} (element {h_edge:.3f} mm), first open {r_open:.4f}",
-     abs(r_last - a_h) <= h_edge, "within one element of a_H"),
-    ("contact radius", f"a_fit = {a_fit:.5f}, error {a_fit / a_h - 1:+.2e}", abs(a_fit / a_h - 1) <= args.a_rtol,
-     f"<= {args.a_rtol:g}"),
-    ("equilibrium", f"reaction_{args.reaction}_z + contact force = {reaction + force:.2e}",
-     abs(reaction + force) <= 1e-6 * abs(force), "<= 1e-6 x force"),
-]
-if recovery_check:
-    checks.append(recovery_check)
-cr.exit_with_checks(checks)
+    print(f"P = {P:.6f} N (4 x contact_force_{args.interface}_z), a_H = {a_h:.5f} mm, p0_H = {p0_h:.3f} MPa; "
+          f"{int(touching.sum())} surface nodes in contact")
+    print(f"info: contact radius from the fit of p^2: a_fit = {a_fit:.5f} mm, {a_fit / a_h - 1:+.2%} of a_H; "
+          f"its peak sqrt(intercept) = {math.sqrt(max(intercept, 0.0)):.3f} MPa, {math.sqrt(max(intercept, 0.0)) / p0_h - 1:+.2%} of p0_H")
+    print(f"info: SSNV104 (displacement-driven): a = 10 mm -> {a_fit / 10.0 - 1:+.2%}, p0 = 2798.3 MPa -> {p0 / 2798.3 - 1:+.2%}")
+    p0_error = p0 / p0_h - 1
+    if args.p0_known_excess:
+        low, high = args.p0_known_excess
+        p0_check = ("peak pressure (pole node), a known excess", f"p0 = {p0:.3f}, error {p0_error:+.2e}",
+                    low < p0_error <= high, f"in ({low:g}, {high:g}]")
+    else:
+        p0_check = ("peak pressure (pole node)", f"p0 = {p0:.3f}, error {p0_error:+.2e}", abs(p0_error) <= args.p0_rtol,
+                    f"<= {args.p0_rtol:g}")
+    checks = [
+        p0_check,
+        ("contact edge", f"last contact node r = {r_last:.4f} (element {h_edge:.3f} mm), first open {r_open:.4f}",
+         abs(r_last - a_h) <= h_edge, "within one element of a_H"),
+        ("contact radius", f"a_fit = {a_fit:.5f}, error {a_fit / a_h - 1:+.2e}", abs(a_fit / a_h - 1) <= args.a_rtol,
+         f"<= {args.a_rtol:g}"),
+        ("equilibrium", f"reaction_{args.reaction}_z + contact force = {reaction + force:.2e}",
+         abs(reaction + force) <= 1e-6 * abs(force), "<= 1e-6 x force"),
+    ]
+    if recovery_check:
+        checks.append(recovery_check)
+    cr.exit_with_checks(checks)
+
+
+if __name__ == "__main__":
+    main()
