@@ -15,7 +15,8 @@ Runs, each with Discretization = Node To Segment and = Mortar:
 Prints each slave pressure's deviation from the exact one (patch tests) or from Hertz (max and RMS over
 r <= 0.8 a, and for the cylinder the largest second difference of the error there: the roughness), and
 for the cylinder also mortar's weighted-gap pressures p_k = eps_N <-g~_k> / A_k, recovered from the output
-p~ = D^-1 M p (eq. M6', contact/MortarPressureRecovery.hpp) as p = M^-1 D p~; writes
+p~ = D^-1 M p at the closed nodes (eq. M6', contact/MortarPressureRecovery.hpp; 0 at open ones, where
+p_k = 0 too) as p_C = M_CC^-1 D_C p~_C; writes
 docs/figures/mortar_pressure.png (docs/verification-contact.md §9.6).
 
     /usr/bin/python3 docs/scripts/mortar_pressure_study.py [--contessa build/bin/contessa] [--work DIR]
@@ -136,12 +137,15 @@ def main():
         a, p0 = r["a_hertz"], r["p0_hertz"]
         x, p = r["x"], r["p"]
         profiles = [(d, p)]
-        if d == "Mortar":  # the weighted-gap pressures behind the reported ones: p = M^-1 D p~
-            res = cr.Results(os.path.join(args.work, "hertz_Mortar", "hertz_cylinder.exo"))
+        if d == "Mortar":  # the weighted-gap pressures behind the reported ones: M_CC p_C = D_C p~_C on the
+            res = cr.Results(os.path.join(args.work, "hertz_Mortar", "hertz_cylinder.exo"))  # closed set C
             nodes = res.node_set("outer")
             nodes = nodes[np.argsort(np.abs(res.x[nodes]))]
             m = line_mass(res, nodes)
-            coefficients = np.linalg.solve(m, m.sum(axis=1) * res.nodal("contact_pressure")[nodes])
+            reported = res.nodal("contact_pressure")[nodes]
+            closed = reported > 0  # an open node reports 0 and has p_k = 0
+            coefficients = np.zeros_like(reported)
+            coefficients[closed] = np.linalg.solve(m[np.ix_(closed, closed)], m.sum(axis=1)[closed] * reported[closed])
             profiles = [("Mortar, weighted-gap p_k", coefficients), ("Mortar (reported, eq. M6')", p)]
         for name, q in profiles:
             worst, rms, rough = profile_measures(x, q, r["p_hertz"], a, p0)

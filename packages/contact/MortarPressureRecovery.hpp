@@ -17,8 +17,9 @@
 // the nodal force per tributary area, which is what node-to-segment reports (p_a = f_a / A_a): the ringing
 // mode is annihilated away from the edge, a uniform pressure is kept exactly (every patch test), and
 // Σ_a A_a p̄_a = Σ_k A_k p_k is the interface's force. The price: a smooth field is smeared by
-// h² p″ / 6 (the lumped mass's), and the first open node beside a closed one shows the part of its
-// neighbour's traction that acts on it (it carries that force). Mass matrices from the reference measures
+// h² p″ / 6 (the lumped mass's). The model reports it at closed nodes only (PostProcessing: an open node
+// shows 0, although the first one beside a closed node carries part of its traction, so that a positive
+// pressure means a closed node as with node-to-segment). Mass matrices from the reference measures
 // the interface keeps: exact on segments, triangles and a quadratic face's pieces; a Quad4 face as the
 // parallelogram of its area (its row sums, not the exact ∫ Φ_a, normalise: uniform fields stay exact).
 #include <cstddef>

@@ -67,9 +67,11 @@ std::vector<std::string> PostProcessing::contactFieldNames() {
 
 namespace {
 
-// A mortar interface's nodal pressures as it reports them: the traction field's mean over each node's
-// support, eq. (M6′) (contact/MortarPressureRecovery.hpp), from every slave node's p_k. Forces are not
-// touched. Collective: a node's support may be evaluated on other ranks (each node on exactly one).
+// A mortar interface's nodal pressures as it reports them: at a closed node the traction field's mean
+// over its support, eq. (M6′) (contact/MortarPressureRecovery.hpp), from every slave node's p_k; an open
+// node keeps 0, so that contact_pressure > 0 exactly where contact_status is closed (the first open node
+// beside a closed one carries part of its neighbour's traction, which this output leaves out). Forces are
+// not touched. Collective: a node's support may be evaluated on other ranks (each node on exactly one).
 void reportMortarPressures(const contact::ContactInterfaceBase& interface, const Comm& comm,
                            std::vector<contact::SlaveNodeState>& states) {
   const auto& evaluates = interface.evaluatesSlave();
@@ -79,7 +81,7 @@ void reportMortarPressures(const contact::ContactInterfaceBase& interface, const
   if (!local.empty()) Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
   const std::vector<double> reported = contact::mortarPressureRecovery(interface.spec()).apply(global);
   for (std::size_t k = 0; k < states.size(); ++k)
-    if (evaluates[k]) states[k].pressure = reported[k];
+    if (evaluates[k] && states[k].status != contact::ContactStatus::Open) states[k].pressure = reported[k];
 }
 
 // The committed output of an interface's slave nodes, those on the axis of revolved 3-node edges recovered
