@@ -170,5 +170,92 @@ TEST(MortarInterfaceLine3, AUniformPenetrationGivesTheSamePressureAtCornersAndMi
   for (int node = 5; node < 12; ++node) EXPECT_NEAR(a.residual[2 * node], 0.0, 1e-15 * p) << node;
 }
 
+// The Line3 interface tilted and curved (mid-edge nodes off their chords), every slave node closed; a
+// deformable Line3 master or a rigid Line2 one moving by (0.1, −0.02) per unit load factor. Penalties 10³.
+std::unique_ptr<ContactInterfaceBase> unevenInterface(bool rigidMaster, double friction) {
+  ContactInterfaceSpec spec = line3Spec(friction);
+  spec.law.normalPenalty = 1e3;
+  if (friction > 0) spec.law.tangentialPenalty = 1e3;
+  if (rigidMaster) {
+    spec.masterFacets.clear();
+    spec.masterFacetNodes = 0;
+    spec.rigidMaster = true;
+    spec.rigidSurface.points = {-0.2, -0.03, 0.6, -0.036, 1.2, -0.027};
+    spec.rigidSurface.facets = {0, 1, 1, 2};
+    spec.rigidSurface.motion = {0.1, -0.02};
+  }
+  return makeMortarInterface(spec, std::vector<char>(5, 1));
+}
+std::vector<double> unevenLine3(bool rigidMaster) {
+  std::vector<double> x = {1.02, 0.01, 0.49, -0.005, 0.76, 0.012, 0.01, 0.0, 0.26, -0.008};
+  if (!rigidMaster)
+    x.insert(x.end(), {-0.1, -0.031, 0.34, -0.026, 0.65, -0.034, 1.1, -0.03, 0.12, -0.027, 0.5, -0.032, 0.88, -0.029});
+  return x;
+}
+// The uneven state with the slave slid along x by `slide` (more at larger x) and the master back a little.
+std::vector<double> slidLine3(bool rigidMaster, double slide) {
+  auto x = unevenLine3(rigidMaster);
+  for (std::size_t node = 0; node < x.size() / 2; ++node) x[2 * node] += node < 5 ? slide * (1.0 + 0.1 * node) : -0.2 * slide;
+  return x;
+}
+
+// The trial evaluation at x and λ after committing the uneven state at λ = 0.3.
+testing::Assembled trialAt(bool rigidMaster, double friction, const std::vector<double>& x, double lambda) {
+  auto interface = unevenInterface(rigidMaster, friction);
+  testing::assemble<2>(*interface, unevenLine3(rigidMaster), 0.3);
+  return testing::assemble<2>(*interface, x, lambda);
+}
+
+void expectTangentIsTheCentralDifference(bool rigidMaster, double friction, double slide, ContactStatus expected) {
+  const auto x = slidLine3(rigidMaster, slide);
+  const double lambda = 0.3 + 0.5 * slide;
+  const testing::Assembled a = trialAt(rigidMaster, friction, x, lambda);
+  for (const auto& st : a.states) EXPECT_EQ(st.status, expected);
+  double scale = 0;
+  const double error = testing::tangentCentralDifferenceError(
+      a.tangent, x, [&](const std::vector<double>& y) { return trialAt(rigidMaster, friction, y, lambda).residual; }, &scale);
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+  if (friction > 0) {
+    double tangential = 0;
+    for (int node = 0; node < 5; ++node) tangential = std::max(tangential, std::abs(a.residual[2 * node]));
+    EXPECT_GT(tangential, 1e-3) << "a tangential force";
+  }
+  if (!rigidMaster) return;
+  double dScale = 0;
+  const double dError = testing::loadDerivativeCentralDifferenceError(
+      a.dLambda, lambda, [&](double mu) { return trialAt(true, friction, x, mu).residual; }, &dScale);
+  EXPECT_GT(dScale, 1.0);
+  EXPECT_LT(dError, 1e-6 * dScale);
+}
+
+TEST(MortarInterfaceLine3, TangentIsTheCentralDifferenceOfTheResidual) {
+  expectTangentIsTheCentralDifference(false, 0.0, 0.0, ContactStatus::Slip);  // frictionless: reported as slip
+  expectTangentIsTheCentralDifference(true, 0.0, 0.0, ContactStatus::Slip);
+}
+
+TEST(MortarInterfaceLine3, FrictionalTangentInStickAndSlipIsTheCentralDifferenceOfTheResidual) {
+  for (const bool rigid : {false, true}) {
+    expectTangentIsTheCentralDifference(rigid, 0.3, 1e-4, ContactStatus::Stick);
+    expectTangentIsTheCentralDifference(rigid, 0.3, 0.05, ContactStatus::Slip);
+  }
+}
+
+TEST(MortarInterfaceLine3, ASlidingPatchCarriesCoulombsForce) {
+  // Uniform penetration d, the slave slid by 0.05 along +x: every node slips, the tangential force on the
+  // slave is −μ times the normal force.
+  const double d = 1e-3, mu = 0.3;
+  auto interface = makeMortarInterface(line3Spec(mu), std::vector<char>(5, 1));
+  auto x = line3Coordinates(d, 1.0);
+  for (int node = 5; node < 12; ++node) x[2 * node] = 1.4 * x[2 * node] - 0.2;  // the master over [−0.2, 1.2]
+  testing::assemble<2>(*interface, x, 0.0);
+  for (int node = 0; node < 5; ++node) x[2 * node] += 0.05;
+  const auto a = testing::assemble<2>(*interface, x, 0.0);
+  for (const auto& st : a.states) EXPECT_EQ(st.status, ContactStatus::Slip);
+  const auto& force = interface->committedSlaveForce();
+  EXPECT_NEAR(force[1], -kPenalty * d, 1e-9 * kPenalty * d);  // p over the slave's length 1
+  EXPECT_NEAR(force[0], -mu * kPenalty * d, 1e-9 * kPenalty * d);
+}
+
 }  // namespace
 }  // namespace contessa::contact
