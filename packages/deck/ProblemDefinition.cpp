@@ -206,7 +206,7 @@ const ParameterTable<InterfaceParameters>& interfaceTable() {
           .enumChoice("Discretization", &S::discretization, S::Discretization::NodeToSegment,
                       {"Node To Segment", "Mortar"},
                       "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: "
-                      "weighted gaps over the slave facets against every master facet they overlap (2D with Coulomb "
+                      "weighted gaps over the slave facets against every master facet they overlap (2D on 2- and 3-node sides with Coulomb "
                       "friction; 3D on Tri3/Quad4 faces with Coulomb friction, on Tri6/Quad8/Quad9 faces frictionless; penalty, single pass: passes the non-matching "
                       "contact patch test)")
           .enumChoice("Master Smoothing", &S::smoothing, S::Smoothing::None, {"None", "Hermite"},
