@@ -172,7 +172,8 @@ struct NodeWeightedGap {
 
 }  // namespace
 
-/// The mortar interface over master facets of type MasterFacetType (2D: Line2; 3D: Tri3, Quad4): see
+/// The mortar interface over master facets of type MasterFacetType (2D: Line2, and QuadraticPairs of Line2 or
+/// Line3 with a 3-node side; 3D: Tri3, Quad4, and QuadraticPairs of the faces with a quadratic one): see
 /// MortarInterface.hpp.
 template <class MasterFacetType>
 class MortarInterface final : public ContactInterfaceBase {

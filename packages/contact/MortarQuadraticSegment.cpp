@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "contact/MortarClipping.hpp"  // PlanePoint
 #include "contact/MortarDual.hpp"
 #include "contact/MortarSegment.hpp"  // kMortarMinFacing
 
@@ -11,22 +12,10 @@ namespace contessa::contact {
 
 namespace {
 
+// The plane points of the 3D segmentation (MortarClipping.hpp), here the 2D coordinates themselves.
 template <class T>
-struct Vec2 {
-  T x, y;
-};
-template <class T>
-Vec2<T> operator-(const Vec2<T>& a, const Vec2<T>& b) {
-  return {a.x - b.x, a.y - b.y};
-}
-template <class T>
-T dot(const Vec2<T>& a, const Vec2<T>& b) {
+T dot(const PlanePoint<T>& a, const PlanePoint<T>& b) {
   return a.x * b.x + a.y * b.y;
-}
-/// The z component of a × b.
-template <class T>
-T cross(const Vec2<T>& a, const Vec2<T>& b) {
-  return a.x * b.y - a.y * b.x;
 }
 
 /// A segment's node a's parent coordinate (Line2Facet, Line3Facet: corners −1, +1, the mid-edge node 0).
@@ -39,7 +28,7 @@ constexpr int kLine2Piece[2] = {0, 1};
 template <class T>
 struct SegmentChart {
   int count = 3;
-  std::array<Vec2<T>, kQuadraticSegmentNodes> node{};
+  std::array<PlanePoint<T>, kQuadraticSegmentNodes> node{};
 
   int pieces() const { return mortarSegmentPieces(count); }
   const int* pieceNodes(int i) const { return count == 3 ? kLine3Pieces[i] : kLine2Piece; }
@@ -60,8 +49,8 @@ struct SegmentChart {
     if (count == 2) return {S(-0.5), S(0.5), S(0.0)};
     return {xi - 0.5, xi + 0.5, -2.0 * xi};
   }
-  Vec2<T> at(const std::array<T, kQuadraticSegmentNodes>& n) const {
-    Vec2<T> p{T(0.0), T(0.0)};
+  PlanePoint<T> at(const std::array<T, kQuadraticSegmentNodes>& n) const {
+    PlanePoint<T> p{T(0.0), T(0.0)};
     for (int a = 0; a < count; ++a) p = {p.x + n[a] * node[a].x, p.y + n[a] * node[a].y};
     return p;
   }
@@ -69,7 +58,7 @@ struct SegmentChart {
     double h = 0;
     for (int a = 0; a < count; ++a)
       for (int b = a + 1; b < count; ++b) {
-        const Vec2<T> d = node[b] - node[a];
+        const PlanePoint<T> d = node[b] - node[a];
         h = std::max(h, std::sqrt(valueOf(dot(d, d))));
       }
     return h;
@@ -86,9 +75,9 @@ SegmentChart<T> chartOf(const QuadraticSegmentPairCoordinates<T>& c, int firstSl
 
 /// A committed point Σ N_a x̄_a of the side starting at slot firstSlot.
 template <class T>
-Vec2<T> committedPoint(const QuadraticSegmentPairCommitted& n, int firstSlot, int count,
+PlanePoint<T> committedPoint(const QuadraticSegmentPairCommitted& n, int firstSlot, int count,
                        const std::array<T, kQuadraticSegmentNodes>& shape) {
-  Vec2<T> p{T(0.0), T(0.0)};
+  PlanePoint<T> p{T(0.0), T(0.0)};
   for (int a = 0; a < count; ++a) p = {p.x + shape[a] * n[2 * (firstSlot + a)], p.y + shape[a] * n[2 * (firstSlot + a) + 1]};
   return p;
 }
@@ -115,10 +104,10 @@ bool addPiecePair(const SegmentChart<T>& slave, int s, const SegmentChart<T>& ma
                   double size, const QuadraticSegmentPairCommitted* committed, MortarQuadraticSegmentGaps<T>& out) {
   const int* sp = slave.pieceNodes(s);
   const int* mp = master.pieceNodes(m);
-  const Vec2<T> p = slave.node[sp[0]], a = slave.node[sp[1]] - p;
-  const Vec2<T> m0 = master.node[mp[0]], b = master.node[mp[1]] - m0;
+  const PlanePoint<T> p = slave.node[sp[0]], a = slave.node[sp[1]] - p;
+  const PlanePoint<T> m0 = master.node[mp[0]], b = master.node[mp[1]] - m0;
   // The chords' outward normals (the right of their directions) must face each other.
-  const Vec2<T> slaveNormal{a.y, -a.x}, masterChordNormal{b.y, -b.x};
+  const PlanePoint<T> slaveNormal{a.y, -a.x}, masterChordNormal{b.y, -b.x};
   const double bLength = std::sqrt(valueOf(dot(b, b)));
   const double facing = valueOf(dot(slaveNormal, masterChordNormal)) / (std::sqrt(valueOf(dot(a, a))) * bLength);
   if (facing > -kMortarMinFacing) return false;
@@ -139,14 +128,14 @@ bool addPiecePair(const SegmentChart<T>& slave, int s, const SegmentChart<T>& ma
   const T end = valueOf(high) < 1.0 - kQuadraticSegmentSnap ? high : T(1.0);
   if (!(valueOf(end) > valueOf(begin))) return false;
   // A slave chord point's master chord coordinate along the same normal: (p + l a − m0) × n_s = t b × n_s.
-  const T bn = cross(b, slaveNormal);
+  const T bn = planeCross(b, slaveNormal);
   const auto masterLocal = [&](const T& l) {
-    const Vec2<T> xp{p.x + l * a.x, p.y + l * a.y};
-    return T(cross(xp - m0, slaveNormal) / bn);
+    const PlanePoint<T> xp{p.x + l * a.x, p.y + l * a.y};
+    return T(planeCross(xp - m0, slaveNormal) / bn);
   };
   // Neither far behind the master chord (the other side of a thin body) nor far in front (MortarSegment).
   const auto chordGap = [&](const T& l) {
-    return valueOf(dot(Vec2<T>{p.x + l * a.x - m0.x, p.y + l * a.y - m0.y}, masterChordNormal)) / bLength;
+    return valueOf(dot(PlanePoint<T>{p.x + l * a.x - m0.x, p.y + l * a.y - m0.y}, masterChordNormal)) / bLength;
   };
   const double gapBegin = chordGap(begin), gapEnd = chordGap(end);
   if (std::max(gapBegin, gapEnd) < -size || std::min(gapBegin, gapEnd) > size) return false;
@@ -157,11 +146,11 @@ bool addPiecePair(const SegmentChart<T>& slave, int s, const SegmentChart<T>& ma
     const T xi = slave.parent(s, l), eta = master.parent(m, masterLocal(l));
     // eq. M19: the quadratic points, and the master's unit tangent and outward normal at η.
     const std::array<T, kQuadraticSegmentNodes> slaveShape = slave.shape(xi), masterShape = master.shape(eta);
-    const Vec2<T> xs = slave.at(slaveShape), xm = master.at(masterShape);
-    const Vec2<T> derivative = master.at(master.shapeDerivative(eta));
+    const PlanePoint<T> xs = slave.at(slaveShape), xm = master.at(masterShape);
+    const PlanePoint<T> derivative = master.at(master.shapeDerivative(eta));
     using std::sqrt;
     const T length = sqrt(dot(derivative, derivative));
-    const Vec2<T> tangent{derivative.x / length, derivative.y / length}, normal{tangent.y, -tangent.x};
+    const PlanePoint<T> tangent{derivative.x / length, derivative.y / length}, normal{tangent.y, -tangent.x};
     const T g = dot(xs - xm, normal);
     // The slave piece's hat functions Φ on its two nodes (eq. M18), zero on the third.
     std::array<T, kQuadraticSegmentNodes> w{};
@@ -174,7 +163,7 @@ bool addPiecePair(const SegmentChart<T>& slave, int s, const SegmentChart<T>& ma
     }
     if (committed == nullptr) continue;
     // eq. M9: the relative motion of the material points ξ and η over the increment along t_m(η).
-    const Vec2<T> motion = (xs - committedPoint(*committed, 0, slave.count, slaveShape)) -
+    const PlanePoint<T> motion = (xs - committedPoint(*committed, 0, slave.count, slaveShape)) -
                            (xm - committedPoint(*committed, kQuadraticSegmentNodes, master.count, masterShape));
     const T u = dot(motion, tangent);
     for (int k = 0; k < 2; ++k) out.weightedSlip[sp[k]] = out.weightedSlip[sp[k]] + w[sp[k]] * u;
@@ -224,17 +213,7 @@ MortarQuadraticSegmentDerivatives differentiate(const QuadraticSegmentPairCoordi
   std::vector<std::array<HessianDual<V>, C>> seeded(1, variables.template seed<V>(x));  // large: on the heap
   const MortarQuadraticSegmentGaps<HessianDual<V>> g = integrateQuadraticSegmentPair(seeded[0], shape, committed);
   MortarQuadraticSegmentDerivatives out;
-  out.overlaps = g.overlaps;
-  for (int a = 0; a < kQuadraticSegmentNodes; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v;
-    out.mortarLength[a] = g.mortarLength[a].v;
-    out.weightedSlip[a] = g.weightedSlip[a].v;
-    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
-    variables.extract(g.weightedSlip[a], out.slipGradient[a], out.slipHessian[a]);
-  }
-  if (committed != nullptr)
-    extractSlipVariation<C, V>(g.slipVariation, variables, kQuadraticSegmentNodes, 1, out.slipVariation,
-                               out.slipVariationGradient);
+  extractSegmentPairDerivatives<kQuadraticSegmentNodes, C, V>(g, variables, committed != nullptr, out);
   return out;
 }
 }  // namespace
