@@ -15,6 +15,7 @@
 #include "contact/MasterSurface.hpp"
 #include "contact/MortarFacetPair.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
+#include "contact/MortarQuadraticSegment.hpp"
 #include "contact/MortarSegment.hpp"
 #include "contact/MortarSlipBasis.hpp"
 #include "contact/SlipReversalDamping.hpp"
@@ -72,6 +73,17 @@ struct QuadraticMortarPairLayout {
   using Committed = QuadraticFacetPairCommitted<Slots>;
   static constexpr int kSlipEntries = 3;  ///< the kernel's slip: a 3-vector (eq. M21)
 };
+/// 2D pairs with a 3-node segment on a side (MortarQuadraticSegment.hpp): s0–s2 m0–m2, a Line2 leaving the
+/// third slot unused.
+struct QuadraticSegmentPairLayout {
+  static constexpr int kCoordinates = kQuadraticSegmentPairCoordinates;
+  static constexpr int kFirstMaster = kQuadraticSegmentNodes;
+  static constexpr int kMasterNodes = kQuadraticSegmentNodes;
+  using Derivatives = MortarQuadraticSegmentDerivatives;
+  using Gaps = MortarQuadraticSegmentGaps<double>;
+  using Committed = QuadraticSegmentPairCommitted;
+  static constexpr int kSlipEntries = 1;  ///< the kernel's slip: along the master's tangent t_m(η)
+};
 /// A master facet type whose interface takes the quadratic pair kernel of Slots slots (a quadratic slave
 /// or master side): the same facets to MasterSurface, which reads only the type's constants.
 template <class Facet, int Slots = kQuadraticFacetNodes>
@@ -82,7 +94,7 @@ struct PairLayoutOf {
 };
 template <class Facet, int Slots>
 struct PairLayoutOf<QuadraticPairs<Facet, Slots>> {
-  using type = QuadraticMortarPairLayout<Slots>;
+  using type = std::conditional_t<Facet::kSpaceDim == 2, QuadraticSegmentPairLayout, QuadraticMortarPairLayout<Slots>>;
 };
 
 /// The kernels' slip increments: entry c of slave end a's (2D: the scalar along t_m; 3D: component c of
@@ -90,6 +102,13 @@ struct PairLayoutOf<QuadraticPairs<Facet, Slots>> {
 inline double slipEntry(const MortarPairGaps<double>& g, int a, int) { return g.weightedSlip[a]; }
 inline double slipEntry(const MortarFacetPairGaps<double>& g, int a, int c) { return g.weightedSlip[a][c]; }
 inline double slipEntry(const MortarPairDerivatives& g, int a, int) { return g.weightedSlip[a]; }
+inline double slipEntry(const MortarQuadraticSegmentGaps<double>& g, int a, int) { return g.weightedSlip[a]; }
+inline double slipEntry(const MortarQuadraticSegmentDerivatives& g, int a, int) { return g.weightedSlip[a]; }
+inline const double* slipGradientOf(const MortarQuadraticSegmentDerivatives& g, int a, int) { return g.slipGradient[a].data(); }
+inline const double* slipVariationOf(const MortarQuadraticSegmentDerivatives& g, int a, int) { return g.slipVariation[a].data(); }
+inline const double* slipVariationGradientOf(const MortarQuadraticSegmentDerivatives& g, int a, int) {
+  return g.slipVariationGradient[a].data();
+}
 inline double slipEntry(const MortarFacetPairDerivatives& g, int a, int c) { return g.weightedSlip[a][c]; }
 inline const double* slipGradientOf(const MortarPairDerivatives& g, int a, int) { return g.slipGradient[a].data(); }
 inline const double* slipGradientOf(const MortarFacetPairDerivatives& g, int a, int c) { return g.slipGradient[3 * a + c].data(); }
@@ -153,7 +172,8 @@ struct NodeWeightedGap {
 
 }  // namespace
 
-/// The mortar interface over master facets of type MasterFacetType (2D: Line2; 3D: Tri3, Quad4): see
+/// The mortar interface over master facets of type MasterFacetType (2D: Line2, and QuadraticPairs of Line2 or
+/// Line3 with a 3-node side; 3D: Tri3, Quad4, and QuadraticPairs of the faces with a quadratic one): see
 /// MortarInterface.hpp.
 template <class MasterFacetType>
 class MortarInterface final : public ContactInterfaceBase {
@@ -164,6 +184,8 @@ class MortarInterface final : public ContactInterfaceBase {
   static constexpr int kSlipDim = kDim - 1;  ///< tangential components (1 in 2D, 2 in 3D)
   using Traction = Vector<kSlipDim>;
   using SlipBasis = MortarSlipBasis<kSlipDim, (Layout::kSlipEntries > 0 ? Layout::kSlipEntries : 1)>;
+  /// 2D with a 3-node segment on a side: the quadratic segment kernel, on flat pieces as 3D's quadratic faces.
+  static constexpr bool kQuadraticSegments = std::is_same_v<Layout, QuadraticSegmentPairLayout>;
 
  public:
   MortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave)
@@ -178,9 +200,12 @@ class MortarInterface final : public ContactInterfaceBase {
     const int slots = Layout::kFirstMaster;
     const bool quadratic = kDim == 3 && slots >= kQuadraticFacetNodes;
     const int nodes = static_cast<int>(perFacet_);
-    const bool linearSlave = kDim == 2 ? perFacet_ == 2 : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && nodes >= 6 && nodes <= slots));
-    // A quadratic slave face has its flat pieces' measures (deck/ProblemDefinition, MortarQuadraticFacetPair).
-    const std::size_t measures = static_cast<std::size_t>(kDim == 3 ? mortarFaceMeasures(nodes) : 1);
+    const bool linearSlave = kDim == 2 ? (perFacet_ == 2 || (kQuadraticSegments && perFacet_ == 3))
+                                       : (perFacet_ == 3 || perFacet_ == 4 || (quadratic && nodes >= 6 && nodes <= slots));
+    // A quadratic slave face has its flat pieces' measures (deck/ProblemDefinition, MortarQuadraticFacetPair);
+    // a slave segment of the quadratic segment kernel its pieces' lengths (MortarQuadraticSegment).
+    const std::size_t measures = static_cast<std::size_t>(kDim == 3 ? mortarFaceMeasures(nodes)
+                                                          : kQuadraticSegments ? mortarSegmentPieces(nodes) : 1);
     if (spec_.dimension != kDim || !linearSlave || spec_.slaveFacets.size() * measures != perFacet_ * spec_.slaveFacetMeasures.size())
       throw std::logic_error("MortarInterface '" + spec_.label() + "': linear slave facets with their measures expected");
     segmentsAt_.resize(spec_.slaveNodes.size());
@@ -355,8 +380,9 @@ template <class F>
 typename MortarInterface<F>::PairNodes MortarInterface<F>::pairNodes(std::size_t segment) const {
   PairNodes pair;
   pair.segment = segment;
-  if (kDim == 3 && perFacet_ >= 6) {  // the pieces' measures; referenceMeasure is a linear face's only
-    const std::size_t measures = static_cast<std::size_t>(mortarFaceMeasures(static_cast<int>(perFacet_)));
+  if ((kDim == 3 && perFacet_ >= 6) || kQuadraticSegments) {  // the pieces' measures; referenceMeasure is a linear facet's only
+    const int count = static_cast<int>(perFacet_);
+    const std::size_t measures = static_cast<std::size_t>(kDim == 3 ? mortarFaceMeasures(count) : mortarSegmentPieces(count));
     for (std::size_t i = 0; i < measures; ++i) pair.shape.slavePieceAreas[i] = spec_.slaveFacetMeasures[measures * segment + i];
   } else {
     pair.referenceMeasure = spec_.slaveFacetMeasures[segment];
@@ -366,7 +392,7 @@ typename MortarInterface<F>::PairNodes MortarInterface<F>::pairNodes(std::size_t
     pair.nodes[a] = spec_.slaveFacets[perFacet_ * segment + a];
     pair.used[a] = 1;
   }
-  if constexpr (kDim == 3) {
+  if constexpr (kDim == 3 || kQuadraticSegments) {
     pair.shape.slaveNodes = slaveCount;
     pair.shape.masterNodes = F::kNodes;
   } else {
@@ -414,7 +440,9 @@ auto MortarInterface<F>::pairValues(const std::array<double, Layout::kCoordinate
                                     int facet) const -> typename Layout::Gaps {
   typename Layout::Committed then{};
   const typename Layout::Committed* committed = frictional() && committedPair(pair, facet, then) ? &then : nullptr;
-  if constexpr (kDim == 2)
+  if constexpr (kQuadraticSegments)
+    return quadraticSegmentPairGaps(x, pair.shape, committed);
+  else if constexpr (kDim == 2)
     return segmentPairGaps(x, pair.referenceMeasure, pair.neighbours, committed);
   else
     return facetPairGaps(x, pair.referenceMeasure, pair.shape, committed);
@@ -490,7 +518,9 @@ auto MortarInterface<F>::pairDerivatives(
   cached.motion = motion;
   cached.committed = then;
   cached.withCommitted = withCommitted;
-  if constexpr (kDim == 2)
+  if constexpr (kQuadraticSegments)
+    cached.derivatives = quadraticSegmentPairDerivatives(x, pair.shape, withCommitted ? &then : nullptr, rigidMotion);
+  else if constexpr (kDim == 2)
     cached.derivatives =
         segmentPairDerivatives(x, pair.referenceMeasure, pair.neighbours, withCommitted ? &then : nullptr, rigidMotion);
   else if constexpr (std::is_same_v<typename Layout::Derivatives, MortarFacetPairDerivatives>)
@@ -633,9 +663,9 @@ void MortarInterface<F>::addSlipDerivatives(WeightedGap& w, int end, const Deriv
 template <class F>
 bool MortarInterface<F>::committedPair(const PairNodes& pair, int facet, typename Layout::Committed& out) const {
   if (committedSlave_.empty() || static_cast<std::size_t>(facet) >= committedMaster_.size()) return false;
-  if constexpr (kDim == 3) {
-    // FacetPairCoordinates' layout (QuadraticFacetPairCoordinates' on quadratic faces): the slave facet's
-    // nodes, then the master facet's from slot kFirstMaster.
+  if constexpr (kDim == 3 || kQuadraticSegments) {
+    // FacetPairCoordinates' layout (QuadraticFacetPairCoordinates' on quadratic faces, and
+    // QuadraticSegmentPairCoordinates'): the slave facet's nodes, then the master facet's from slot kFirstMaster.
     out.fill(0.0);
     for (std::size_t a = 0; a < perFacet_; ++a) {
       const Vector<kDim>& xs = committedSlave_[slaveIndex(pair.nodes[a])];
@@ -1083,7 +1113,14 @@ std::unique_ptr<ContactInterfaceBase> makeQuadraticMortarInterface(ContactInterf
 }  // namespace
 
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave) {
-  if (spec.dimension == 2) return std::make_unique<MortarInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+  if (spec.dimension == 2) {
+    // A 3-node segment on either side: the quadratic segment kernel (MortarQuadraticSegment.hpp).
+    if (spec.slaveNodesPerFacet() == 3 && spec.nodesPerFacet() == 2)
+      return std::make_unique<MortarInterface<QuadraticPairs<Line2Facet, 3>>>(std::move(spec), std::move(evaluatesSlave));
+    if (spec.nodesPerFacet() == 3)
+      return std::make_unique<MortarInterface<QuadraticPairs<Line3Facet, 3>>>(std::move(spec), std::move(evaluatesSlave));
+    return std::make_unique<MortarInterface<Line2Facet>>(std::move(spec), std::move(evaluatesSlave));
+  }
   const int slots = quadraticPairSlots(spec.slaveNodesPerFacet(), spec.nodesPerFacet());
   if (slots == 9) return makeQuadraticMortarInterface<9>(std::move(spec), std::move(evaluatesSlave));
   if (slots == 8) return makeQuadraticMortarInterface<8>(std::move(spec), std::move(evaluatesSlave));

@@ -19,7 +19,7 @@
 
 namespace contessa::contact {
 
-/// The mortar interface of spec (spec.mortar; 2D segments, 3D triangles (3- or 6-node) and quadrilaterals (4, 8
+/// The mortar interface of spec (spec.mortar; 2D segments of 2 nodes, or 3 on a side: MortarQuadraticSegment.hpp; 3D triangles (3- or 6-node) and quadrilaterals (4, 8
 /// or 9 nodes), frictionless or Coulomb on each).
 std::unique_ptr<ContactInterfaceBase> makeMortarInterface(ContactInterfaceSpec spec, std::vector<char> evaluatesSlave);
 

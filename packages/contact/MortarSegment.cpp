@@ -189,17 +189,7 @@ MortarPairDerivatives differentiateSegmentPair(const SegmentPairCoordinates<doub
   const MortarPairGaps<HessianDual<V>> g =
       integrateSegmentPair(variables.template seed<V>(x), referenceLength, neighbours, committed);
   MortarPairDerivatives out;
-  out.overlaps = g.overlaps;
-  for (int a = 0; a < 2; ++a) {
-    out.weightedGap[a] = g.weightedGap[a].v;
-    out.mortarLength[a] = g.mortarLength[a].v;
-    out.weightedSlip[a] = g.weightedSlip[a].v;
-    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
-    variables.extract(g.weightedSlip[a], out.slipGradient[a], out.slipHessian[a]);
-  }
-  if (committed != nullptr)
-    extractSlipVariation<kMortarPairCoordinates, V>(g.slipVariation, variables, 2, 1, out.slipVariation,
-                                                    out.slipVariationGradient);
+  extractSegmentPairDerivatives<2, kMortarPairCoordinates, V>(g, variables, committed != nullptr, out);
   return out;
 }
 }  // namespace

@@ -92,6 +92,23 @@ struct MortarPairDerivatives {
   std::vector<std::array<double, kMortarPairCoordinates * kMortarPairCoordinates>> slipVariationGradient;
 };
 
+/// A 2D pair kernel's results `g` on HessianDual<V> numbers (per slave slot a of Slots: the weighted gap, the
+/// mortar length and the scalar slip along t_m; the virtual slips with `committed`) into `out` as values,
+/// gradients and Hessians over the C coordinates: MortarPairDerivatives and MortarQuadraticSegmentDerivatives.
+template <int Slots, int C, int V, class Integrated, class Derivatives>
+void extractSegmentPairDerivatives(const Integrated& g, const KernelVariables<C>& variables, bool committed,
+                                   Derivatives& out) {
+  out.overlaps = g.overlaps;
+  for (int a = 0; a < Slots; ++a) {
+    out.weightedGap[a] = g.weightedGap[a].v;
+    out.mortarLength[a] = g.mortarLength[a].v;
+    out.weightedSlip[a] = g.weightedSlip[a].v;
+    variables.extract(g.weightedGap[a], out.gradient[a], out.hessian[a]);
+    variables.extract(g.weightedSlip[a], out.slipGradient[a], out.slipHessian[a]);
+  }
+  if (committed) extractSlipVariation<C, V>(g.slipVariation, variables, Slots, 1, out.slipVariation, out.slipVariationGradient);
+}
+
 /// The pair's weighted gaps (values only: open nodes, predicted states).
 MortarPairGaps<double> segmentPairGaps(const SegmentPairCoordinates<double>& x, double referenceLength,
                                        const MortarSlaveNeighbours& neighbours = {},

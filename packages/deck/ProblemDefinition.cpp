@@ -18,6 +18,7 @@
 #include "deck/ParameterValidation.hpp"
 #include "contact/ContactSurface.hpp"
 #include "contact/MortarQuadraticFacetPair.hpp"
+#include "contact/MortarQuadraticSegment.hpp"
 #include "contact/SmoothedMaster.hpp"
 #include "mesh/MeshDistribution.hpp"
 #include "mesh/MeshFactory.hpp"
@@ -205,7 +206,7 @@ const ParameterTable<InterfaceParameters>& interfaceTable() {
           .enumChoice("Discretization", &S::discretization, S::Discretization::NodeToSegment,
                       {"Node To Segment", "Mortar"},
                       "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: "
-                      "weighted gaps over the slave facets against every master facet they overlap (2D with Coulomb "
+                      "weighted gaps over the slave facets against every master facet they overlap (2D on 2- and 3-node sides with Coulomb "
                       "friction; 3D on Tri3/Quad4 faces with Coulomb friction, on Tri6/Quad8/Quad9 faces frictionless; penalty, single pass: passes the non-matching "
                       "contact patch test)")
           .enumChoice("Master Smoothing", &S::smoothing, S::Smoothing::None, {"None", "Hermite"},
@@ -241,25 +242,25 @@ void smoothMaster(contact::ContactInterfaceSpec& spec) {
   spec.masterFacetNodes = contact::HermiteLine4Facet::kNodes;
 }
 
-// Whether a side set's facets are ones the mortar kernels integrate: 2-node segments in 2D (MortarSegment),
-// 3-node triangles and 4-node quadrilaterals in 3D (MortarFacetPair), 6-, 8- and 9-node faces on their flat
-// pieces (MortarQuadraticFacetPair); not 3-node segments in 2D.
+// Whether a side set's facets are ones the mortar kernels integrate: 2-node segments in 2D (MortarSegment)
+// and 3-node ones on their flat pieces (MortarQuadraticSegment), 3-node triangles and 4-node quadrilaterals
+// in 3D (MortarFacetPair), 6-, 8- and 9-node faces on their flat pieces (MortarQuadraticFacetPair).
 void requireMortarFacets(int dimension, int nodesPerFacet, const std::string& set, const std::string& where) {
-  const bool supported = dimension == 2 ? nodesPerFacet == 2
+  const bool supported = dimension == 2 ? (nodesPerFacet == 2 || nodesPerFacet == 3)
                                         : (nodesPerFacet == 3 || nodesPerFacet == 4 || nodesPerFacet == 6 ||
                                            nodesPerFacet == 8 || nodesPerFacet == 9);
   requireInput(supported, where + "/Discretization: Mortar takes " +
-                           (dimension == 2 ? std::string("2-node segments") : std::string("3-, 4-, 6-, 8- or 9-node faces")) +
+                           (dimension == 2 ? std::string("2- or 3-node segments") : std::string("3-, 4-, 6-, 8- or 9-node faces")) +
                            "; side set '" + set + "' has " + std::to_string(nodesPerFacet) +
                            "-node sides (use Node To Segment)");
 }
 
 // The reference measure of each slave facet, the mortar's dΓ_0 (InterfaceSpec::slaveFacetMeasures): a
-// segment's length (2D), a triangle's area, a quadrilateral's |d_1 × d_2| / 2 (its diagonals': the area
+// segment's length (2D; a 3-node segment's two chords' lengths, MortarQuadraticSegment.hpp), a triangle's area, a quadrilateral's |d_1 × d_2| / 2 (its diagonals': the area
 // of its projection on the plane the 3D mortar projects it to, MortarFacetPair.hpp); a quadratic face
 // (6, 8 or 9 nodes) has its flat pieces' (a triangle's area, a 4-node piece's three Jacobian
 // coefficients: MortarQuadraticFacetPair.hpp, eq. M20).
-std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& facets, int perFacet,
+std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& facets, int perFacet, int dimension,
                                        const SurfaceCoordinates& coordinates) {
   std::vector<double> out;
   const auto at = [&](std::size_t i) { return coordinates.at(facets[i]); };
@@ -272,6 +273,13 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
       for (int a = 0; a < perFacet; ++a) std::copy_n(at(f + a).begin(), 3, x[a].begin());
       const auto pieces = contact::mortarFacetPieceMeasures(x, perFacet);
       out.insert(out.end(), pieces.begin(), pieces.begin() + contact::mortarFaceMeasures(perFacet));
+      continue;
+    }
+    if (dimension == 2 && perFacet == 3) {  // a 3-node segment: its chords' lengths (eq. M20)
+      contact::MortarSegmentNodes x{};
+      for (int a = 0; a < perFacet; ++a) std::copy_n(at(f + a).begin(), 2, x[a].begin());
+      const auto pieces = contact::mortarSegmentPieceLengths(x, perFacet);
+      out.insert(out.end(), pieces.begin(), pieces.end());
       continue;
     }
     if (perFacet == 2) {
@@ -287,7 +295,8 @@ std::vector<double> slaveFacetMeasures(const std::vector<contact::GlobalIndex>& 
   return out;
 }
 
-// The slave nodes' areas A_a of a mortar interface on quadratic faces: ∫ Φ_a dA_0 with the flat pieces'
+// The slave nodes' areas A_a of a mortar interface on quadratic faces (2D: 3-node segments, the hat
+// functions' l/2 per chord end): ∫ Φ_a dA_0 with the flat pieces'
 // linear or bilinear functions (MortarQuadraticFacetPair.hpp, eq. M18), integrated as the kernel does, so
 // that p_a = ε_N ⟨−g̃_a⟩ / A_a is the pressure of a uniform gap to round-off (the node-to-facet areas of
 // 6- and 8-node faces are the same sub-facet shares, but scaled to the curved face's area; a 9-node face's
@@ -297,9 +306,17 @@ std::vector<double> quadraticMortarAreas(const contact::ContactInterfaceSpec& sp
   const auto& nodes = spec.slaveNodes;
   const std::size_t perFacet = static_cast<std::size_t>(spec.slaveFacetNodes);
   for (std::size_t f = 0; f + perFacet <= spec.slaveFacets.size(); f += perFacet) {
-    contact::MortarFaceNodes x{};
-    for (std::size_t a = 0; a < perFacet; ++a) std::copy_n(coordinates.at(spec.slaveFacets[f + a]).begin(), 3, x[a].begin());
-    const auto areas = contact::mortarFacetNodeAreas(x, spec.slaveFacetNodes);
+    std::array<double, contact::kMaxMortarFaceNodes> areas{};
+    if (spec.dimension == 2) {  // a 3-node segment: half of each chord at each of its ends
+      contact::MortarSegmentNodes s{};
+      for (std::size_t a = 0; a < perFacet; ++a) std::copy_n(coordinates.at(spec.slaveFacets[f + a]).begin(), 2, s[a].begin());
+      const auto lengths = contact::mortarSegmentNodeLengths(s, spec.slaveFacetNodes);
+      std::copy(lengths.begin(), lengths.end(), areas.begin());
+    } else {
+      contact::MortarFaceNodes x{};
+      for (std::size_t a = 0; a < perFacet; ++a) std::copy_n(coordinates.at(spec.slaveFacets[f + a]).begin(), 3, x[a].begin());
+      areas = contact::mortarFacetNodeAreas(x, spec.slaveFacetNodes);
+    }
     for (std::size_t a = 0; a < perFacet; ++a)
       out[static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), spec.slaveFacets[f + a]) - nodes.begin())] += areas[a];
   }
@@ -352,11 +369,12 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
   spec.slaveFacetNodes = slave.nodesPerFacet;
   if (spec.mortar) {
     requireMortarFacets(mesh.dimension, slave.nodesPerFacet, slaveSet, where);
-    spec.slaveFacetMeasures = slaveFacetMeasures(slave.facets, slave.nodesPerFacet, coordinates);
+    spec.slaveFacetMeasures = slaveFacetMeasures(slave.facets, slave.nodesPerFacet, mesh.dimension, coordinates);
   }
   spec.slaveNodes = slave.nodes;
   spec.slaveAreas = slave.areas;
-  if (spec.mortar && mesh.dimension == 3 && slave.nodesPerFacet >= 6) spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
+  if (spec.mortar && ((mesh.dimension == 3 && slave.nodesPerFacet >= 6) || (mesh.dimension == 2 && slave.nodesPerFacet == 3)))
+    spec.slaveAreas = quadraticMortarAreas(spec, coordinates);
   spec.slaveFacetLengths = slave.facetLengths;
   spec.slaveAxisNodes = slave.axisNodes;
   if (!spec.mortar && mesh.dimension == 3) warnings.push_back(serendipitySlaveFaces(slave.nodesPerFacet, slaveSet, where));
