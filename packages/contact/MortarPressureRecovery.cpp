@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "contact/MortarQuadraticFacetPair.hpp"
+#include "contact/MortarQuadraticSegment.hpp"
 
 namespace contessa::contact {
 
@@ -41,7 +42,7 @@ std::vector<double> MortarPressureRecovery::apply(const std::vector<double>& pre
 MortarPressureRecovery mortarPressureRecovery(const ContactInterfaceSpec& spec) {
   const auto& nodes = spec.slaveNodes;
   const int perFacet = spec.slaveNodesPerFacet();
-  const int measuresPerFacet = spec.dimension == 2 ? 1 : mortarFaceMeasures(perFacet);
+  const int measuresPerFacet = spec.dimension == 2 ? mortarSegmentPieces(perFacet) : mortarFaceMeasures(perFacet);
   const std::size_t stride = static_cast<std::size_t>(perFacet);
   const std::size_t facets = spec.slaveFacets.size() / stride;
   if (spec.slaveFacetMeasures.size() != facets * static_cast<std::size_t>(measuresPerFacet))
@@ -58,9 +59,11 @@ MortarPressureRecovery mortarPressureRecovery(const ContactInterfaceSpec& spec) 
   };
   for (std::size_t f = 0; f < facets; ++f) {
     const double* measure = &spec.slaveFacetMeasures[f * static_cast<std::size_t>(measuresPerFacet)];
-    if (spec.dimension == 2) {  // a segment: L/6 (1 + δ_ab)
-      const int ends[2] = {0, 1};
-      add(f, ends, 2, [&](int a, int b) { return measure[0] / 6.0 * (a == b ? 2.0 : 1.0); });
+    if (spec.dimension == 2) {  // each piece of a segment (a Line3's two chords): L/6 (1 + δ_ab)
+      for (int i = 0; i < mortarSegmentPieces(perFacet); ++i) {
+        const std::array<int, 2> ends = mortarSegmentPieceNodes(perFacet, i);
+        add(f, ends.data(), 2, [&](int a, int b) { return measure[i] / 6.0 * (a == b ? 2.0 : 1.0); });
+      }
       continue;
     }
     int offset = 0;  // the piece's first measure: a triangle's area, a 4-node piece's (j_0, j_1, j_2)

@@ -20,7 +20,7 @@
 // h² p″ / 6 (the lumped mass's). The model reports it at closed nodes only (PostProcessing: an open node
 // shows 0, although the first one beside a closed node carries part of its traction, so that a positive
 // pressure means a closed node as with node-to-segment). Mass matrices from the reference measures
-// the interface keeps: exact on segments, triangles and a quadratic face's pieces; a Quad4 face as the
+// the interface keeps: exact on segments (a 3-node segment's two chords), triangles and a quadratic face's pieces; a Quad4 face as the
 // parallelogram of its area (its row sums, not the exact ∫ Φ_a, normalise: uniform fields stay exact).
 #include <cstddef>
 #include <vector>

@@ -228,6 +228,11 @@ MortarQuadraticSegmentDerivatives quadraticSegmentPairDerivatives(const Quadrati
   return differentiate<kFirstMaster + 1>(x, shape, committed, rigidBodyVariables<C>(kFirstMaster, kFirstMaster, masterMotion));
 }
 
+std::array<int, 2> mortarSegmentPieceNodes(int nodes, int i) {
+  const int* p = nodes == 3 ? kLine3Pieces[i] : kLine2Piece;
+  return {p[0], p[1]};
+}
+
 std::array<double, 2> mortarSegmentPieceLengths(const MortarSegmentNodes& x, int nodes) {
   std::array<double, 2> out{};
   for (int i = 0; i < mortarSegmentPieces(nodes); ++i) {

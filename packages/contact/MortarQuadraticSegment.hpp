@@ -94,6 +94,8 @@ MortarQuadraticSegmentDerivatives quadraticSegmentPairDerivatives(const Quadrati
 
 /// A segment's nodes (2 or 3 of them, x and y), Line3 ordered as Line3Facet.
 using MortarSegmentNodes = std::array<std::array<double, 2>, kQuadraticSegmentNodes>;
+/// The local nodes (the ends) of piece i of a segment of `nodes` nodes: a Line3's corner–mid and mid–corner.
+std::array<int, 2> mortarSegmentPieceNodes(int nodes, int i);
 /// A slave segment's pieces' reference lengths (mortarSegmentPieces(nodes) of them).
 std::array<double, 2> mortarSegmentPieceLengths(const MortarSegmentNodes& x, int nodes);
 /// Its nodes' mortar lengths ∫ Φ_a dΓ_0 over the whole segment: half of each piece's length at each of its

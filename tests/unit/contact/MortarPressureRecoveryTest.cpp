@@ -50,6 +50,8 @@ void expectUniformKept(const ContactInterfaceSpec& spec) {
 
 TEST(MortarPressureRecovery, KeepsAUniformPressureOnEveryFaceType) {
   expectUniformKept(line({0.3, 0.5, 0.2, 0.9}));
+  // Two 3-node segments (ends 0–1 and 1–2, mid-edge nodes 3 and 4): each side's two chords' lengths.
+  expectUniformKept(surface(2, 5, 3, {0, 1, 3, 1, 2, 4}, {0.2, 0.3, 0.5, 0.4}));
   // Two triangles of the unit square; a parallelogram Quad4; a flat Tri6 (its four pieces' areas); a
   // flat Quad8 (four corner triangles and the mid-edge square, J = A/4 on [−1, 1]²); a flat Quad9 (four
   // quarters, J = 1/4 each on a 2 × 2 square) with a graded Jacobian on one quarter.
@@ -73,6 +75,14 @@ TEST(MortarPressureRecovery, TheForceIsTheInterfacesForAnyPressure) {
   const std::vector<double> q = {1.0, 0.0, 2.0, -0.5, 4.0, 1.5};
   const auto tri6 = surface(3, 6, 6, {0, 1, 2, 3, 4, 5}, {0.125, 0.125, 0.125, 0.125});
   EXPECT_NEAR(force(tri6Area, mortarPressureRecovery(tri6).apply(q)), force(tri6Area, q), 1e-14);
+  // A 3-node segment (ends 0, 1; mid-edge node 2) of chords 0.2 (0–2) and 0.6 (2–1): A = (0.1, 0.3, 0.4).
+  const std::vector<double> line3Area = {0.1, 0.3, 0.4};
+  const std::vector<double> s = {1.0, -2.0, 3.0};
+  const auto line3 = surface(2, 3, 3, {0, 1, 2}, {0.2, 0.6});
+  const auto recovered = mortarPressureRecovery(line3).apply(s);
+  EXPECT_NEAR(force(line3Area, recovered), force(line3Area, s), 1e-14);
+  // The end node 0 sees only the first chord: (2 p_0 + p_2) / 3.
+  EXPECT_NEAR(recovered[0], (2.0 * 1.0 + 3.0) / 3.0, 1e-15);
 }
 
 TEST(MortarPressureRecovery, AnnihilatesTheEdgeModeAndKeepsALinearFieldOnAUniformLine) {
