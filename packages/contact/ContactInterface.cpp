@@ -10,6 +10,7 @@
 #include "contact/HistoryTransfer.hpp"
 #include "contact/MasterSurface.hpp"
 #include "contact/NodeToFacetContact.hpp"
+#include "contact/NormalToggleDamping.hpp"
 #include "contact/SlipReversalDamping.hpp"
 #include "contact/SweptCrossing.hpp"
 #include "contact/SmoothedMaster.hpp"
@@ -136,6 +137,7 @@ class ContactInterface final : public ContactInterfaceBase {
         element_(spec_.law),
         history_(spec_.slaveNodes.size()),
         damping_(spec_.slaveNodes.size()),
+        toggleDamping_(spec_.slaveNodes.size()),
         lastSlave_(spec_.slaveNodes.size()) {}
 
   std::unique_ptr<ContactInterfaceBase> clone() const override { return std::make_unique<ContactInterface>(*this); }
@@ -346,6 +348,7 @@ class ContactInterface final : public ContactInterfaceBase {
   FacetSelector<Facet> selector_;
   ContactHistoryStore<kXi> history_;
   SlipReversalDamping damping_;  ///< tangent of nodes whose slip direction flips between iterates
+  NormalToggleDamping toggleDamping_;  ///< tangent of augmented nodes that cycle between open and closed
   bool consistentTangents_ = false;  ///< the damping's secants left out of the tangent (setConsistentTangents)
   int secantTangentNodes_ = 0;       ///< nodes the latest trial evaluation gave (or would give) a secant
   Facets committedMaster_;       ///< master positions of the committed configuration
@@ -392,18 +395,28 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       // The history is kept on the facet the node projected on at the last commit; near a valley edge the
       // blend replaces the element. Newton iterates (updateTrial): a node whose slip direction has just
       // reversed gets a secant tangential stiffness (SlipReversalDamping; not in the blend, nor with
-      // consistent tangents); the residual is the same either way.
+      // consistent tangents), an augmented node that cycles between open and closed a secant normal stiffness
+      // while open (NormalToggleDamping); the residual is the same either way.
       const auto& facet = facets[selection.facet];
       const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
       NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, selection, committed);
       const std::optional<Blend> blend = valleyBlend(k, xs, selection, candidates, committed);
       if (blend) applyBlend(*blend, out.gap, r, committed);
+      bool openSecant = false;  // an open node whose tangent holds the normal secant (NormalToggleDamping)
       if (updateTrial) {
         damping_.observe(k, history_.trial(k), r.trial);
-        const SlipTangent tangent = damping_.tangent(k);
-        if (tangent.secant && !blend) {
+        SlipTangent tangent = damping_.tangent(k);
+        if (spec_.law.isAugmented()) {
+          const ContactHistory<kXi>& previous = history_.trial(k);
+          const bool open = r.status == ContactStatus::Open;
+          toggleDamping_.observe(k, previous.status == ContactStatus::Open, open, out.gap, r.normalTraction,
+                                 previous == r.trial, committed.normalMultiplier);
+          if (open) tangent.normalStiffness = toggleDamping_.stiffness(k);
+        }
+        if (tangent.damped() && !blend) {
           ++secantTangentNodes_;
           if (!consistentTangents_) r = evaluateElement(k, xs, facet, selection, committed, tangent);
+          openSecant = !consistentTangents_ && r.status == ContactStatus::Open && tangent.normalStiffness > 0.0;
         }
       }
       trial = r.trial;
@@ -417,7 +430,8 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
         trialInverseMetric_[k] = r.projection.inverseMetric;
         trialStickPenalty_[k] = r.status == ContactStatus::Stick ? r.friction.tangentialPenalty : 0.0;
       }
-      if (r.status != ContactStatus::Open) {
+      // An open node with a normal secant (NormalToggleDamping) adds its tangent only (its residual is 0).
+      if (r.status != ContactStatus::Open || openSecant) {
         if (blend) {
           const std::vector<double> residual = scatterBlend(k, *blend, sink);
           for (int c = 0; c < kDim; ++c) force[c] -= residual[c];
@@ -645,6 +659,7 @@ void ContactInterface<Facet>::commit() {
   forgetStickUpdates();
   commitPenaltyGrowth();
   damping_.reset();
+  toggleDamping_.reset();
   committedIncrement_ = trialChanges_;
   committedOutput_ = trialOutput_;
   committedForce_ = trialForce_;
@@ -725,6 +740,7 @@ void ContactInterface<Facet>::rollback() {
   forgetStickUpdates();
   rollbackPenaltyGrowth();
   damping_.reset();
+  toggleDamping_.reset();
   trialOutput_ = committedOutput_;
   trialForce_ = committedForce_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);

@@ -208,12 +208,19 @@ typename NodeToFacetContact<Facet>::Result NodeToFacetContact<Facet>::evaluateUn
     out.gap = boundary->gap;
   }
   const double lambdaN = parameters_.isAugmented() ? committed.normalMultiplier : 0.0;  // eq. (15.1)
-  if (!normalLaw_.isActive(out.gap, lambdaN)) return out;  // eq. (6): open, no force, no stiffness
+  const bool active = normalLaw_.isActive(out.gap, lambdaN);
+  // eq. (6): open, no force, no stiffness — but a node in an open/closed cycle gets the normal law's secant
+  // k N Nᵀ in its tangent (SlipTangent::normalStiffness, NormalToggleDamping); its residual stays 0.
+  if (!active && !(slipTangent.normalStiffness > 0.0)) return out;
 
   FacetKinematics<Facet> facetKinematics;
   if (!facetKinematics.build(p, x.master)) return out;  // the node sits at a focal point of the facet
   const auto& k = facetKinematics;
   const Column& N = boundary ? boundary->N : k.N;  // ∂g_N/∂u of the contact law's gap
+  if (!active) {
+    addOuter(out.tangent, slipTangent.normalStiffness, N, N);
+    return out;
+  }
 
   // ---- Contact law: eq. (16), then the return mapping of eq. (20)–(23) ------------------------------
   const double tN = normalLaw_.traction(out.gap, lambdaN);  // eq. (16) or (15.1), < 0

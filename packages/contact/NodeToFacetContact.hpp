@@ -34,12 +34,19 @@ enum class TangentTerms { Consistent, PaperMainTerms };
 /// surface coordinate, where the stiffness is ∂t_T1/∂ξ̄), ∂t_α/∂Δξ^β becomes
 ///   ∂t_α/∂Δξ^β + (k − s_γ ∂t_γ/∂Δξ^δ s_δ) s_α s_β,   k = min(stiffness, ε_T s_γ ā_γδ s_δ),
 /// capped by the stick stiffness along the same direction.
+///
+/// `normalStiffness` > 0: an open node's tangent k N Nᵀ (N = ∂g_N/∂u) instead of none, for a node that cycles
+/// between open and closed (NormalToggleDamping: the secant of t_N between the two states); its residual stays
+/// 0. Unused for a node in contact.
 struct SlipTangent {
   bool secant = false;
   double stiffness = 0.0;  ///< ∂t_T/∂ξ along the slip used when `secant`
+  double normalStiffness = 0.0;  ///< k of an open node's tangent k N Nᵀ (0: none, the consistent tangent)
 
   static SlipTangent consistent() { return {}; }
   static SlipTangent secantOf(double stiffness) { return {true, stiffness}; }
+  /// Whether the tangent differs from the residual's derivative somewhere.
+  bool damped() const { return secant || normalStiffness > 0.0; }
 };
 
 /// Where the slave node touches its facet (FacetSelection): at the closest point ξ̄ of eq. (1)–(3), or,

@@ -3,6 +3,7 @@
 #include "contact/ContactLawParameters.hpp"
 #include "contact/CoulombReturnMapping.hpp"
 #include "contact/HistoryTransfer.hpp"
+#include "contact/NormalToggleDamping.hpp"
 #include "contact/FacetSelector.hpp"
 #include "contact/PenaltyNormalLaw.hpp"
 #include "contact/SlipReversalDamping.hpp"
@@ -520,4 +521,47 @@ TEST(SlipReversalDamping, FromTwoReversalsInARowWhenAskedTo) {
   damping.reset();
   EXPECT_TRUE(damping.observe(0, forward, backward));
   EXPECT_FALSE(damping.tangent(0).secant);
+}
+
+TEST(NormalToggleDamping, GivesANodeThatCyclesBetweenOpenAndClosedTheNormalSecant) {
+  // The tube's node at ε_N = 1e9 (docs/theory-contact.md §15): open at g_N = 1.27e-11, closed at −3.14e-6 with
+  // t_N = −3141, and back. States: (open, g_N, t_N).
+  cc::NormalToggleDamping damping(2);
+  const double gOpen = 1.27e-11, gClosed = -3.14e-6, tClosed = -3141.0;
+  // An ordinary closure and an opening (the predictor's overshoot corrected): the consistent tangent.
+  EXPECT_FALSE(damping.observe(0, true, false, gClosed, tClosed, false));
+  EXPECT_FALSE(damping.observe(0, false, true, gOpen, 0.0, false));
+  EXPECT_EQ(damping.stiffness(0), 0.0);
+  // The same iterate evaluated again changes nothing.
+  EXPECT_FALSE(damping.observe(0, false, true, gOpen, 0.0, true));
+  // Closed again at the next iterate, open at the one after: four changes in a row, the cycle repeated.
+  EXPECT_FALSE(damping.observe(0, true, false, 2.0 * gClosed, 2.0 * tClosed, false));
+  EXPECT_EQ(damping.stiffness(0), 0.0);
+  EXPECT_TRUE(damping.observe(0, false, true, gOpen, 0.0, false));
+  EXPECT_NEAR(damping.stiffness(0), 2.0 * tClosed / (2.0 * gClosed - gOpen), 1e-12 * 1e9);
+  EXPECT_EQ(damping.stiffness(1), 0.0);  // other nodes untouched
+  // Open for kReleaseIterates iterates: it really opens, the consistent tangent (none) again.
+  EXPECT_FALSE(damping.observe(0, true, true, 2.0 * gOpen, 0.0, false));
+  EXPECT_GT(damping.stiffness(0), 0.0);
+  EXPECT_FALSE(damping.observe(0, true, true, 3.0 * gOpen, 0.0, false));
+  EXPECT_EQ(damping.stiffness(0), 0.0);
+  // A node that closes takes its consistent tangent at once.
+  for (bool open : {false, true, false}) damping.observe(1, !open, open, open ? gOpen : gClosed, open ? 0.0 : tClosed, false);
+  EXPECT_TRUE(damping.observe(1, false, true, gOpen, 0.0, false));
+  EXPECT_FALSE(damping.observe(1, true, false, gClosed, tClosed, false));
+  EXPECT_EQ(damping.stiffness(1), 0.0);
+  EXPECT_EQ(damping.toggles(), 2);
+  damping.reset();  // commit or rollback of the increment
+  EXPECT_EQ(damping.toggles(), 0);
+  EXPECT_FALSE(damping.observe(1, false, true, gOpen, 0.0, false));
+  EXPECT_EQ(damping.stiffness(1), 0.0);
+  // A change of state at a multiplier update (another λ_N: the same iterate, another problem) does not count.
+  EXPECT_FALSE(damping.observe(0, true, false, gClosed, tClosed, false));
+  EXPECT_FALSE(damping.observe(0, false, true, gOpen, 0.0, false));
+  EXPECT_FALSE(damping.observe(0, true, false, gClosed, tClosed, false));
+  EXPECT_FALSE(damping.observe(0, false, true, gOpen, 0.0, false, -0.01));  // the update opened it
+  EXPECT_FALSE(damping.observe(0, true, false, gClosed, tClosed, false, -0.01));
+  EXPECT_FALSE(damping.observe(0, false, true, gOpen, 0.0, false, -0.01));
+  EXPECT_FALSE(damping.observe(0, true, false, gClosed, tClosed, false, -0.01));
+  EXPECT_TRUE(damping.observe(0, false, true, gOpen, 0.0, false, -0.01));
 }

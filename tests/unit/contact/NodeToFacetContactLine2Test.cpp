@@ -168,6 +168,45 @@ TEST(NodeToFacetContactLine2, SecantSlipTangentChangesOnlyTheTangent) {
   EXPECT_EQ(relativeDifference(a.tangent, b.tangent), 0.0);
 }
 
+// The normal secant of an open node (NormalToggleDamping): no force, the trial state of an open node, and the
+// tangent k N Nᵀ with N = ∂g_N/∂u, the gap's derivative, compared with a central difference of g_N; a node in
+// contact is unaffected (its tangent is the consistent one, ε_N N Nᵀ + …).
+TEST(NodeToFacetContactLine2, OpenNodeNormalSecantIsTheGapsOuterProduct) {
+  const Element element({1e3, 5e2, 0.2});
+  const double k = 250.0;
+  cc::SlipTangent secant;
+  secant.normalStiffness = k;
+  for (const Configuration& conf : kConfigurations) {
+    SCOPED_TRACE(conf.name);
+    const auto g = slaveAt(conf.x1, conf.x2, conf.xi, -conf.gap);  // open: in front of the segment
+    const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
+    const auto plain = element.evaluate(g, 7, committed);
+    const auto damped = element.evaluate(g, 7, committed, 0.0, secant);
+    ASSERT_EQ(damped.status, ContactStatus::Open);
+    EXPECT_EQ(damped.trial, plain.trial);
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(damped.residual[i], 0.0);
+    EXPECT_EQ(cc::frobeniusNorm(plain.tangent), 0.0);
+    const Vec6 x = toDofs(g);
+    Vec6 gapDerivative{};
+    const double h = 1e-6;
+    for (int j = 0; j < 6; ++j) {
+      Vec6 plus = x, minus = x;
+      plus[j] += h;
+      minus[j] -= h;
+      gapDerivative[j] = (element.evaluate(fromDofs(plus), 7, committed).gap -
+                          element.evaluate(fromDofs(minus), 7, committed).gap) / (2.0 * h);
+    }
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) EXPECT_NEAR(damped.tangent(i, j), k * gapDerivative[i] * gapDerivative[j], 1e-6 * k);
+  }
+  const Configuration& conf = kConfigurations[0];
+  const auto closed = slaveAt(conf.x1, conf.x2, conf.xi, conf.gap);
+  const auto committed = inContact(7, conf.xiN, 0.0, ContactStatus::Stick);
+  EXPECT_EQ(relativeDifference(element.evaluate(closed, 7, committed).tangent,
+                               element.evaluate(closed, 7, committed, 0.0, secant).tangent),
+            0.0);
+}
+
 TEST(NodeToFacetContactLine2, SlipTangentIsNonSymmetricLikeItsFiniteDifference) {
   const Element element({1e3, 5e2, 0.2});
   for (const Configuration& conf : kConfigurations) {
