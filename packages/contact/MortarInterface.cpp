@@ -195,6 +195,9 @@ class MortarInterface final : public ContactInterfaceBase {
         friction_(spec_.law.tangentialPenalty, spec_.law.frictionCoefficient, spec_.law.slipTolerance),
         trialTraction_(spec_.slaveNodes.size(), Traction{}),
         committedTraction_(spec_.slaveNodes.size(), Traction{}),
+        normalMultiplier_(spec_.slaveNodes.size(), 0.0),
+        committedNormalMultiplier_(spec_.slaveNodes.size(), 0.0),
+        tangentialMultiplier_(spec_.slaveNodes.size(), Traction{}),
         iterate_(spec_.slaveNodes.size()),
         damping_(spec_.slaveNodes.size(), kRepeatedReversal) {
     const int slots = Layout::kFirstMaster;
@@ -237,6 +240,11 @@ class MortarInterface final : public ContactInterfaceBase {
   std::vector<TunnellingNode> tunnellingNodes() const override { return {}; }
   void commit() override;
   void rollback() override;
+  /// Augmented Lagrangian (theory-contact §13.4): the Uzawa update (eq. 15.3) of every owned slave node's
+  /// multipliers on its weighted gap and weighted slip, λ_N,k ← t_N,k and λ_Tα,k ← t_Tα,k of the latest trial
+  /// evaluation (0 for an open node). Plain Uzawa steps only: node-to-segment's stick secant (eq. 15.7) is
+  /// not applied (`atEquilibrium` unused).
+  void augment(bool atEquilibrium) override;
   void saveCommittedSlaves(StateRecord& table) const override;
   void restoreSlaves(const StateRecord& table) override;
   void saveCommittedMaster(StateRecord& table) const override;
@@ -335,6 +343,13 @@ class MortarInterface final : public ContactInterfaceBase {
   CoulombReturnMapping<kSlipDim> friction_;
   /// t_Tα per slave node (eq. 22): 2D along t_m, 3D in the node's basis at the last commit (slipBasis).
   std::vector<Traction> trialTraction_, committedTraction_;
+  /// Augmented Lagrangian (theory-contact §13.4), per slave node: λ_N,k ≤ 0, the normal multiplier of the
+  /// weighted gap in traction units (t_N,k = min(0, λ_N,k + ε_N g̃_k / A_k), eq. M22), as the evaluations use it
+  /// (the increment's Uzawa updates included) and as the last commit left it (a cut-back's); and λ_Tα,k, the
+  /// start of the return mapping (eq. M23): the committed traction t_Tα,n until an update within the
+  /// increment (so that the penalty law, which never updates, is the return mapping from t_Tα,n as before).
+  std::vector<double> normalMultiplier_, committedNormalMultiplier_;
+  std::vector<Traction> tangentialMultiplier_;
   /// Per slave node, its state at the last Newton iterate as SlipReversalDamping compares it: the status, the
   /// traction t_Tα and, as the "position", the slip increment Δũ_kα / A_k (both in the node's basis, a
   /// constant of the increment); at an increment's start the committed status and traction, slip 0.
@@ -703,13 +718,17 @@ template <class F>
 auto MortarInterface<F>::tangentialTraction(std::size_t k, const WeightedGap& w, double pressure) const
     -> ReturnMappingResult<kSlipDim> {
   ReturnMappingInput<kSlipDim> in;
-  in.committedTraction = committedTraction_[k];
+  // λ_Tα,k (eq. M23): t_Tα,n with the penalty law and before the increment's first update.
+  in.committedTraction = tangentialMultiplier_[k];
   for (int a = 0; a < kSlipDim; ++a) {
     in.slipIncrement[a] = w.slip[a] / spec_.slaveAreas[k];  // a length: Δũ_k is a slip times an area
     in.metric(a, a) = 1.0;  // components along orthonormal tangents (2D t_m; 3D the node's basis)
   }
   in.normalTraction = -pressure;
   in.facetLength = spec_.slaveFacetLengths[k];
+  // As node-to-segment (NodeToFacetContact): with the augmented Lagrangian the slip tolerance's ε_T follows
+  // λ_N,k, a constant between two updates, not t_N (theory-contact §15, "The stick penalty").
+  if (spec_.law.isAugmented()) in.frozenNormalTraction = normalMultiplier_[k];
   return friction_.map(in);
 }
 
@@ -783,14 +802,24 @@ SlaveNodeState MortarInterface<F>::stateOf(std::size_t k, const WeightedGap& w, 
   // The gap shown and counted: g̃_k / A_k, so that the pressure is −ε_N times it, as t_N = ε_N g_N (eq. 16).
   out.gap = w.overlaps ? w.value / spec_.slaveAreas[k] : std::numeric_limits<double>::infinity();
   out.slip = committedOutput_[k].slip;
-  if (w.overlaps && w.value < 0.0 && !frozenOpen) {
+  // t_N,k = min(0, λ_N,k + ε_N g̃_k / A_k) (eq. M22; λ_N,k = 0 with the penalty law: eq. M6): a node held by
+  // λ_N,k < 0 is closed while g̃_k / A_k < −λ_N,k / ε_N, possibly at a small positive weighted gap.
+  const double multiplier = normalMultiplier_[k];
+  const double normalTraction = multiplier + spec_.law.normalPenalty * out.gap;
+  if (w.overlaps && normalTraction < 0.0 && !frozenOpen) {
     out.status = ContactStatus::Slip;  // frictionless: free sliding, as node-to-segment reports it
-    out.pressure = -spec_.law.normalPenalty * out.gap;
+    out.pressure = -normalTraction;
     if (frictional()) {
       const ReturnMappingResult<kSlipDim> t = tangentialTraction(k, w, out.pressure);
       out.status = t.status;
       out.slip += norm(w.slip) / spec_.slaveAreas[k];
-      out.elasticSlip = t.tangentialPenalty > 0.0 ? norm(t.traction) / t.tangentialPenalty : 0.0;
+      // The stick spring's stretch: ‖t_T‖/ε_T with the penalty law; with the augmented Lagrangian ‖t_T − λ_T‖/ε_T
+      // of a sticking node, its weighted motion over the increment (eq. M23), the quantity the Elastic Slip
+      // Tolerance bounds (node-to-segment's elasticSlipOf).
+      if (!spec_.law.isAugmented())
+        out.elasticSlip = t.tangentialPenalty > 0.0 ? norm(t.traction) / t.tangentialPenalty : 0.0;
+      else if (t.status == ContactStatus::Stick && t.tangentialPenalty > 0.0)
+        out.elasticSlip = norm(subtract(t.traction, tangentialMultiplier_[k])) / t.tangentialPenalty;
       if (tangential != nullptr) *tangential = t;
     }
   }
@@ -948,6 +977,14 @@ void MortarInterface<F>::commit() {
     // in the new basis, not carry the old basis' components into it (issue 25, verification §9.4).
     trialTraction_ = committedTraction_;
   }
+  // The multipliers carried so that the converged state stays an equilibrium (theory-contact §15, "State"):
+  // λ_N,k the one the increment used (t_N,k = λ_N,k + ε_N g̃_k / A_k unchanged), 0 for a node that opened;
+  // λ_Tα,k the converged traction, the slip increments' start moving to the new committed positions (where
+  // the trial of eq. M23 is λ_Tα,k: the same traction).
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k)
+    if (evaluatesSlave_[k] && trialOutput_[k].status == ContactStatus::Open) normalMultiplier_[k] = 0.0;
+  committedNormalMultiplier_ = normalMultiplier_;
+  tangentialMultiplier_ = committedTraction_;
   if (!trialSlave_.empty()) committedSlave_ = trialSlave_;
   if (!trialMaster_.empty()) committedMaster_ = trialMaster_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
@@ -961,19 +998,40 @@ void MortarInterface<F>::rollback() {
   trialTraction_ = committedTraction_;
   trialSlave_ = committedSlave_;
   trialMaster_ = committedMaster_;
+  // The increment's multiplier updates are forgotten with the rest of it.
+  normalMultiplier_ = committedNormalMultiplier_;
+  tangentialMultiplier_ = committedTraction_;
   for (std::size_t k = 0; k < trialChanges_.size(); ++k) trialChanges_[k] = unchanged(k);
   restartIterates();
+}
+
+template <class F>
+void MortarInterface<F>::augment(bool /*atEquilibrium*/) {
+  // eq. 15.3 on the weighted quantities: the tractions of the latest trial evaluation (its pressure and its
+  // return-mapped t_Tα,k; an open node has none, trialTraction_ 0). The rest of the state (the slip
+  // increments' start at the committed positions, the committed traction) stays: a sticking node's weighted
+  // motion over the increment then shrinks by K/(K + ε_T) per update (§15).
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const bool closed = trialOutput_[k].status != ContactStatus::Open;
+    normalMultiplier_[k] = closed ? -trialOutput_[k].pressure : 0.0;
+    tangentialMultiplier_[k] = closed ? trialTraction_[k] : Traction{};
+  }
 }
 
 namespace {
 // A mortar slave node's fields in the restart file: its change over the last increment, its output, its
 // tangential traction and its committed position (NaN when no friction kept it: the slip increments'
 // start, eq. M9).
+// The normal multiplier λ_N,k of the augmented Lagrangian (0 with the penalty law); its tangential one is
+// the tangential traction at a commit.
 template <class Change, class Output, class Traction, class Position, class Fields>
-void mortarSlaveFields(Change& c, Output& o, Traction& traction, Position& position, Fields& field) {
+void mortarSlaveFields(Change& c, Output& o, Traction& traction, double& normalMultiplier, Position& position,
+                       Fields& field) {
   slaveChangeFields(c, field);
   slaveOutputFields(o, field);
   field("tangential_traction", traction);
+  field("normal_multiplier", normalMultiplier);
   field("position", position, StateValues::AnyDouble);
 }
 }  // namespace
@@ -990,7 +1048,8 @@ void MortarInterface<F>::saveCommittedSlaves(StateRecord& table) const {
     Vector<kDim> x;
     x.fill(std::numeric_limits<double>::quiet_NaN());
     if (!committedSlave_.empty()) x = committedSlave_[k];
-    mortarSlaveFields(c, o, tractionField(traction), x, rows);
+    double normal = committedNormalMultiplier_[k];
+    mortarSlaveFields(c, o, tractionField(traction), normal, x, rows);
   }
   rows.finish();
 }
@@ -1005,14 +1064,16 @@ void MortarInterface<F>::restoreSlaves(const StateRecord& table) {
     SlaveNodeState o;
     Traction traction{};
     Vector<kDim> x{};
-    mortarSlaveFields(c, o, tractionField(traction), x, rows);
+    double normal = 0.0;
+    mortarSlaveFields(c, o, tractionField(traction), normal, x, rows);
     // Every row's position: a node's neighbour may be owned by another rank.
     known[k] = std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
     positions[k] = x;
     if (!evaluatesSlave()[k]) return;
     committedIncrement_[k] = c;
     committedOutput_[k] = trialOutput_[k] = o;
-    committedTraction_[k] = trialTraction_[k] = traction;
+    committedTraction_[k] = trialTraction_[k] = tangentialMultiplier_[k] = traction;
+    committedNormalMultiplier_[k] = normalMultiplier_[k] = normal;
     trialChanges_[k] = unchanged(k);
   });
   // Without every kept node's position (a frictionless run's file) the first evaluation is the reference.

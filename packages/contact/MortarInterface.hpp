@@ -1,5 +1,5 @@
 #pragma once
-// Mortar (segment-to-segment) contact of one interface, penalty; 2D frictionless or Coulomb, 3D
+// Mortar (segment-to-segment) contact of one interface, penalty or augmented Lagrangian (theory-contact §13.4); 2D frictionless or Coulomb, 3D
 // frictionless or Coulomb on linear and quadratic faces (theory-contact.md §13, eq. M21 on quadratic ones): each slave node k carries the weighted gap g̃_k = ∫ N_k g dΓ_0 over
 // its slave facets (2D, MortarSegment.hpp: segmented along the averaged nodal normals; 3D,
 // MortarFacetPair.hpp: the facets projected on the slave facet's plane and clipped; the gap along the

@@ -207,7 +207,7 @@ const ParameterTable<InterfaceParameters>& interfaceTable() {
                       {"Node To Segment", "Mortar"},
                       "Node To Segment: one penalty element per slave node and its closest master facet. Mortar: "
                       "weighted gaps over the slave facets against every master facet they overlap (2D on 2- and 3-node sides with Coulomb "
-                      "friction; 3D on Tri3/Quad4 faces with Coulomb friction, on Tri6/Quad8/Quad9 faces frictionless; penalty, single pass: passes the non-matching "
+                      "friction; 3D on Tri3/Quad4 faces with Coulomb friction, on Tri6/Quad8/Quad9 faces frictionless; penalty or augmented Lagrangian, single pass: passes the non-matching "
                       "contact patch test)")
           .enumChoice("Master Smoothing", &S::smoothing, S::Smoothing::None, {"None", "Hermite"},
                       "None: the master surface is its facets. Hermite (2D node-to-segment, deformable 2-node "
@@ -218,10 +218,8 @@ const ParameterTable<InterfaceParameters>& interfaceTable() {
 }
 
 // What Discretization = Mortar does not do yet (docs/theory-contact.md, "Mortar"): one-line InputErrors.
-void requireMortarSupported(bool twoPass, bool revolved, const contact::ContactLawParameters& law, const std::string& where) {
+void requireMortarSupported(bool twoPass, bool revolved, const std::string& where) {
   const std::string what = where + "/Discretization: Mortar is implemented ";
-  requireInput(!law.isAugmented(), where + "/Enforcement: Augmented Lagrangian is implemented for Node To Segment only, not "
-                                          "with Discretization = Mortar; use Enforcement = Penalty");
   requireInput(!revolved, what + "for plane strain and 3D only, not for an axisymmetric problem; use Node To Segment");
   requireInput(!twoPass, what + "single-pass only (its weighted gaps need no second pass); set Two Pass = false");
 }
@@ -362,7 +360,7 @@ std::vector<contact::ContactInterfaceSpec> buildContact(const ParameterList& lis
                where + ": give either Master Side Set (a deformable master) or Rigid Surface/Points (a rigid one), not " +
                    (rigid ? "neither" : "both"));
   spec.mortar = in.discretization == InterfaceParameters::Discretization::Mortar;
-  if (spec.mortar) requireMortarSupported(in.twoPass, revolved, spec.law, where);
+  if (spec.mortar) requireMortarSupported(in.twoPass, revolved, where);
   mesh::ReplicatedSurface slaveFacets;
   const auto slave = gatheredSurface(part, slaveSet, where + "/Slave Side Set", coordinates, revolved, &slaveFacets);
   spec.slaveFacets = slave.facets;

@@ -177,8 +177,17 @@ ContactInterfaceSpec faceSpec(bool rigidMaster, bool triangles) {
 struct Face {
   bool rigidMaster = false;
   bool triangles = false;
+  /// Enforcement = Augmented Lagrangian (theory-contact §13.4): the trials start from multipliers an update
+  /// has set (committedInterface).
+  bool augmented = false;
   std::unique_ptr<ContactInterfaceBase> make() const {
-    return makeMortarInterface(faceSpec(rigidMaster, triangles), std::vector<char>(9, 1));
+    ContactInterfaceSpec spec = faceSpec(rigidMaster, triangles);
+    if (augmented) {
+      spec.law.enforcement = ContactLawParameters::Enforcement::AugmentedLagrangian;
+      spec.law.penetrationTolerance = spec.law.elasticSlipTolerance = 1e-6;
+      spec.law.maxAugmentations = 10;
+    }
+    return makeMortarInterface(spec, std::vector<char>(9, 1));
   }
 };
 
@@ -201,20 +210,29 @@ using testing::Assembled;
 
 // The interface committed at the uneven face at λ = 0.3 and, when `stuck` > 0, at the face slid by `stuck`
 // (a stick state with a nonzero committed traction): where every trial of a central difference starts.
-std::unique_ptr<ContactInterfaceBase> committedInterface(const Face& face, double stuck) {
+// With the augmented Lagrangian, then updated (eq. 15.3) at the face slid by `update` and 0.003
+// shallower: multipliers λ_N,k, λ_Tα,k that are neither 0 nor the trial's tractions.
+std::unique_ptr<ContactInterfaceBase> committedInterface(const Face& face, double stuck, double update = 0.0) {
   auto interface = face.make();
   testing::assemble<3>(*interface, unevenFace(), 0.3);
   if (stuck > 0.0) testing::assemble<3>(*interface, slid(stuck), 0.3 + 0.5 * stuck);
+  if (face.augmented) {
+    auto x = slid(update);
+    for (int node = 9; node < 15; ++node) x[3 * node + 2] += 0.003;
+    testing::evaluateOnly<3>(*interface, x, 0.3 + 0.5 * update);
+    interface->augment(true);
+  }
   return interface;
 }
 
 void expectFrictionalTangentIsTheCentralDifference(const Face& face, double slide, ContactStatus expected,
                                                    double stuck = 0.0) {
   SCOPED_TRACE(std::string(face.rigidMaster ? "rigid" : "deformable") + (face.triangles ? ", Tri3" : ", Quad4") +
-               ", slide " + std::to_string(slide) + ", stuck " + std::to_string(stuck));
+               (face.augmented ? ", augmented" : "") + ", slide " + std::to_string(slide) + ", stuck " +
+               std::to_string(stuck));
   const auto x = slid(slide);
   const double lambda = 0.3 + 0.5 * slide;
-  const auto committed = committedInterface(face, stuck);
+  const auto committed = committedInterface(face, stuck, 0.5 * slide);
   const Assembled a = testing::assemble<3>(*committed->clone(), x, lambda);
   for (const auto& s : a.states) EXPECT_EQ(s.status, expected);
   double frictionScale = 0;
@@ -253,6 +271,16 @@ TEST(MortarInterface3DFriction, TangentInSlipIsTheCentralDifferenceOfTheResidual
   for (const bool rigid : {false, true})
     for (const bool triangles : {false, true})
       expectFrictionalTangentIsTheCentralDifference({rigid, triangles}, 0.05, ContactStatus::Slip);
+}
+
+TEST(MortarInterface3DFriction, TangentWithAugmentedLagrangianMultipliersIsTheCentralDifferenceOfTheResidual) {
+  // eq. M22–M23: the multipliers are constants of the Newton iterations, so the tangent is the penalty's with
+  // t_N = λ_N + ε_N g̃/A and the return mapping started from λ_T.
+  for (const bool rigid : {false, true}) {
+    expectFrictionalTangentIsTheCentralDifference({rigid, false, true}, 1e-3, ContactStatus::Stick);
+    expectFrictionalTangentIsTheCentralDifference({rigid, true, true}, 0.05, ContactStatus::Slip);
+    expectFrictionalTangentIsTheCentralDifference({rigid, false, true}, 2e-3, ContactStatus::Stick, 1e-3);
+  }
 }
 
 TEST(MortarInterface3DFriction, TangentFromAStuckStateIsTheCentralDifferenceOfTheResidual) {

@@ -510,5 +510,141 @@ TEST(MortarInterface, SlidingNodesCarryTheCoulombForceAgainstTheSlip) {
   EXPECT_NEAR(force[0], -kFriction * kPenalty * d * 3.0, 1e-9);
 }
 
+
+// The augmented Lagrangian on the weighted quantities (theory-contact §13.4, eq. M22–M23): λ_N,k and λ_Tα,k
+// per slave node, set by an update (ContactInterfaceBase::augment) to the tractions of a trial evaluation.
+std::unique_ptr<ContactInterfaceBase> augmentedInterface(bool rigidMaster, bool friction, double slipTolerance = 0.0) {
+  ContactInterfaceSpec spec = patchSpec(rigidMaster);
+  if (friction) {
+    spec.law.frictionCoefficient = kFriction;
+    spec.law.tangentialPenalty = slipTolerance > 0.0 ? 0.0 : kPenalty;
+    spec.law.slipTolerance = slipTolerance;
+  }
+  spec.law.enforcement = ContactLawParameters::Enforcement::AugmentedLagrangian;
+  spec.law.penetrationTolerance = 1e-6;
+  spec.law.elasticSlipTolerance = 1e-6;
+  spec.law.maxAugmentations = 10;
+  return makeMortarInterface(spec, std::vector<char>(4, 1));
+}
+
+void evaluateTrial(ContactInterfaceBase& interface, const std::vector<double>& x, double lambda) {
+  testing::evaluateOnly<2>(interface, x, lambda);
+}
+
+TEST(MortarInterfaceAugmented, TheNormalMultiplierHoldsANodeAtAPositiveWeightedGapUntilACutBack) {
+  // An update at a uniform penetration d gives λ_N,k = −ε_N d at every node; lifted to a gap d/2 the nodes
+  // stay closed with the pressure ε_N d/2 (t_N = λ_N + ε_N g̃/A, eq. M22), and open past d; a rollback
+  // forgets the update, a commit keeps it.
+  const double d = 1e-3;
+  auto interface = augmentedInterface(false, false);
+  evaluateTrial(*interface, patchCoordinates(d), 0.0);
+  EXPECT_NEAR(interface->trialViolation().penetration, d, 1e-15);
+  interface->augment(true);
+  auto held = interface->clone();
+  const Assembled a = assemble(*held, patchCoordinates(-0.5 * d), 0.0);
+  for (const auto& s : a.states) {
+    EXPECT_EQ(s.status, ContactStatus::Slip);
+    EXPECT_NEAR(s.gap, 0.5 * d, 1e-15);
+    EXPECT_NEAR(s.pressure, 0.5 * kPenalty * d, 1e-12);
+  }
+  EXPECT_NEAR(held->trialViolation().penetration, 0.5 * d, 1e-15) << "a gap held open by λ_N counts";
+  for (const auto& s : assemble(*interface->clone(), patchCoordinates(-1.5 * d), 0.0).states)
+    EXPECT_EQ(s.status, ContactStatus::Open);
+  // Committed closed: the multiplier stays the increment's (the converged state an equilibrium).
+  for (const auto& s : assemble(*held, patchCoordinates(-0.5 * d), 0.0).states) EXPECT_NEAR(s.pressure, 0.5 * kPenalty * d, 1e-12);
+  interface->rollback();
+  for (const auto& s : assemble(*interface, patchCoordinates(-0.5 * d), 0.0).states)
+    EXPECT_EQ(s.status, ContactStatus::Open) << "the rollback forgot the update";
+}
+
+TEST(MortarInterfaceAugmented, AnUpdateAddsThePenaltyTractionToTheMultiplierAtTheSameGap) {
+  // At imposed positions (no structure to relax) an update at the penetration d leaves λ_N,k = −ε_N d, and
+  // the next evaluation there t_N = λ_N + ε_N g̃/A = −2 ε_N d (eq. M22 after eq. 15.3).
+  const double d = 1e-3;
+  auto interface = augmentedInterface(false, false);
+  evaluateTrial(*interface, patchCoordinates(d), 0.0);
+  interface->augment(true);
+  for (const auto& s : assemble(*interface, patchCoordinates(d), 0.0).states) EXPECT_NEAR(s.pressure, 2 * kPenalty * d, 1e-12);
+}
+
+// The interface updated at `updateAt` (after a commit at the uneven configuration at λ = 0.3): the trials of
+// a central difference start from its multipliers.
+std::unique_ptr<ContactInterfaceBase> updatedInterface(bool rigidMaster, bool friction, double slipTolerance,
+                                                       const std::vector<double>& updateAt, double lambda) {
+  auto interface = augmentedInterface(rigidMaster, friction, slipTolerance);
+  assemble(*interface, unevenCoordinates(), 0.3);
+  evaluateTrial(*interface, updateAt, lambda);
+  interface->augment(true);
+  return interface;
+}
+
+void expectAugmentedTangentIsTheCentralDifference(bool rigidMaster, bool friction, double slipTolerance, double slide,
+                                                  ContactStatus expected) {
+  SCOPED_TRACE(std::string(rigidMaster ? "rigid" : "deformable") + (friction ? ", friction" : "") +
+               ", slip tolerance " + std::to_string(slipTolerance) + ", slide " + std::to_string(slide));
+  const double lambda = 0.3 + 0.5 * slide;
+  // The update at half the slide and 0.003 shallower than the trial: λ ≠ 0 and λ ≠ t.
+  auto updateAt = slid(0.5 * slide);
+  for (int node = 0; node < 4; ++node) updateAt[2 * node + 1] -= 0.003;
+  const auto updated = updatedInterface(rigidMaster, friction, slipTolerance, updateAt, lambda);
+  const auto x = slid(slide);
+  const Assembled a = testing::evaluateOnly<2>(*updated->clone(), x, lambda);
+  auto committed = updated->clone();
+  const Assembled states = assemble(*committed, x, lambda);
+  for (const auto& s : states.states) EXPECT_EQ(s.status, expected);
+  // The multipliers are in the residual: it differs from the penalty law's at the same state.
+  auto penalty = friction ? frictionalInterface(rigidMaster) : patchInterface(rigidMaster);
+  assemble(*penalty, unevenCoordinates(), 0.3);
+  const Assembled plain = testing::evaluateOnly<2>(*penalty, x, lambda);
+  double difference = 0, frictionScale = 0;
+  for (std::size_t i = 0; i < a.residual.size(); ++i) difference = std::max(difference, std::abs(a.residual[i] - plain.residual[i]));
+  for (int node = 0; node < 4; ++node) frictionScale = std::max(frictionScale, std::abs(a.residual[2 * node]));
+  EXPECT_GT(difference, 1e-3) << "the multipliers act";
+  if (friction) {
+    EXPECT_GT(frictionScale, 1e-3) << "a tangential force";
+  }
+  double scale = 0;
+  const double error = testing::tangentCentralDifferenceError(
+      a.tangent, x, [&](const std::vector<double>& y) { return testing::trialResidual<2>(*updated, y, lambda); }, &scale);
+  EXPECT_GT(scale, 100.0);
+  EXPECT_LT(error, 1e-6 * scale);
+  if (rigidMaster) {
+    double dScale = 0;
+    const double dError = testing::loadDerivativeCentralDifferenceError(
+        a.dLambda, lambda, [&](double mu) { return testing::trialResidual<2>(*updated, x, mu); }, &dScale);
+    EXPECT_GT(dScale, 1.0);
+    EXPECT_LT(dError, 1e-6 * dScale);
+  }
+}
+
+TEST(MortarInterfaceAugmented, TangentWithMultipliersIsTheCentralDifferenceOfTheResidual) {
+  for (const bool rigid : {false, true}) {
+    expectAugmentedTangentIsTheCentralDifference(rigid, false, 0.0, 1e-3, ContactStatus::Slip);
+    expectAugmentedTangentIsTheCentralDifference(rigid, true, 0.0, 1e-3, ContactStatus::Stick);
+    expectAugmentedTangentIsTheCentralDifference(rigid, true, 0.0, 0.05, ContactStatus::Slip);
+    // ε_T = μ|λ_N|/(s L_k), frozen between updates (the return mapping's frozenNormalTraction).
+    expectAugmentedTangentIsTheCentralDifference(rigid, true, 0.01, 1e-3, ContactStatus::Stick);
+    expectAugmentedTangentIsTheCentralDifference(rigid, true, 0.01, 0.05, ContactStatus::Slip);
+  }
+}
+
+TEST(MortarInterfaceAugmented, AStickingNodesElasticSlipIsItsMotionOverTheIncrementPastItsMultiplier) {
+  // A sticking node's elastic slip is ‖t_T − λ_T‖/ε_T (its weighted motion over the increment, eq. M23):
+  // with the penalty law ‖t_T‖/ε_T; after an update at the same state, t_T − λ_T = ε_T Δũ/A again (the
+  // slip increment's start stays at the commit), and λ_T is the traction of the update.
+  auto interface = augmentedInterface(false, true);
+  assemble(*interface, unevenCoordinates(), 0.3);
+  const auto x = slid(1e-3);
+  evaluateTrial(*interface, x, 0.3);
+  const double before = interface->trialViolation().elasticSlip;
+  EXPECT_GT(before, 1e-4);
+  interface->augment(true);
+  evaluateTrial(*interface, x, 0.3);
+  EXPECT_NEAR(interface->trialViolation().elasticSlip, before, 1e-9 * before);
+  // At the committed positions (no motion) the violation is gone, and the traction is the multiplier's.
+  evaluateTrial(*interface, unevenCoordinates(), 0.3);
+  EXPECT_LT(interface->trialViolation().elasticSlip, 1e-12);
+}
+
 }  // namespace
 }  // namespace contessa::contact
