@@ -162,6 +162,11 @@ class ContactInterface final : public ContactInterfaceBase {
     history_.augment();
   }
   void setConsistentTangents(bool consistent) override { consistentTangents_ = consistent; }
+  void holdContactPoints(bool held) override {
+    // Nothing to hold before a trial evaluation.
+    pointsHeld_ = held && trialPoints_.size() == spec_.slaveNodes.size();
+    heldPoints_ = pointsHeld_ ? trialPoints_ : std::vector<HeldPoint>{};
+  }
   int secantTangentNodes() const override { return secantTangentNodes_; }
   void saveCommittedSlaves(StateRecord& table) const override;
   void restoreSlaves(const StateRecord& table) override;
@@ -183,7 +188,9 @@ class ContactInterface final : public ContactInterfaceBase {
     NodeToFacetGeometry<Facet> geometry;
     geometry.slave = xs;
     geometry.master = facet.x;
-    const double freeEdgeReach = selector_.options().freeEdgeTolerance * spec_.slaveFacetLengths[k];
+    // A held node that was within its facet stays on the facet extended, unfaded (holdContactPoints).
+    const bool unfaded = pointsHeld_ && !heldPoints_[k].pastFreeEdge;
+    const double freeEdgeReach = unfaded ? 0.0 : selector_.options().freeEdgeTolerance * spec_.slaveFacetLengths[k];
     return element_.evaluate(geometry, facet.id, committed, spec_.slaveFacetLengths[k], tangent,
                              contactPointOf(selection, facet, freeEdgeReach), approachOf(k, facet.id, committed));
   }
@@ -220,6 +227,30 @@ class ContactInterface final : public ContactInterfaceBase {
     candidates.clear();
     for (int h : hits) candidates.push_back(facets[h]);
     return selector_.select(xs, candidates, spec_.slaveFacetLengths[k], heldGap(k));
+  }
+  /// Where slave node k touched at a trial evaluation: what holdContactPoints keeps.
+  struct HeldPoint {
+    SelectionKind kind = SelectionKind::None;
+    int facet = -1, vertexNode = -1;
+    std::array<int, 2> edgeNodes{-1, -1};
+    double gap = 0.0;  ///< its sign: the side of a vertex or edge point (contactPointOf)
+    bool pastFreeEdge = false;
+    bool blended = false;  ///< blended over a valley edge (valleyBlend)
+  };
+  static HeldPoint heldPointOf(const FacetSelection<Facet>& selection, bool pastFreeEdge) {
+    return {selection.kind, selection.facet, selection.vertexNode, selection.edgeNodes, selection.gap, pastFreeEdge,
+            false};
+  }
+  /// The selection of held slave node k: its held facet and contact point; the gap is the element's.
+  FacetSelection<Facet> heldSelection(std::size_t k) const {
+    const HeldPoint& p = heldPoints_[k];
+    FacetSelection<Facet> selection;
+    selection.kind = p.kind;
+    selection.facet = p.facet;
+    selection.vertexNode = p.vertexNode;
+    selection.edgeNodes = p.edgeNodes;
+    selection.gap = p.gap;
+    return selection;
   }
   /// The gap below which the contact law holds slave node k in contact (the selector's free-edge rule): 0
   /// for the penalty law (eq. 6); with the augmented Lagrangian −λ_N/ε_N ≥ 0, where λ_N + ε_N g_N < 0
@@ -351,6 +382,9 @@ class ContactInterface final : public ContactInterfaceBase {
   NormalToggleDamping toggleDamping_;  ///< tangent of augmented nodes that cycle between open and closed
   bool consistentTangents_ = false;  ///< the damping's secants left out of the tangent (setConsistentTangents)
   int secantTangentNodes_ = 0;       ///< nodes the latest trial evaluation gave (or would give) a secant
+  std::vector<HeldPoint> trialPoints_;  ///< per slave node, where the latest trial evaluation put it
+  std::vector<HeldPoint> heldPoints_;   ///< trialPoints_ when the hold began (holdContactPoints)
+  bool pointsHeld_ = false;
   Facets committedMaster_;       ///< master positions of the committed configuration
   Facets lastFacets_;            ///< master positions of the latest trial evaluation
   std::vector<Point> committedSlave_;  ///< slave positions of the committed configuration
@@ -381,7 +415,14 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
     if (!evaluatesSlave_[k]) continue;
     const Point xs = slavePosition(position, k);
     if (updateTrial) lastSlave_[k] = xs;
-    const FacetSelection<Facet> selection = select(k, xs, facets, tree, hits, candidates);
+    // Held (the Jacobian check): the facet and contact point of the hold's start; the candidates are still
+    // searched, for a valley blend.
+    FacetSelection<Facet> selection = select(k, xs, facets, tree, hits, candidates);
+    if (pointsHeld_) selection = heldSelection(k);
+    if (updateTrial) {
+      trialPoints_.resize(spec_.slaveNodes.size());
+      trialPoints_[k] = heldPointOf(selection, false);
+    }
 
     SlaveNodeState out;
     out.gap = selection.kind == SelectionKind::None ? std::numeric_limits<double>::infinity() : selection.gap;
@@ -400,7 +441,16 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       const auto& facet = facets[selection.facet];
       const ContactHistory<kXi> committed = committedHistoryOn(k, selection.facet);
       NodeToFacetResult<Facet> r = evaluateElement(k, xs, facet, selection, committed);
-      const std::optional<Blend> blend = valleyBlend(k, xs, selection, candidates, committed);
+      if (pointsHeld_) out.gap = r.gap;
+      // Past a free edge by round-off (the fade's weight 1 exactly, its derivative ~6 s/reach with s < 1e-8):
+      // held unfaded, which W is to round-off, so that the held facet's extension across an interior edge
+      // (a step of ±h) is not taken for a free edge's.
+      if (updateTrial) trialPoints_[k].pastFreeEdge = r.pastFreeEdge && r.freeEdgeWeight < 1.0;
+      // Held, a node blends over a valley edge only if it did (a step of a master node on a flat surface
+      // tilts two facets into a valley on one side: another branch).
+      std::optional<Blend> blend;
+      if (!pointsHeld_ || heldPoints_[k].blended) blend = valleyBlend(k, xs, selection, candidates, committed);
+      if (updateTrial) trialPoints_[k].blended = blend.has_value();
       if (blend) applyBlend(*blend, out.gap, r, committed);
       bool openSecant = false;  // an open node whose tangent holds the normal secant (NormalToggleDamping)
       if (updateTrial) {
@@ -421,6 +471,7 @@ void ContactInterface<Facet>::evaluate(const NodePosition& position, double load
       }
       trial = r.trial;
       change = changeOf(k, out.gap, &r, committed);
+      if (blend) change.trialContactKind = 4;
       out.status = r.status;
       out.pressure = r.status == ContactStatus::Open ? 0.0 : -r.normalTraction;
       out.elasticSlip = elasticSlipOf(r, committed, spec_.law.isAugmented());

@@ -47,7 +47,8 @@ struct SlaveNodeChange {
   bool slipReversed = false;  ///< slipping in both states, in opposite directions
   int trialFacet = -1;        ///< the master facet the trial state was evaluated on (−1: none)
   /// Where on trialFacet the trial state touches (ContactPoint): its kind as an int (0 the projection,
-  /// 1 a vertex, 2 an edge point, 3 the projection past a free edge, faded) and the vertex's or the edge's
+  /// 1 a vertex, 2 an edge point, 3 the projection past a free edge, faded, 4 blended over a valley edge with
+  /// the neighbouring facet: ValleyBlend.hpp) and the vertex's or the edge's
   /// nodes, local in the facet (−1: none).
   int trialContactKind = 0;
   int trialContactNodes[2] = {-1, -1};
@@ -184,6 +185,16 @@ class ContactInterfaceBase {
   /// watches the iterates. The Jacobian check's W (JacobianCheck): its differences of the residual measure
   /// the consistent tangent only. Nothing for an interface without such secants.
   virtual void setConsistentTangents(bool /*consistent*/) {}
+  /// While `held`, every slave node is evaluated where the latest trial evaluation before the hold put it: on
+  /// the same master facet, at the same contact point (its projection on the facet, extended past its edges,
+  /// or the same vertex or edge point on the same side), faded past a free edge and blended over a valley edge
+  /// only if it was then. That is
+  /// the branch of the residual whose derivative W is; the Jacobian check (model/JacobianCheck.hpp) holds it
+  /// while it perturbs x, so that a node on a line of master nodes (a knife edge, where a step of ±h tilts two
+  /// coplanar faces into a ridge or a valley) is differenced on its own facet instead of being left out.
+  /// Open or closed, stick or slip are not held: they follow the contact law. Nothing for an interface
+  /// without a facet selection (mortar's segments follow x).
+  virtual void holdContactPoints(bool /*held*/) {}
   /// Slave nodes of this rank to which the latest trial evaluation gave a secant slip tangent (with
   /// consistent tangents: would have given one).
   virtual int secantTangentNodes() const { return 0; }

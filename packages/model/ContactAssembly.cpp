@@ -467,6 +467,10 @@ void ContactAssembly::setConsistentTangents(bool consistent) {
   for (auto& c : interfaces_) c->setConsistentTangents(consistent);
 }
 
+void ContactAssembly::holdContactPoints(bool held) {
+  for (auto& c : interfaces_) c->holdContactPoints(held);
+}
+
 int ContactAssembly::secantTangentNodes() const {
   int n = 0;
   for (const auto& c : interfaces_) n += c->secantTangentNodes();

@@ -92,6 +92,9 @@ class ContactAssembly {
   /// Every interface's tangents the consistent ones while `consistent` (ContactInterfaceBase::
   /// setConsistentTangents: no slip-reversal secants), for the Jacobian check.
   void setConsistentTangents(bool consistent);
+  /// Every interface's slave nodes held on the facets and contact points of the latest trial evaluation
+  /// while `held` (ContactInterfaceBase::holdContactPoints), for the Jacobian check.
+  void holdContactPoints(bool held);
   /// The owned slave nodes (every interface) to which the latest trial evaluation gave, or with consistent
   /// tangents would have given, a secant slip tangent.
   int secantTangentNodes() const;

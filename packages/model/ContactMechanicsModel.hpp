@@ -183,6 +183,10 @@ class ContactMechanicsModel : public Thyra::StateFuncModelEvaluatorBase<double>,
   /// would give a secant at this evaluation. Evaluates afresh (no pass is served) and changes the trial
   /// state as an evaluation does.
   int consistentJacobian(const Thyra::VectorBase<double>& x, double lambda, Thyra::LinearOpBase<double>& W) const;
+  /// While `held`, every contact slave node is evaluated on the master facet and at the contact point of the
+  /// latest evaluation before the hold (ContactInterfaceBase::holdContactPoints): the branch W differentiates.
+  /// No pass made before a change of the hold serves an evaluation after it.
+  void holdContactPoints(bool held) const;
   /// Who couples two DOFs (global ids), in words: "element 12 of block 'tube'", "contact 'plate' slave
   /// node 41" (Exodus numbering), or both.
   std::string describeCoupling(GO rowDof, GO columnDof) const;

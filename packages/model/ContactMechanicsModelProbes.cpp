@@ -96,6 +96,11 @@ int ContactMechanicsModel::consistentJacobian(const Thyra::VectorBase<double>& x
   return all;
 }
 
+void ContactMechanicsModel::holdContactPoints(bool held) const {
+  contact_->holdContactPoints(held);
+  passServesEvaluations_ = false;
+}
+
 std::string ContactMechanicsModel::describeCoupling(GO rowDof, GO columnDof) const {
   const GlobalIndex a = rowDof / dim_, b = columnDof / dim_;
   std::vector<std::string> who;

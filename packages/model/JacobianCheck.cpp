@@ -137,9 +137,17 @@ class PerturbedResiduals {
     if (!xt_->getMap()->isSameAs(rowMap)) throw std::logic_error("JacobianCheck: W's rows are not distributed as x");
     xNorm_ = xt_->normInf();
     centre_ = Thyra::createMember(model.get_f_space());
+    // f(x) puts every slave node on its facet and contact point; held from here on (the branch W is the
+    // derivative on: the header), f(x) again on that branch (the same but for a node past a free edge by
+    // round-off, held unfaded).
+    residual(model_, xp_, lambda_, centre_);
+    model_.holdContactPoints(true);
     residual(model_, xp_, lambda_, centre_);
     base_ = contactKeys(model_.trialIncrement());
   }
+  ~PerturbedResiduals() { model_.holdContactPoints(false); }
+  PerturbedResiduals(const PerturbedResiduals&) = delete;
+  PerturbedResiduals& operator=(const PerturbedResiduals&) = delete;
 
   const Teuchos::Comm<int>& comm() const { return *rowMap_.getComm(); }
   long evaluations() const { return evaluations_; }
@@ -196,7 +204,7 @@ class PerturbedResiduals {
   double xNorm_ = 0;
   RCP<Thyra::VectorBase<double>> centre_;
   ContactKeys base_;
-  long evaluations_ = 1;  // f(x)
+  long evaluations_ = 2;  // f(x), before and after the hold
 };
 
 // One column's difference quotients D_ij on this rank's rows and the scale each entry is measured

@@ -8,15 +8,24 @@
 // Entry error, robust against tiny entries (docs/user-guide.md, "Checking the Jacobian"):
 //   e_ij = |W_ij − D_ij| / max(|W_ij|, τ · max_k |W_ik|),   τ = rowFloor,
 // D_ij = (f_i(x + h_j e_j) − f_i(x − h_j e_j)) / (2 h_j),   h_j = η · max(|x_j|, ‖x‖_∞, 1),  η = step,
-// W is the derivative with every contact node's status (open, stick, slip, slip reversed, the master
-// facet it is evaluated on, and where on it the node touches: its projection, an edge point or a vertex,
-// which edge or vertex) held: where
-// the status of some node changes on one side of ±h_j (the residual's kink: a contact opening or
-// closing, stick turning to slip, a node touching an edge point instead of a face), D_ij is the one-sided
-// difference on the other side (second order, with a half step added there, which must keep the statuses
-// too: a node that round-off moves between two coplanar faces and back is no smooth side); where it changes
-// on both sides, h_j shrinks by 1e-2 twice (τ grows as 1/h_j with it, as the noise does), and a column that still straddles kinks is not compared
-// (counted and named in the report: its entries have no derivative to check at this state).
+// W is the derivative with every contact node's state held: its status (open, stick, slip, slip reversed),
+// the master facet it is evaluated on, and where on it the node touches (its projection, an edge point or a
+// vertex, which edge or vertex, past a free edge, blended over a valley edge). The facet and the contact point
+// are HELD during the perturbed evaluations (ContactMechanicsModel::holdContactPoints: each slave node is
+// evaluated on the facet and at the contact point of f(x), the facet extended past its edges), so D_ij is
+// the derivative of the branch W is on. A node on a line of master nodes (a knife edge: a step of ±h_j of a
+// master node tilts two coplanar faces into a ridge on one side and a valley on the other) is so compared
+// like with like; before the hold such columns were differenced on one side or not compared (the 3D ring on
+// a node line: 64 columns not compared, 71 one-sided; docs/verification-contact.md §9.4). (A node past a
+// free edge by round-off only, its fade's weight exactly 1, is held unfaded: W is that branch's derivative to
+// round-off, and the held facet's extension across an interior edge is no free edge.)
+// The status follows the contact law and is not held: where it changes on one side of ±h_j (the residual's
+// kink: a contact opening or closing, stick turning to slip), D_ij is the one-sided
+// difference on the other side (second order, with a half step added there, which must keep the state
+// too); where it changes on both sides, h_j shrinks by 1e-2 twice (τ grows as 1/h_j with it, as the noise
+// does), and a column that still straddles kinks is not compared (counted and named in the report, by what
+// changed: status, facet, contact point; with the hold only a status, or a held node's fade starting or
+// ending past a free edge: its entries have no derivative to check at this state).
 // Where the residual bends within h_j (h_j |f''| / 2 above 1e-4 of an entry's scale, from the second
 // difference of the same residuals), the column is differenced again with h_j shrunk (up to twice, τ
 // growing with it): when both agree to 1e-5 the longer step's differences stand, else the shorter's
@@ -49,7 +58,9 @@ struct JacobianComparison {
   long nonSmoothColumns = 0;      ///< columns with a contact status change on both sides at every step tried
   GO firstNonSmoothColumn = -1;
   /// Of the columns not compared, those where some node's status (open, stick, slip, slip reversed), its
-  /// master facet, or its contact point on the facet (projection, edge, vertex: ContactPoint) changes.
+  /// master facet, or its contact point on the facet (projection, edge, vertex, past a free edge, blended:
+  /// ContactPoint) changes. With the facet and contact point held only the status can (and the fade of a
+  /// node held past a free edge).
   long nonSmoothFor[3] = {0, 0, 0};
   long oneSidedColumns = 0;       ///< columns differenced on one side: the other side changes a contact state
   long oneSidedFor[3] = {0, 0, 0};  ///< of those, the changes (status, facet, contact point) as above

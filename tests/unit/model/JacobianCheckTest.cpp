@@ -35,8 +35,9 @@ deck::ProblemDefinition blockOnBase() {
 // A 1 x 1 x 1 mm linear elastic block (2 x 1 x 1 Hex8) pressed lightly onto a rigid base (t_N = -2 MPa at zero displacement)
 // with Coulomb friction (mu = 0.3, eps_T = 1e6 MPa/mm, constant): the stick radius mu|t_N|/eps_T is
 // 6e-7 mm, below the check's step h = 1e-6 mm, as at the first iterates of the 3D Coulomb block
-// (inputs/verification/coulomb_block_3d.xml).
-deck::ProblemDefinition blockOnBase3d() {
+// (inputs/verification/coulomb_block_3d.xml). `twoFaces`: the base is two coplanar faces meeting at x = 0.5,
+// under the block's middle row of bottom nodes.
+deck::ProblemDefinition blockOnBase3d(bool twoFaces = false) {
   auto p = test::newProblem();
   test::setGrid(p->sublist("Mesh"), "Box", {2, 1, 1});
   test::addBlock(*p, "block_1", "Hex8", "elastic");
@@ -49,8 +50,14 @@ deck::ProblemDefinition blockOnBase3d() {
   base.set("Friction Coefficient", 0.3);
   base.set("Slip Tolerance", 0.0);
   auto& rigid = base.sublist("Rigid Surface");
-  rigid.set("Points", test::arrayOf<double>({-1.0, 2e-6, -1.0, -1.0, 2e-6, 2.0, 2.0, 2e-6, 2.0, 2.0, 2e-6, -1.0}));
-  rigid.set("Facets", test::arrayOf<int>({0, 1, 2, 3}));
+  if (twoFaces) {
+    rigid.set("Points", test::arrayOf<double>({-1.0, 2e-6, -1.0, -1.0, 2e-6, 2.0, 0.5, 2e-6, 2.0, 0.5, 2e-6, -1.0,
+                                               2.0, 2e-6, 2.0, 2.0, 2e-6, -1.0}));
+    rigid.set("Facets", test::arrayOf<int>({0, 1, 2, 3, 3, 2, 4, 5}));
+  } else {
+    rigid.set("Points", test::arrayOf<double>({-1.0, 2e-6, -1.0, -1.0, 2e-6, 2.0, 2.0, 2e-6, 2.0, 2.0, 2e-6, -1.0}));
+    rigid.set("Facets", test::arrayOf<int>({0, 1, 2, 3}));
+  }
   rigid.set("Motion", test::arrayOf<double>({0.0, 0.0, 0.0}));
   return test::buildOn(*p, test::everyRank());
 }
@@ -109,7 +116,8 @@ TEST(JacobianCheck, FindsTheModelsJacobianRightAndLeavesNoTrace) {
   // column is differenced again at a shorter step and both agree: the longer step's differences stand.
   EXPECT_EQ(r.nonSmoothColumns, 0);
   EXPECT_EQ(r.bentColumns, 0);
-  EXPECT_EQ(r.residualEvaluations, 1 + 2 * fx.model->get_x_space()->dim() + 2 * r.retriedColumns);
+  // (f(x) twice: before the contact points are held and on the held branch)
+  EXPECT_EQ(r.residualEvaluations, 2 + 2 * fx.model->get_x_space()->dim() + 2 * r.retriedColumns);
   // No trace: the same latest pass (the residual is served from it, no new element pass), the same
   // contact trial state, the same residual to the bit.
   EXPECT_EQ(fx.model->elementPasses(), passes);
@@ -268,6 +276,42 @@ TEST(JacobianCheck, ChecksTheConsistentTangentOfANodeWhoseSlipReversed) {
   EXPECT_GT(newton.worstRelativeError, 0.1) << model::JacobianCheck::describe(newton, *fx.model);
   EXPECT_GT(newton.normwiseError, 1e-3) << model::JacobianCheck::describe(newton, *fx.model);
   EXPECT_EQ(newton.secantTangentNodes, 0);  // compare() takes W as given
+}
+
+// A knife edge: the block's middle row of bottom nodes lies on the line x = 0.5 where the base's two coplanar
+// faces meet, so a step of ±h along x puts such a node inside one face or the other (a facet change on one
+// side; on a deformable master a step of a master node tilts the faces into a ridge or a valley instead, as
+// under the ring of edges_ring_jacobian_3d). W is the derivative on the facet the node is on; the check holds
+// each node's facet and contact point (ContactMechanicsModel::holdContactPoints), so every column is
+// differenced on both sides on that facet, none on one side only, none left out.
+TEST(JacobianCheck, HoldsEachNodesFacetOnAKnifeEdge) {
+  Fixture fx(blockOnBase3d(true));
+  auto tx = Extract::getTpetraVector(fx.x);
+  tx->putScalar(0.0);
+  fx.residual(0.0);  // every bottom node in contact, sticking (t_N = -2 MPa)
+  // The knife edge is there: some slave node's x moved by ±1e-6 mm (the check's step) changes its facet.
+  const auto facetsAt = [&](model::GO dof, double step) {
+    const model::LO local = tx->getMap()->getLocalElement(dof);
+    const bool mine = local != Teuchos::OrdinalTraits<model::LO>::invalid();
+    if (mine) tx->getDataNonConst(0)[local] = step;
+    fx.residual(0.0);
+    if (mine) tx->getDataNonConst(0)[local] = 0.0;
+    std::vector<int> facets;
+    for (const auto& n : fx.model->trialIncrement()) facets.push_back(n.trialFacet);
+    return facets;
+  };
+  int knifeEdges = 0;
+  for (const auto node : fx.problem.contacts[0].slaveNodes)
+    knifeEdges += facetsAt(3 * node, 1e-6) != facetsAt(3 * node, -1e-6) ? 1 : 0;
+  ASSERT_EQ(knifeEdges, 2);  // the two bottom nodes at x = 0.5 (z = 0 and 1)
+  fx.residual(0.0);
+
+  const auto r = model::JacobianCheck().check(*fx.model, *fx.x, 0.0);
+  const std::string line = model::JacobianCheck::describe(r, *fx.model);
+  EXPECT_LT(r.worstRelativeError, 1e-5) << line;
+  EXPECT_LT(r.normwiseError, 1e-6) << line;
+  EXPECT_EQ(r.nonSmoothColumns, 0) << line;
+  EXPECT_EQ(r.oneSidedColumns, 0) << line;
 }
 
 }  // namespace
