@@ -279,9 +279,17 @@ double RowValues::largestChange(const model::CrsMatrix& matrix, const std::vecto
   return largest;
 }
 
-bool GraphKeyedPreconditionerFactory::keepsCoarseLevels() const {
-  const auto params = inner_->getParameterList();
-  return !params.is_null() && params->isType<std::string>("reuse: type") && params->get<std::string>("reuse: type") == "RAP";
+bool GraphKeyedPreconditionerFactory::keepsCoarseLevels(const model::CrsMatrix* matrix,
+                                                        const std::vector<char>& volatileRows) const {
+  const auto params = inner_->getNonconstParameterList();
+  if (params.is_null()) return false;
+  if (chooseReuseType_ && matrix != nullptr) {
+    double local[2] = {0.0, static_cast<double>(matrix->getNodeNumRows())}, total[2] = {0.0, 0.0};
+    for (const char flag : volatileRows) local[0] += flag ? 1.0 : 0.0;
+    Teuchos::reduceAll(*matrix->getComm(), Teuchos::REDUCE_SUM, 2, local, total);
+    params->set("reuse: type", std::string(total[0] <= kCoarseKeptRowFraction * total[1] ? "RAP" : "RP"));
+  }
+  return params->isType<std::string>("reuse: type") && params->get<std::string>("reuse: type") == "RAP";
 }
 
 PreconditionerSetUpCounts& GraphKeyedPreconditionerFactory::counts() {
@@ -302,7 +310,7 @@ GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decid
     reason = static_cast<int>(Decision::Unchanged);
   else if (last.coarseZeros)
     reason = static_cast<int>(Decision::CoarseZeros);
-  else if (keepsCoarseLevels() && last.reference.largestChange(*matrix, rowHashes) > kCoarseKeptRowChange)
+  else if (last.keepsCoarse && last.reference.largestChange(*matrix, rowHashes) > kCoarseKeptRowChange)
     reason = static_cast<int>(Decision::LargeChange);
   if (!matrix.is_null() && matrix->getComm()->getSize() > 1) {
     int any = 0;
@@ -327,16 +335,19 @@ void GraphKeyedPreconditionerFactory::startOver(const Teuchos::RCP<const Source>
     record = SetUp{};
     return;
   }
+  const bool keepsCoarse = keepsCoarseLevels(matrix, volatileRows);
   {
     const ZerosFilledInRows filled(*matrix, volatileRows, kPatternFill);
     inner_->initializePrec(src, prec, use);
   }
   record = SetUp{};
+  record.keepsCoarse = keepsCoarse;
   record.graph = matrix->getCrsGraph();
   record.zeroEntries = zeroEntryPositions(*matrix, volatileRows);
   record.volatileRows = std::move(volatileRows);
   record.reference.hold(*matrix, record.volatileRows, rowHashes);
-  if (matrix->getComm()->getSize() > 1) record.coarseZeros = coarseZerosMatter(*prec, *matrix->getComm());
+  // A hierarchy that keeps its coarse levels multiplies nothing at a re-set-up: their zeros cannot matter.
+  if (matrix->getComm()->getSize() > 1 && !keepsCoarse) record.coarseZeros = coarseZerosMatter(*prec, *matrix->getComm());
 }
 
 void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const Source>& src,

@@ -76,6 +76,11 @@ inline constexpr double kPatternFill = 1e-250;
 /// about 100; bench/README.md, "Eighth round").
 inline constexpr double kCoarseKeptRowChange = 1.0;
 
+/// The largest share of the matrix's rows that may have changed between set-ups (the volatile rows) for
+/// Contessa's own choice of "reuse: type" to be "RAP" (GraphKeyedPreconditionerFactory): the 3D punch's
+/// contact rows are 1.4 % of its rows at 2·10^5 unknowns, a nonlinear solid's changed rows all of them.
+inline constexpr double kCoarseKeptRowFraction = 0.1;
+
 /// How the set-ups of a run went (process-wide; every rank counts alike).
 struct PreconditionerSetUpCounts {
   long reused = 0;           ///< re-set-ups of a kept hierarchy (aggregates and P kept)
@@ -109,7 +114,12 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
  public:
   using Factory = Thyra::PreconditionerFactoryBase<double>;
   using Source = Thyra::LinearOpSourceBase<double>;
-  explicit GraphKeyedPreconditionerFactory(Teuchos::RCP<Factory> inner) : inner_(std::move(inner)) {}
+  /// With `chooseReuseType` (the deck gave no "reuse: type"), each fresh set-up sets the inner factory's
+  /// "reuse: type" itself: "RAP" while the rows that changed between set-ups are at most
+  /// kCoarseKeptRowFraction of the matrix (contact rows), "RP" otherwise (a nonlinear solid, whose every
+  /// row changes: its coarse levels would never be kept, and each Jacobian would start over).
+  explicit GraphKeyedPreconditionerFactory(Teuchos::RCP<Factory> inner, bool chooseReuseType = false)
+      : inner_(std::move(inner)), chooseReuseType_(chooseReuseType) {}
   const Teuchos::RCP<Factory>& inner() const { return inner_; }
 
   static PreconditionerSetUpCounts& counts();
@@ -140,6 +150,7 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
     std::vector<std::uint64_t> rowHashes;       // each local row's values at the last set-up, fresh or reused
     std::vector<char> volatileRows;             // local rows whose values changed between set-ups on this graph
     bool coarseZeros = false;                   // a coarse matrix of the hierarchy held exact zeros
+    bool keepsCoarse = false;                   // set up with "reuse: type" = "RAP": coarse levels kept
     // The matrix and the hash of its values at the last set-up, fresh or reused.
     Teuchos::RCP<const model::CrsMatrix> matrix;
     std::uint64_t valuesHash = 0;
@@ -153,10 +164,12 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
   void startOver(const Teuchos::RCP<const Source>& src, Thyra::PreconditionerBase<double>* prec,
                  Thyra::ESupportSolveUse use, const model::CrsMatrix* matrix, SetUp& record,
                  const std::vector<std::uint64_t>& rowHashes) const;
-  // Whether MueLu keeps the coarse levels at a re-set-up ("reuse: type" = "RAP").
-  bool keepsCoarseLevels() const;
+  // Whether MueLu's next hierarchy keeps its coarse levels at a re-set-up ("reuse: type" = "RAP"), after
+  // choosing the type from the volatile rows where the factory chooses it (constructor). Collective.
+  bool keepsCoarseLevels(const model::CrsMatrix* matrix, const std::vector<char>& volatileRows) const;
 
   Teuchos::RCP<Factory> inner_;
+  bool chooseReuseType_ = false;
   mutable std::map<const Thyra::PreconditionerBase<double>*, SetUp> setUps_;
 };
 

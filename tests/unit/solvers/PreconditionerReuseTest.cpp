@@ -367,3 +367,25 @@ TEST(PreconditionerReuse, KeptCoarseLevelsServeSmallChangesOfContactRowsAndLarge
   const auto c = uniformMatrix(graph, 3.0);
   EXPECT_TRUE(std::isinf(held.largestChange(*c, contessa::solvers::rowValueHashes(*c)))) << "rows not held";
 }
+
+// Without the deck's "reuse: type" the wrapper chooses it per hierarchy: "RAP" while few rows changed
+// between set-ups, "RP" once more than kCoarseKeptRowFraction of them did (a nonlinear solid), so that such a
+// Jacobian does not start the hierarchy over at every Newton iteration.
+TEST(PreconditionerReuse, ReuseTypeChosenFromTheShareOfRowsThatChange) {
+  RCP<const Teuchos::Comm<int>> comm = Tpetra::getDefaultComm();
+  RCP<const Map> map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  auto recording = rcp(new RecordingFactory());
+  auto list = rcp(new Teuchos::ParameterList("MueLu"));
+  list->set("reuse: type", std::string("RAP"));
+  recording->setParameterList(list);
+  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording, true);
+  auto prec = factory.createPrec();
+  const auto graph = bandGraph(map, false);
+  factory.initializePrec(jacobianOn(graph, 1.0), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(list->get<std::string>("reuse: type"), "RAP") << "no row has changed yet";
+  factory.initializePrec(jacobianOn(graph, 2.0), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 2) << "rows not held at the set-up changed";
+  EXPECT_EQ(list->get<std::string>("reuse: type"), "RP") << "every row changed";
+  for (double scale : {3.0, 4.0}) factory.initializePrec(jacobianOn(graph, scale), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 2) << "an RP hierarchy is re-set-up, not started over";
+}
