@@ -2,7 +2,7 @@
 """3D contact at 10^5–10^6 unknowns: a block pressed by a rigid punch (inputs/punch_3d.xml).
 
     /usr/bin/python3 bench/contact3d_bench.py [--sizes 40 58 86] [--ranks 1 2] [--work DIR] [--contessa PATH]
-        [--forcing "Newton Target" Constant] [--repeat 3]
+        [--forcing "Newton Target" Constant] [--muelu "implicit R=transpose: use implicit=true" ...] [--repeat 3]
 
 The deck is a quarter block of Hex8 (n x n x n/2 elements, 3 (n+1)^2 (n/2+1) unknowns: n = 40, 58, 86
 give 1.06e5, 3.13e5 and 9.99e5) pressed by a rigid square punch covering part of its top face,
@@ -17,12 +17,15 @@ near-null space). For each size and rank count it prints one Markdown row:
   `contessa --timers`, the largest rank per phase;
 - peak memory per rank (the summary's VmHWM: largest rank and the sum over ranks);
 - MueLu's set-ups from the summary: started over (on a new graph, a filled-in entry, a coarse matrix's zeros,
-  a refused re-set-up; the first set-up not counted) / reused (aggregates and P kept) / skipped (values
-  unchanged);
+  a refused re-set-up, a row changed by more than kept coarse levels allow; the first set-up not counted) /
+  reused (aggregates and P kept; with "reuse: type = RAP" the coarse levels too) / skipped (values unchanged);
 - the 2-rank answer against one rank's (compare_history.py, 1e-8 relative on every history column but
   the solver counts);
 - with --forcing, one row set per Krylov forcing term (Piro/NOX/Direction/Forcing Term: "Newton Target",
-  the default, or "Constant", the deck's tolerance for every solve), and with --repeat R each run R times
+  the default, or "Constant", the deck's tolerance for every solve); with --muelu, one row set per MueLu
+  variant "LABEL=PARAMETER=VALUE[;PARAMETER=VALUE...]" (parameters of the deck's MueLu sublist,
+  Piro/Stratimikos/Preconditioner Types/MueLu; "LABEL=" alone is the deck as it is); with --repeat R each
+  run R times
   (interleaved) with the CPU time (user + system of every rank, getrusage of the children) as the median
   and the range; the wall and phase columns are the first run's.
 
@@ -53,13 +56,30 @@ def unknowns(n):
     return 3 * (n + 1) ** 2 * (n // 2 + 1)
 
 
-def run(contessa, n, ranks, work, forcing=None, repeat=0):
+MUELU = "Piro/Stratimikos/Preconditioner Types/MueLu/"
+
+
+def variants(args):
+    """(label, --set list) per variant: the forcing terms times the MueLu variants."""
+    muelu = []
+    for text in args.muelu or [""]:
+        label, _, given = text.partition("=")
+        muelu.append((label, [MUELU + s.strip() for s in given.split(";") if s.strip()]))
+    out = []
+    for forcing in args.forcing:
+        for label, sets in muelu:
+            forcing_sets = [f"Piro/NOX/Direction/Forcing Term={forcing}"] if forcing else []
+            out.append(("; ".join(x for x in (forcing, label) if x) or None, forcing_sets + sets))
+    return out
+
+
+def run(contessa, n, ranks, work, variant=(None, []), repeat=0):
     """One timed run; its "cpu" is the user + system time of contessa on every rank (the children's rusage)."""
-    sets = [f"Problem/Mesh/Elements {axis}={count}" for axis, count in (("X", n), ("Y", n), ("Z", n // 2))]
+    label, extra = variant
+    sets = [f"Problem/Mesh/Elements {axis}={count}" for axis, count in (("X", n), ("Y", n), ("Z", n // 2))] + extra
     name = f"n{n}_np{ranks}"
-    if forcing:
-        sets.append(f"Piro/NOX/Direction/Forcing Term={forcing}")
-        name += "_" + forcing.replace(" ", "")
+    if label:
+        name += "_" + "".join(c for c in label if c.isalnum())
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     r = timed_run(contessa, DECK, ranks, os.path.join(work, f"{name}_{repeat}"), sets)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -70,7 +90,8 @@ def run(contessa, n, ranks, work, forcing=None, repeat=0):
 def setups(summary):
     """MueLu's set-ups of the run: started over / reused / skipped (the summary's counts)."""
     restarts = sum(summary.get(f"preconditioner_{k}", 0) for k in
-                   ("new_graph_setups", "pattern_restarts", "coarse_zero_restarts", "refused_reuses"))
+                   ("new_graph_setups", "pattern_restarts", "coarse_zero_restarts", "refused_reuses",
+                                                               "large_change_restarts"))
     return f"{restarts} / {summary.get('preconditioner_reused_setups', 0)} / {summary.get('preconditioner_unchanged_setups', 0)}"
 
 
@@ -85,35 +106,36 @@ def main():
     parser.add_argument("--sizes", type=int, nargs="+", default=[40, 58, 86])
     parser.add_argument("--ranks", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--forcing", nargs="+", default=[None], help='Forcing Term values, e.g. "Newton Target" Constant')
+    parser.add_argument("--muelu", nargs="+", help='MueLu variants, "LABEL=PARAMETER=VALUE[;PARAMETER=VALUE...]"')
     parser.add_argument("--repeat", type=int, default=1)
     args = parser.parse_args()
     work = work_directory(args, "contact3d_bench_")
-    print_table_header(["n", "unknowns", "ranks", "forcing term", "CPU [s] median (range)", "slave / contact nodes", "punch force [N]", "Newton it.", "Krylov it./solve (total)",
+    print_table_header(["n", "unknowns", "ranks", "variant", "CPU [s] median (range)", "slave / contact nodes", "punch force [N]", "Newton it.", "Krylov it./solve (total)",
                         "wall [s]", "per Newton it. [s]", "preconditioner set-up [s]", "Krylov [s]", "contact [s]",
                         "elements + assembly [s]", "set-up [s]", "peak memory: largest rank / sum [MiB]",
                         "MueLu set-ups started over / reused / skipped", "answer vs 1 rank"])
     for n in args.sizes:
-        cases = [(ranks, forcing) for forcing in args.forcing for ranks in args.ranks]
+        cases = [(ranks, variant) for variant in range(len(variants(args))) for ranks in args.ranks]
         runs = {case: [] for case in cases}
         for repeat in range(args.repeat):  # interleaved, so that the machine's load falls on every case alike
-            for ranks, forcing in cases:
-                runs[(ranks, forcing)].append(run(args.contessa, n, ranks, work, forcing, repeat))
+            for ranks, variant in cases:
+                runs[(ranks, variant)].append(run(args.contessa, n, ranks, work, variants(args)[variant], repeat))
         references = {}
-        for ranks, forcing in cases:
-            print_row(n, ranks, forcing, runs[(ranks, forcing)], references)
+        for ranks, variant in cases:
+            print_row(n, ranks, variants(args)[variant][0], runs[(ranks, variant)], references)
 
 
-def print_row(n, ranks, forcing, runs, references):
+def print_row(n, ranks, variant, runs, references):
     r = runs[0]
     s = r.get("summary")
-    label = forcing or "deck default"
+    label = variant or "deck default"
     if any(x["status"] != 0 or x.get("summary") is None for x in runs):
         print(f"| {n} | {unknowns(n)} | {ranks} | {label} | FAILED (exit {r['status']}: {' '.join(r['stderr'])}) ||||||||||||||")
         return
     cpus = [x["cpu"] for x in runs]
     cpu = f"{statistics.median(cpus):.1f} ({min(cpus):.1f}-{max(cpus):.1f})" if len(cpus) > 1 else f"{cpus[0]:.1f}"
     history = os.path.join(r["out"], "punch_3d.history.csv")
-    reference = references.setdefault(forcing, history)
+    reference = references.setdefault(variant, history)
     answer = "reference" if reference == history else history_difference(reference, history)
     phase = {k: sum(r["phases"].get(p, 0.0) for p in v) for k, v in PHASES.items()}
     krylov = s["linear_iterations"] / max(s["linear_solves"], 1)

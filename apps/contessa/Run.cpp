@@ -277,6 +277,7 @@ void writeRunReport(const CommandLine& cl, const std::string& name, const solver
   report.symmetricFactorizations = solvers::mumpsCounters().symmetricFactorizations;
   report.reusedFactorizations = solvers::mumpsCounters().reusedFactorizations;
   report.preconditionerUnchangedSetUps = setUps.unchanged;
+  report.preconditionerLargeChangeRestarts = setUps.largeChange;
   report.graphRebuilds = model.graphRebuilds();
   report.graphRebuildSeconds = model.graphRebuildSeconds();
   report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -137,6 +137,7 @@ std::string summaryJson(const RunReport& r) {
       << "  \"symmetric_factorizations\": " << r.symmetricFactorizations << ",\n"
       << "  \"reused_factorizations\": " << r.reusedFactorizations << ",\n"
       << "  \"preconditioner_unchanged_setups\": " << r.preconditionerUnchangedSetUps << ",\n"
+      << "  \"preconditioner_large_change_restarts\": " << r.preconditionerLargeChangeRestarts << ",\n"
       << "  \"graph_rebuilds\": " << r.graphRebuilds << ",\n"
       << "  \"graph_rebuild_seconds\": " << number(r.graphRebuildSeconds) << ",\n"
       << "  \"wall_seconds\": " << number(r.wallSeconds) << ",\n"

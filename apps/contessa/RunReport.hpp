@@ -45,6 +45,7 @@ struct RunReport {
   long symmetricFactorizations = 0;  ///< of them, LDLᵀ (a symmetric Jacobian on one rank)
   long reusedFactorizations = 0;     ///< Jacobians equal to the last factorised one: no factorisation
   long preconditionerUnchangedSetUps = 0;  ///< MueLu set-ups skipped: the values as at the last set-up
+  long preconditionerLargeChangeRestarts = 0;  ///< MueLu started over: a row changed by more than its coarse levels allow
   int graphRebuilds = 0;             ///< rebuilds of the matrix graph (contact beyond its reserved couplings)
   double graphRebuildSeconds = 0;    ///< their total time
   std::vector<long long> peakBytesPerRank;  ///< rank 0 only (gathered)

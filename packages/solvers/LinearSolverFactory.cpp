@@ -323,13 +323,16 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
   try {
     // The solvers keep pointers into the list: give them their own copy.
     auto own = Teuchos::rcp(new Teuchos::ParameterList(stratimikos));
+    bool chooseReuseType = false;
     // MueLu prints its hierarchy at every setup unless told not to: quiet unless the deck asks.
     if (own->isType<std::string>("Preconditioner Type") && own->get<std::string>("Preconditioner Type") == "MueLu") {
       auto& muelu = own->sublist("Preconditioner Types").sublist("MueLu");
       if (!muelu.isParameter("verbosity")) muelu.set("verbosity", std::string("none"));
       typeMueLuParameters(muelu, "Piro/Stratimikos/Preconditioner Types/MueLu");
-      // The aggregation once per matrix graph, not once per Newton iteration (PreconditionerReuse.hpp).
-      if (!muelu.isParameter("reuse: type")) muelu.set("reuse: type", std::string(kMueLuReuseType));
+      // The aggregation once per matrix graph, not once per Newton iteration; without the deck's
+      // "reuse: type" the reuse wrapper chooses it per hierarchy (PreconditionerReuse.hpp).
+      chooseReuseType = !muelu.isParameter("reuse: type");
+      if (chooseReuseType) muelu.set("reuse: type", std::string(kMueLuReuseType));
       if (comm->getSize() > 1) completeCoarseRepartition(muelu);
       completeSmoother(muelu);
     }
@@ -348,7 +351,7 @@ Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> createLinearSolverFact
       return factory;
     // MueLu's hierarchy kept while the matrix graph is (the deck's "reuse: type" says how much of it).
     if (auto muelu = Teuchos::rcp_dynamic_cast<MueLuFactory>(factory->getPreconditionerFactory()); !muelu.is_null())
-      factory->setPreconditionerFactory(Teuchos::rcp(new GraphKeyedPreconditionerFactory(muelu)), "MueLu");
+      factory->setPreconditionerFactory(Teuchos::rcp(new GraphKeyedPreconditionerFactory(muelu, chooseReuseType)), "MueLu");
     try {
       probeIterativeSolver(*factory, comm);
     } catch (const std::exception& e) {

@@ -1,6 +1,8 @@
 #include "solvers/PreconditionerReuse.hpp"
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include <MueLu_Factory.hpp>
 #include <MueLu_FactoryManagerBase.hpp>
@@ -101,18 +103,23 @@ bool keptProductCoversPattern(const XpetraMatrix& A, const XpetraMatrix& P, cons
   return true;
 }
 
-// Whether a re-set-up of the MueLu hierarchy `prec` holds could meet a product pattern it cannot fill
-// (header): a coarse A of levels 1 to the last but one (the coarsest is only factorised; R, the other left
-// factor, is kept) holds exact zeros whose later fill-in would fall outside the kept A P. The same answer
-// on every rank of `comm` (collective); false for a preconditioner that is no MueLu hierarchy.
-bool coarseZerosMatter(const Thyra::PreconditionerBase<double>& prec, const Teuchos::Comm<int>& comm) {
+// The MueLu hierarchy a Thyra preconditioner holds; null for any other preconditioner.
+Teuchos::RCP<Hierarchy> hierarchyOf(const Thyra::PreconditionerBase<double>& prec) {
   const auto* defaultPrec = dynamic_cast<const Thyra::DefaultPreconditioner<double>*>(&prec);
   const auto thyraOp = defaultPrec == nullptr ? Teuchos::null
                                               : Teuchos::rcp_dynamic_cast<const ThyraXpetraOp>(defaultPrec->getUnspecifiedPrecOp());
   const auto muelu = thyraOp.is_null() ? Teuchos::null
                                        : Teuchos::rcp_dynamic_cast<const MueLuOperator>(thyraOp->getConstXpetraOperator());
-  if (onAnyRank(muelu.is_null(), comm)) return false;
-  const auto hierarchy = muelu->GetHierarchy();
+  return muelu.is_null() ? Teuchos::null : muelu->GetHierarchy();
+}
+
+// Whether a re-set-up of the MueLu hierarchy `prec` holds could meet a product pattern it cannot fill
+// (header): a coarse A of levels 1 to the last but one (the coarsest is only factorised; R, the other left
+// factor, is kept) holds exact zeros whose later fill-in would fall outside the kept A P. The same answer
+// on every rank of `comm` (collective); false for a preconditioner that is no MueLu hierarchy.
+bool coarseZerosMatter(const Thyra::PreconditionerBase<double>& prec, const Teuchos::Comm<int>& comm) {
+  const auto hierarchy = hierarchyOf(prec);
+  if (onAnyRank(hierarchy.is_null(), comm)) return false;
   // A rank left out of the coarse levels gathered onto others holds fewer levels: the count is the most
   // any rank holds. Every branch below is taken alike on every rank (the votes), so that the ranks holding
   // a level enter its product together; a rank that holds no part of a level votes "nothing to fear".
@@ -232,13 +239,67 @@ bool anyFilledIn(const model::CrsMatrix& matrix, const std::vector<std::size_t>&
   return false;
 }
 
+void RowValues::hold(const model::CrsMatrix& matrix, const std::vector<char>& rows, std::vector<std::uint64_t> hashes) {
+  rowHashes = std::move(hashes);
+  rowOffset.assign(rowHashes.size(), kNotHeld);
+  values.clear();
+  const auto local = matrix.getLocalMatrixHost();
+  const auto& rowStart = local.graph.row_map;
+  for (std::size_t row = 0; row < rows.size() && row < rowOffset.size(); ++row) {
+    if (!rows[row]) continue;
+    rowOffset[row] = values.size();
+    for (std::size_t k = rowStart(row); k < rowStart(row + 1); ++k) values.push_back(local.values(k));
+  }
+}
+
+double RowValues::largestChange(const model::CrsMatrix& matrix, const std::vector<std::uint64_t>& now) const {
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
+  if (now.size() != rowHashes.size()) return kUnknown;
+  const auto local = matrix.getLocalMatrixHost();
+  const auto& rowStart = local.graph.row_map;
+  const auto& columns = local.graph.entries;
+  const auto& rowMap = *matrix.getRowMap();
+  const auto& columnMap = *matrix.getColMap();
+  double largest = 0.0;
+  for (std::size_t row = 0; row < now.size(); ++row) {
+    if (now[row] == rowHashes[row]) continue;
+    if (rowOffset[row] == kNotHeld) return kUnknown;
+    const model::GO globalRow = rowMap.getGlobalElement(static_cast<model::LO>(row));
+    double diagonal = 0.0, change = 0.0;
+    const double* held = values.data() + rowOffset[row];
+    for (std::size_t k = rowStart(row); k < rowStart(row + 1); ++k) {
+      const double before = held[k - rowStart(row)];
+      // The smaller of the two diagonals: a penalty that switches on or off is a change of its own size.
+      if (columnMap.getGlobalElement(columns(k)) == globalRow) diagonal = std::min(std::abs(local.values(k)), std::abs(before));
+      change = std::max(change, std::abs(local.values(k) - before));
+    }
+    if (!(diagonal > 0.0)) return kUnknown;
+    largest = std::max(largest, change / diagonal);
+  }
+  return largest;
+}
+
+bool GraphKeyedPreconditionerFactory::keepsCoarseLevels(const model::CrsMatrix* matrix,
+                                                        const std::vector<char>& volatileRows) const {
+  const auto params = inner_->getNonconstParameterList();
+  if (params.is_null()) return false;
+  if (chooseReuseType_ && matrix != nullptr) {
+    double local[2] = {0.0, static_cast<double>(matrix->getNodeNumRows())}, total[2] = {0.0, 0.0};
+    for (const char flag : volatileRows) local[0] += flag ? 1.0 : 0.0;
+    Teuchos::reduceAll(*matrix->getComm(), Teuchos::REDUCE_SUM, 2, local, total);
+    params->set("reuse: type", std::string(total[0] <= kCoarseKeptRowFraction * total[1] ? "RAP" : "RP"));
+  }
+  return params->isType<std::string>("reuse: type") && params->get<std::string>("reuse: type") == "RAP";
+}
+
 PreconditionerSetUpCounts& GraphKeyedPreconditionerFactory::counts() {
   static PreconditionerSetUpCounts c;
   return c;
 }
 
 GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decide(
-    const Teuchos::RCP<const model::CrsMatrix>& matrix, std::uint64_t hash, const SetUp& last) const {
+    const Teuchos::RCP<const model::CrsMatrix>& matrix, std::uint64_t hash, const std::vector<std::uint64_t>& rowHashes,
+    const SetUp& last) const {
   // Each rank's reason, then the first reason any rank has (ranks agree on the graph: a rebuild is collective).
   int reason = static_cast<int>(Decision::Reuse);
   if (matrix.is_null() || last.graph.is_null() || last.graph.get() != matrix->getCrsGraph().get())
@@ -249,6 +310,8 @@ GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decid
     reason = static_cast<int>(Decision::Unchanged);
   else if (last.coarseZeros)
     reason = static_cast<int>(Decision::CoarseZeros);
+  else if (last.keepsCoarse && last.reference.largestChange(*matrix, rowHashes) > kCoarseKeptRowChange)
+    reason = static_cast<int>(Decision::LargeChange);
   if (!matrix.is_null() && matrix->getComm()->getSize() > 1) {
     int any = 0;
     Teuchos::reduceAll(*matrix->getComm(), Teuchos::REDUCE_MAX, 1, &reason, &any);
@@ -261,7 +324,8 @@ GraphKeyedPreconditionerFactory::Decision GraphKeyedPreconditionerFactory::decid
 
 void GraphKeyedPreconditionerFactory::startOver(const Teuchos::RCP<const Source>& src,
                                                 Thyra::PreconditionerBase<double>* prec, Thyra::ESupportSolveUse use,
-                                                const model::CrsMatrix* matrix, SetUp& record) const {
+                                                const model::CrsMatrix* matrix, SetUp& record,
+                                                const std::vector<std::uint64_t>& rowHashes) const {
   // Volatile rows are known for the graph they were seen on only.
   std::vector<char> volatileRows;
   if (matrix != nullptr && record.graph.get() == matrix->getCrsGraph().get()) volatileRows = std::move(record.volatileRows);
@@ -271,15 +335,19 @@ void GraphKeyedPreconditionerFactory::startOver(const Teuchos::RCP<const Source>
     record = SetUp{};
     return;
   }
+  const bool keepsCoarse = keepsCoarseLevels(matrix, volatileRows);
   {
     const ZerosFilledInRows filled(*matrix, volatileRows, kPatternFill);
     inner_->initializePrec(src, prec, use);
   }
   record = SetUp{};
+  record.keepsCoarse = keepsCoarse;
   record.graph = matrix->getCrsGraph();
   record.zeroEntries = zeroEntryPositions(*matrix, volatileRows);
   record.volatileRows = std::move(volatileRows);
-  if (matrix->getComm()->getSize() > 1) record.coarseZeros = coarseZerosMatter(*prec, *matrix->getComm());
+  record.reference.hold(*matrix, record.volatileRows, rowHashes);
+  // A hierarchy that keeps its coarse levels multiplies nothing at a re-set-up: their zeros cannot matter.
+  if (matrix->getComm()->getSize() > 1 && !keepsCoarse) record.coarseZeros = coarseZerosMatter(*prec, *matrix->getComm());
 }
 
 void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const Source>& src,
@@ -289,12 +357,11 @@ void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const So
   const bool known = setUps_.count(prec) != 0;
   auto& record = setUps_[prec];
   const std::uint64_t hash = matrix.is_null() ? 0 : valuesHash(*matrix);
-  const Decision decision = decide(matrix, hash, record);
   std::vector<std::uint64_t> rowHashes;
-  if (!matrix.is_null() && decision != Decision::Unchanged) {
-    rowHashes = rowValueHashes(*matrix);
-    if (decision != Decision::NewGraph) flagChangedRows(record.rowHashes, rowHashes, record.volatileRows);
-  }
+  if (!matrix.is_null()) rowHashes = rowValueHashes(*matrix);
+  const Decision decision = decide(matrix, hash, rowHashes, record);
+  if (!matrix.is_null() && decision != Decision::Unchanged && decision != Decision::NewGraph)
+    flagChangedRows(record.rowHashes, rowHashes, record.volatileRows);
   auto& c = counts();
   if (decision == Decision::Unchanged) {
     ++c.unchanged;
@@ -305,7 +372,8 @@ void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const So
     if (known && decision == Decision::NewGraph) ++c.newGraph;
     if (decision == Decision::PatternGrew) ++c.patternGrew;
     if (decision == Decision::CoarseZeros) ++c.coarseZeros;
-    startOver(src, prec, use, matrix.get(), record);
+    if (decision == Decision::LargeChange) ++c.largeChange;
+    startOver(src, prec, use, matrix.get(), record, rowHashes);
   } else {
     try {
       record.matrix = Teuchos::null;  // until the re-set-up is done
@@ -314,7 +382,7 @@ void GraphKeyedPreconditionerFactory::initializePrec(const Teuchos::RCP<const So
     } catch (const std::exception&) {
       // One rank only (decide): e.g. an exact zero of a coarse matrix at the set-up that is nonzero now.
       ++c.refused;
-      startOver(src, prec, use, matrix.get(), record);
+      startOver(src, prec, use, matrix.get(), record, rowHashes);
     }
   }
   record.matrix = matrix;

@@ -2,9 +2,9 @@
 // MueLu's set-up reused across Newton iterations and increments while the matrix graph stays the same.
 //
 // Thyra's MueLu factory reuses the hierarchy a preconditioner already holds when its "reuse: type" is set
-// (MueLu's user guide, "Reuse"): with "RP", Contessa's default, the aggregates and the prolongator P and
-// restriction R of the first set-up are kept and only the coarse matrices R A P and the smoothers are
-// rebuilt from each new Jacobian; the aggregation and the prolongator smoothing are skipped (on the 3D
+// (MueLu's user guide, "Reuse"): with "RP" the aggregates and the prolongator P and restriction R of the
+// first set-up are kept and only the coarse matrices R A P and the smoothers are rebuilt from each new
+// Jacobian (with "RAP", Contessa's default, the coarse matrices are kept too: below); the aggregation and the prolongator smoothing are skipped (on the 3D
 // punch at 1.5·10^4 unknowns: 21 % less CPU per run, 7 % more Krylov iterations; bench/README.md). Where
 // the values change on an unchanged pattern an older P costs iterations, not accuracy: the Krylov
 // iteration checks the true residual.
@@ -42,6 +42,17 @@
 //   contact set did not change and the solid is linear (the 3D punch: 3 of 8 set-ups). The values are
 //   recognised by a 64-bit hash (valuesHash): a collision, were one to happen, would keep an older
 //   preconditioner, which costs Krylov iterations and never accuracy.
+// - with "reuse: type = RAP" (Contessa's default) MueLu keeps the coarse matrices and their smoothers at a
+//   re-set-up and recomputes only the fine level's smoother from the new Jacobian: the products R A P, 70–85
+//   % of an "RP" re-set-up (bench/README.md, "Issue 23, sixth round"), are skipped. That serves while the
+//   Jacobian differs from the one the coarse matrices were computed from (the reference, held at each fresh
+//   set-up) only in volatile rows held then, and there by at most kCoarseKeptRowChange times the row's
+//   smaller diagonal, on every rank: the coarse correction is then that of a nearby matrix, which costs
+//   Krylov iterations, never accuracy. A penalty that switches on or off (a change of many diagonals), or a
+//   change in a row not held, starts the hierarchy over on every rank. MueLu's "reuse: type = full" keeps the
+//   fine smoother too, whatever the change: it failed the punch's first increment (sixth round). With
+//   "RP" given, the coarse matrices are recomputed at every re-set-up as before (bench/README.md, "Eighth
+//   round").
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -52,12 +63,23 @@
 
 namespace contessa::solvers {
 
-/// The MueLu reuse Contessa sets unless the deck gives "reuse: type" (bench/README.md, "MueLu reuse").
-inline constexpr const char* kMueLuReuseType = "RP";
+/// The MueLu reuse Contessa sets unless the deck gives "reuse: type" (header; bench/README.md, "Eighth round").
+inline constexpr const char* kMueLuReuseType = "RAP";
 
 /// The value a volatile row's exact zeros hold while MueLu sets up (header): nonzero for Tpetra's products,
 /// and below the rounding of any sum it enters.
 inline constexpr double kPatternFill = 1e-250;
+
+/// The largest change of a Jacobian entry since the last fresh set-up, relative to the smaller of its row's
+/// two diagonals, under which "reuse: type = RAP" keeps the coarse levels (header; on the 3D punch the
+/// contact rows change by 0.14–0.71 between Newton iterations and increments, a penalty switching on by
+/// about 100; bench/README.md, "Eighth round").
+inline constexpr double kCoarseKeptRowChange = 1.0;
+
+/// The largest share of the matrix's rows that may have changed between set-ups (the volatile rows) for
+/// Contessa's own choice of "reuse: type" to be "RAP" (GraphKeyedPreconditionerFactory): the 3D punch's
+/// contact rows are 1.4 % of its rows at 2·10^5 unknowns, a nonlinear solid's changed rows all of them.
+inline constexpr double kCoarseKeptRowFraction = 0.1;
 
 /// How the set-ups of a run went (process-wide; every rank counts alike).
 struct PreconditionerSetUpCounts {
@@ -67,6 +89,22 @@ struct PreconditionerSetUpCounts {
   long coarseZeros = 0;      ///< started over: a coarse A's exact zeros were not covered (2+ ranks)
   long refused = 0;          ///< re-set-ups MueLu refused (one rank only), then started over
   long unchanged = 0;        ///< set-ups skipped: the matrix and its values as at the last set-up
+  long largeChange = 0;      ///< started over: coarse levels kept ("RAP") and a row changed by more than allowed
+};
+
+/// The values of some local rows of a matrix and the hashes of all its rows (the coarse levels' reference,
+/// header), and the largest change since, relative to each changed row's diagonal.
+struct RowValues {
+  std::vector<std::uint64_t> rowHashes;
+  std::vector<std::size_t> rowOffset;  ///< per local row, where its values start in `values`; kNotHeld if not held
+  std::vector<double> values;
+  static constexpr std::size_t kNotHeld = static_cast<std::size_t>(-1);
+
+  /// Holds `matrix`'s flagged rows (`rows`, one flag per local row) and the hashes `rowHashes` of all its rows.
+  void hold(const model::CrsMatrix& matrix, const std::vector<char>& rows, std::vector<std::uint64_t> hashes);
+  /// The largest |a_ij - held a_ij| / min(|a_ii|, |held a_ii|) over the rows whose hash in `now` differs from the held one;
+  /// infinity where such a row is not held, its diagonal is zero, or the hashes are of another graph.
+  double largestChange(const model::CrsMatrix& matrix, const std::vector<std::uint64_t>& now) const;
 };
 
 /// `inner` (MueLu's factory) that keeps a preconditioner's hierarchy while the Jacobians share its graph
@@ -76,7 +114,12 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
  public:
   using Factory = Thyra::PreconditionerFactoryBase<double>;
   using Source = Thyra::LinearOpSourceBase<double>;
-  explicit GraphKeyedPreconditionerFactory(Teuchos::RCP<Factory> inner) : inner_(std::move(inner)) {}
+  /// With `chooseReuseType` (the deck gave no "reuse: type"), each fresh set-up sets the inner factory's
+  /// "reuse: type" itself: "RAP" while the rows that changed between set-ups are at most
+  /// kCoarseKeptRowFraction of the matrix (contact rows), "RP" otherwise (a nonlinear solid, whose every
+  /// row changes: its coarse levels would never be kept, and each Jacobian would start over).
+  explicit GraphKeyedPreconditionerFactory(Teuchos::RCP<Factory> inner, bool chooseReuseType = false)
+      : inner_(std::move(inner)), chooseReuseType_(chooseReuseType) {}
   const Teuchos::RCP<Factory>& inner() const { return inner_; }
 
   static PreconditionerSetUpCounts& counts();
@@ -107,16 +150,26 @@ class GraphKeyedPreconditionerFactory : public Thyra::PreconditionerFactoryBase<
     std::vector<std::uint64_t> rowHashes;       // each local row's values at the last set-up, fresh or reused
     std::vector<char> volatileRows;             // local rows whose values changed between set-ups on this graph
     bool coarseZeros = false;                   // a coarse matrix of the hierarchy held exact zeros
+    bool keepsCoarse = false;                   // set up with "reuse: type" = "RAP": coarse levels kept
     // The matrix and the hash of its values at the last set-up, fresh or reused.
     Teuchos::RCP<const model::CrsMatrix> matrix;
     std::uint64_t valuesHash = 0;
+    // The reference: the Jacobian the coarse matrices were last computed from, its row hashes and the
+    // values of its volatile rows (the only rows whose later change is measured, header).
+    RowValues reference;
   };
-  enum class Decision { Unchanged, Reuse, CoarseZeros, PatternGrew, NewGraph };  // ranks take the largest
-  Decision decide(const Teuchos::RCP<const model::CrsMatrix>& matrix, std::uint64_t hash, const SetUp& last) const;
+  enum class Decision { Unchanged, Reuse, LargeChange, CoarseZeros, PatternGrew, NewGraph };  // ranks take the largest
+  Decision decide(const Teuchos::RCP<const model::CrsMatrix>& matrix, std::uint64_t hash,
+                  const std::vector<std::uint64_t>& rowHashes, const SetUp& last) const;
   void startOver(const Teuchos::RCP<const Source>& src, Thyra::PreconditionerBase<double>* prec,
-                 Thyra::ESupportSolveUse use, const model::CrsMatrix* matrix, SetUp& record) const;
+                 Thyra::ESupportSolveUse use, const model::CrsMatrix* matrix, SetUp& record,
+                 const std::vector<std::uint64_t>& rowHashes) const;
+  // Whether MueLu's next hierarchy keeps its coarse levels at a re-set-up ("reuse: type" = "RAP"), after
+  // choosing the type from the volatile rows where the factory chooses it (constructor). Collective.
+  bool keepsCoarseLevels(const model::CrsMatrix* matrix, const std::vector<char>& volatileRows) const;
 
   Teuchos::RCP<Factory> inner_;
+  bool chooseReuseType_ = false;
   mutable std::map<const Thyra::PreconditionerBase<double>*, SetUp> setUps_;
 };
 

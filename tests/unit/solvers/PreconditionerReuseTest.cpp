@@ -2,6 +2,8 @@
 // Jacobians it is given share one matrix graph, and is started over (uninitialised first, so that MueLu
 // builds a new hierarchy) when the graph changes, as after a contact rebuild. The inner factory here
 // records the calls instead of building MueLu.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <Thyra_DefaultLinearOpSource.hpp>
@@ -291,3 +293,99 @@ TEST(PreconditionerReuse, ZeroEntriesFoundAndTheirFillInSeen) {
 }
 
 }  // namespace
+
+// A Jacobian on `graph` with every value 1 but the entries of local row `row` on rank `rank`, which are
+// 1 + `delta` (a contact row whose penalty or tangent changed by `delta` times its diagonal).
+RCP<const Thyra::LinearOpSourceBase<double>> jacobianWithRowChanged(const RCP<const CrsGraph>& graph, int rank,
+                                                                    std::size_t row, double delta) {
+  auto matrix = uniformMatrix(graph, 1.0);
+  matrix->resumeFill();
+  if (graph->getComm()->getRank() == rank) {
+    auto values = matrix->getLocalMatrixHost().values;
+    const auto& rowStart = matrix->getLocalMatrixHost().graph.row_map;
+    for (std::size_t k = rowStart(row); k < rowStart(row + 1); ++k) values(k) = 1.0 + delta;
+  }
+  matrix->fillComplete();  // collective
+  return sourceOf(matrix);
+}
+
+// With "reuse: type = RAP" MueLu keeps the coarse matrices at a re-set-up: that is allowed while the
+// Jacobian differs from the one they were computed from only in rows held at that fresh set-up (rows that
+// had changed before: contact rows) and there by at most its diagonal (kCoarseKeptRowChange); a penalty
+// that switches on (a change of many diagonals) or a change in a row not held starts over, on every rank.
+TEST(PreconditionerReuse, KeptCoarseLevelsServeSmallChangesOfContactRowsAndLargeOnesStartOver) {
+  ReuseOnSixRowsPerRank setting;
+  auto& [comm, map, recording, factory, prec] = setting;
+  auto list = rcp(new Teuchos::ParameterList("MueLu"));
+  list->set("reuse: type", std::string("RAP"));
+  recording->setParameterList(list);
+  const auto graph = bandGraph(map, false);
+  const long before = contessa::solvers::GraphKeyedPreconditionerFactory::counts().largeChange;
+  const auto setUp = [&](const RCP<const Thyra::LinearOpSourceBase<double>>& jacobian) {
+    factory.initializePrec(jacobian, prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  };
+  setUp(jacobianWithRowChanged(graph, 0, 2, 0.0));
+  EXPECT_EQ(recording->uninitializations, 1);
+  setUp(jacobianWithRowChanged(graph, 0, 2, 0.5));  // no row held yet: the first change starts over
+  EXPECT_EQ(recording->uninitializations, 2);
+  setUp(jacobianWithRowChanged(graph, 0, 2, 0.9));  // 0.4 of the smaller diagonal: coarse levels kept
+  setUp(jacobianWithRowChanged(graph, 0, 2, 1.4));  // 0.9 from the set-up's 1.5: still kept
+  EXPECT_EQ(recording->uninitializations, 2);
+  EXPECT_EQ(recording->initializations, 4);
+  setUp(jacobianWithRowChanged(graph, 0, 2, 100.0));  // a penalty switched on, on rank 0 only: every rank starts over
+  EXPECT_EQ(recording->uninitializations, 3);
+  setUp(jacobianWithRowChanged(graph, 0, 2, 0.5));  // and off again: 100 of the smaller diagonal
+  EXPECT_EQ(recording->uninitializations, 4);
+  const auto other = uniformMatrix(graph, 1.0);  // row 2 back to the set-up's values, row 4 changed a little
+  other->resumeFill();
+  {
+    auto values = other->getLocalMatrixHost().values;
+    const auto& rowStart = other->getLocalMatrixHost().graph.row_map;
+    values(rowStart(4)) = 1.01;
+  }
+  other->fillComplete();
+  setUp(sourceOf(other));
+  EXPECT_EQ(recording->uninitializations, 5) << "a row not held at the set-up has no reference to compare with";
+  EXPECT_EQ(contessa::solvers::GraphKeyedPreconditionerFactory::counts().largeChange, before + 4);
+
+  // The measure itself: the largest change over the changed rows, relative to the smaller diagonal.
+  const auto a = uniformMatrix(graph, 2.0);
+  contessa::solvers::RowValues held;
+  std::vector<char> rows(6, 0);
+  rows[1] = 1;
+  held.hold(*a, rows, contessa::solvers::rowValueHashes(*a));
+  EXPECT_EQ(held.largestChange(*a, contessa::solvers::rowValueHashes(*a)), 0.0);
+  const auto b = uniformMatrix(graph, 2.0);
+  b->resumeFill();
+  {
+    auto values = b->getLocalMatrixHost().values;
+    const auto& rowStart = b->getLocalMatrixHost().graph.row_map;
+    for (std::size_t k = rowStart(1); k < rowStart(2); ++k) values(k) = 3.0;  // diagonal 2 -> 3, change 1
+  }
+  b->fillComplete();
+  EXPECT_DOUBLE_EQ(held.largestChange(*b, contessa::solvers::rowValueHashes(*b)), 0.5);
+  const auto c = uniformMatrix(graph, 3.0);
+  EXPECT_TRUE(std::isinf(held.largestChange(*c, contessa::solvers::rowValueHashes(*c)))) << "rows not held";
+}
+
+// Without the deck's "reuse: type" the wrapper chooses it per hierarchy: "RAP" while few rows changed
+// between set-ups, "RP" once more than kCoarseKeptRowFraction of them did (a nonlinear solid), so that such a
+// Jacobian does not start the hierarchy over at every Newton iteration.
+TEST(PreconditionerReuse, ReuseTypeChosenFromTheShareOfRowsThatChange) {
+  RCP<const Teuchos::Comm<int>> comm = Tpetra::getDefaultComm();
+  RCP<const Map> map = rcp(new Map(static_cast<Tpetra::global_size_t>(6 * comm->getSize()), 6, 0, comm));
+  auto recording = rcp(new RecordingFactory());
+  auto list = rcp(new Teuchos::ParameterList("MueLu"));
+  list->set("reuse: type", std::string("RAP"));
+  recording->setParameterList(list);
+  contessa::solvers::GraphKeyedPreconditionerFactory factory(recording, true);
+  auto prec = factory.createPrec();
+  const auto graph = bandGraph(map, false);
+  factory.initializePrec(jacobianOn(graph, 1.0), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(list->get<std::string>("reuse: type"), "RAP") << "no row has changed yet";
+  factory.initializePrec(jacobianOn(graph, 2.0), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 2) << "rows not held at the set-up changed";
+  EXPECT_EQ(list->get<std::string>("reuse: type"), "RP") << "every row changed";
+  for (double scale : {3.0, 4.0}) factory.initializePrec(jacobianOn(graph, scale), prec.get(), Thyra::SUPPORT_SOLVE_UNSPECIFIED);
+  EXPECT_EQ(recording->uninitializations, 2) << "an RP hierarchy is re-set-up, not started over";
+}
