@@ -88,6 +88,12 @@ class ContactHistoryStore {
       committed_[i].tangentialMultiplier = trial_[i].tangentialMultiplier;
     }
   }
+  /// The multiplier predictor at an increment's start (docs/theory-contact.md eq. 15.8): the node's multipliers
+  /// for this attempt, like an update (a cut-back restores the commit's; the next attempt predicts again).
+  void predict(std::size_t node, double normalMultiplier, const Vector<NXi>& tangentialMultiplier) {
+    committed_[node].normalMultiplier = normalMultiplier;
+    committed_[node].tangentialMultiplier = tangentialMultiplier;
+  }
 
  private:
   std::vector<ContactHistory<NXi>> committed_;

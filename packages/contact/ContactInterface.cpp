@@ -11,6 +11,7 @@
 #include "contact/MasterSurface.hpp"
 #include "contact/NodeToFacetContact.hpp"
 #include "contact/NormalToggleDamping.hpp"
+#include <cstdlib>
 #include "contact/SlipReversalDamping.hpp"
 #include "contact/SweptCrossing.hpp"
 #include "contact/SmoothedMaster.hpp"
@@ -161,6 +162,8 @@ class ContactInterface final : public ContactInterfaceBase {
     if (!spec_.law.isFrictionless() && atEquilibrium) accelerateStickMultipliers();
     history_.augment();
   }
+  void measureTractionRates(double loadChange) override;
+  void predictMultipliers(double loadChange) override;
   void setConsistentTangents(bool consistent) override { consistentTangents_ = consistent; }
   int secantTangentNodes() const override { return secantTangentNodes_; }
   void saveCommittedSlaves(StateRecord& table) const override;
@@ -361,6 +364,9 @@ class ContactInterface final : public ContactInterfaceBase {
   std::vector<int> stickFacets_;
   std::vector<Matrix<kXi, kXi>> trialInverseMetric_;
   std::vector<double> trialStickPenalty_;  ///< ε_T of a sticking node's latest trial evaluation (0: not sticking)
+  /// Per slave node, the multiplier predictor's rates over the last converged increment (eq. 15.8): state of
+  /// the committed configuration, in the restart file.
+  std::vector<TractionRate<kXi>> rates_ = std::vector<TractionRate<kXi>>(spec_.slaveNodes.size());
   /// Frictionless or penalty enforced at set-up: the matrix graph then holds the couplings across master
   /// edges that a valley blend needs (model::ContactAssembly), so only such an interface blends.
   const bool blendable_ = spec_.law.isFrictionless() || !spec_.law.isAugmented();
@@ -714,6 +720,55 @@ void ContactInterface<Facet>::accelerateStickMultipliers() {
 }
 
 template <class Facet>
+void ContactInterface<Facet>::measureTractionRates(double loadChange) {
+  if (!spec_.law.isAugmented() || spec_.law.isFrictionless()) return;
+  const bool step = std::isfinite(loadChange) && loadChange != 0.0;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k]) continue;
+    const ContactHistory<kXi>& trial = history_.trial(k);
+    const ContactHistory<kXi>& start = history_.committed(k);  // status and facet of the increment's start
+    TractionRate<kXi>& rate = rates_[k];
+    // Sticking at both commits on one facet: the tractions are on one chart and follow the structure. A node
+    // that slips at either keeps the commit's multipliers: predicted, the contact edge's slipping nodes
+    // changed which nodes close and lost Contact Beta's N_c (theory §15).
+    rate.known = step && trial.status == ContactStatus::Stick && start.status == ContactStatus::Stick &&
+                 trial.segment == start.segment;
+    if (!rate.known) {
+      rate = {};
+      continue;
+    }
+    // The trial copy holds the converged tractions (t_N in normalMultiplier); the start's are its commit's.
+    rate.normal = (trial.normalMultiplier + committedOutput_[k].pressure) / loadChange;
+    rate.tangential = scaled(1.0 / loadChange, subtract(trial.tangentialTraction, start.tangentialTraction));
+  }
+}
+
+template <class Facet>
+void ContactInterface<Facet>::predictMultipliers(double loadChange) {
+  if (!spec_.law.isAugmented() || !std::isfinite(loadChange)) return;
+  const double mu = spec_.law.frictionCoefficient;
+  for (std::size_t k = 0; k < spec_.slaveNodes.size(); ++k) {
+    if (!evaluatesSlave_[k] || !rates_[k].known) continue;
+    const ContactHistory<kXi>& c = history_.committed(k);
+    if (c.status != ContactStatus::Stick || c.segment < 0 || c.segment >= static_cast<int>(committedMaster_.size()))
+      continue;
+    // eq. (15.8): the tractions of the last commit extrapolated over the new load step, λ_N ≤ 0 and λ_T inside
+    // the Coulomb cone μ|λ_N| (in the facet's metric at the node's stick reference).
+    const bool fromTractions = std::getenv("I21T_PRED_TRACTIONS") != nullptr;
+    const double normal = std::min(0.0, (fromTractions ? -committedOutput_[k].pressure : c.normalMultiplier) +
+                                            loadChange * rates_[k].normal);
+    Vector<kXi> tangential = add(fromTractions ? c.tangentialTraction : c.tangentialMultiplier,
+                                 scaled(loadChange, rates_[k].tangential));
+    const auto p = Projection<Facet>::evaluateAt(committedSlave_.empty() ? Point{} : committedSlave_[k],
+                                                 committedMaster_[c.segment].x, c.xi);
+    const double length = std::sqrt(dot(tangential, multiply(p.inverseMetric, tangential)));
+    const double radius = mu * std::abs(normal);
+    if (length > radius) tangential = scaled(length > 0.0 ? radius / length : 0.0, tangential);
+    history_.predict(k, normal, tangential);
+  }
+}
+
+template <class Facet>
 void ContactInterface<Facet>::keepStickReferences() {
   // eq. (15.4): a sticking node's trial λ_T + ε_T ā_αβ (ξ̄ − ξ_n)^β has the same value at the converged state
   // whether the commit moves ξ_n to ξ̄ and λ_T to t_T (as for a slipping node) or keeps both. Kept, the
@@ -748,8 +803,8 @@ void ContactInterface<Facet>::rollback() {
 
 // A slave node's fields in the restart file: its history, its change over the last increment, its output
 // and its committed position (const parts when saving, copies to put back when loading).
-template <class History, class Change, class Output, class Position, class Fields>
-void slaveNodeFields(History& h, Change& c, Output& o, Position& x, Fields& field) {
+template <class History, class Rate, class Change, class Output, class Position, class Fields>
+void slaveNodeFields(History& h, Rate& rate, Change& c, Output& o, Position& x, Fields& field) {
   field("facet", h.segment);
   field("xi", h.xi);
   field("tangential_traction", h.tangentialTraction);
@@ -757,6 +812,9 @@ void slaveNodeFields(History& h, Change& c, Output& o, Position& x, Fields& fiel
   field("slip", h.accumulatedSlip);
   field("normal_multiplier", h.normalMultiplier);  // augmented Lagrangian (0 with the penalty law)
   field("tangential_multiplier", h.tangentialMultiplier);
+  field("traction_rate_known", rate.known);  // the multiplier predictor's (eq. 15.8)
+  field("normal_traction_rate", rate.normal);
+  field("tangential_traction_rate", rate.tangential);
   slaveChangeFields(c, field);
   field("trial_facet", c.trialFacet);
   slaveOutputFields(o, field);
@@ -777,7 +835,7 @@ void ContactInterface<Facet>::saveCommittedSlaves(StateRecord& table) const {
     if (!evaluatesSlave()[k]) continue;
     rows.beginRow(static_cast<std::int64_t>(k));
     const Point x = committedSlave_.empty() ? Point{} : committedSlave_[k];
-    slaveNodeFields(history_.committed(k), committedIncrement_[k], committedOutput_[k], x, rows);
+    slaveNodeFields(history_.committed(k), rates_[k], committedIncrement_[k], committedOutput_[k], x, rows);
   }
   rows.finish();
 }
@@ -789,12 +847,14 @@ void ContactInterface<Facet>::restoreSlaves(const StateRecord& table) {
   forgetStickUpdates();
   readSlaveRows(table, rows, [&](std::size_t k) {
     ContactHistory<kXi> h;
+    TractionRate<kXi> rate;
     SlaveNodeChange c;
     SlaveNodeState o;
     Point x{};
-    slaveNodeFields(h, c, o, x, rows);
+    slaveNodeFields(h, rate, c, o, x, rows);
     if (!evaluatesSlave()[k]) return;
     history_.restore(k, h);
+    rates_[k] = rate;
     committedIncrement_[k] = c;
     committedOutput_[k] = o;
     if (committedSlave_.size() != n) committedSlave_.assign(n, Point{});

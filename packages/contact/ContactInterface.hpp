@@ -111,6 +111,16 @@ double stickSecantFactor(const StickUpdate<NXi>& previous, const StickUpdate<NXi
   return std::max(1.0, std::min(factor, onCone));
 }
 
+/// Augmented Lagrangian, the multiplier predictor (docs/theory-contact.md eq. 15.8): a slave node's converged
+/// tractions' change per unit load factor over the last increment, `known` only where the node stuck on one
+/// facet at both its ends.
+template <int NXi>
+struct TractionRate {
+  bool known = false;
+  double normal = 0.0;       ///< d t_N / dλ
+  Vector<NXi> tangential{};  ///< d t_Tα / dλ (covariant, on the node's facet)
+};
+
 /// A slave node that passed through the master surface in the current increment (tunnelling).
 struct TunnellingNode {
   std::size_t slave = 0;  ///< index into ContactInterfaceSpec::slaveNodes
@@ -193,6 +203,13 @@ class ContactInterfaceBase {
   /// an early update's, §15 "Updates before convergence"); only there may a sticking node's multiplier take
   /// the secant's step (eq. 15.7), which reads the iterate as an equilibrium of the structure.
   virtual void augment(bool atEquilibrium) { (void)atEquilibrium; }
+  /// Augmented Lagrangian, the multiplier predictor (docs/theory-contact.md eq. 15.8), before commit(): each
+  /// node's traction rate over the converging increment, whose load factor changed by `loadChange` (NaN:
+  /// unknown, no rate), where the node stuck at both of its ends on one facet.
+  virtual void measureTractionRates(double loadChange) { (void)loadChange; }
+  /// At an attempt's first evaluation, `loadChange` past the last commit: each node with a measured rate gets
+  /// the multipliers its tractions extrapolate to (as an update: undone by a cut-back).
+  virtual void predictMultipliers(double loadChange) { (void)loadChange; }
   /// The owned slave nodes' violations at the latest trial evaluation (for the augmentation test).
   AugmentationViolation trialViolation() const;
   /// Augmented Lagrangian: the normal penalty from now on is the deck's times `growth` ≥ 1 (penalty growth,

@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include "model/ContactAssembly.hpp"
 
 #include "common/NumberText.hpp"
@@ -196,6 +197,11 @@ void ContactAssembly::setLoadStep(const continuation::LoadSchedule& schedule, in
     frictionChange_[i] = schedule.change(step, frictionKey(name))[0];
     if (c.spec().law.frictionCoefficient != frictionStart_[i]) c.setFrictionCoefficient(frictionStart_[i]);
   }
+  // A new load step loads otherwise: the multiplier predictor measures its rates afresh (eq. 15.8).
+  if (step != predictorStep_) {
+    predictorStep_ = step;
+    committedAmplitude_ = std::numeric_limits<double>::quiet_NaN();
+  }
 }
 
 void ContactAssembly::frictionAt(double a) const {
@@ -206,6 +212,7 @@ void ContactAssembly::frictionAt(double a) const {
 bool ContactAssembly::assemble(const double* u, double lambda, bool updateTrial, double* fo, double* dl,
                                StiffnessScatter* scatter, double slope) {
   frictionAt(lambda);
+  if (updateTrial) predictMultipliers(lambda);
   // Each slave node's owner adds its contact element; rigid masters have no DOFs.
   const int dim = layout_.dimension();
   const bool withStiffness = scatter != nullptr;
@@ -317,9 +324,26 @@ std::vector<contact::SlaveNodeChange> ContactAssembly::committedIncrement() cons
 }
 
 void ContactAssembly::commit() {
-  for (auto& c : interfaces_) c->commit();
+  const double loadChange = latestAmplitude_ - committedAmplitude_;
+  for (auto& c : interfaces_) {
+    c->measureTractionRates(loadChange);
+    c->commit();
+  }
+  committedAmplitude_ = latestAmplitude_;
+  predictionPending_ = true;
   augmentations_.assign(interfaces_.size(), 0);
   lastViolation_.assign(interfaces_.size(), HUGE_VAL);
+}
+
+void ContactAssembly::predictMultipliers(double a) {
+  // The attempt's first evaluation at its own load factor: the continuation's predictor has moved u, the
+  // multipliers follow (docs/theory-contact.md eq. 15.8). A pass at the commit's load factor predicts nothing.
+  static const bool off = std::getenv("I21T_NOPRED") != nullptr;
+  if (!off && predictionPending_ && a != committedAmplitude_ && std::isfinite(committedAmplitude_)) {
+    for (auto& c : interfaces_) c->predictMultipliers(a - committedAmplitude_);
+    predictionPending_ = false;
+  }
+  latestAmplitude_ = a;
 }
 
 void ContactAssembly::rollback() {
@@ -340,6 +364,7 @@ void ContactAssembly::rollback() {
   for (auto& c : interfaces_) c->rollback();
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
     if (!anyTouching[i] && grown[i] > interfaces_[i]->penaltyGrowth()) interfaces_[i]->restorePenaltyGrowth(grown[i]);
+  predictionPending_ = true;
   augmentations_.assign(interfaces_.size(), 0);
   lastViolation_.assign(interfaces_.size(), HUGE_VAL);
 }
@@ -378,6 +403,9 @@ bool ContactAssembly::augment(double lambda, const AugmentationPoint& at) {
     const contact::AugmentationViolation local = interface.trialViolation();
     double mine[2] = {local.penetration, local.elasticSlip}, all[2] = {0, 0};
     Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 2, mine, all);
+    if (std::getenv("I21T_TRACE") && comm.getRank() == 0)
+      std::fprintf(stderr, "I21T_AUG lambda %.6f converged %d pen %.3e slip %.3e done %d\n", lambda, (int)at.converged,
+                   all[0], all[1], augmentations_[i]);
     if (all[0] <= law.penetrationTolerance && all[1] <= law.elasticSlipTolerance) continue;
     if (augmentations_[i] < law.maxAugmentations) {
       // The multipliers take the tractions of the penalties they were computed with; the grown penalties
@@ -421,6 +449,9 @@ void ContactAssembly::saveState(StateRecord& contact, bool writer) const {
     auto& group = contact.child("interface_" + std::to_string(i));
     // The committed penalty growth (the same on every rank; the trial one is the committed one after a commit).
     group.put("penalty_growth", std::vector<double>{interfaces_[i]->penaltyGrowth()}, {});
+    // The multiplier predictor's load factor of the commit and its load step (NaN: none yet in this step).
+    group.put("predictor_load_factor", std::vector<double>{committedAmplitude_}, {});
+    group.put("predictor_load_step", std::vector<double>{static_cast<double>(predictorStep_)}, {});
     interfaces_[i]->saveCommittedSlaves(group.child("slaves"));
     if (writer) interfaces_[i]->saveCommittedMaster(group.child("master"));
   }
@@ -432,6 +463,9 @@ void ContactAssembly::restore(const StateRecord& contact) {
     const double growth = group.getDouble("penalty_growth");
     if (!(growth >= 1.0)) group.fail("penalty_growth", "a factor >= 1 expected, got " + std::to_string(growth));
     interfaces_[i]->restorePenaltyGrowth(growth);
+    committedAmplitude_ = group.getDouble("predictor_load_factor", StateValues::AnyDouble);
+    predictorStep_ = static_cast<int>(group.getDouble("predictor_load_step"));
+    predictionPending_ = true;
     interfaces_[i]->restoreSlaves(group.child("slaves"));
     interfaces_[i]->restoreMaster(group.child("master"));
   }

@@ -6,6 +6,7 @@
 // the graph (contact::reserveCouplings: around the reference configuration at set-up), notices, agreed on
 // every rank, a pairing outside them, and reserves them again around the current configuration for the
 // model's graph rebuild. Holds the interfaces' committed and trial contact history.
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -133,6 +134,16 @@ class ContactAssembly {
   /// Rank 0, once per interface: interface i stopped short of a tolerance (`violation`: its penetration
   /// and elastic slip over L).
   void warnShortOfTolerance(std::size_t i, const double violation[2], double lambda);  ///< per interface: the run has said it stopped short of a tolerance
+  /// The multiplier predictor (docs/theory-contact.md eq. 15.8): the load factor (the step's amplitude) of the
+  /// last commit (NaN: none yet in load step `predictorStep_`) and of the latest trial evaluation; whether the
+  /// attempt's first evaluation at its own load factor is still to come.
+  double committedAmplitude_ = std::numeric_limits<double>::quiet_NaN();
+  double latestAmplitude_ = std::numeric_limits<double>::quiet_NaN();
+  int predictorStep_ = 0;
+  bool predictionPending_ = false;
+  /// At a trial evaluation at amplitude `a`: the interfaces predict their multipliers if it is the attempt's
+  /// first at a load factor other than the commit's.
+  void predictMultipliers(double a);
   std::vector<double> frictionStart_, frictionChange_;  ///< per interface, of the current load step
   /// Sets each interface's friction coefficient at amplitude a where the load step changes it.
   void frictionAt(double a) const;
