@@ -15,6 +15,7 @@
 #include "solvers/IncrementBookkeeper.hpp"
 #include "solvers/IterateContactStates.hpp"
 #include "solvers/IterativeSolveMonitor.hpp"
+#include "solvers/LoadFactorDerivativeGroup.hpp"
 #include "solvers/LocaResume.hpp"
 #include "solvers/MumpsSolver.hpp"
 #include "solvers/NewtonCounter.hpp"
@@ -175,7 +176,8 @@ ContinuationDriver::StepOutcome ContinuationDriver::runStep(const StepStart& sta
       : !start.x.is_null() ? start.x->clone_v()
                            : model_.evaluator->getNominalValues().get_x()->clone_v();
   NOX::Thyra::Vector initialGuess(x0);
-  auto group = rcp(new LOCA::Thyra::Group(globalData, initialGuess, model_.evaluator, p, 0, true));
+  // ∂f/∂λ (the tangent predictor's right-hand side) from the model, not a difference in λ.
+  auto group = rcp(new LoadFactorDerivativeGroup(globalData, initialGuess, model_.evaluator, p));
   auto bookkeeper = rcp(new IncrementBookkeeper(
       *model_.state, *model_.events, observer_, *newton, *stepControl,
       countedEvents(stepSize), lambda0));

@@ -1,6 +1,7 @@
 #pragma once
 // Runs LOCA natural continuation in the load factor λ over the model evaluator, with NOX Newton
-// solves. Built by hand (LOCA::Stepper + LOCA::Thyra::Group) rather than through Piro, because
+// solves. Built by hand (LOCA::Stepper + LoadFactorDerivativeGroup, a LOCA::Thyra::Group taking ∂f/∂λ
+// from the model) rather than through Piro, because
 // Piro::LOCASolver in Trilinos 13.2 cannot take a user LOCA factory, and Contessa's step-size
 // strategies are registered through one (StepSizeFactory). The driver knows no step-size method: what
 // a method adds (Newton tests, reports, stop words) comes through its StepControl.
